@@ -1,0 +1,257 @@
+#include "ide/cli/info_report.h"
+
+#include "ide/cli/json_writer.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+namespace ide::cli {
+
+using solver::BodySpec;
+using solver::DriveSpec;
+using solver::JointSpec;
+using solver::JointType;
+using solver::LoadedModel;
+using solver::Topology;
+
+namespace {
+
+std::string tr(const char* s) { return QCoreApplication::translate("padrob-info", s).toStdString(); }
+
+std::string num(double v, int digits = 6)
+{
+    if (v == 0) return "0";
+    if (std::isinf(v)) return v > 0 ? "∞" : "-∞";
+    char buf[64];
+    auto [p, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, digits);
+    return std::string(buf, p);
+}
+
+std::string vec(const Eigen::Vector3d& v) { return num(v.x()) + " " + num(v.y()) + " " + num(v.z()); }
+
+/// Role of each spec joint: "independent", "dependent" or "loop-closure".
+std::vector<std::string> roles(const LoadedModel& m)
+{
+    std::vector<std::string> r(m.spec.joints.size(), "independent");
+    const Topology& t = *m.topology;
+    for (int j : t.dependent) r[static_cast<std::size_t>(j)] = "dependent";
+    for (int j : t.loopJoints) r[static_cast<std::size_t>(j)] = "loop-closure";
+    return r;
+}
+
+const DriveSpec* driveOf(const LoadedModel& m, int jointId)
+{
+    for (const DriveSpec& d : m.spec.drives) {
+        if (d.joint == jointId) return &d;
+    }
+    return nullptr;
+}
+
+const char* coordinateUnit(JointType t) { return t == JointType::Revolute ? "rad" : "m"; }
+
+std::string label(int id, const std::string& name) { return name.empty() ? std::to_string(id) : std::to_string(id) + " " + name; }
+
+std::string jointIds(const LoadedModel& m, const std::vector<int>& indices)
+{
+    std::string s;
+    for (int j : indices) s += (s.empty() ? "" : ", ") + std::to_string(m.spec.joints[static_cast<std::size_t>(j)].id);
+    return s.empty() ? tr("none") : s;
+}
+
+std::string driveText(const DriveSpec& d, JointType t)
+{
+    std::string s = solver::driveKindKeyword(d.kind);
+    if (d.kind == solver::DriveKind::Hydraulic) {
+        auto h = d.hydraulic();
+        const char* v = t == JointType::Revolute ? " rad/s" : " m/s";
+        const char* f = t == JointType::Revolute ? " N·m" : " N";
+        s += " v " + num(h.vmax, 4) + "/" + num(h.vmin, 4) + v + ", F " + num(h.fmax, 4) + "/" + num(h.fmin, 4) + f;
+    } else {
+        for (const auto& [k, v] : d.params) s += " " + k + " " + num(v, 4);
+    }
+    return s;
+}
+
+}  // namespace
+
+std::string infoText(const LoadedModel& m)
+{
+    const Topology& t = *m.topology;
+    std::string out;
+    char line[512];
+    out += tr("Model") + ": " + m.spec.file + "\n";
+    out += tr("Gravity") + ": " + vec(m.spec.gravity) + " m/s²\n\n";
+
+    std::size_t nBodies = t.bodyIds.size() - 1;
+    out += tr("Bodies") + " (" + std::to_string(nBodies) + " + " + tr("ground") + "), " + tr("total mass") + " " +
+           num(t.totalMass) + " kg\n";
+    std::snprintf(line, sizeof line, "  %-6s %-22s %12s  %-34s %s\n", "id", tr("name").c_str(), tr("mass [kg]").c_str(),
+                  tr("Ixx Iyy Izz [kg m²]").c_str(), tr("centre of mass").c_str());
+    out += line;
+    for (const BodySpec& b : m.spec.bodies) {
+        if (b.id == 0) continue;
+        std::string mass = b.hasMass && b.mass > 0 ? num(b.mass) : tr("massless");
+        std::snprintf(line, sizeof line, "  %-6d %-22s %12s  %-34s %s\n", b.id, b.name.c_str(), mass.c_str(),
+                      vec(b.inertia).c_str(), b.hasCg ? vec(b.cg).c_str() : "0 0 0");
+        out += line;
+    }
+
+    out += "\n" + tr("Joints") + " (" + std::to_string(m.spec.joints.size()) + ")\n";
+    std::snprintf(line, sizeof line, "  %-5s %-18s %-10s %-7s %-22s %-9s %-13s %s\n", "id", tr("name").c_str(),
+                  tr("type").c_str(), "B1-B2", tr("limits").c_str(), tr("initial").c_str(), tr("role").c_str(),
+                  tr("drive").c_str());
+    out += line;
+    auto r = roles(m);
+    for (std::size_t k = 0; k < m.spec.joints.size(); ++k) {
+        const JointSpec& j = m.spec.joints[k];
+        std::string lim = (j.ll ? num(*j.ll) : "-∞") + " .. " + (j.ul ? num(*j.ul) : "∞") + " " + coordinateUnit(j.type);
+        if (!j.ll && !j.ul) lim = tr("none");
+        std::string bodies = std::to_string(j.side1.body) + "-" + std::to_string(j.side2.body);
+        const DriveSpec* d = driveOf(m, j.id);
+        std::string q0 = k < t.q0.size() ? num(t.q0[k], 5) : "?";
+        std::snprintf(line, sizeof line, "  %-5d %-18s %-10s %-7s %-22s %-9s %-13s %s\n", j.id, j.name.c_str(),
+                      solver::jointTypeName(j.type), bodies.c_str(), lim.c_str(), q0.c_str(), r[k].c_str(),
+                      d ? driveText(*d, j.type).c_str() : tr("passive").c_str());
+        out += line;
+    }
+
+    out += "\n" + tr("Spanning tree (parent body <- joint <- body)") + ":\n";
+    for (int ji : t.treeJoints) {
+        const JointSpec& j = m.spec.joints[static_cast<std::size_t>(ji)];
+        bool rev = t.reversed[static_cast<std::size_t>(ji)];
+        int parent = rev ? j.side2.body : j.side1.body, child = rev ? j.side1.body : j.side2.body;
+        out += "  " + std::to_string(parent) + " <- " + tr("joint") + " " + label(j.id, j.name) + " <- " + std::to_string(child) +
+               (rev ? "  (" + tr("written from B2 to B1") + ")" : std::string()) + "\n";
+    }
+    out += tr("Chains") + ":\n";
+    for (std::size_t c = 0; c < t.chains.size(); ++c) {
+        out += "  " + std::to_string(c + 1) + ": " + tr("joints") + " " + jointIds(m, t.chains[c]) + "\n";
+    }
+    out += tr("Loop-closure joints") + ": " + jointIds(m, t.loopJoints) + "\n";
+    out += tr("Degrees of freedom") + ": " + std::to_string(t.dof) + "\n";
+    out += "  " + tr("independent coordinates (joints)") + ": " + jointIds(m, t.independent) + "\n";
+    out += "  " + tr("dependent coordinates (joints)") + ": " + jointIds(m, t.dependent) + "\n";
+    return out;
+}
+
+std::string infoJson(const LoadedModel& m)
+{
+    const Topology& t = *m.topology;
+    JsonWriter w;
+    auto vec3 = [&](const Eigen::Vector3d& v) { w.beginArray().num(v.x()).num(v.y()).num(v.z()).endArray(); };
+    auto ids = [&](const std::vector<int>& indices) {
+        w.beginArray();
+        for (int j : indices) w.integer(m.spec.joints[static_cast<std::size_t>(j)].id);
+        w.endArray();
+    };
+    auto optNum = [&](const std::optional<double>& v) { v ? w.num(*v) : w.null(); };
+    w.beginObject();
+    w.key("format").str("padrob-info");
+    w.key("version").integer(1);
+    w.key("file").str(m.spec.file);
+    w.key("gravity");
+    vec3(m.spec.gravity);
+    w.key("total_mass").num(t.totalMass);
+    w.key("dof").integer(t.dof);
+
+    w.key("bodies").beginArray();
+    for (const BodySpec& b : m.spec.bodies) {
+        if (b.id == 0) continue;
+        w.beginObject();
+        w.key("id").integer(b.id);
+        w.key("name").str(b.name);
+        w.key("mass").num(b.hasMass ? b.mass : 0.0);
+        w.key("massless").boolean(!b.hasMass || b.mass == 0);
+        w.key("centre_of_mass");
+        vec3(b.cg);
+        w.key("inertia").beginArray();
+        Eigen::Matrix3d I = b.inertiaTensor();
+        for (int r = 0; r < 3; ++r) {
+            w.beginArray().num(I(r, 0)).num(I(r, 1)).num(I(r, 2)).endArray();
+        }
+        w.endArray();
+        w.endObject();
+    }
+    w.endArray();
+
+    auto r = roles(m);
+    w.key("joints").beginArray();
+    for (std::size_t k = 0; k < m.spec.joints.size(); ++k) {
+        const JointSpec& j = m.spec.joints[k];
+        w.beginObject();
+        w.key("id").integer(j.id);
+        w.key("name").str(j.name);
+        w.key("type").str(solver::jointTypeName(j.type));
+        w.key("type_code").integer(static_cast<int>(j.type));
+        w.key("body1").integer(j.side1.body);
+        w.key("body2").integer(j.side2.body);
+        w.key("unit").str(coordinateUnit(j.type));
+        w.key("lower_limit");
+        optNum(j.ll);
+        w.key("upper_limit");
+        optNum(j.ul);
+        w.key("initial").num(k < t.q0.size() ? t.q0[k] : 0.0);
+        w.key("initial_rate").num(j.vi.value_or(0.0));
+        w.key("role").str(r[k]);
+        w.key("drive");
+        if (const DriveSpec* d = driveOf(m, j.id)) {
+            w.beginObject();
+            w.key("kind").str(solver::driveKindKeyword(d->kind));
+            w.key("params").beginObject();
+            for (const auto& [key, v] : d->params) w.key(key).num(v);
+            w.endObject();
+            if (d->kind == solver::DriveKind::Hydraulic) {
+                auto h = d->hydraulic();
+                w.key("vmax").num(h.vmax).key("vmin").num(h.vmin).key("fmax").num(h.fmax).key("fmin").num(h.fmin);
+            }
+            w.endObject();
+        } else {
+            w.null();
+        }
+        w.endObject();
+    }
+    w.endArray();
+
+    w.key("tree").beginArray();
+    for (int ji : t.treeJoints) {
+        const JointSpec& j = m.spec.joints[static_cast<std::size_t>(ji)];
+        bool rev = t.reversed[static_cast<std::size_t>(ji)];
+        w.beginObject();
+        w.key("joint").integer(j.id);
+        w.key("parent_body").integer(rev ? j.side2.body : j.side1.body);
+        w.key("child_body").integer(rev ? j.side1.body : j.side2.body);
+        w.key("reversed").boolean(rev);
+        w.endObject();
+    }
+    w.endArray();
+    w.key("chains").beginArray();
+    for (const auto& c : t.chains) ids(c);
+    w.endArray();
+    w.key("loop_closures");
+    ids(t.loopJoints);
+    w.key("independent");
+    ids(t.independent);
+    w.key("dependent");
+    ids(t.dependent);
+
+    w.key("diagnostics").beginArray();
+    for (const solver::Diagnostic& d : m.diagnostics) {
+        w.beginObject();
+        w.key("severity").str(solver::severityName(d.severity));
+        w.key("code").str(d.code);
+        w.key("line").integer(d.pos.line);
+        w.key("column").integer(d.pos.column);
+        w.key("message").str(d.message);
+        w.key("hint").str(d.hint);
+        w.endObject();
+    }
+    w.endArray();
+    w.endObject();
+    return w.text() + "\n";
+}
+
+}  // namespace ide::cli

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs every Debian package Padrob needs to build, run and test.
+# One list, shared by scripts/run.sh and scripts/test.sh. Idempotent: when every
+# package is already installed it prints nothing and touches nothing.
+#
+# We install with --no-install-recommends. What that drops, and why it is fine:
+#   - qt6-base-dev only *recommends* libqt6opengl6-dev and the SQLite driver;
+#     the ones we use are listed explicitly below.
+#   - Recommends would add ghostscript, GTK, a platform theme and udev (~400 MB)
+#     that a build or a headless test never uses.
+set -euo pipefail
+
+packages=(
+  # toolchain
+  build-essential cmake ninja-build pkg-config git ccache
+  # solver
+  libeigen3-dev
+  # Qt (the CLI's QtCore now; widgets, Linguist tools and translations for the apps)
+  qt6-base-dev qt6-base-dev-tools qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
+  # tests
+  libgtest-dev libgmock-dev libbenchmark-dev locales
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)
+  [ "$status" = installed ] || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  sudo=sudo
+fi
+echo "install-deps: installing ${missing[*]}" >&2
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq -o DPkg::Lock::Timeout=600
+$sudo apt-get install -y -qq --no-install-recommends -o DPkg::Lock::Timeout=600 "${missing[@]}" >/dev/null

@@ -1,0 +1,165 @@
+#include "solver/model/load.h"
+
+#include "solver/model/validate.h"
+#include "solver/parse/parser.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace solver {
+
+namespace {
+
+/// Length of the valid UTF-8 sequence at s[i], or 0 when it is not valid.
+std::size_t utf8SequenceLength(std::string_view s, std::size_t i)
+{
+    const auto b0 = static_cast<unsigned char>(s[i]);
+    if (b0 < 0x80) return 1;
+    std::size_t len = 0;
+    unsigned min = 0;
+    if ((b0 & 0xE0) == 0xC0) { len = 2; min = 0x80; }
+    else if ((b0 & 0xF0) == 0xE0) { len = 3; min = 0x800; }
+    else if ((b0 & 0xF8) == 0xF0) { len = 4; min = 0x10000; }
+    else return 0;
+    if (i + len > s.size()) return 0;
+    unsigned cp = b0 & (0x7F >> len);
+    for (std::size_t k = 1; k < len; ++k) {
+        const auto b = static_cast<unsigned char>(s[i + k]);
+        if ((b & 0xC0) != 0x80) return 0;
+        cp = (cp << 6) | (b & 0x3F);
+    }
+    if (cp < min || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return 0;
+    return len;
+}
+
+/// Position (line, column in characters) of byte `at`, in text that is valid up to `at`.
+SourcePos positionOf(std::string_view s, std::size_t at)
+{
+    SourcePos p{1, 1};
+    for (std::size_t i = 0; i < at && i < s.size(); ++i) {
+        if (s[i] == '\n') { ++p.line; p.column = 1; }
+        else if ((static_cast<unsigned char>(s[i]) & 0xC0) != 0x80) ++p.column;
+    }
+    return p;
+}
+
+/// Makes the text valid UTF-8. Returns false (with an error) for binary data.
+/// Text that is not UTF-8 is read as Latin-1 (ISO 8859-1), with a warning.
+bool decode(std::string_view raw, std::string& out, Diagnostics& diags)
+{
+    // binary: NUL bytes, or many control characters
+    std::size_t controls = 0;
+    const std::size_t sample = std::min<std::size_t>(raw.size(), 1 << 16);
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+        const auto c = static_cast<unsigned char>(raw[i]);
+        if (c == 0) {
+            diags.error("binary-file", positionOf(raw, i), "this is not a text file (it contains a NUL byte here)",
+                        "a model is a text file (.pad); open the model, not a mesh, image or archive");
+            return false;
+        }
+        if (i < sample && c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f' && c != '\v') ++controls;
+    }
+    if (sample > 0 && controls * 20 > sample) {
+        diags.error("binary-file", {1, 1}, "this is not a text file (" + std::to_string(controls) +
+                        " control characters in its first " + std::to_string(sample) + " bytes)",
+                    "a model is a text file (.pad); open the model, not a mesh, image or archive");
+        return false;
+    }
+    std::size_t firstBad = std::string_view::npos;
+    for (std::size_t i = 0; i < raw.size();) {
+        std::size_t len = utf8SequenceLength(raw, i);
+        if (len == 0) { firstBad = i; break; }
+        i += len;
+    }
+    if (firstBad == std::string_view::npos) {
+        out.assign(raw);
+        return true;
+    }
+    diags.warning("not-utf8", positionOf(raw, firstBad),
+                  "the file is not UTF-8 (byte 0x" +
+                      [&] { char b[3]; std::snprintf(b, 3, "%02X", static_cast<unsigned char>(raw[firstBad])); return std::string(b); }() +
+                      " here); it was read as Latin-1 (ISO 8859-1)",
+                  "save the file as UTF-8 so every editor shows its accents the same way");
+    out.clear();
+    out.reserve(raw.size() + raw.size() / 8);
+    for (char ch : raw) {
+        const auto c = static_cast<unsigned char>(ch);
+        if (c < 0x80) {
+            out += ch;
+        } else {
+            out += static_cast<char>(0xC0 | (c >> 6));
+            out += static_cast<char>(0x80 | (c & 0x3F));
+        }
+    }
+    return true;
+}
+
+LoadedModel loadDecoded(std::string_view text, const std::string& file, const std::string& baseDir)
+{
+    LoadedModel m;
+    m.diagnostics.setFile(file);
+    m.spec = parse::parseModel(text, m.diagnostics);
+    m.spec.file = file;
+    validateModel(m.spec, m.diagnostics, baseDir);
+    // the checks of the whole geometry need every statement right
+    if (!m.diagnostics.hasErrors()) {
+        m.topology = analyzeTopology(m.spec, m.diagnostics);
+        if (m.diagnostics.hasErrors()) m.topology.reset();
+    }
+    m.diagnostics.sortByPosition();
+    return m;
+}
+
+}  // namespace
+
+LoadedModel loadModelText(std::string_view text, const std::string& file)
+{
+    Diagnostics pre(file);
+    std::string decoded;
+    if (!decode(text, decoded, pre)) {
+        LoadedModel m;
+        m.spec.file = file;
+        m.diagnostics = std::move(pre);
+        return m;
+    }
+    std::string baseDir;
+    if (!file.empty() && file[0] != '<') baseDir = std::filesystem::path(file).parent_path().string();
+    LoadedModel m = loadDecoded(decoded, file, baseDir.empty() ? std::string(".") : baseDir);
+    if (!pre.empty()) {
+        pre.append(m.diagnostics);
+        m.diagnostics = std::move(pre);
+    }
+    return m;
+}
+
+LoadedModel loadModelFile(const std::string& path)
+{
+    namespace fs = std::filesystem;
+    auto fail = [&](std::string message, std::string hint) {
+        LoadedModel m;
+        m.spec.file = path;
+        m.diagnostics.setFile(path);
+        m.diagnostics.error("io-error", {}, std::move(message), std::move(hint));
+        return m;
+    };
+    std::error_code ec;
+    fs::file_status st = fs::status(path, ec);
+    if (ec || !fs::exists(st)) return fail("no such file", "check the path");
+    if (fs::is_directory(st)) return fail("this is a folder, not a model file", "give the path of a .pad file");
+    if (!fs::is_regular_file(st)) return fail("this is not a regular file", "give the path of a .pad file");
+    const auto size = fs::file_size(path, ec);
+    if (!ec && size > kMaxModelFileBytes) {
+        return fail("the file is too large for a model (" + std::to_string(size / (1024 * 1024)) + " MB; the limit is " +
+                        std::to_string(kMaxModelFileBytes / (1024 * 1024)) + " MB)",
+                    "a model is a short text; put meshes in their own files (G … MESH \"file\")");
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return fail("cannot be read (permission denied?)", "check the file's permissions");
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    if (in.bad()) return fail("reading failed", "check the disk and the file's permissions");
+    return loadModelText(ss.str(), path);
+}
+
+}  // namespace solver

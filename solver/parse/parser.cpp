@@ -1,0 +1,1007 @@
+#include "solver/parse/parser.h"
+
+#include "solver/parse/lexer.h"
+
+#include <array>
+#include <charconv>
+#include <climits>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <optional>
+
+namespace solver::parse {
+
+namespace {
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+
+/// The statements a line may start with, for "did you mean" suggestions.
+constexpr std::array kStatementKeywords = {"GRAVITY", "B", "C", "B1", "B2", "CL1", "CL2", "D", "F", "G"};
+
+std::string fmt(double v)
+{
+    char buf[64];
+    auto [p, ec] = std::to_chars(buf, buf + sizeof buf, v);
+    return ec == std::errc() ? std::string(buf, p) : std::string("?");
+}
+
+std::size_t editDistance(std::string_view a, std::string_view b)
+{
+    std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        cur[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            std::size_t sub = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, sub});
+        }
+        std::swap(prev, cur);
+    }
+    return prev[b.size()];
+}
+
+/// The closest of `candidates` to `word`, when it is close enough to be a typo.
+template <typename Range>
+std::string closest(std::string_view word, const Range& candidates)
+{
+    std::string best;
+    std::size_t bestDist = 3;
+    std::string w = upper(word);
+    if (w.size() > 12) return {};
+    for (std::string_view c : candidates) {
+        std::size_t d = editDistance(w, c);
+        if (d < bestDist && d < std::max<std::size_t>(2, c.size())) {
+            bestDist = d;
+            best = std::string(c);
+        }
+    }
+    return best;
+}
+
+/// How an option's arguments look.
+enum class Arg {
+    Int,     ///< an id
+    Num,     ///< one number
+    NumDeg,  ///< one number, optionally followed by DEG
+    Vec3,    ///< three numbers
+    Num4,    ///< four numbers (ROT ax ay az deg)
+    Mag,     ///< a magnitude spec
+    Flag,    ///< no argument
+    Str,     ///< a string
+};
+
+struct OptionDef {
+    const char* key;
+    Arg arg;
+    const char* what;  ///< what the argument is, for messages ("the lower limit")
+};
+
+struct OptionValue {
+    double num = 0;
+    bool deg = false;
+    Eigen::Vector3d v = Eigen::Vector3d::Zero();
+    Eigen::Vector4d v4 = Eigen::Vector4d::Zero();
+    int id = 0;
+    std::string str;
+    MagnitudeSpec mag;
+    SourcePos pos;       ///< the option keyword
+    SourcePos valuePos;  ///< its first argument
+    bool ok = true;
+};
+
+using Options = std::map<std::string, OptionValue, std::less<>>;
+
+class Parser {
+public:
+    Parser(ModelSpec& spec, Diagnostics& diags) : m_spec(spec), m_d(diags) {}
+
+    void parseLine(std::string_view line, int lineNo)
+    {
+        m_toks = tokenizeLine(line, lineNo, m_d);
+        m_i = 0;
+        m_lineNo = lineNo;
+        m_endPos = {lineNo, columnOf(line, line.size()) + 1};
+        if (m_toks.empty()) return;
+        const Token& first = m_toks[0];
+        if (!first.isWord()) {
+            m_d.error("expected-keyword", first.pos,
+                      first.isString() ? "a statement cannot start with a string"
+                                       : "a statement starts with a keyword, not with the number " + first.text,
+                      "start the line with GRAVITY, B, C, D, F or G, or join it to the line above");
+            closeJoint();
+            return;
+        }
+        std::string kw = upper(first.text);
+        m_i = 1;
+        if (kw == "B1" || kw == "B2") { parseJointSide(kw == "B1" ? 1 : 2); return; }
+        if (kw == "CL1" || kw == "CL2") { parseCl(); return; }
+        closeJoint();
+        if (kw == "GRAVITY") parseGravity();
+        else if (kw == "B") parseBody();
+        else if (kw == "C") parseJoint();
+        else if (kw == "D") parseDrive();
+        else if (kw == "F") parseForce();
+        else if (kw == "G") parseGraphic();
+        else {
+            std::string guess = closest(kw, kStatementKeywords);
+            std::string hint = guess.empty()
+                                   ? "statements are GRAVITY, B, C (with B1, B2, CL1), D, F and G; "
+                                     "comments start with // or #"
+                                   : "did you mean '" + guess + "'?";
+            m_d.error("unknown-keyword", first.pos, "unknown keyword '" + first.text + "'", hint);
+        }
+    }
+
+    void closeJoint() { m_joint = -1; }
+
+private:
+    ModelSpec& m_spec;
+    Diagnostics& m_d;
+    std::vector<Token> m_toks;
+    std::size_t m_i = 0;
+    int m_lineNo = 0;
+    SourcePos m_endPos;
+    int m_joint = -1;  // index of the joint whose B1/B2/CL lines may follow
+
+    // ---- token access ---------------------------------------------------------
+    bool atEnd() const { return m_i >= m_toks.size(); }
+    const Token& peek() const { return m_toks[m_i]; }
+    SourcePos here() const { return atEnd() ? m_endPos : peek().pos; }
+
+    /// A token in a number's place: a number, or a word that is a malformed number.
+    static bool numberLike(const Token& t)
+    {
+        if (t.isNumber()) return true;
+        if (!t.isWord() || t.text.empty()) return false;
+        char c = t.text[0];
+        if ((c >= '0' && c <= '9') || c == '.' || c == '-' || c == '+') return true;
+        return !numberProblem(t.text).empty();
+    }
+
+    /// Reports why the number-like word `t` is not a number.
+    void badNumber(const Token& t, const std::string& context, bool& ok)
+    {
+        ok = false;
+        std::string why = numberProblem(t.text);
+        if (why == "decimal-comma") {
+            std::string dotted = t.text;
+            dotted[dotted.find(',')] = '.';
+            m_d.error("decimal-comma", t.pos, context + ": '" + t.text + "' is not a number",
+                      "use '.' as the decimal separator: " + dotted);
+        } else if (why == "not-finite") {
+            m_d.error("not-finite", t.pos, context + ": '" + t.text + "' is not a finite number",
+                      "write a finite value; NaN and infinity are not allowed");
+        } else if (why == "out-of-range") {
+            m_d.error("number-out-of-range", t.pos, context + ": " + t.text + " is out of range",
+                      "a number must lie within ±1.7e308");
+        } else {
+            m_d.error("not-a-number", t.pos, context + ": '" + t.text + "' is not a number",
+                      "numbers look like 12, -0.5, .2 or 1e-3");
+        }
+    }
+
+    /// Reads one number. On a missing number reports "<context>: <what> is missing"
+    /// and consumes nothing.
+    std::optional<double> number(const std::string& context, const std::string& what, bool& ok,
+                                 const std::string& syntax)
+    {
+        if (!atEnd() && peek().isNumber()) return m_toks[m_i++].number;
+        if (!atEnd() && numberLike(peek())) {
+            badNumber(m_toks[m_i++], context, ok);
+            return std::nullopt;
+        }
+        ok = false;
+        if (atEnd()) {
+            m_d.error("missing-number", here(), context + ": " + what + " is missing", "write " + syntax);
+        } else {
+            m_d.error("missing-number", here(),
+                      context + ": expected " + what + ", found '" + peek().text + "'", "write " + syntax);
+        }
+        return std::nullopt;
+    }
+
+    /// Reads `n` numbers into `out`; reports one diagnostic for the first problem.
+    template <int N>
+    bool numbers(Eigen::Matrix<double, N, 1>& out, const std::string& context, const std::string& key,
+                 const std::string& syntax, bool& ok)
+    {
+        for (int k = 0; k < N; ++k) {
+            if (!atEnd() && peek().isNumber()) {
+                out[k] = m_toks[m_i++].number;
+                continue;
+            }
+            if (!atEnd() && numberLike(peek())) {
+                badNumber(m_toks[m_i++], context, ok);
+                continue;
+            }
+            ok = false;
+            std::string found = atEnd() ? "the line ends" : "found '" + peek().text + "'";
+            m_d.error("missing-number", here(),
+                      context + ": " + key + " needs " + std::to_string(N) + " numbers, " +
+                          (k == 0 ? found : "only " + std::to_string(k) + " given"),
+                      "write " + syntax);
+            return false;
+        }
+        return true;
+    }
+
+    /// Reads an id (0 … INT_MAX).
+    std::optional<int> readId(const std::string& context, const std::string& what, bool& ok,
+                              const std::string& syntax)
+    {
+        if (atEnd() || !numberLike(peek())) {
+            ok = false;
+            m_d.error("missing-id", here(),
+                      context + ": " + what + " is missing" +
+                          (atEnd() ? std::string() : ", found '" + peek().text + "'"),
+                      "write " + syntax);
+            return std::nullopt;
+        }
+        const Token& t = m_toks[m_i++];
+        std::string_view s = t.text;
+        if (!s.empty() && s[0] == '+') s.remove_prefix(1);
+        bool digitsOnly = !s.empty() && s.find_first_not_of("0123456789") == std::string_view::npos;
+        if (!digitsOnly) {
+            ok = false;
+            if (t.isNumber() && t.number < 0) {
+                m_d.error("bad-id", t.pos, context + ": " + what + " cannot be negative (" + t.text + ")",
+                          "ids are whole numbers 0, 1, 2, …");
+            } else if (t.isNumber()) {
+                m_d.error("bad-id", t.pos, context + ": " + what + " must be a whole number, not " + t.text,
+                          "ids are whole numbers 0, 1, 2, …");
+            } else {
+                badNumber(t, context, ok);
+            }
+            return std::nullopt;
+        }
+        long long v = 0;
+        auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+        if (ec != std::errc() || v > INT_MAX) {
+            ok = false;
+            m_d.error("bad-id", t.pos, context + ": " + what + " " + t.text + " is too large",
+                      "ids go from 0 to " + std::to_string(INT_MAX));
+            return std::nullopt;
+        }
+        return static_cast<int>(v);
+    }
+
+    /// Parses a magnitude: number | SIN amp freq phase [offset] | TABLE T t v … | TABLE Q j q v …
+    bool magnitude(MagnitudeSpec& mag, const std::string& context, bool& ok)
+    {
+        const std::string syntax = "MAG value, MAG SIN amp freq phase [offset], "
+                                   "MAG TABLE T t1 v1 t2 v2 … or MAG TABLE Q joint q1 v1 …";
+        mag.pos = here();
+        if (!atEnd() && numberLike(peek())) {
+            mag.kind = MagnitudeSpec::Kind::Constant;
+            auto v = number(context, "the magnitude", ok, syntax);
+            mag.value = v.value_or(0);
+            return v.has_value();
+        }
+        if (!atEnd() && peek().is("SIN")) {
+            ++m_i;
+            mag.kind = MagnitudeSpec::Kind::Sine;
+            Eigen::Vector3d v;
+            if (!numbers<3>(v, context, "SIN", "SIN amplitude frequency[Hz] phase[rad] [offset]", ok)) return false;
+            mag.amplitude = v[0];
+            mag.frequency = v[1];
+            mag.phase = v[2];
+            if (!atEnd() && numberLike(peek())) {
+                auto off = number(context, "the offset", ok, syntax);
+                mag.offset = off.value_or(0);
+                mag.hasOffset = true;
+            }
+            return true;
+        }
+        if (!atEnd() && peek().is("TABLE")) {
+            SourcePos tablePos = peek().pos;
+            ++m_i;
+            if (!atEnd() && peek().is("T")) {
+                ++m_i;
+                mag.kind = MagnitudeSpec::Kind::TableTime;
+            } else if (!atEnd() && peek().is("Q")) {
+                ++m_i;
+                mag.kind = MagnitudeSpec::Kind::TableJoint;
+                auto j = readId(context, "the joint of TABLE Q", ok, "TABLE Q joint q1 v1 q2 v2 …");
+                if (!j) return false;
+                mag.joint = *j;
+            } else {
+                ok = false;
+                m_d.error("bad-table", here(), context + ": TABLE must say T (by time) or Q (by a joint's coordinate)",
+                          "write TABLE T t1 v1 t2 v2 … or TABLE Q joint q1 v1 q2 v2 …");
+                return false;
+            }
+            std::vector<double> vals;
+            std::vector<SourcePos> where;
+            while (!atEnd() && numberLike(peek())) {
+                where.push_back(peek().pos);
+                auto v = number(context, "a table value", ok, syntax);
+                vals.push_back(v.value_or(0));
+            }
+            if (vals.size() < 2 || vals.size() % 2 != 0) {
+                ok = false;
+                m_d.error("bad-table", vals.empty() ? here() : where.back(),
+                          context + ": a TABLE needs pairs of numbers (abscissa value), found " +
+                              std::to_string(vals.size()) + " number" + (vals.size() == 1 ? "" : "s"),
+                          "write TABLE T t1 v1 t2 v2 …");
+                return false;
+            }
+            for (std::size_t k = 0; k + 1 < vals.size(); k += 2) mag.table.emplace_back(vals[k], vals[k + 1]);
+            for (std::size_t k = 1; k < mag.table.size(); ++k) {
+                if (!(mag.table[k].first > mag.table[k - 1].first)) {
+                    ok = false;
+                    m_d.error("table-not-increasing", where[2 * k],
+                              context + ": table abscissae must increase (" + fmt(mag.table[k].first) +
+                                  " follows " + fmt(mag.table[k - 1].first) + ")",
+                              "sort the pairs by their first number and remove repeats");
+                    break;
+                }
+            }
+            (void)tablePos;
+            return true;
+        }
+        ok = false;
+        m_d.error("missing-number", here(),
+                  context + ": MAG needs a value" + (atEnd() ? std::string() : ", found '" + peek().text + "'"),
+                  "write " + syntax);
+        return false;
+    }
+
+    /// Parses keyword options in any order until the line ends.
+    Options options(const std::vector<OptionDef>& defs, const std::string& context,
+                    const std::string& statementName, bool& ok)
+    {
+        Options out;
+        std::vector<std::string_view> names;
+        for (const OptionDef& d : defs) names.push_back(d.key);
+        auto listNames = [&] {
+            std::string s;
+            for (std::size_t k = 0; k < names.size(); ++k) s += (k ? ", " : "") + std::string(names[k]);
+            return s;
+        };
+        while (!atEnd()) {
+            const Token& t = peek();
+            const OptionDef* def = nullptr;
+            if (t.isWord()) {
+                std::string key = upper(t.text);
+                for (const OptionDef& d : defs) {
+                    if (key == d.key) def = &d;
+                }
+            }
+            if (!def) {
+                ok = false;
+                if (numberLike(t)) {
+                    m_d.error("extra-number", t.pos, context + ": unexpected number " + t.text,
+                              names.empty() ? "remove it" : "remove it, or put an option before it (" + listNames() + ")");
+                } else {
+                    std::string guess = t.isWord() ? closest(t.text, names) : std::string();
+                    m_d.error("unknown-option", t.pos,
+                              context + ": '" + t.text + "' is not an option of " + statementName,
+                              guess.empty() ? (names.empty() ? std::string("remove it")
+                                                             : "options are " + listNames())
+                                            : "did you mean '" + guess + "'?");
+                }
+                ++m_i;
+                // skip to the next word, so one typo gives one diagnostic
+                while (!atEnd() && !peek().isWord()) ++m_i;
+                continue;
+            }
+            OptionValue val;
+            val.pos = t.pos;
+            ++m_i;
+            val.valuePos = here();
+            std::string key = def->key;
+            bool dup = out.count(key) > 0;
+            const std::string syn = std::string(def->key) + " " + def->what;
+            switch (def->arg) {
+            case Arg::Int: {
+                auto id = readId(context, std::string(def->what) + " after " + key, val.ok, syn);
+                val.id = id.value_or(0);
+                break;
+            }
+            case Arg::Num:
+            case Arg::NumDeg: {
+                auto v = number(context, std::string(def->what) + " after " + key, val.ok, syn);
+                val.num = v.value_or(0);
+                if (def->arg == Arg::NumDeg && !atEnd() && peek().is("DEG")) {
+                    val.deg = true;
+                    ++m_i;
+                }
+                break;
+            }
+            case Arg::Vec3: numbers<3>(val.v, context, key, syn, val.ok); break;
+            case Arg::Num4: numbers<4>(val.v4, context, key, syn, val.ok); break;
+            case Arg::Mag: magnitude(val.mag, context, val.ok); break;
+            case Arg::Flag: break;
+            case Arg::Str:
+                if (!atEnd() && peek().isString()) {
+                    val.str = m_toks[m_i++].text;
+                } else {
+                    val.ok = false;
+                    m_d.error("missing-string", here(), context + ": " + key + " needs a text in double quotes",
+                              "write " + key + " \"text\"");
+                }
+                break;
+            }
+            if (!val.ok) ok = false;
+            if (dup) {
+                ok = false;
+                m_d.error("duplicate-option", val.pos, context + ": " + key + " is given twice",
+                          "keep one " + key);
+                continue;
+            }
+            out.emplace(key, std::move(val));
+        }
+        return out;
+    }
+
+    void requireOptions(const Options& opts, const std::vector<const char*>& keys, const std::string& context,
+                        const std::string& syntax, SourcePos pos, bool& ok)
+    {
+        for (const char* k : keys) {
+            if (!opts.count(k)) {
+                ok = false;
+                m_d.error("missing-option", pos, context + ": " + k + " is missing", "write " + syntax);
+            }
+        }
+    }
+
+    static void recordPositions(FieldPositions& src, const Options& opts)
+    {
+        for (const auto& [k, v] : opts) src.at[k] = v.valuePos;
+    }
+
+    // ---- statements -----------------------------------------------------------
+    void parseGravity()
+    {
+        SourcePos pos = m_toks[0].pos;
+        bool ok = true;
+        Eigen::Vector3d g;
+        bool read = numbers<3>(g, "GRAVITY", "GRAVITY", "GRAVITY gx gy gz (m/s², z is up)", ok);
+        options({}, "GRAVITY", "GRAVITY", ok);
+        if (m_spec.hasGravity) {
+            m_d.error("duplicate-gravity", pos,
+                      "GRAVITY is given twice (first at line " + std::to_string(m_spec.gravityPos.line) + ")",
+                      "keep one GRAVITY statement");
+            return;
+        }
+        m_spec.hasGravity = true;
+        m_spec.gravityPos = pos;
+        if (read && ok) m_spec.gravity = g;
+    }
+
+    void parseBody()
+    {
+        const std::string syntax = "B id [m Ixx Iyy Izz [Ixy Iyz Ixz]] [CG x y z] [NAME \"text\"]";
+        BodySpec b;
+        b.src.pos = m_toks[0].pos;
+        bool ok = true;
+        auto id = readId("body", "the body id", ok, syntax);
+        if (!id) {
+            b.src.complete = false;
+            return;  // a body without an id cannot be referred to; nothing to keep
+        }
+        b.id = *id;
+        const std::string ctx = "body " + std::to_string(b.id);
+        // count the numbers after the id: 0 (massless), 4 or 7
+        std::size_t first = m_i, count = 0;
+        while (first + count < m_toks.size() && numberLike(m_toks[first + count])) ++count;
+        if (count != 0 && count != 4 && count != 7) {
+            ok = false;
+            SourcePos at = count > 7 ? m_toks[first + 7].pos : m_toks[first + count - 1].pos;
+            m_d.error(count > 7 ? "extra-number" : "missing-number", at,
+                      ctx + ": a body takes 0, 4 or 7 numbers after its id (m Ixx Iyy Izz [Ixy Iyz Ixz]), found " +
+                          std::to_string(count),
+                      count < 4 ? "give the mass and the three moments of inertia: " + syntax
+                                : count < 7 ? "give all three products of inertia Ixy Iyz Ixz, or none"
+                                            : "remove the extra numbers");
+            m_i += count;
+        } else if (count > 0) {
+            std::array<double, 7> v{};
+            for (std::size_t k = 0; k < count; ++k) {
+                const Token& t = m_toks[m_i++];
+                if (t.isNumber()) v[k] = t.number;
+                else badNumber(t, ctx, ok);
+            }
+            b.hasMass = true;
+            b.mass = v[0];
+            b.inertia = {v[1], v[2], v[3]};
+            if (count == 7) {
+                b.hasProducts = true;
+                b.products = {v[4], v[5], v[6]};
+            }
+            b.src.at["m"] = m_toks[first].pos;
+            b.src.at["I"] = m_toks[first + 1].pos;
+            if (count == 7) b.src.at["Ixy"] = m_toks[first + 4].pos;
+        }
+        Options opts = options({{"CG", Arg::Vec3, "x y z"}, {"NAME", Arg::Str, "\"text\""}}, ctx,
+                               "a body statement (B)", ok);
+        recordPositions(b.src, opts);
+        if (auto it = opts.find("CG"); it != opts.end()) {
+            b.hasCg = true;
+            b.cg = it->second.v;
+        }
+        if (auto it = opts.find("NAME"); it != opts.end()) b.name = it->second.str;
+        b.src.complete = ok;
+        m_spec.bodies.push_back(std::move(b));
+    }
+
+    void parseJoint()
+    {
+        const std::string syntax = "C id [T 0|1|2] [LL v] [UL v] [QI v] [VI v] [NAME \"text\"]";
+        JointSpec j;
+        j.src.pos = m_toks[0].pos;
+        bool ok = true;
+        auto id = readId("joint", "the joint id", ok, syntax);
+        j.id = id.value_or(-1);
+        const std::string ctx = id ? "joint " + std::to_string(j.id) : std::string("joint");
+        Options opts = options({{"T", Arg::Int, "type (0, 1 or 2)"},
+                                {"LL", Arg::NumDeg, "the lower limit"},
+                                {"UL", Arg::NumDeg, "the upper limit"},
+                                {"QI", Arg::NumDeg, "the initial coordinate"},
+                                {"VI", Arg::NumDeg, "the initial rate"},
+                                {"NAME", Arg::Str, "\"text\""}},
+                               ctx, "a joint statement (C)", ok);
+        recordPositions(j.src, opts);
+        if (auto it = opts.find("T"); it != opts.end() && it->second.ok) {
+            j.typeWritten = true;
+            int t = it->second.id;
+            if (t == 0) j.type = JointType::Revolute;
+            else if (t == 1) j.type = JointType::Actuator;
+            else if (t == 2) j.type = JointType::Prismatic;
+            else {
+                ok = false;
+                m_d.error("bad-joint-type", it->second.valuePos, ctx + ": there is no joint type T " + std::to_string(t),
+                          "use T 0 (revolute, the default), T 1 (pivoted linear actuator) or T 2 (prismatic)");
+            }
+        }
+        auto take = [&](const char* key, std::optional<double>& out) {
+            auto it = opts.find(key);
+            if (it == opts.end()) return;
+            double v = it->second.num;
+            if (it->second.deg) {
+                if (j.type != JointType::Revolute) {
+                    ok = false;
+                    m_d.error("deg-on-length", it->second.valuePos,
+                              ctx + ": DEG after " + key + ", but a " + jointTypeName(j.type) +
+                                  " joint's coordinate is a length",
+                              "remove DEG; give the value in metres");
+                }
+                v *= kDegToRad;
+            }
+            out = v;
+        };
+        take("LL", j.ll);
+        take("UL", j.ul);
+        take("QI", j.qi);
+        take("VI", j.vi);
+        if (auto it = opts.find("NAME"); it != opts.end()) j.name = it->second.str;
+        j.src.complete = ok;
+        if (!id) return;
+        m_spec.joints.push_back(std::move(j));
+        m_joint = static_cast<int>(m_spec.joints.size()) - 1;
+    }
+
+    JointSpec* openJoint(const Token& kwTok)
+    {
+        if (m_joint < 0) {
+            m_d.error("orphan-joint-line", kwTok.pos,
+                      upper(kwTok.text) + " must follow a joint statement (C)",
+                      "put it right after its joint's C line (blank and comment lines may come between)");
+            return nullptr;
+        }
+        return &m_spec.joints[static_cast<std::size_t>(m_joint)];
+    }
+
+    void parseJointSide(int side)
+    {
+        const Token& kw = m_toks[0];
+        JointSpec* j = openJoint(kw);
+        if (!j) return;
+        const std::string s = std::to_string(side);
+        const std::string other = side == 1 ? "2" : "1";
+        const std::string syntax = "B" + s + " body P" + s + " x y z A" + s + " x y z R" + s + " x y z";
+        const std::string ctx = "joint " + std::to_string(j->id) + ", B" + s;
+        JointSide& js = side == 1 ? j->side1 : j->side2;
+        if (js.present) {
+            m_d.error("duplicate-joint-line", kw.pos,
+                      "joint " + std::to_string(j->id) + " already has a B" + s + " line (line " +
+                          std::to_string(js.src.pos.line) + ")",
+                      "keep one B" + s + " line per joint");
+            j->src.complete = false;
+            return;
+        }
+        JointSide side_;
+        side_.present = true;
+        side_.src.pos = kw.pos;
+        bool ok = true;
+        side_.src.at["B"] = here();
+        auto body = readId(ctx, "the body id", ok, syntax);
+        side_.body = body.value_or(-1);
+        // P, A, R with this side's digit; the other side's keys are diagnosed
+        std::vector<OptionDef> defs = {{nullptr, Arg::Vec3, "x y z"}, {nullptr, Arg::Vec3, "x y z"},
+                                       {nullptr, Arg::Vec3, "x y z"}};
+        std::string kp = "P" + s, ka = "A" + s, kr = "R" + s;
+        defs[0].key = kp.c_str();
+        defs[1].key = ka.c_str();
+        defs[2].key = kr.c_str();
+        // a wrong-side key (P2 on a B1 line) gets its own message
+        for (std::size_t k = m_i; k < m_toks.size(); ++k) {
+            std::string u = upper(m_toks[k].text);
+            if (m_toks[k].isWord() && (u == "P" + other || u == "A" + other || u == "R" + other)) {
+                ok = false;
+                m_d.error("wrong-side", m_toks[k].pos,
+                          ctx + ": " + u + " belongs on the B" + other + " line",
+                          "on the B" + s + " line write " + u.substr(0, 1) + s);
+                m_toks[k].text = u.substr(0, 1) + s;  // read it as meant, to avoid a second message
+            }
+        }
+        Options opts = options(defs, ctx, "a B" + s + " line", ok);
+        requireOptions(opts, {kp.c_str(), ka.c_str(), kr.c_str()}, ctx, syntax, kw.pos, ok);
+        for (const auto& [k, v] : opts) side_.src.at[k.substr(0, 1)] = v.valuePos;
+        if (auto it = opts.find(kp); it != opts.end()) side_.p = it->second.v;
+        if (auto it = opts.find(ka); it != opts.end()) side_.a = it->second.v;
+        if (auto it = opts.find(kr); it != opts.end()) side_.r = it->second.v;
+        side_.src.complete = ok;
+        if (!ok) j->src.complete = false;
+        js = std::move(side_);
+    }
+
+    void parseCl()
+    {
+        const Token& kw = m_toks[0];
+        JointSpec* j = openJoint(kw);
+        if (!j) return;
+        m_i = 0;  // CL1 and CL2 are both options of this line
+        const std::string ctx = "joint " + std::to_string(j->id);
+        bool ok = true;
+        Options opts = options({{"CL1", Arg::Vec3, "x y z"}, {"CL2", Arg::Vec3, "x y z"}}, ctx,
+                               "a CL1/CL2 line", ok);
+        for (const auto& [k, v] : opts) {
+            bool have = j->src.at.count(k) > 0;
+            if (have) {
+                ok = false;
+                m_d.error("duplicate-joint-line", v.pos, ctx + ": " + k + " is given twice", "keep one " + k);
+                continue;
+            }
+            j->src.at[k] = v.valuePos;
+            (k == "CL1" ? j->cl1 : j->cl2) = v.v;
+        }
+        j->hasCl = j->src.at.count("CL1") || j->src.at.count("CL2");
+        if (!ok) j->src.complete = false;
+    }
+
+    void parseDrive()
+    {
+        DriveSpec d;
+        d.src.pos = m_toks[0].pos;
+        bool ok = true;
+        const std::string syntax = "D joint HYD|MOTOR|PNEU|SERVO parameters…";
+        auto joint = readId("drive", "the joint id", ok, syntax);
+        if (!joint) return;
+        d.joint = *joint;
+        const std::string ctx = "drive on joint " + std::to_string(d.joint);
+        if (atEnd() || !peek().isWord()) {
+            m_d.error("missing-drive-kind", here(), ctx + ": the drive kind is missing",
+                      "write HYD, MOTOR, PNEU or SERVO after the joint id");
+            return;
+        }
+        const Token& kindTok = m_toks[m_i++];
+        std::string kind = upper(kindTok.text);
+        d.src.at["kind"] = kindTok.pos;
+        std::vector<OptionDef> defs;
+        std::string kindSyntax;
+        if (kind == "HYD") {
+            d.kind = DriveKind::Hydraulic;
+            defs = {{"VMAX", Arg::Num, "speed"},   {"VMIN", Arg::Num, "speed"},   {"FMAX", Arg::Num, "force"},
+                    {"FMIN", Arg::Num, "force"},   {"PUMP", Arg::Num, "cc/rev"},  {"RPM", Arg::Num, "rpm"},
+                    {"BORE", Arg::Num, "diameter"}, {"ROD", Arg::Num, "diameter"}, {"PRESSURE", Arg::Num, "Pa"}};
+            kindSyntax = "D j HYD VMAX v [VMIN v] [FMAX f] [FMIN f], or D j HYD PUMP cc RPM n BORE d ROD d PRESSURE Pa";
+        } else if (kind == "MOTOR") {
+            d.kind = DriveKind::Motor;
+            defs = {{"T0", Arg::Num, "stall torque"}, {"W0", Arg::Num, "no-load speed"}};
+            kindSyntax = "D j MOTOR T0 torque W0 speed";
+        } else if (kind == "PNEU") {
+            d.kind = DriveKind::Pneumatic;
+            defs = {{"F", Arg::Num, "force"}};
+            kindSyntax = "D j PNEU F force";
+        } else if (kind == "SERVO") {
+            d.kind = DriveKind::Servo;
+            defs = {{"KP", Arg::Num, "gain"}, {"KI", Arg::Num, "gain"}, {"KD", Arg::Num, "gain"},
+                    {"FMAX", Arg::Num, "force"}};
+            kindSyntax = "D j SERVO KP p KI i KD d [FMAX f]";
+        } else {
+            std::string guess = closest(kind, std::array<std::string_view, 4>{"HYD", "MOTOR", "PNEU", "SERVO"});
+            m_d.error("unknown-drive-kind", kindTok.pos, ctx + ": unknown drive kind '" + kindTok.text + "'",
+                      guess.empty() ? "drive kinds are HYD, MOTOR, PNEU and SERVO" : "did you mean '" + guess + "'?");
+            return;
+        }
+        Options opts = options(defs, ctx, "a " + kind + " drive", ok);
+        recordPositions(d.src, opts);
+        // parameters in the order written
+        std::vector<std::pair<SourcePos, std::string>> order;
+        for (const auto& [k, v] : opts) order.emplace_back(v.pos, k);
+        std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+            return a.first.column < b.first.column;
+        });
+        for (const auto& [p, k] : order) d.params.emplace_back(k, opts.at(k).num);
+        // what each kind requires
+        if (d.kind == DriveKind::Hydraulic) {
+            bool hasV = opts.count("VMAX") > 0;
+            const std::array pumpKeys = {"PUMP", "RPM", "BORE", "ROD", "PRESSURE"};
+            int nPump = 0;
+            for (const char* k : pumpKeys) nPump += opts.count(k) ? 1 : 0;
+            if (hasV && nPump > 0) {
+                ok = false;
+                m_d.error("hyd-conflict", d.src.where(opts.count("PUMP") ? "PUMP" : "RPM"),
+                          ctx + ": give either VMAX/FMAX or the hydraulic data PUMP … PRESSURE, not both",
+                          "remove one of the two forms");
+            } else if (nPump > 0) {
+                requireOptions(opts, {"PUMP", "RPM", "BORE", "ROD", "PRESSURE"}, ctx, kindSyntax, d.src.pos, ok);
+                for (const char* k : {"VMIN", "FMAX", "FMIN"}) {
+                    if (opts.count(k)) {
+                        ok = false;
+                        m_d.error("hyd-conflict", d.src.where(k),
+                                  ctx + ": " + k + " follows from the hydraulic data PUMP … PRESSURE",
+                                  std::string("remove ") + k + ", or give VMAX/VMIN/FMAX/FMIN instead of the pump data");
+                    }
+                }
+                auto bore = opts.find("BORE"), rod = opts.find("ROD");
+                if (bore != opts.end() && rod != opts.end() && rod->second.num >= bore->second.num) {
+                    ok = false;
+                    m_d.error("rod-too-large", rod->second.valuePos,
+                              ctx + ": the rod (" + fmt(rod->second.num) + " m) is not thinner than the bore (" +
+                                  fmt(bore->second.num) + " m)",
+                              "ROD and BORE are diameters in metres; the rod must be thinner");
+                }
+            } else if (!hasV) {
+                ok = false;
+                m_d.error("missing-option", d.src.pos, ctx + ": a hydraulic drive needs VMAX or the pump data",
+                          "write " + kindSyntax);
+            }
+        } else if (d.kind == DriveKind::Motor) {
+            requireOptions(opts, {"T0", "W0"}, ctx, kindSyntax, d.src.pos, ok);
+        } else if (d.kind == DriveKind::Pneumatic) {
+            requireOptions(opts, {"F"}, ctx, kindSyntax, d.src.pos, ok);
+        } else {
+            requireOptions(opts, {"KP", "KI", "KD"}, ctx, kindSyntax, d.src.pos, ok);
+        }
+        // magnitudes that must be positive (gains and PNEU F may be zero or signed)
+        for (const auto& [k, v] : opts) {
+            bool mustBePositive = k != "KP" && k != "KI" && k != "KD" && k != "F";
+            if (mustBePositive && v.ok && !(v.num > 0)) {
+                ok = false;
+                m_d.error("not-positive", v.valuePos, ctx + ": " + k + " must be positive, not " + fmt(v.num),
+                          "give its magnitude; the direction comes from the operator's command");
+            } else if (!mustBePositive && v.ok && v.num < 0 && k != "F") {
+                ok = false;
+                m_d.error("not-positive", v.valuePos, ctx + ": " + k + " cannot be negative (" + fmt(v.num) + ")",
+                          "gains are zero or positive");
+            }
+        }
+        d.src.complete = ok;
+        m_spec.drives.push_back(std::move(d));
+    }
+
+    void parseForce()
+    {
+        ForceSpec f;
+        f.src.pos = m_toks[0].pos;
+        bool ok = true;
+        const std::string syntax = "F id POINT|TORQUE|JOINT|SPRING|AERO parameters…";
+        auto id = readId("force", "the force id", ok, syntax);
+        if (!id) return;
+        f.id = *id;
+        const std::string ctx = "force " + std::to_string(f.id);
+        if (atEnd() || !peek().isWord()) {
+            m_d.error("missing-force-kind", here(), ctx + ": the force kind is missing",
+                      "write POINT, TORQUE, JOINT, SPRING or AERO after the force id");
+            return;
+        }
+        const Token& kindTok = m_toks[m_i++];
+        std::string kind = upper(kindTok.text);
+        f.src.at["kind"] = kindTok.pos;
+        std::vector<OptionDef> defs;
+        std::vector<const char*> required;
+        std::string ksyn;
+        if (kind == "POINT") {
+            f.kind = ForceKind::Point;
+            defs = {{"B", Arg::Int, "body"}, {"P", Arg::Vec3, "x y z"}, {"DIR", Arg::Vec3, "x y z"},
+                    {"MAG", Arg::Mag, "spec"}, {"LOCAL", Arg::Flag, ""}};
+            required = {"B", "P", "DIR", "MAG"};
+            ksyn = "F id POINT B body P x y z DIR x y z MAG spec [LOCAL]";
+        } else if (kind == "TORQUE") {
+            f.kind = ForceKind::Torque;
+            defs = {{"B", Arg::Int, "body"}, {"DIR", Arg::Vec3, "x y z"}, {"MAG", Arg::Mag, "spec"},
+                    {"LOCAL", Arg::Flag, ""}};
+            required = {"B", "DIR", "MAG"};
+            ksyn = "F id TORQUE B body DIR x y z MAG spec [LOCAL]";
+        } else if (kind == "JOINT") {
+            f.kind = ForceKind::Joint;
+            f.src.at["JOINT"] = here();
+            auto j = readId(ctx, "the joint id", ok, "F id JOINT joint MAG spec");
+            f.joint = j.value_or(-1);
+            defs = {{"MAG", Arg::Mag, "spec"}};
+            required = {"MAG"};
+            ksyn = "F id JOINT joint MAG spec";
+        } else if (kind == "SPRING") {
+            f.kind = ForceKind::Spring;
+            defs = {{"B1", Arg::Int, "body"}, {"P1", Arg::Vec3, "x y z"}, {"B2", Arg::Int, "body"},
+                    {"P2", Arg::Vec3, "x y z"}, {"K", Arg::Num, "stiffness"}, {"L0", Arg::Num, "length"},
+                    {"C", Arg::Num, "damping"}};
+            required = {"B1", "P1", "B2", "P2", "K", "L0"};
+            ksyn = "F id SPRING B1 i P1 x y z B2 k P2 x y z K k L0 l [C c]";
+        } else if (kind == "AERO") {
+            f.kind = ForceKind::Aero;
+            defs = {{"B", Arg::Int, "body"}, {"P", Arg::Vec3, "x y z"}, {"AREA", Arg::Num, "area"},
+                    {"CD", Arg::Num, "coefficient"}, {"CL", Arg::Num, "coefficient"}, {"RHO", Arg::Num, "density"}};
+            required = {"B", "P", "AREA", "CD"};
+            ksyn = "F id AERO B body P x y z AREA a CD c [CL c] [RHO r]";
+        } else {
+            std::string guess = closest(kind, std::array<std::string_view, 5>{"POINT", "TORQUE", "JOINT", "SPRING", "AERO"});
+            m_d.error("unknown-force-kind", kindTok.pos, ctx + ": unknown force kind '" + kindTok.text + "'",
+                      guess.empty() ? "force kinds are POINT, TORQUE, JOINT, SPRING and AERO"
+                                    : "did you mean '" + guess + "'?");
+            return;
+        }
+        Options opts = options(defs, ctx, "a " + kind + " force", ok);
+        requireOptions(opts, required, ctx, ksyn, f.src.pos, ok);
+        recordPositions(f.src, opts);
+        auto get = [&](const char* k) -> const OptionValue* {
+            auto it = opts.find(k);
+            return it == opts.end() ? nullptr : &it->second;
+        };
+        if (auto v = get("B")) f.body = v->id;
+        if (auto v = get("B1")) f.body = v->id;
+        if (auto v = get("B2")) f.body2 = v->id;
+        if (auto v = get("P")) f.point = v->v;
+        if (auto v = get("P1")) f.point = v->v;
+        if (auto v = get("P2")) f.point2 = v->v;
+        if (auto v = get("DIR")) f.dir = v->v;
+        if (auto v = get("MAG")) f.mag = v->mag;
+        f.local = get("LOCAL") != nullptr;
+        if (auto v = get("K")) f.stiffness = v->num;
+        if (auto v = get("L0")) f.restLength = v->num;
+        if (auto v = get("C")) { f.damping = v->num; f.hasDamping = true; }
+        if (auto v = get("AREA")) f.area = v->num;
+        if (auto v = get("CD")) f.cd = v->num;
+        if (auto v = get("CL")) { f.cl = v->num; f.hasCl = true; }
+        if (auto v = get("RHO")) { f.rho = v->num; f.hasRho = true; }
+        f.src.complete = ok;
+        m_spec.forces.push_back(std::move(f));
+    }
+
+    void parseGraphic()
+    {
+        GraphicSpec g;
+        g.src.pos = m_toks[0].pos;
+        bool ok = true;
+        const std::string syntax = "G id B body SHAPE dimensions… [POS x y z] [AXIS x y z] [ROT ax ay az deg] "
+                                   "[COLOR r g b] [MASS m | RHO density]";
+        auto id = readId("graphic", "the graphic id", ok, syntax);
+        if (!id) return;
+        g.id = *id;
+        const std::string ctx = "graphic " + std::to_string(g.id);
+        if (atEnd() || !peek().is("B")) {
+            m_d.error("missing-option", here(), ctx + ": B body is missing after the id", "write " + syntax);
+            return;
+        }
+        ++m_i;
+        g.src.at["B"] = here();
+        auto body = readId(ctx, "the body id", ok, syntax);
+        g.body = body.value_or(-1);
+        if (atEnd() || !peek().isWord()) {
+            m_d.error("missing-shape", here(), ctx + ": the shape is missing",
+                      "write BOX, CYL, TUBE, SPHERE, CONE, ELLIPSOID, PRISM or MESH and its dimensions");
+            return;
+        }
+        const Token& shapeTok = m_toks[m_i++];
+        std::string shape = upper(shapeTok.text);
+        g.src.at["shape"] = shapeTok.pos;
+        struct ShapeDef { const char* key; ShapeKind kind; int n; const char* dims; };
+        static const std::array<ShapeDef, 8> shapes = {{
+            {"BOX", ShapeKind::Box, 3, "X Y Z"},
+            {"CYL", ShapeKind::Cylinder, 2, "R L"},
+            {"TUBE", ShapeKind::Tube, 3, "RO RI L"},
+            {"SPHERE", ShapeKind::Sphere, 1, "R"},
+            {"CONE", ShapeKind::Cone, 2, "R L"},
+            {"ELLIPSOID", ShapeKind::Ellipsoid, 3, "A B C"},
+            {"PRISM", ShapeKind::Prism, -1, "H x1 y1 x2 y2 x3 y3 …"},
+            {"MESH", ShapeKind::Mesh, 0, "\"file\" [SCALE s]"},
+        }};
+        const ShapeDef* sd = nullptr;
+        for (const ShapeDef& s : shapes) {
+            if (shape == s.key) sd = &s;
+        }
+        if (!sd) {
+            std::vector<std::string_view> names;
+            for (const ShapeDef& s : shapes) names.push_back(s.key);
+            std::string guess = closest(shape, names);
+            m_d.error("unknown-shape", shapeTok.pos, ctx + ": unknown shape '" + shapeTok.text + "'",
+                      guess.empty() ? "shapes are BOX, CYL, TUBE, SPHERE, CONE, ELLIPSOID, PRISM and MESH"
+                                    : "did you mean '" + guess + "'?");
+            return;
+        }
+        g.shape = sd->kind;
+        const std::string dsyn = std::string(sd->key) + " " + sd->dims;
+        g.src.at["dims"] = here();
+        if (sd->n > 0) {
+            for (int k = 0; k < sd->n; ++k) {
+                auto v = number(ctx, std::string(sd->key) + " dimension " + std::to_string(k + 1) + " of " +
+                                         std::to_string(sd->n) + " (" + sd->dims + ")",
+                                ok, dsyn);
+                if (!v && !ok && (atEnd() || !numberLike(peek()))) break;
+                g.dims.push_back(v.value_or(0));
+            }
+        } else if (sd->kind == ShapeKind::Prism) {
+            while (!atEnd() && numberLike(peek())) {
+                auto v = number(ctx, "a PRISM value", ok, dsyn);
+                g.dims.push_back(v.value_or(0));
+            }
+            if (g.dims.size() < 7 || g.dims.size() % 2 == 0) {
+                ok = false;
+                m_d.error("bad-prism", g.src.where("dims"),
+                          ctx + ": PRISM needs its height H and at least three x y vertices, found " +
+                              std::to_string(g.dims.size()) + " numbers",
+                          "write " + dsyn);
+            }
+        } else {  // MESH
+            if (!atEnd() && peek().isString()) {
+                g.meshFile = m_toks[m_i++].text;
+            } else {
+                ok = false;
+                m_d.error("missing-string", here(), ctx + ": MESH needs a file name in double quotes",
+                          "write MESH \"meshes/part.stl\" (relative to the model file)");
+            }
+        }
+        std::vector<OptionDef> defs = {{"POS", Arg::Vec3, "x y z"},    {"AXIS", Arg::Vec3, "x y z"},
+                                       {"ROT", Arg::Num4, "ax ay az deg"}, {"COLOR", Arg::Vec3, "r g b"},
+                                       {"MASS", Arg::Num, "mass"},     {"RHO", Arg::Num, "density"}};
+        if (sd->kind == ShapeKind::Mesh) defs.push_back({"SCALE", Arg::Num, "factor"});
+        Options opts = options(defs, ctx, "a graphic (G)", ok);
+        recordPositions(g.src, opts);
+        auto get = [&](const char* k) -> const OptionValue* {
+            auto it = opts.find(k);
+            return it == opts.end() ? nullptr : &it->second;
+        };
+        if (auto v = get("POS")) { g.position = v->v; g.hasPosition = true; }
+        if (auto v = get("AXIS")) { g.axis = v->v; g.hasAxis = true; }
+        if (auto v = get("ROT")) { g.rotAxis = v->v4.head<3>(); g.rotDeg = v->v4[3]; g.hasRot = true; }
+        if (auto v = get("COLOR")) { g.color = v->v; g.hasColor = true; }
+        if (auto v = get("MASS")) g.mass = v->num;
+        if (auto v = get("RHO")) g.rho = v->num;
+        if (auto v = get("SCALE")) { g.scale = v->num; g.hasScale = true; }
+        if (g.mass && g.rho) {
+            ok = false;
+            m_d.error("mass-and-rho", g.src.where("RHO"), ctx + ": give MASS or RHO, not both",
+                      "MASS is the solid's mass in kg; RHO its density in kg/m³");
+        }
+        g.src.complete = ok;
+        m_spec.graphics.push_back(std::move(g));
+    }
+};
+
+}  // namespace
+
+ModelSpec parseModel(std::string_view text, Diagnostics& diags)
+{
+    ModelSpec spec;
+    Parser parser(spec, diags);
+    int lineNo = 0;
+    std::size_t start = 0;
+    // a UTF-8 byte order mark is not part of the text
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") start = 3;
+    while (start <= text.size()) {
+        std::size_t nl = text.find('\n', start);
+        std::size_t end = nl == std::string_view::npos ? text.size() : nl;
+        std::string_view line = text.substr(start, end - start);
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        ++lineNo;
+        parser.parseLine(line, lineNo);
+        if (nl == std::string_view::npos) break;
+        start = nl + 1;
+    }
+    return spec;
+}
+
+}  // namespace solver::parse
