@@ -1,0 +1,440 @@
+#include "solver/compile/topology.h"
+
+#include "solver/compile/coordinates.h"
+#include "solver/compile/mass_check.h"
+#include "solver/compile/spanning_tree.h"
+#include "solver/kinematics/joint_geometry.h"
+#include "solver/kinematics/loop_closure.h"
+#include "solver/kinematics/positions.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+// The global analysis of a model, in order:
+//   1. spanning tree, cut joints, chains (spanning_tree.cpp)
+//   2. bodies that ground does not reach
+//   3. T 1 lengths: reachable, not constant, no dead point inside the stroke
+//   4. initial configuration: QI, loop-closure rank, dependent coordinates, Newton
+//   5. every joint (or loop) moves mass: the mass matrix at q0 is not singular
+//   6. total mass
+
+namespace solver {
+
+namespace {
+
+constexpr double kLoopTolerance = 1e-10;      // Newton convergence [m, -]
+constexpr double kLoopFailure = 1e-8;         // larger residual: not satisfiable
+constexpr double kRankTolerance = 1e-9;       // relative, on the scaled Φ_θ
+constexpr double kMassTolerance = 1e-12;      // relative eigenvalue tolerance of M
+
+std::string num(double v, int digits = 6)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    return buf;
+}
+
+std::string quoted(const std::string& name) { return name.empty() ? std::string() : " \"" + name + "\""; }
+
+std::string jointLabel(const JointSpec& j) { return "joint " + std::to_string(j.id) + quoted(j.name); }
+
+// "joints 1, 2 and 3"
+std::string jointList(const ModelSpec& spec, const std::vector<int>& joints)
+{
+    std::string out = joints.size() == 1 ? "joint " : "joints ";
+    for (std::size_t i = 0; i < joints.size(); ++i) {
+        if (i > 0) out += i + 1 == joints.size() ? " and " : ", ";
+        out += std::to_string(spec.joints[joints[i]].id) + quoted(spec.joints[joints[i]].name);
+    }
+    return out;
+}
+
+const BodySpec* bodyById(const ModelSpec& spec, int id)
+{
+    for (const BodySpec& b : spec.bodies) {
+        if (b.id == id) return &b;
+    }
+    return nullptr;
+}
+
+bool isDriven(const ModelSpec& spec, int joint)
+{
+    return std::any_of(spec.drives.begin(), spec.drives.end(),
+                       [&](const DriveSpec& d) { return d.joint == spec.joints[joint].id; });
+}
+
+// ---------------------------------------------------------------- bodies
+
+void checkConnected(const ModelSpec& spec, const Topology& topo, const std::vector<bool>& reached,
+                    Diagnostics& diags)
+{
+    for (std::size_t b = 1; b < reached.size(); ++b) {
+        if (reached[b]) continue;
+        const BodySpec* body = bodyById(spec, topo.bodyIds[b]);
+        diags.error("body-not-connected", body ? body->src.pos : SourcePos{},
+                    "body " + std::to_string(topo.bodyIds[b]) + quoted(body ? body->name : "") +
+                        " is not connected to ground: no chain of joints leads from body 0 to it",
+                    "add a joint (C) that connects it to ground or to a connected body");
+    }
+}
+
+// ---------------------------------------------------------------- T 1 actuators
+
+// Checks a T 1 joint's lengths and returns its initial length and angle.
+void analyzeActuator(const JointSpec& joint, const JointGeometry& geometry, Diagnostics& diags,
+                     double& q, double& theta)
+{
+    const ActuatorLengthLaw law = geometry.lengthLaw();
+    const std::string who = "joint " + std::to_string(joint.id) + "'s actuator";
+
+    // constant length: CL1 or CL2 on the axis
+    if (!(law.rho() > 1e-9 * std::max(law.c0, 1e-12))) {
+        diags.error("actuator-constant-length", joint.src.where("CL1"),
+                    who + " keeps the same length " + num(law.length(0)) +
+                        " m whatever the joint angle: CL1 or CL2 lies on the joint axis A, so the "
+                        "actuator cannot turn the joint",
+                    "place CL1 (on body " + std::to_string(joint.side1.body) + ") and CL2 (on body " +
+                        std::to_string(joint.side2.body) +
+                        ") away from the joint axis, so that the actuator length changes as the joint turns");
+        q = joint.qi.value_or(law.length(0));
+        theta = 0;
+        return;
+    }
+
+    const double lmin = law.minLength(), lmax = law.maxLength();
+    const double tol = 1e-9 * std::max(1.0, lmax);
+    const std::string range = "(" + num(lmin) + " m .. " + num(lmax) + " m)";
+    auto reachable = [&](double v) { return v >= lmin - tol && v <= lmax + tol; };
+
+    // LL, UL, QI within reach
+    struct Limit { const char* key; const std::optional<double>& value; };
+    for (const Limit& lim : {Limit{"LL", joint.ll}, Limit{"UL", joint.ul}, Limit{"QI", joint.qi}}) {
+        if (!lim.value || reachable(*lim.value)) continue;
+        std::string hint = "the actuator length |CL2 − CL1| goes from " + num(lmin) + " m to " +
+                           num(lmax) + " m as the joint turns; choose " + lim.key +
+                           " within that range, or check CL1, CL2 and the joint points P1, P2";
+        if (std::string_view(lim.key) == "QI") {
+            hint += " (a reachable QI is taken at the joint angle nearest to 0)";
+        }
+        diags.error("actuator-unreachable", joint.src.where(lim.key),
+                    std::string(lim.key) + " = " + num(*lim.value) + " m is beyond the reach of " + who +
+                        " " + range,
+                    hint);
+    }
+
+    // the stroke: written limits, else the reachable range
+    const double lo = std::clamp(joint.ll.value_or(lmin), lmin, lmax);
+    const double hi = std::clamp(joint.ul.value_or(lmax), lmin, lmax);
+    q = joint.qi && reachable(*joint.qi) ? std::clamp(*joint.qi, lmin, lmax) : 0.5 * (lo + hi);
+    theta = law.angle(q).value_or(0);
+    if (joint.qi && !reachable(*joint.qi)) q = *joint.qi;  // keep what was written
+
+    // dead points (dL/dθ = 0) strictly inside (LL, UL)
+    const double strokeLo = joint.ll.value_or(-INFINITY);
+    const double strokeHi = joint.ul.value_or(INFINITY);
+    struct Extremum { double length; double angle; const char* which; const char* limit; bool upper; };
+    for (const Extremum& e : {Extremum{lmax, law.angleOfMaxLength(), "longest", "UL", true},
+                              Extremum{lmin, law.angleOfMinLength(), "shortest", "LL", false}}) {
+        if (!(e.length > strokeLo + tol && e.length < strokeHi - tol)) continue;
+        const bool unlimited = e.upper ? !joint.ul : !joint.ll;
+        std::string msg = who + " reaches a dead point inside its stroke: its length is " + e.which +
+                          " (" + num(e.length) + " m) at joint angle " + num(e.angle) + " rad";
+        msg += unlimited ? std::string(", and no ") + e.limit + " stops it before"
+                         : ", between LL and UL";
+        diags.warning("actuator-dead-point", joint.src.pos, msg,
+                      std::string("the cylinder cannot drive the joint through that point (dL/dθ = 0 "
+                                  "there); set ") +
+                          e.limit + (e.upper ? " below " : " above ") + num(e.length) + " m");
+    }
+}
+
+// ---------------------------------------------------------------- loops
+
+// Size of the mechanism: the diagonal of the box around the world joint points [m].
+double lengthScale(const Topology& topo, const std::vector<JointGeometry>& geometry,
+                   const std::vector<Eigen::Isometry3d>& X_wb)
+{
+    Eigen::AlignedBox3d box;
+    auto add = [&](int j) {
+        box.extend(X_wb[topo.side1Body[j]] * geometry[j].side1.origin);
+        box.extend(X_wb[topo.side2Body[j]] * geometry[j].side2.origin);
+    };
+    for (int j : topo.treeJoints) add(j);
+    for (int j : topo.loopJoints) add(j);
+    const double d = box.isEmpty() ? 0.0 : box.diagonal().norm();
+    return d > 1e-9 ? d : 1.0;
+}
+
+// Φ_θ with length rows divided by the scale and prismatic columns multiplied by it.
+Eigen::MatrixXd scaledJacobian(const Topology& topo, const std::vector<JointGeometry>& geometry,
+                               const Eigen::MatrixXd& jac, double scale)
+{
+    Eigen::MatrixXd js = jac;
+    for (std::size_t k = 0; k < topo.loopJoints.size(); ++k) {
+        const JointType type = geometry[topo.loopJoints[k]].type;
+        for (int r = 0; r < kClosureEquations; ++r) {
+            if (closureRowIsLength(type, r)) js.row(kClosureEquations * k + r) /= scale;
+        }
+    }
+    for (std::size_t c = 0; c < topo.treeJoints.size(); ++c) {
+        if (geometry[topo.treeJoints[c]].type == JointType::Prismatic) js.col(c) *= scale;
+    }
+    return js;
+}
+
+void reportUnsatisfiedLoops(const ModelSpec& spec, const Topology& topo,
+                            const std::vector<JointGeometry>& geometry, const Eigen::VectorXd& residual,
+                            const Eigen::MatrixXd& jac, const std::vector<int>& independentCols,
+                            Diagnostics& diags)
+{
+    // the cut joints whose own equations are not met (at least the worst one)
+    std::vector<std::size_t> failed;
+    std::size_t worst = 0;
+    for (std::size_t k = 0; k < topo.loopJoints.size(); ++k) {
+        const double r = residual.segment<kClosureEquations>(kClosureEquations * k).norm();
+        if (r > kLoopFailure) failed.push_back(k);
+        if (r > residual.segment<kClosureEquations>(kClosureEquations * worst).norm()) worst = k;
+    }
+    if (failed.empty()) failed.push_back(worst);
+
+    for (std::size_t k : failed) {
+        const int c = topo.loopJoints[k];
+        const JointSpec& joint = spec.joints[c];
+        const Eigen::Matrix<double, kClosureEquations, 1> rows =
+            residual.segment<kClosureEquations>(kClosureEquations * k);
+
+        // what is off: distance and angle parts
+        std::string detail;
+        double gap = 0, angle = 0;
+        if (geometry[c].type == JointType::Prismatic) {
+            angle = rows.head<3>().norm();
+            gap = rows.tail<2>().norm();
+        } else {
+            gap = rows.head<3>().norm();
+            angle = rows.tail<2>().norm();
+        }
+        const bool prismatic = geometry[c].type == JointType::Prismatic;
+        if (gap > kLoopFailure) {
+            detail += prismatic ? "P2 lies " + num(gap, 3) + " m off the sliding line through P1"
+                                : "P1 and P2 stay " + num(gap, 3) + " m apart";
+        }
+        if (angle > kLoopFailure) {
+            if (!detail.empty()) detail += ", ";
+            detail += prismatic ? "the joint frames are turned by about " + num(std::asin(std::min(1.0, angle)), 3) +
+                                      " rad"
+                                : "the axes A1 and A2 are " + num(std::asin(std::min(1.0, angle)), 3) +
+                                      " rad out of line";
+        }
+
+        // the independent coordinates that move this loop
+        std::vector<int> drivers;
+        for (int col : independentCols) {
+            if (jac.block<kClosureEquations, 1>(kClosureEquations * k, col).norm() > 1e-12) {
+                drivers.push_back(topo.treeJoints[col]);
+            }
+        }
+        std::sort(drivers.begin(), drivers.end());
+        std::string hint = "check the joint points P1, P2 and the link lengths of the loop";
+        if (!drivers.empty()) hint += ", and the QI of its independent coordinates (" + jointList(spec, drivers) + ")";
+
+        diags.error("loop-unsatisfiable", joint.src.pos,
+                    "the loop closed by " + jointLabel(joint) +
+                        " cannot be assembled at the initial configuration: its closure equations keep "
+                        "a residual of " +
+                        num(rows.norm(), 3) + (detail.empty() ? "" : " (" + detail + ")"),
+                    hint);
+    }
+}
+
+// ---------------------------------------------------------------- mass
+
+void checkMass(const ModelSpec& spec, const Topology& topo, const Eigen::MatrixXd& massTree,
+               const Eigen::MatrixXd& g, const std::vector<int>& independentCols, Diagnostics& diags)
+{
+    const Eigen::MatrixXd m = g.transpose() * massTree * g;
+    const auto n = m.rows();
+    if (n == 0) return;
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> all(m, Eigen::EigenvaluesOnly);
+    const double tol = kMassTolerance * std::max(1.0, all.eigenvalues().maxCoeff());
+    if (all.eigenvalues().minCoeff() >= tol) return;
+
+    const std::string hint = "give the bodies it moves a mass (B id m Ixx Iyy Izz), or remove the joint";
+    auto jointOf = [&](Eigen::Index i) { return topo.treeJoints[independentCols[i]]; };
+
+    // single joints that move nothing with mass
+    std::vector<Eigen::Index> rest;
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (m(i, i) >= tol) {
+            rest.push_back(i);
+            continue;
+        }
+        const int j = jointOf(i);
+        const JointSpec& joint = spec.joints[j];
+
+        // the dependent joints this one drives through loops
+        std::vector<int> carried;
+        for (Eigen::Index r = 0; r < g.rows(); ++r) {
+            if (r != independentCols[i] && std::abs(g(r, i)) > 1e-9) carried.push_back(topo.treeJoints[r]);
+        }
+        std::sort(carried.begin(), carried.end());
+        std::string who = jointLabel(joint);
+        if (!carried.empty()) who += " and the loop it drives (" + jointList(spec, carried) + ")";
+        const std::string why = joint.type == JointType::Prismatic
+                                    ? "the bodies it moves have no mass"
+                                    : "the bodies it moves have no mass, or only mass on its axis and no "
+                                      "inertia about it";
+        diags.error("joint-moves-no-mass", joint.src.pos,
+                    who + (carried.empty() ? " moves" : " move") + " no mass: " + why +
+                        ", so the mass matrix is singular at the initial configuration",
+                    hint);
+    }
+    if (rest.empty()) return;
+
+    // combinations of joints that together move nothing with mass
+    const auto nr = static_cast<Eigen::Index>(rest.size());
+    Eigen::MatrixXd mr(nr, nr);
+    for (Eigen::Index a = 0; a < nr; ++a) {
+        for (Eigen::Index b = 0; b < nr; ++b) mr(a, b) = m(rest[a], rest[b]);
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(mr);
+    std::vector<int> reported;
+    for (Eigen::Index e = 0; e < nr; ++e) {
+        if (eig.eigenvalues()[e] >= tol) continue;
+        const Eigen::VectorXd v = eig.eigenvectors().col(e);
+        const double vmax = v.cwiseAbs().maxCoeff();
+        std::vector<int> joints;
+        std::string rates;
+        for (Eigen::Index a = 0; a < nr; ++a) {
+            if (std::abs(v[a]) < 0.5 * vmax) continue;
+            joints.push_back(jointOf(rest[a]));
+        }
+        std::sort(joints.begin(), joints.end());
+        for (Eigen::Index a = 0; a < nr; ++a) {
+            if (std::abs(v[a]) < 1e-9 * vmax) continue;
+            if (!rates.empty()) rates += ", ";
+            rates += "joint " + std::to_string(spec.joints[jointOf(rest[a])].id) + " at " + num(v[a] / vmax, 3);
+        }
+        for (int j : joints) {
+            if (std::find(reported.begin(), reported.end(), j) != reported.end()) continue;
+            reported.push_back(j);
+            diags.error("joint-moves-no-mass", spec.joints[j].src.pos,
+                        jointList(spec, joints) +
+                            " together move no mass: moving them at the rates " + rates +
+                            " leaves every body with mass at rest, so the mass matrix is singular at "
+                            "the initial configuration",
+                        hint);
+        }
+    }
+}
+
+}  // namespace
+
+std::optional<Topology> analyzeTopology(const ModelSpec& spec, Diagnostics& diags)
+{
+    const std::size_t errorsBefore = diags.errorCount();
+    const std::size_t nj = spec.joints.size();
+
+    // 1-2. spanning tree; bodies that ground does not reach
+    Topology topo;
+    const std::vector<bool> reached = buildSpanningTree(spec, topo);
+    checkConnected(spec, topo, reached, diags);
+
+    // 3. joint geometry, T 1 checks, QI
+    std::vector<JointGeometry> geometry(nj);
+    Eigen::VectorXd theta = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(nj));
+    topo.q0.assign(nj, 0.0);
+    for (std::size_t j = 0; j < nj; ++j) {
+        const JointSpec& joint = spec.joints[j];
+        geometry[j] = makeJointGeometry(joint);
+        if (joint.type == JointType::Actuator) {
+            analyzeActuator(joint, geometry[j], diags, topo.q0[j], theta[j]);
+        } else {
+            topo.q0[j] = joint.qi.value_or(0.0);
+            theta[j] = topo.q0[j];
+        }
+    }
+
+    // 4. loops: rank, dependent coordinates, assembly at QI
+    const auto nt = static_cast<Eigen::Index>(topo.treeJoints.size());
+    std::vector<int> independentCols, dependentCols;
+    Eigen::MatrixXd jac;
+    std::vector<Eigen::Isometry3d> X_wb = bodyPoses(topo, geometry, theta);
+    if (!topo.loopJoints.empty() && nt > 0) {
+        closureJacobian(topo, geometry, X_wb, jac);
+        const double scale = lengthScale(topo, geometry, X_wb);
+
+        // preference for dependent: undriven before driven, later in the file first
+        std::vector<int> preference(static_cast<std::size_t>(nt));
+        for (Eigen::Index c = 0; c < nt; ++c) preference[c] = static_cast<int>(c);
+        std::sort(preference.begin(), preference.end(), [&](int a, int b) {
+            const int ja = topo.treeJoints[a], jb = topo.treeJoints[b];
+            const bool da = isDriven(spec, ja), db = isDriven(spec, jb);
+            if (da != db) return !da;
+            return ja > jb;
+        });
+        const CoordinatePartition part =
+            partitionCoordinates(scaledJacobian(topo, geometry, jac, scale), preference, kRankTolerance);
+        independentCols = part.independent;
+        dependentCols = part.dependent;
+        topo.closureRank = part.rank;
+
+        // Newton on the dependent coordinates, starting from their QI
+        std::vector<int> unknowns;
+        for (int c : dependentCols) unknowns.push_back(topo.treeJoints[c]);
+        ClosureSolveOptions options;
+        options.tolerance = kLoopTolerance;
+        options.lengthScale = scale;
+        const ClosureSolveResult solved = solveClosure(topo, geometry, unknowns, theta, options);
+        bodyPoses(topo, geometry, theta, X_wb);
+        closureJacobian(topo, geometry, X_wb, jac);
+        if (solved.residualNorm > kLoopFailure) {
+            reportUnsatisfiedLoops(spec, topo, geometry, solved.residual, jac, independentCols, diags);
+        }
+        for (int j : unknowns) topo.q0[j] = geometry[j].coordinateFromKinematic(theta[j]);
+    } else {
+        for (Eigen::Index c = 0; c < nt; ++c) independentCols.push_back(static_cast<int>(c));
+        jac.setZero(0, nt);
+    }
+    for (int c : independentCols) topo.independent.push_back(topo.treeJoints[c]);
+    for (int c : dependentCols) topo.dependent.push_back(topo.treeJoints[c]);
+    std::sort(topo.independent.begin(), topo.independent.end());
+    std::sort(topo.dependent.begin(), topo.dependent.end());
+    topo.dof = static_cast<int>(nt) - topo.closureRank;
+
+    // cut joints' own coordinates, measured at the assembled configuration
+    for (int c : topo.loopJoints) {
+        const Eigen::Isometry3d& X_w1 = X_wb[topo.side1Body[c]];
+        const Eigen::Isometry3d& X_w2 = X_wb[topo.side2Body[c]];
+        theta[c] = geometry[c].measureKinematic(X_w1, X_w2);
+        topo.q0[c] = geometry[c].measureCoordinate(X_w1, X_w2);
+    }
+    topo.theta0.assign(theta.data(), theta.data() + theta.size());
+
+    // 5. the mass matrix at q0, on the independent coordinates
+    std::vector<BodyInertia> inertia(topo.bodyIds.size());
+    for (std::size_t b = 1; b < topo.bodyIds.size(); ++b) {
+        const BodySpec* body = bodyById(spec, topo.bodyIds[b]);
+        if (!body || !body->hasMass) continue;
+        inertia[b].mass = body->mass;
+        inertia[b].cg = body->cg;
+        inertia[b].inertia = body->inertiaTensor();
+    }
+    if (nt > 0) {
+        const Eigen::MatrixXd massTree = treeMassMatrix(topo, geometry, X_wb, inertia);
+        const Eigen::MatrixXd g = nullSpaceBasis(jac.rows() > 0 ? jac : Eigen::MatrixXd::Zero(0, nt),
+                                                 independentCols, dependentCols);
+        checkMass(spec, topo, massTree, g, independentCols, diags);
+    }
+
+    // 6. total mass
+    for (std::size_t b = 1; b < topo.bodyIds.size(); ++b) topo.totalMass += inertia[b].mass;
+
+    if (diags.errorCount() > errorsBefore) return std::nullopt;
+    return topo;
+}
+
+}  // namespace solver
