@@ -11,7 +11,7 @@
 
 namespace {
 
-struct Run {
+struct CliRun {
     int status = -1;
     std::string out;  // stdout
     std::string err;  // stderr
@@ -24,14 +24,14 @@ std::string slurp(const std::string& path)
 }
 
 /// Runs `padrob ARGS` in the source tree; captures stdout, stderr and the exit status.
-Run padrob(const std::string& args)
+CliRun padrob(const std::string& args)
 {
     static int counter = 0;
     const auto dir = std::filesystem::temp_directory_path() / ("padrob_cli_test_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     const std::string errFile = (dir / ("err" + std::to_string(counter++))).string();
     const std::string cmd = std::string("cd '") + PADROB_SOURCE_DIR + "' && '" + PADROB_CLI + "' " + args + " 2>'" + errFile + "'";
-    Run r;
+    CliRun r;
     FILE* p = popen(cmd.c_str(), "r");
     if (!p) return r;
     std::array<char, 4096> buf;
@@ -57,17 +57,17 @@ std::string writeTemp(const std::string& name, const std::string& text)
 
 TEST(Cli, VersionAndHelp)
 {
-    Run v = padrob("--version");
+    CliRun v = padrob("--version");
     EXPECT_EQ(v.status, 0);
     EXPECT_EQ(v.out, std::string("padrob ") + PADROB_VERSION + "\n");
-    Run h = padrob("--help");
+    CliRun h = padrob("--help");
     EXPECT_EQ(h.status, 0);
     EXPECT_NE(h.out.find("check MODEL..."), std::string::npos);
     EXPECT_NE(h.out.find("info MODEL [--json]"), std::string::npos);
-    Run hc = padrob("check --help");
+    CliRun hc = padrob("check --help");
     EXPECT_EQ(hc.status, 0);
     EXPECT_NE(hc.out.find("file:line:column: error|warning: message [hint]"), std::string::npos);
-    Run hi = padrob("info --help");
+    CliRun hi = padrob("info --help");
     EXPECT_EQ(hi.status, 0);
     EXPECT_NE(hi.out.find("--json"), std::string::npos);
 }
@@ -75,7 +75,7 @@ TEST(Cli, VersionAndHelp)
 TEST(Cli, UsageErrorsExitTwo)
 {
     EXPECT_EQ(padrob("").status, 2);
-    Run u = padrob("frobnicate");
+    CliRun u = padrob("frobnicate");
     EXPECT_EQ(u.status, 2);
     EXPECT_NE(u.err.find("unknown command 'frobnicate'"), std::string::npos);
     EXPECT_EQ(padrob("check").status, 2);
@@ -86,10 +86,10 @@ TEST(Cli, UsageErrorsExitTwo)
 
 TEST(Cli, CheckUnreadableFilesExitTwo)
 {
-    Run missing = padrob("check /nonexistent/model.pad");
+    CliRun missing = padrob("check /nonexistent/model.pad");
     EXPECT_EQ(missing.status, 2);
     EXPECT_EQ(missing.out.rfind("/nonexistent/model.pad: error: no such file [check the path]\n", 0), 0u) << missing.out;
-    Run dir = padrob("check models");
+    CliRun dir = padrob("check models");
     EXPECT_EQ(dir.status, 2);
     EXPECT_NE(dir.out.find("models: error: this is a folder, not a model file"), std::string::npos) << dir.out;
 }
@@ -103,7 +103,7 @@ TEST(Cli, CheckReportsEveryErrorInCompilerFormat)
                                        "C 1\n"
                                        "B1 0 P1 0 0 0 A1 0 0 1 R1 0 1 0\n"
                                        "B2 7 P2 0 0 0 A2 0 0 1 R2 0 1 0\n");
-    Run r = padrob("check '" + path + "'");
+    CliRun r = padrob("check '" + path + "'");
     EXPECT_EQ(r.status, 1);
     EXPECT_EQ(r.out, path + ":2:5: error: body 1: '2,5' is not a number [use '.' as the decimal separator: 2.5]\n" +
                          path + ":3:1: error: unknown keyword 'FOO' [statements are GRAVITY, B, C (with B1, B2, CL1), D, F and G; "
@@ -119,11 +119,11 @@ TEST(Cli, CheckAcceptsWarningsAndSeveralFiles)
                                        "C 1\n"
                                        "B1 0 P1 0 0 0 A1 1 0 0 R1 0 1 0\n"
                                        "B2 1 P2 0 0 0.5 A2 1 0 0 R2 0 1 0\n");
-    Run r = padrob("check '" + good + "'");
+    CliRun r = padrob("check '" + good + "'");
     EXPECT_EQ(r.status, 0) << r.out;
     EXPECT_NE(r.out.find(good + ":1:7: warning: "), std::string::npos) << r.out;
     EXPECT_NE(r.out.find(good + ": ok (1 warning)\n"), std::string::npos) << r.out;
-    Run both = padrob("check '" + good + "' /nonexistent.pad");
+    CliRun both = padrob("check '" + good + "' /nonexistent.pad");
     EXPECT_EQ(both.status, 2);
 }
 
@@ -131,7 +131,7 @@ TEST(Cli, CheckBundledModelsHaveNoErrors)
 {
     for (const auto& e : std::filesystem::directory_iterator(std::string(PADROB_SOURCE_DIR) + "/models")) {
         if (e.path().extension() != ".pad") continue;
-        Run r = padrob("check '" + e.path().string() + "'");
+        CliRun r = padrob("check '" + e.path().string() + "'");
         EXPECT_EQ(r.status, 0) << e.path() << "\n" << r.out;
         EXPECT_EQ(r.out.find(": error: "), std::string::npos) << r.out;
     }
@@ -139,7 +139,7 @@ TEST(Cli, CheckBundledModelsHaveNoErrors)
 
 TEST(Cli, InfoOnTheLinerManipulator)
 {
-    Run r = padrob("info models/liner_manipulator.pad");
+    CliRun r = padrob("info models/liner_manipulator.pad");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("total mass 1314 kg"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("Degrees of freedom: 9\n"), std::string::npos) << r.out;
@@ -152,7 +152,7 @@ TEST(Cli, InfoOnTheLinerManipulator)
 
 TEST(Cli, InfoJsonIsStable)
 {
-    Run r = padrob("info --json models/liner_manipulator.pad");
+    CliRun r = padrob("info --json models/liner_manipulator.pad");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.out.rfind("{\n  \"format\": \"padrob-info\",\n  \"version\": 1,\n  \"file\": \"models/liner_manipulator.pad\",", 0), 0u)
         << r.out.substr(0, 200);
@@ -165,7 +165,7 @@ TEST(Cli, InfoJsonIsStable)
 
 TEST(Cli, InfoOnALoopShowsDependentCoordinates)
 {
-    Run r = padrob("info --json models/four_bar.pad");
+    CliRun r = padrob("info --json models/four_bar.pad");
     ASSERT_EQ(r.status, 0) << r.err << r.out;
     EXPECT_NE(r.out.find("\"dof\": 1,"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("\"role\": \"loop-closure\""), std::string::npos);
@@ -175,7 +175,7 @@ TEST(Cli, InfoOnALoopShowsDependentCoordinates)
 TEST(Cli, InfoOnABrokenModelPrintsItsErrors)
 {
     const std::string bad = writeTemp("broken.pad", "B 1 -5 1 1 1\n");
-    Run r = padrob("info '" + bad + "'");
+    CliRun r = padrob("info '" + bad + "'");
     EXPECT_EQ(r.status, 1);
     EXPECT_EQ(r.out, "");
     EXPECT_NE(r.err.find(bad + ":1:5: error: body 1 has a negative mass (-5 kg)"), std::string::npos) << r.err;
