@@ -13,9 +13,9 @@ namespace solver {
 int numericalRank(const Eigen::MatrixXd& m, double relTol = 1e-9);
 
 struct CoordinatePartition {
-    std::vector<int> dependent;    ///< column indices, in the order they were chosen
+    std::vector<int> dependent;  ///< column indices, in the order they were chosen
     std::vector<int> independent;  ///< the other column indices, increasing
-    int rank = 0;                  ///< rank of the whole matrix
+    int rank = 0;  ///< rank of the whole matrix
 };
 
 /// Splits the columns of a constraint Jacobian Φ_θ (rows: equations, columns: tree

@@ -12,7 +12,10 @@ namespace {
 // union-find over body indices, with path halving
 class DisjointSets {
 public:
-    explicit DisjointSets(std::size_t n) : m_parent(n) { std::iota(m_parent.begin(), m_parent.end(), 0); }
+    explicit DisjointSets(std::size_t n) : m_parent(n)
+    {
+        std::iota(m_parent.begin(), m_parent.end(), 0);
+    }
 
     int find(int x)
     {

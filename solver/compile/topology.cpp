@@ -26,10 +26,12 @@ namespace solver {
 
 namespace {
 
-constexpr double kLoopTolerance = 1e-10;      // Newton convergence [m, -]
-constexpr double kLoopFailure = 1e-8;         // larger residual: not satisfiable
-constexpr double kRankTolerance = 1e-9;       // relative, on the scaled Φ_θ
-constexpr double kMassTolerance = 1e-12;      // relative eigenvalue tolerance of M
+constexpr double kLoopTolerance = 1e-10;  // Newton convergence [m, -]
+constexpr double kLoopFailure = 1e-8;  // larger residual: not satisfiable
+constexpr double kRankTolerance = 1e-9;  // relative, on the scaled Φ_θ
+constexpr double kMassTolerance = 1e-12;  // relative eigenvalue tolerance of M
+// above this many tree joints the mass check looks at M's diagonal only (O(n), not O(n³))
+constexpr Eigen::Index kDenseMassCheckLimit = 1500;
 
 std::string num(double v, int digits = 6)
 {
@@ -38,9 +40,15 @@ std::string num(double v, int digits = 6)
     return buf;
 }
 
-std::string quoted(const std::string& name) { return name.empty() ? std::string() : " \"" + name + "\""; }
+std::string quoted(const std::string& name)
+{
+    return name.empty() ? std::string() : " \"" + name + "\"";
+}
 
-std::string jointLabel(const JointSpec& j) { return "joint " + std::to_string(j.id) + quoted(j.name); }
+std::string jointLabel(const JointSpec& j)
+{
+    return "joint " + std::to_string(j.id) + quoted(j.name);
+}
 
 // "joints 1, 2 and 3"
 std::string jointList(const ModelSpec& spec, const std::vector<int>& joints)
@@ -97,9 +105,10 @@ void analyzeActuator(const JointSpec& joint, const JointGeometry& geometry, Diag
                     who + " keeps the same length " + num(law.length(0)) +
                         " m whatever the joint angle: CL1 or CL2 lies on the joint axis A, so the "
                         "actuator cannot turn the joint",
-                    "place CL1 (on body " + std::to_string(joint.side1.body) + ") and CL2 (on body " +
-                        std::to_string(joint.side2.body) +
-                        ") away from the joint axis, so that the actuator length changes as the joint turns");
+                    "place CL1 (on body " + std::to_string(joint.side1.body) +
+                        ") and CL2 (on body " + std::to_string(joint.side2.body) +
+                        ") away from the joint axis, so that the actuator length changes as the "
+                        "joint turns");
         q = joint.qi.value_or(law.length(0));
         theta = 0;
         return;
@@ -111,7 +120,10 @@ void analyzeActuator(const JointSpec& joint, const JointGeometry& geometry, Diag
     auto reachable = [&](double v) { return v >= lmin - tol && v <= lmax + tol; };
 
     // LL, UL, QI within reach
-    struct Limit { const char* key; const std::optional<double>& value; };
+    struct Limit {
+        const char* key;
+        const std::optional<double>& value;
+    };
     for (const Limit& lim : {Limit{"LL", joint.ll}, Limit{"UL", joint.ul}, Limit{"QI", joint.qi}}) {
         if (!lim.value || reachable(*lim.value)) continue;
         std::string hint = "the actuator length |CL2 − CL1| goes from " + num(lmin) + " m to " +
@@ -121,8 +133,8 @@ void analyzeActuator(const JointSpec& joint, const JointGeometry& geometry, Diag
             hint += " (a reachable QI is taken at the joint angle nearest to 0)";
         }
         diags.error("actuator-unreachable", joint.src.where(lim.key),
-                    std::string(lim.key) + " = " + num(*lim.value) + " m is beyond the reach of " + who +
-                        " " + range,
+                    std::string(lim.key) + " = " + num(*lim.value) + " m is beyond the reach of " +
+                        who + " " + range,
                     hint);
     }
 
@@ -134,21 +146,30 @@ void analyzeActuator(const JointSpec& joint, const JointGeometry& geometry, Diag
     if (joint.qi && !reachable(*joint.qi)) q = *joint.qi;  // keep what was written
 
     // dead points (dL/dθ = 0) strictly inside (LL, UL)
-    const double strokeLo = joint.ll.value_or(-INFINITY);
-    const double strokeHi = joint.ul.value_or(INFINITY);
-    struct Extremum { double length; double angle; const char* which; const char* limit; bool upper; };
+    // (limits out of reach, already reported, count as the reachable ends)
+    const double strokeLo = joint.ll ? lo : -INFINITY;
+    const double strokeHi = joint.ul ? hi : INFINITY;
+    struct Extremum {
+        double length;
+        double angle;
+        const char* which;
+        const char* limit;
+        bool upper;
+    };
     for (const Extremum& e : {Extremum{lmax, law.angleOfMaxLength(), "longest", "UL", true},
                               Extremum{lmin, law.angleOfMinLength(), "shortest", "LL", false}}) {
         if (!(e.length > strokeLo + tol && e.length < strokeHi - tol)) continue;
         const bool unlimited = e.upper ? !joint.ul : !joint.ll;
-        std::string msg = who + " reaches a dead point inside its stroke: its length is " + e.which +
-                          " (" + num(e.length) + " m) at joint angle " + num(e.angle) + " rad";
+        std::string msg = who + " reaches a dead point inside its stroke: its length is " +
+                          e.which + " (" + num(e.length) + " m) at joint angle " + num(e.angle) +
+                          " rad";
         msg += unlimited ? std::string(", and no ") + e.limit + " stops it before"
                          : ", between LL and UL";
-        diags.warning("actuator-dead-point", joint.src.pos, msg,
-                      std::string("the cylinder cannot drive the joint through that point (dL/dθ = 0 "
-                                  "there); set ") +
-                          e.limit + (e.upper ? " below " : " above ") + num(e.length) + " m");
+        diags.warning(
+            "actuator-dead-point", joint.src.pos, msg,
+            std::string("the cylinder cannot drive the joint through that point (dL/dθ = 0 "
+                        "there); set ") +
+                e.limit + (e.upper ? " below " : " above ") + num(e.length) + " m");
     }
 }
 
@@ -187,9 +208,9 @@ Eigen::MatrixXd scaledJacobian(const Topology& topo, const std::vector<JointGeom
 }
 
 void reportUnsatisfiedLoops(const ModelSpec& spec, const Topology& topo,
-                            const std::vector<JointGeometry>& geometry, const Eigen::VectorXd& residual,
-                            const Eigen::MatrixXd& jac, const std::vector<int>& independentCols,
-                            Diagnostics& diags)
+                            const std::vector<JointGeometry>& geometry,
+                            const Eigen::VectorXd& residual, const Eigen::MatrixXd& jac,
+                            const std::vector<int>& independentCols, Diagnostics& diags)
 {
     // the cut joints whose own equations are not met (at least the worst one)
     std::vector<std::size_t> failed;
@@ -224,10 +245,10 @@ void reportUnsatisfiedLoops(const ModelSpec& spec, const Topology& topo,
         }
         if (angle > kLoopFailure) {
             if (!detail.empty()) detail += ", ";
-            detail += prismatic ? "the joint frames are turned by about " + num(std::asin(std::min(1.0, angle)), 3) +
-                                      " rad"
-                                : "the axes A1 and A2 are " + num(std::asin(std::min(1.0, angle)), 3) +
-                                      " rad out of line";
+            detail += prismatic ? "the joint frames are turned by about " +
+                                      num(std::asin(std::min(1.0, angle)), 3) + " rad"
+                                : "the axes A1 and A2 are " +
+                                      num(std::asin(std::min(1.0, angle)), 3) + " rad out of line";
         }
 
         // the independent coordinates that move this loop
@@ -239,21 +260,26 @@ void reportUnsatisfiedLoops(const ModelSpec& spec, const Topology& topo,
         }
         std::sort(drivers.begin(), drivers.end());
         std::string hint = "check the joint points P1, P2 and the link lengths of the loop";
-        if (!drivers.empty()) hint += ", and the QI of its independent coordinates (" + jointList(spec, drivers) + ")";
+        if (!drivers.empty()) {
+            hint +=
+                ", and the QI of its independent coordinates (" + jointList(spec, drivers) + ")";
+        }
 
-        diags.error("loop-unsatisfiable", joint.src.pos,
-                    "the loop closed by " + jointLabel(joint) +
-                        " cannot be assembled at the initial configuration: its closure equations keep "
-                        "a residual of " +
-                        num(rows.norm(), 3) + (detail.empty() ? "" : " (" + detail + ")"),
-                    hint);
+        diags.error(
+            "loop-unsatisfiable", joint.src.pos,
+            "the loop closed by " + jointLabel(joint) +
+                " cannot be assembled at the initial configuration: its closure equations keep "
+                "a residual of " +
+                num(rows.norm(), 3) + (detail.empty() ? "" : " (" + detail + ")"),
+            hint);
     }
 }
 
 // ---------------------------------------------------------------- mass
 
 void checkMass(const ModelSpec& spec, const Topology& topo, const Eigen::MatrixXd& massTree,
-               const Eigen::MatrixXd& g, const std::vector<int>& independentCols, Diagnostics& diags)
+               const Eigen::MatrixXd& g, const std::vector<int>& independentCols,
+               Diagnostics& diags)
 {
     const Eigen::MatrixXd m = g.transpose() * massTree * g;
     const auto n = m.rows();
@@ -262,7 +288,8 @@ void checkMass(const ModelSpec& spec, const Topology& topo, const Eigen::MatrixX
     const double tol = kMassTolerance * std::max(1.0, all.eigenvalues().maxCoeff());
     if (all.eigenvalues().minCoeff() >= tol) return;
 
-    const std::string hint = "give the bodies it moves a mass (B id m Ixx Iyy Izz), or remove the joint";
+    const std::string hint =
+        "give the bodies it moves a mass (B id m Ixx Iyy Izz), or remove the joint";
     auto jointOf = [&](Eigen::Index i) { return topo.treeJoints[independentCols[i]]; };
 
     // single joints that move nothing with mass
@@ -278,15 +305,17 @@ void checkMass(const ModelSpec& spec, const Topology& topo, const Eigen::MatrixX
         // the dependent joints this one drives through loops
         std::vector<int> carried;
         for (Eigen::Index r = 0; r < g.rows(); ++r) {
-            if (r != independentCols[i] && std::abs(g(r, i)) > 1e-9) carried.push_back(topo.treeJoints[r]);
+            if (r != independentCols[i] && std::abs(g(r, i)) > 1e-9)
+                carried.push_back(topo.treeJoints[r]);
         }
         std::sort(carried.begin(), carried.end());
         std::string who = jointLabel(joint);
         if (!carried.empty()) who += " and the loop it drives (" + jointList(spec, carried) + ")";
-        const std::string why = joint.type == JointType::Prismatic
-                                    ? "the bodies it moves have no mass"
-                                    : "the bodies it moves have no mass, or only mass on its axis and no "
-                                      "inertia about it";
+        const std::string why =
+            joint.type == JointType::Prismatic
+                ? "the bodies it moves have no mass"
+                : "the bodies it moves have no mass, or only mass on its axis and no "
+                  "inertia about it";
         diags.error("joint-moves-no-mass", joint.src.pos,
                     who + (carried.empty() ? " moves" : " move") + " no mass: " + why +
                         ", so the mass matrix is singular at the initial configuration",
@@ -304,29 +333,31 @@ void checkMass(const ModelSpec& spec, const Topology& topo, const Eigen::MatrixX
     std::vector<int> reported;
     for (Eigen::Index e = 0; e < nr; ++e) {
         if (eig.eigenvalues()[e] >= tol) continue;
-        const Eigen::VectorXd v = eig.eigenvectors().col(e);
+        Eigen::VectorXd v = eig.eigenvectors().col(e);
         const double vmax = v.cwiseAbs().maxCoeff();
         std::vector<int> joints;
-        std::string rates;
         for (Eigen::Index a = 0; a < nr; ++a) {
             if (std::abs(v[a]) < 0.5 * vmax) continue;
+            if (joints.empty()) v /= v[a];  // first large component = 1
             joints.push_back(jointOf(rest[a]));
         }
         std::sort(joints.begin(), joints.end());
+        std::string rates;
         for (Eigen::Index a = 0; a < nr; ++a) {
-            if (std::abs(v[a]) < 1e-9 * vmax) continue;
+            if (std::abs(v[a]) < 1e-9) continue;
             if (!rates.empty()) rates += ", ";
-            rates += "joint " + std::to_string(spec.joints[jointOf(rest[a])].id) + " at " + num(v[a] / vmax, 3);
+            rates +=
+                num(v[a], 3) + " for joint " + std::to_string(spec.joints[jointOf(rest[a])].id);
         }
         for (int j : joints) {
             if (std::find(reported.begin(), reported.end(), j) != reported.end()) continue;
             reported.push_back(j);
-            diags.error("joint-moves-no-mass", spec.joints[j].src.pos,
-                        jointList(spec, joints) +
-                            " together move no mass: moving them at the rates " + rates +
-                            " leaves every body with mass at rest, so the mass matrix is singular at "
-                            "the initial configuration",
-                        hint);
+            diags.error(
+                "joint-moves-no-mass", spec.joints[j].src.pos,
+                jointList(spec, joints) + " together move no mass: the motion with rates " + rates +
+                    " leaves every body with mass at rest, so the mass matrix is singular at "
+                    "the initial configuration",
+                hint);
         }
     }
 }
@@ -362,10 +393,31 @@ std::optional<Topology> analyzeTopology(const ModelSpec& spec, Diagnostics& diag
     const auto nt = static_cast<Eigen::Index>(topo.treeJoints.size());
     std::vector<int> independentCols, dependentCols;
     Eigen::MatrixXd jac;
+    bool loopsAssembled = true;
     std::vector<Eigen::Isometry3d> X_wb = bodyPoses(topo, geometry, theta);
     if (!topo.loopJoints.empty() && nt > 0) {
-        closureJacobian(topo, geometry, X_wb, jac);
         const double scale = lengthScale(topo, geometry, X_wb);
+        ClosureSolveOptions options;
+        options.tolerance = kLoopTolerance;
+        options.lengthScale = scale;
+        auto scaledJacobianAt = [&](const Eigen::VectorXd& th) {
+            Eigen::MatrixXd j;
+            closureJacobian(topo, geometry, bodyPoses(topo, geometry, th), j);
+            return scaledJacobian(topo, geometry, j, scale);
+        };
+
+        // the rank is that of an assembled configuration: QI may not be assembled, and may sit
+        // on a singular one (a straight chain); assemble first moving every tree coordinate
+        std::vector<int> allTree(topo.treeJoints.begin(), topo.treeJoints.end());
+        Eigen::VectorXd thetaFree = theta;
+        const bool freeAssembled =
+            solveClosure(topo, geometry, allTree, thetaFree, options).residualNorm <= kLoopFailure;
+        Eigen::MatrixXd reference = scaledJacobianAt(thetaFree);
+        if (!freeAssembled) {
+            const Eigen::MatrixXd atQi = scaledJacobianAt(theta);
+            if (numericalRank(atQi, kRankTolerance) > numericalRank(reference, kRankTolerance))
+                reference = atQi;
+        }
 
         // preference for dependent: undriven before driven, later in the file first
         std::vector<int> preference(static_cast<std::size_t>(nt));
@@ -377,22 +429,38 @@ std::optional<Topology> analyzeTopology(const ModelSpec& spec, Diagnostics& diag
             return ja > jb;
         });
         const CoordinatePartition part =
-            partitionCoordinates(scaledJacobian(topo, geometry, jac, scale), preference, kRankTolerance);
+            partitionCoordinates(reference, preference, kRankTolerance);
         independentCols = part.independent;
         dependentCols = part.dependent;
         topo.closureRank = part.rank;
 
-        // Newton on the dependent coordinates, starting from their QI
+        // Newton on the dependent coordinates, independent ones held at QI: from the dependent
+        // ones' QI, else from where the free assembly put them
         std::vector<int> unknowns;
         for (int c : dependentCols) unknowns.push_back(topo.treeJoints[c]);
-        ClosureSolveOptions options;
-        options.tolerance = kLoopTolerance;
-        options.lengthScale = scale;
-        const ClosureSolveResult solved = solveClosure(topo, geometry, unknowns, theta, options);
+        const Eigen::VectorXd guess = theta;
+        ClosureSolveResult solved = solveClosure(topo, geometry, unknowns, theta, options);
+        if (solved.residualNorm > kLoopFailure && freeAssembled) {
+            Eigen::VectorXd retry = guess;
+            for (int j : unknowns) retry[j] = thetaFree[j];
+            const ClosureSolveResult second =
+                solveClosure(topo, geometry, unknowns, retry, options);
+            if (second.residualNorm < solved.residualNorm) {
+                solved = second;
+                theta = retry;
+            }
+        }
+
+        // revolute angles: the turn nearest to the guess
+        for (int j : unknowns) {
+            if (geometry[j].isRotational()) theta[j] = guess[j] + wrapAngle(theta[j] - guess[j]);
+        }
         bodyPoses(topo, geometry, theta, X_wb);
         closureJacobian(topo, geometry, X_wb, jac);
-        if (solved.residualNorm > kLoopFailure) {
-            reportUnsatisfiedLoops(spec, topo, geometry, solved.residual, jac, independentCols, diags);
+        loopsAssembled = solved.residualNorm <= kLoopFailure;
+        if (!loopsAssembled) {
+            reportUnsatisfiedLoops(spec, topo, geometry, solved.residual, jac, independentCols,
+                                   diags);
         }
         for (int j : unknowns) topo.q0[j] = geometry[j].coordinateFromKinematic(theta[j]);
     } else {
@@ -423,10 +491,24 @@ std::optional<Topology> analyzeTopology(const ModelSpec& spec, Diagnostics& diag
         inertia[b].cg = body->cg;
         inertia[b].inertia = body->inertiaTensor();
     }
-    if (nt > 0) {
+    if (nt > kDenseMassCheckLimit) {
+        // too large for a dense n×n check: each joint must move some inertia along its axis
+        const std::vector<bool> none = jointsMovingNoMass(topo, geometry, X_wb, inertia);
+        for (int j : topo.treeJoints) {
+            if (!none[static_cast<std::size_t>(j)]) continue;
+            const JointSpec& joint = spec.joints[static_cast<std::size_t>(j)];
+            diags.error("joint-moves-no-mass", joint.src.pos,
+                        jointLabel(joint) + " moves no mass: the bodies it moves have no mass, or only mass on "
+                                            "its axis and no inertia about it, so the mass matrix is singular "
+                                            "at the initial configuration",
+                        "give the bodies it moves a mass (B id m Ixx Iyy Izz), or remove the joint");
+        }
+    } else if (nt > 0) {
         const Eigen::MatrixXd massTree = treeMassMatrix(topo, geometry, X_wb, inertia);
-        const Eigen::MatrixXd g = nullSpaceBasis(jac.rows() > 0 ? jac : Eigen::MatrixXd::Zero(0, nt),
-                                                 independentCols, dependentCols);
+        // rates of all tree joints from the independent ones (through the loops when they close)
+        const Eigen::MatrixXd g = loopsAssembled
+                                      ? nullSpaceBasis(jac, independentCols, dependentCols)
+                                      : nullSpaceBasis(jac, independentCols, {});
         checkMass(spec, topo, massTree, g, independentCols, diags);
     }
 

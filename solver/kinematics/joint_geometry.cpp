@@ -14,7 +14,8 @@ constexpr double kPi = std::numbers::pi;
 // a unit vector perpendicular to a unit vector
 Eigen::Vector3d anyPerpendicular(const Eigen::Vector3d& a)
 {
-    Eigen::Vector3d trial = std::abs(a.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+    Eigen::Vector3d trial =
+        std::abs(a.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
     return (trial - a.dot(trial) * a).normalized();
 }
 
@@ -42,7 +43,8 @@ JointFrame makeJointFrame(const JointSide& side)
 
     // axis: normalised, z when degenerate
     const double an = side.a.norm();
-    Eigen::Vector3d a = an > 0 && std::isfinite(an) ? Eigen::Vector3d(side.a / an) : Eigen::Vector3d::UnitZ();
+    Eigen::Vector3d a =
+        an > 0 && std::isfinite(an) ? Eigen::Vector3d(side.a / an) : Eigen::Vector3d::UnitZ();
 
     // reference: orthogonalised against the axis, any perpendicular when degenerate
     Eigen::Vector3d r = side.r - a.dot(side.r) * a;
@@ -58,17 +60,35 @@ JointFrame makeJointFrame(const JointSide& side)
 
 // ---------------------------------------------------------------- length law
 
-double ActuatorLengthLaw::rho() const { return std::hypot(c1, c2); }
+double ActuatorLengthLaw::rho() const
+{
+    return std::hypot(c1, c2);
+}
 
-double ActuatorLengthLaw::phi() const { return std::atan2(c2, c1); }
+double ActuatorLengthLaw::phi() const
+{
+    return std::atan2(c2, c1);
+}
 
-double ActuatorLengthLaw::minLength() const { return std::sqrt(std::max(0.0, c0 - rho())); }
+double ActuatorLengthLaw::minLength() const
+{
+    return std::sqrt(std::max(0.0, c0 - rho()));
+}
 
-double ActuatorLengthLaw::maxLength() const { return std::sqrt(std::max(0.0, c0 + rho())); }
+double ActuatorLengthLaw::maxLength() const
+{
+    return std::sqrt(std::max(0.0, c0 + rho()));
+}
 
-double ActuatorLengthLaw::angleOfMaxLength() const { return wrapAngle(phi()); }
+double ActuatorLengthLaw::angleOfMaxLength() const
+{
+    return wrapAngle(phi());
+}
 
-double ActuatorLengthLaw::angleOfMinLength() const { return wrapAngle(phi() + kPi); }
+double ActuatorLengthLaw::angleOfMinLength() const
+{
+    return wrapAngle(phi() + kPi);
+}
 
 double ActuatorLengthLaw::lengthSquared(double angle) const
 {

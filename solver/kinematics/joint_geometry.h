@@ -24,7 +24,7 @@ namespace solver {
 /// One side's joint frame in its body's local frame.
 struct JointFrame {
     Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();  ///< columns A, R, T (unit, right-handed)
-    Eigen::Vector3d origin = Eigen::Vector3d::Zero();    ///< P [m]
+    Eigen::Vector3d origin = Eigen::Vector3d::Zero();  ///< P [m]
 
     Eigen::Vector3d a() const { return axes.col(0); }
     Eigen::Vector3d r() const { return axes.col(1); }
@@ -48,15 +48,15 @@ struct ActuatorLengthLaw {
     double c1 = 0;  ///< [m^2]
     double c2 = 0;  ///< [m^2]
 
-    double rho() const;           ///< ρ = hypot(c1, c2) [m^2]
-    double phi() const;           ///< φ = atan2(c2, c1): angle of the longest length [rad]
-    double minLength() const;     ///< sqrt(c0 − ρ) [m]
-    double maxLength() const;     ///< sqrt(c0 + ρ) [m]
+    double rho() const;  ///< ρ = hypot(c1, c2) [m^2]
+    double phi() const;  ///< φ = atan2(c2, c1): angle of the longest length [rad]
+    double minLength() const;  ///< sqrt(c0 − ρ) [m]
+    double maxLength() const;  ///< sqrt(c0 + ρ) [m]
     double angleOfMaxLength() const;  ///< φ wrapped to (−π, π] [rad]
     double angleOfMinLength() const;  ///< φ + π wrapped to (−π, π] [rad]
 
     double lengthSquared(double angle) const;  ///< L²(θ) [m^2]
-    double length(double angle) const;         ///< L(θ) [m]
+    double length(double angle) const;  ///< L(θ) [m]
     /// dL/dθ = (c2 cos θ − c1 sin θ) / (2 L) [m/rad]; 0 where L = 0.
     double lengthRate(double angle) const;
     /// dθ/dL = 1 / (dL/dθ) [rad/m]; infinite at a dead point.

@@ -18,7 +18,8 @@ struct CutFrames {
     Eigen::Vector3d p2, a2, r2, t2;
 };
 
-CutFrames cutFrames(const JointGeometry& g, const Eigen::Isometry3d& X_w1, const Eigen::Isometry3d& X_w2)
+CutFrames cutFrames(const JointGeometry& g, const Eigen::Isometry3d& X_w1,
+                    const Eigen::Isometry3d& X_w2)
 {
     CutFrames f;
     f.p1 = X_w1 * g.side1.origin;
@@ -48,7 +49,8 @@ void closureResidual(const Topology& topo, const std::vector<JointGeometry>& geo
         const int c = topo.loopJoints[k];
         const JointGeometry& g = geometry[c];
         const CutFrames f = cutFrames(g, X_wb[topo.side1Body[c]], X_wb[topo.side2Body[c]]);
-        auto rows = phi.segment<kClosureEquations>(kClosureEquations * static_cast<Eigen::Index>(k));
+        auto rows =
+            phi.segment<kClosureEquations>(kClosureEquations * static_cast<Eigen::Index>(k));
         if (g.type == JointType::Prismatic) {
             const Eigen::Vector3d d = f.p2 - f.p1;
             rows << f.a1.dot(f.r2), f.a1.dot(f.t2), f.r1.dot(f.t2), d.dot(f.a1), d.dot(f.t1);
@@ -94,7 +96,8 @@ void closureJacobian(const Topology& topo, const std::vector<JointGeometry>& geo
                 const Eigen::Vector3d d = f.p2 - f.p1;
                 const Eigen::Vector3d dd = dp2 - dp1;
                 rows << da1.dot(f.r2) + f.a1.dot(dr2), da1.dot(f.t2) + f.a1.dot(dt2),
-                    dr1.dot(f.t2) + f.r1.dot(dt2), dd.dot(f.a1) + d.dot(da1), dd.dot(f.t1) + d.dot(dt1);
+                    dr1.dot(f.t2) + f.r1.dot(dt2), dd.dot(f.a1) + d.dot(da1),
+                    dd.dot(f.t1) + d.dot(dt1);
             } else {
                 rows << dp2 - dp1, da1.dot(f.r2) + f.a1.dot(dr2), da1.dot(f.t2) + f.a1.dot(dt2);
             }

@@ -50,7 +50,7 @@ struct ClosureSolveResult {
     bool converged = false;
     int iterations = 0;
     double residualNorm = 0;  ///< |Φ| at the returned θ
-    Eigen::VectorXd residual; ///< Φ at the returned θ (dim 5·ncut)
+    Eigen::VectorXd residual;  ///< Φ at the returned θ (dim 5·ncut)
 };
 
 /// Solves Φ(θ) = 0 for the coordinates of the spec joints `unknowns` (tree joints),

@@ -60,7 +60,9 @@ bool decode(std::string_view raw, std::string& out, Diagnostics& diags)
         }
         if (i < sample && c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f' && c != '\v') ++controls;
     }
-    if (sample > 0 && controls * 20 > sample) {
+    // (a few stray control characters in a short text are the lexer's to report, with
+    // their positions; only many of them make a file binary)
+    if (sample > 0 && controls >= 4 && controls * 20 > sample) {
         diags.error("binary-file", {1, 1}, "this is not a text file (" + std::to_string(controls) +
                         " control characters in its first " + std::to_string(sample) + " bytes)",
                     "a model is a text file (.pad); open the model, not a mesh, image or archive");
@@ -76,7 +78,14 @@ bool decode(std::string_view raw, std::string& out, Diagnostics& diags)
         out.assign(raw);
         return true;
     }
-    diags.warning("not-utf8", positionOf(raw, firstBad),
+    // the position in the text as read, Latin-1: one byte, one character (like the
+    // columns of every later diagnostic of this file)
+    SourcePos bad{1, 1};
+    for (std::size_t i = 0; i < firstBad; ++i) {
+        if (raw[i] == '\n') { ++bad.line; bad.column = 1; }
+        else ++bad.column;
+    }
+    diags.warning("not-utf8", bad,
                   "the file is not UTF-8 (byte 0x" +
                       [&] { char b[3]; std::snprintf(b, 3, "%02X", static_cast<unsigned char>(raw[firstBad])); return std::string(b); }() +
                       " here); it was read as Latin-1 (ISO 8859-1)",
@@ -129,6 +138,7 @@ LoadedModel loadModelText(std::string_view text, const std::string& file)
     if (!pre.empty()) {
         pre.append(m.diagnostics);
         m.diagnostics = std::move(pre);
+        m.diagnostics.sortByPosition();  // the not-utf8 warning among the others, in line order
     }
     return m;
 }
@@ -150,7 +160,11 @@ LoadedModel loadModelFile(const std::string& path)
     if (!fs::is_regular_file(st)) return fail("this is not a regular file", "give the path of a .pad file");
     const auto size = fs::file_size(path, ec);
     if (!ec && size > kMaxModelFileBytes) {
-        return fail("the file is too large for a model (" + std::to_string(size / (1024 * 1024)) + " MB; the limit is " +
+        // the size in MB rounded up to a tenth, so that a file just over the limit does
+        // not read "16 MB; the limit is 16 MB"
+        const auto tenths = (size * 10 + 1024 * 1024 - 1) / (1024 * 1024);
+        return fail("the file is too large for a model (" + std::to_string(tenths / 10) + "." +
+                        std::to_string(tenths % 10) + " MB; the limit is " +
                         std::to_string(kMaxModelFileBytes / (1024 * 1024)) + " MB)",
                     "a model is a short text; put meshes in their own files (G … MESH \"file\")");
     }

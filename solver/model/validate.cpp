@@ -191,8 +191,9 @@ void checkJoint(const ModelSpec& spec, const JointSpec& j, Diagnostics& d)
                     "give QI between LL and UL");
         }
     }
-    if (j.vi && *j.vi != 0) {
-        const double q = j.qi.value_or(j.type == JointType::Actuator && j.ll && j.ul ? (*j.ll + *j.ul) / 2 : 0.0);
+    // a T 1 joint without QI starts mid-range (inside its limits), so only a written QI can sit on one
+    if (j.vi && *j.vi != 0 && (j.qi || j.type != JointType::Actuator)) {
+        const double q = j.qi.value_or(0.0);
         if (*j.vi > 0 && j.ul && q >= *j.ul - eps) {
             d.error("vi-outside-limits", j.src.where("VI"),
                     who + ": VI = " + fmt(*j.vi) + " moves the joint past its upper limit UL = " + fmt(*j.ul) + unit +
@@ -234,15 +235,18 @@ void checkDrives(const ModelSpec& spec, Diagnostics& d)
                     "for a hydraulic motor give VMAX (rad/s) and FMAX (N·m); or make the joint T 1 or T 2");
         }
         if (dr.kind == DriveKind::Hydraulic && j->vi && j->src.complete) {
-            auto vmax = dr.param("VMAX");
-            auto vmin = dr.param("VMIN");
-            if (vmax) {
-                double up = *vmax, down = vmin.value_or(*vmax);
+            // the speeds written (VMAX/VMIN) or those of the pump and cylinder data
+            const DriveSpec::Hydraulic h = dr.hydraulic();
+            const bool pump = dr.param("PUMP").has_value();
+            if (h.vmax > 0) {
+                const double up = h.vmax, down = h.vmin;
                 if (*j->vi > up * (1 + 1e-12) || -*j->vi > down * (1 + 1e-12)) {
                     d.error("vi-above-vmax", j->src.where("VI"),
                             named("joint", j->id, j->name) + ": VI = " + fmt(*j->vi) +
-                                " is faster than its hydraulic drive can move it (" + fmt(*j->vi > 0 ? up : down) + ")",
-                            "give |VI| ≤ VMAX (extending) or VMIN (retracting)");
+                                " is faster than its hydraulic drive can move it (" + fmt(*j->vi > 0 ? up : down) +
+                                (pump ? ", from its pump and cylinder data" : "") + ")",
+                            pump ? "give |VI| ≤ flow / bore area (extending) or flow / annulus area (retracting)"
+                                 : "give |VI| ≤ VMAX (extending) or VMIN (retracting)");
                 }
             }
         }
@@ -279,7 +283,10 @@ void checkForces(const ModelSpec& spec, Diagnostics& d)
             break;
         case ForceKind::Joint: needJoint(f.joint, f.src.where("JOINT")); break;
         }
-        if (f.mag.kind == MagnitudeSpec::Kind::TableJoint) needJoint(f.mag.joint, f.mag.pos);
+        if (f.mag.kind == MagnitudeSpec::Kind::TableJoint) {
+            // point at the joint id after TABLE Q, where the parser recorded it
+            needJoint(f.mag.joint, f.src.at.count("Q") ? f.src.where("Q") : f.mag.pos);
+        }
         if (!f.src.complete) continue;
         if ((f.kind == ForceKind::Point || f.kind == ForceKind::Torque) && !(f.dir.norm() > 1e-12)) {
             d.error("zero-vector", f.src.where("DIR"), who + ": DIR has zero length", "give the force's direction, e.g. DIR 0 0 -1");
@@ -363,6 +370,18 @@ void checkGraphics(const ModelSpec& spec, Diagnostics& d, const std::string& bas
 
 void validateModel(const ModelSpec& spec, Diagnostics& d, const std::string& baseDir)
 {
+    if (spec.bodies.size() > kMaxBodies) {
+        d.error("model-too-large", spec.bodies[kMaxBodies].src.pos,
+                "the model has " + std::to_string(spec.bodies.size()) + " bodies; Padrob takes at most " +
+                    std::to_string(kMaxBodies),
+                "split the machine into smaller models, or merge bodies that move together");
+    }
+    if (spec.joints.size() > kMaxJoints) {
+        d.error("model-too-large", spec.joints[kMaxJoints].src.pos,
+                "the model has " + std::to_string(spec.joints.size()) + " joints; Padrob takes at most " +
+                    std::to_string(kMaxJoints),
+                "split the machine into smaller models, or remove joints that never move");
+    }
     checkDuplicates(spec.bodies, [](const BodySpec& b) { return b.id; }, "body", d);
     checkDuplicates(spec.joints, [](const JointSpec& j) { return j.id; }, "joint", d);
     checkDuplicates(spec.forces, [](const ForceSpec& f) { return f.id; }, "force", d);

@@ -13,6 +13,11 @@ namespace solver {
 /// Tolerance on |A·R| (after normalising) above which A and R are "not perpendicular".
 inline constexpr double kPerpendicularTolerance = 1e-6;
 
+/// Most bodies and most joints a model may have (a real-time simulator of more
+/// would not run in real time; the checks stay fast below it).
+inline constexpr std::size_t kMaxBodies = 10000;
+inline constexpr std::size_t kMaxJoints = 10000;
+
 /// Adds the diagnostics of every check to `diags`. Statements the parser marked
 /// incomplete are skipped where their values would only produce follow-up noise.
 /// `baseDir` resolves MESH paths (empty: mesh files are not looked for).

@@ -109,21 +109,33 @@ std::vector<Token> tokenizeLine(std::string_view line, int lineNo, Diagnostics& 
     std::vector<Token> tokens;
     std::size_t i = 0;
     const std::size_t n = line.size();
-    auto posAt = [&](std::size_t byte) { return SourcePos{lineNo, columnOf(line, byte) + 1}; };
+    // columns are counted incrementally (positions are asked for left to right), so
+    // that a line of a million tokens takes linear, not quadratic, time
+    std::size_t colByte = 0;
+    int col = 0;
+    auto posAt = [&](std::size_t byte) {
+        if (byte < colByte) { colByte = 0; col = 0; }
+        col += columnOf(line.substr(colByte), byte - colByte);
+        colByte = byte;
+        return SourcePos{lineNo, col + 1};
+    };
     auto isBlank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; };
     auto isControl = [](char c) {
         auto u = static_cast<unsigned char>(c);
         return (u < 0x20 && c != '\t' && c != '\r' && c != '\v' && c != '\f') || u == 0x7F;
+    };
+    auto controlError = [&](std::size_t at) {
+        diags.error("control-character", posAt(at),
+                    "unexpected control character (code " +
+                        std::to_string(static_cast<unsigned char>(line[at])) + ")",
+                    "delete it; a model file is plain text");
     };
 
     while (i < n) {
         char c = line[i];
         if (isBlank(c)) { ++i; continue; }
         if (isControl(c)) {
-            diags.error("control-character", posAt(i),
-                        "unexpected control character (code " +
-                            std::to_string(static_cast<unsigned char>(c)) + ")",
-                        "delete it; a model file is plain text");
+            controlError(i);
             ++i;
             continue;
         }
@@ -142,6 +154,11 @@ std::vector<Token> tokenizeLine(std::string_view line, int lineNo, Diagnostics& 
                     continue;
                 }
                 if (d == '"') { closed = true; ++i; break; }
+                if (isControl(d)) {  // not even inside a string (a name with a bell in it)
+                    controlError(i);
+                    ++i;
+                    continue;
+                }
                 t.text += d;
                 ++i;
             }

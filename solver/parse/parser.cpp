@@ -100,6 +100,7 @@ public:
     {
         m_toks = tokenizeLine(line, lineNo, m_d);
         m_i = 0;
+        m_keys.clear();
         m_lineNo = lineNo;
         m_endPos = {lineNo, columnOf(line, line.size()) + 1};
         if (m_toks.empty()) return;
@@ -143,6 +144,10 @@ private:
     int m_lineNo = 0;
     SourcePos m_endPos;
     int m_joint = -1;  // index of the joint whose B1/B2/CL lines may follow
+    /// The option keywords of the statement being parsed: a word in a number's place
+    /// that is none of them (nor a typo of one) is a malformed number, not an option.
+    std::vector<std::string> m_keys;
+    SourcePos m_tableJointPos;  // the joint id of the last `TABLE Q joint`
 
     // ---- token access ---------------------------------------------------------
     bool atEnd() const { return m_i >= m_toks.size(); }
@@ -158,6 +163,36 @@ private:
         if ((c >= '0' && c <= '9') || c == '.' || c == '-' || c == '+') return true;
         return !numberProblem(t.text).empty();
     }
+
+    void setKeys(const std::vector<OptionDef>& defs)
+    {
+        m_keys.clear();
+        for (const OptionDef& d : defs) m_keys.emplace_back(d.key);
+    }
+
+    /// A word in a number's place that is not one of the statement's options (nor,
+    /// for words of three or more letters, a typo of one): a number written wrong
+    /// (`P1 0 x 0`), reported as such and consumed, so that one mistake gives one
+    /// diagnostic instead of "only 1 given" plus "'x' is not an option".
+    bool strayWord(const Token& t) const
+    {
+        if (!t.isWord() || numberLike(t) || isKey(t)) return false;
+        return t.text.size() < 3 || closest(t.text, m_keys).empty();
+    }
+
+    /// True when `t` is one of the statement's option keywords.
+    bool isKey(const Token& t) const
+    {
+        if (!t.isWord()) return false;
+        const std::string u = upper(t.text);
+        for (const std::string& k : m_keys) {
+            if (u == k) return true;
+        }
+        return false;
+    }
+
+    /// A token in a number's place that is reported as a malformed number.
+    bool badNumberLike(const Token& t) const { return numberLike(t) || strayWord(t); }
 
     /// Reports why the number-like word `t` is not a number.
     void badNumber(const Token& t, const std::string& context, bool& ok)
@@ -187,7 +222,7 @@ private:
                                  const std::string& syntax)
     {
         if (!atEnd() && peek().isNumber()) return m_toks[m_i++].number;
-        if (!atEnd() && numberLike(peek())) {
+        if (!atEnd() && badNumberLike(peek())) {
             badNumber(m_toks[m_i++], context, ok);
             return std::nullopt;
         }
@@ -211,7 +246,7 @@ private:
                 out[k] = m_toks[m_i++].number;
                 continue;
             }
-            if (!atEnd() && numberLike(peek())) {
+            if (!atEnd() && badNumberLike(peek())) {
                 badNumber(m_toks[m_i++], context, ok);
                 continue;
             }
@@ -236,6 +271,7 @@ private:
                       context + ": " + what + " is missing" +
                           (atEnd() ? std::string() : ", found '" + peek().text + "'"),
                       "write " + syntax);
+            if (!atEnd() && strayWord(peek())) ++m_i;  // it stood in the id's place
             return std::nullopt;
         }
         const Token& t = m_toks[m_i++];
@@ -302,6 +338,7 @@ private:
             } else if (!atEnd() && peek().is("Q")) {
                 ++m_i;
                 mag.kind = MagnitudeSpec::Kind::TableJoint;
+                m_tableJointPos = here();
                 auto j = readId(context, "the joint of TABLE Q", ok, "TABLE Q joint q1 v1 q2 v2 …");
                 if (!j) return false;
                 mag.joint = *j;
@@ -309,6 +346,9 @@ private:
                 ok = false;
                 m_d.error("bad-table", here(), context + ": TABLE must say T (by time) or Q (by a joint's coordinate)",
                           "write TABLE T t1 v1 t2 v2 … or TABLE Q joint q1 v1 q2 v2 …");
+                // skip the table, so that its letter and numbers give no second diagnostic
+                if (!atEnd() && peek().isWord() && !isKey(peek())) ++m_i;
+                while (!atEnd() && numberLike(peek())) ++m_i;
                 return false;
             }
             std::vector<double> vals;
@@ -352,6 +392,7 @@ private:
                     const std::string& statementName, bool& ok)
     {
         Options out;
+        setKeys(defs);
         std::vector<std::string_view> names;
         for (const OptionDef& d : defs) names.push_back(d.key);
         auto listNames = [&] {
@@ -416,6 +457,15 @@ private:
             case Arg::Str:
                 if (!atEnd() && peek().isString()) {
                     val.str = m_toks[m_i++].text;
+                } else if (!atEnd() && peek().isWord() && !isKey(peek())) {
+                    // a text without quotes (NAME GIRO PLUMA): its words give one diagnostic,
+                    // then the options after them are read
+                    val.ok = false;
+                    const SourcePos at = peek().pos;
+                    std::string words = m_toks[m_i++].text;
+                    while (!atEnd() && peek().isWord() && !isKey(peek())) words += " " + m_toks[m_i++].text;
+                    m_d.error("missing-string", at, context + ": " + key + " needs a text in double quotes",
+                              "write " + key + " \"" + words + "\"");
                 } else {
                     val.ok = false;
                     m_d.error("missing-string", here(), context + ": " + key + " needs a text in double quotes",
@@ -483,9 +533,18 @@ private:
         }
         b.id = *id;
         const std::string ctx = "body " + std::to_string(b.id);
+        const std::vector<OptionDef> defs = {{"CG", Arg::Vec3, "x y z"}, {"NAME", Arg::Str, "\"text\""}};
+        setKeys(defs);
         // count the numbers after the id: 0 (massless), 4 or 7
         std::size_t first = m_i, count = 0;
         while (first + count < m_toks.size() && numberLike(m_toks[first + count])) ++count;
+        if (count != 4 && count != 7) {
+            // a word among the numbers (`B 1 10 abc 1 1`) that makes the count right is
+            // a malformed number, not the start of the options
+            std::size_t loose = count;
+            while (first + loose < m_toks.size() && badNumberLike(m_toks[first + loose])) ++loose;
+            if (loose == 4 || loose == 7) count = loose;
+        }
         if (count != 0 && count != 4 && count != 7) {
             ok = false;
             SourcePos at = count > 7 ? m_toks[first + 7].pos : m_toks[first + count - 1].pos;
@@ -514,8 +573,7 @@ private:
             b.src.at["I"] = m_toks[first + 1].pos;
             if (count == 7) b.src.at["Ixy"] = m_toks[first + 4].pos;
         }
-        Options opts = options({{"CG", Arg::Vec3, "x y z"}, {"NAME", Arg::Str, "\"text\""}}, ctx,
-                               "a body statement (B)", ok);
+        Options opts = options(defs, ctx, "a body statement (B)", ok);
         recordPositions(b.src, opts);
         if (auto it = opts.find("CG"); it != opts.end()) {
             b.hasCg = true;
@@ -535,7 +593,7 @@ private:
         auto id = readId("joint", "the joint id", ok, syntax);
         j.id = id.value_or(-1);
         const std::string ctx = id ? "joint " + std::to_string(j.id) : std::string("joint");
-        Options opts = options({{"T", Arg::Int, "type (0, 1 or 2)"},
+        Options opts = options({{"T", Arg::Num, "the joint type (0, 1 or 2)"},
                                 {"LL", Arg::NumDeg, "the lower limit"},
                                 {"UL", Arg::NumDeg, "the upper limit"},
                                 {"QI", Arg::NumDeg, "the initial coordinate"},
@@ -545,13 +603,14 @@ private:
         recordPositions(j.src, opts);
         if (auto it = opts.find("T"); it != opts.end() && it->second.ok) {
             j.typeWritten = true;
-            int t = it->second.id;
+            // read as a number, so that T 3, T -1 and T 1.5 all get the same message
+            const double t = it->second.num;
             if (t == 0) j.type = JointType::Revolute;
             else if (t == 1) j.type = JointType::Actuator;
             else if (t == 2) j.type = JointType::Prismatic;
             else {
                 ok = false;
-                m_d.error("bad-joint-type", it->second.valuePos, ctx + ": there is no joint type T " + std::to_string(t),
+                m_d.error("bad-joint-type", it->second.valuePos, ctx + ": there is no joint type T " + fmt(t),
                           "use T 0 (revolute, the default), T 1 (pivoted linear actuator) or T 2 (prismatic)");
             }
         }
@@ -563,8 +622,10 @@ private:
                 if (j.type != JointType::Revolute) {
                     ok = false;
                     m_d.error("deg-on-length", it->second.valuePos,
-                              ctx + ": DEG after " + key + ", but a " + jointTypeName(j.type) +
-                                  " joint's coordinate is a length",
+                              ctx + ": DEG after " + key + ", but the coordinate of " +
+                                  (j.type == JointType::Actuator ? "a pivoted linear actuator (T 1)"
+                                                                 : "a prismatic joint (T 2)") +
+                                  " is a length",
                               "remove DEG; give the value in metres");
                 }
                 v *= kDegToRad;
@@ -615,9 +676,6 @@ private:
         side_.present = true;
         side_.src.pos = kw.pos;
         bool ok = true;
-        side_.src.at["B"] = here();
-        auto body = readId(ctx, "the body id", ok, syntax);
-        side_.body = body.value_or(-1);
         // P, A, R with this side's digit; the other side's keys are diagnosed
         std::vector<OptionDef> defs = {{nullptr, Arg::Vec3, "x y z"}, {nullptr, Arg::Vec3, "x y z"},
                                        {nullptr, Arg::Vec3, "x y z"}};
@@ -636,6 +694,10 @@ private:
                 m_toks[k].text = u.substr(0, 1) + s;  // read it as meant, to avoid a second message
             }
         }
+        setKeys(defs);
+        side_.src.at["B"] = here();
+        auto body = readId(ctx, "the body id", ok, syntax);
+        side_.body = body.value_or(-1);
         Options opts = options(defs, ctx, "a B" + s + " line", ok);
         requireOptions(opts, {kp.c_str(), ka.c_str(), kr.c_str()}, ctx, syntax, kw.pos, ok);
         for (const auto& [k, v] : opts) side_.src.at[k.substr(0, 1)] = v.valuePos;
@@ -818,10 +880,11 @@ private:
             ksyn = "F id TORQUE B body DIR x y z MAG spec [LOCAL]";
         } else if (kind == "JOINT") {
             f.kind = ForceKind::Joint;
+            defs = {{"MAG", Arg::Mag, "spec"}};
+            setKeys(defs);
             f.src.at["JOINT"] = here();
             auto j = readId(ctx, "the joint id", ok, "F id JOINT joint MAG spec");
             f.joint = j.value_or(-1);
-            defs = {{"MAG", Arg::Mag, "spec"}};
             required = {"MAG"};
             ksyn = "F id JOINT joint MAG spec";
         } else if (kind == "SPRING") {
@@ -858,7 +921,10 @@ private:
         if (auto v = get("P1")) f.point = v->v;
         if (auto v = get("P2")) f.point2 = v->v;
         if (auto v = get("DIR")) f.dir = v->v;
-        if (auto v = get("MAG")) f.mag = v->mag;
+        if (auto v = get("MAG")) {
+            f.mag = v->mag;
+            if (f.mag.kind == MagnitudeSpec::Kind::TableJoint) f.src.at["Q"] = m_tableJointPos;
+        }
         f.local = get("LOCAL") != nullptr;
         if (auto v = get("K")) f.stiffness = v->num;
         if (auto v = get("L0")) f.restLength = v->num;
@@ -887,6 +953,14 @@ private:
             return;
         }
         ++m_i;
+        std::vector<OptionDef> defs = {{"POS", Arg::Vec3, "x y z"},    {"AXIS", Arg::Vec3, "x y z"},
+                                       {"ROT", Arg::Num4, "ax ay az deg"}, {"COLOR", Arg::Vec3, "r g b"},
+                                       {"MASS", Arg::Num, "mass"},     {"RHO", Arg::Num, "density"},
+                                       {"SCALE", Arg::Num, "factor"}};
+        // a word in the body id's place is a malformed id unless it is a shape
+        setKeys({{"BOX", Arg::Flag, ""}, {"CYL", Arg::Flag, ""}, {"TUBE", Arg::Flag, ""},
+                 {"SPHERE", Arg::Flag, ""}, {"CONE", Arg::Flag, ""}, {"ELLIPSOID", Arg::Flag, ""},
+                 {"PRISM", Arg::Flag, ""}, {"MESH", Arg::Flag, ""}});
         g.src.at["B"] = here();
         auto body = readId(ctx, "the body id", ok, syntax);
         g.body = body.value_or(-1);
@@ -923,6 +997,8 @@ private:
             return;
         }
         g.shape = sd->kind;
+        if (sd->kind != ShapeKind::Mesh) defs.pop_back();  // SCALE is for meshes only
+        setKeys(defs);
         const std::string dsyn = std::string(sd->key) + " " + sd->dims;
         g.src.at["dims"] = here();
         if (sd->n > 0) {
@@ -934,7 +1010,7 @@ private:
                 g.dims.push_back(v.value_or(0));
             }
         } else if (sd->kind == ShapeKind::Prism) {
-            while (!atEnd() && numberLike(peek())) {
+            while (!atEnd() && badNumberLike(peek())) {
                 auto v = number(ctx, "a PRISM value", ok, dsyn);
                 g.dims.push_back(v.value_or(0));
             }
@@ -948,16 +1024,18 @@ private:
         } else {  // MESH
             if (!atEnd() && peek().isString()) {
                 g.meshFile = m_toks[m_i++].text;
+            } else if (!atEnd() && peek().isWord() && !isKey(peek())) {
+                // a file name without quotes: one diagnostic, and the options after it are read
+                ok = false;
+                const Token& t = m_toks[m_i++];
+                m_d.error("missing-string", t.pos, ctx + ": the MESH file name must be in double quotes",
+                          "write MESH \"" + t.text + "\"");
             } else {
                 ok = false;
                 m_d.error("missing-string", here(), ctx + ": MESH needs a file name in double quotes",
                           "write MESH \"meshes/part.stl\" (relative to the model file)");
             }
         }
-        std::vector<OptionDef> defs = {{"POS", Arg::Vec3, "x y z"},    {"AXIS", Arg::Vec3, "x y z"},
-                                       {"ROT", Arg::Num4, "ax ay az deg"}, {"COLOR", Arg::Vec3, "r g b"},
-                                       {"MASS", Arg::Num, "mass"},     {"RHO", Arg::Num, "density"}};
-        if (sd->kind == ShapeKind::Mesh) defs.push_back({"SCALE", Arg::Num, "factor"});
         Options opts = options(defs, ctx, "a graphic (G)", ok);
         recordPositions(g.src, opts);
         auto get = [&](const char* k) -> const OptionValue* {
