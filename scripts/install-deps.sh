@@ -15,6 +15,10 @@ packages=(
   build-essential cmake ninja-build pkg-config git ccache
   # solver
   libeigen3-dev
+  # SUNDIALS 6.4 (ARKODE, CVODE). Heavy: it hard-depends on ~315 MB of MPI, PETSc,
+  # hypre, Trilinos, MUMPS, gfortran and HDF5 that we never use. If install time
+  # matters, build SUNDIALS from source instead (serial only: ARKODE, CVODE, dense).
+  libsundials-dev
   # Qt (the CLI's QtCore now; widgets, Linguist tools and translations for the apps)
   qt6-base-dev qt6-base-dev-tools qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
   # tests

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 
 namespace ide::cli {
 
@@ -29,6 +28,25 @@ std::string num(double v, int digits = 6)
     char buf[64];
     auto [p, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, digits);
     return std::string(buf, p);
+}
+
+/// `s` padded with spaces to `width` characters (code points, not bytes), left-aligned
+/// (right-aligned when `right`).
+std::string pad(const std::string& s, std::size_t width, bool right = false)
+{
+    std::size_t chars = 0;
+    for (unsigned char c : s) chars += (c & 0xC0) != 0x80;
+    const std::string fill(chars < width ? width - chars : 0, ' ');
+    return right ? fill + s : s + fill;
+}
+
+/// One table row: each cell padded to its width, separated by a space, trailing blanks trimmed.
+std::string row(std::initializer_list<std::pair<std::string, int>> cells)
+{
+    std::string out = " ";
+    for (const auto& [text, width] : cells) out += " " + (width < 0 ? pad(text, static_cast<std::size_t>(-width), true) : pad(text, static_cast<std::size_t>(width)));
+    while (!out.empty() && out.back() == ' ') out.pop_back();
+    return out + "\n";
 }
 
 std::string vec(const Eigen::Vector3d& v) { return num(v.x()) + " " + num(v.y()) + " " + num(v.z()); }
@@ -82,29 +100,21 @@ std::string infoText(const LoadedModel& m)
 {
     const Topology& t = *m.topology;
     std::string out;
-    char line[512];
     out += tr("Model") + ": " + m.spec.file + "\n";
     out += tr("Gravity") + ": " + vec(m.spec.gravity) + " m/s²\n\n";
 
     std::size_t nBodies = t.bodyIds.size() - 1;
     out += tr("Bodies") + " (" + std::to_string(nBodies) + " + " + tr("ground") + "), " + tr("total mass") + " " +
            num(t.totalMass) + " kg\n";
-    std::snprintf(line, sizeof line, "  %-6s %-22s %12s  %-34s %s\n", "id", tr("name").c_str(), tr("mass [kg]").c_str(),
-                  tr("Ixx Iyy Izz [kg m²]").c_str(), tr("centre of mass").c_str());
-    out += line;
+    out += row({{"id", 6}, {tr("name"), 22}, {tr("mass [kg]"), -12}, {tr("Ixx Iyy Izz [kg m²]"), 34}, {tr("centre of mass"), 0}});
     for (const BodySpec& b : m.spec.bodies) {
         if (b.id == 0) continue;
         std::string mass = b.hasMass && b.mass > 0 ? num(b.mass) : tr("massless");
-        std::snprintf(line, sizeof line, "  %-6d %-22s %12s  %-34s %s\n", b.id, b.name.c_str(), mass.c_str(),
-                      vec(b.inertia).c_str(), b.hasCg ? vec(b.cg).c_str() : "0 0 0");
-        out += line;
+        out += row({{std::to_string(b.id), 6}, {b.name, 22}, {mass, -12}, {vec(b.inertia), 34}, {vec(b.cg), 0}});
     }
-
     out += "\n" + tr("Joints") + " (" + std::to_string(m.spec.joints.size()) + ")\n";
-    std::snprintf(line, sizeof line, "  %-5s %-18s %-10s %-7s %-22s %-9s %-13s %s\n", "id", tr("name").c_str(),
-                  tr("type").c_str(), "B1-B2", tr("limits").c_str(), tr("initial").c_str(), tr("role").c_str(),
-                  tr("drive").c_str());
-    out += line;
+    out += row({{"id", 5}, {tr("name"), 18}, {tr("type"), 10}, {"B1-B2", 7}, {tr("limits"), 22}, {tr("initial"), 9},
+                {tr("role"), 13}, {tr("drive"), 0}});
     auto r = roles(m);
     for (std::size_t k = 0; k < m.spec.joints.size(); ++k) {
         const JointSpec& j = m.spec.joints[k];
@@ -113,10 +123,8 @@ std::string infoText(const LoadedModel& m)
         std::string bodies = std::to_string(j.side1.body) + "-" + std::to_string(j.side2.body);
         const DriveSpec* d = driveOf(m, j.id);
         std::string q0 = k < t.q0.size() ? num(t.q0[k], 5) : "?";
-        std::snprintf(line, sizeof line, "  %-5d %-18s %-10s %-7s %-22s %-9s %-13s %s\n", j.id, j.name.c_str(),
-                      solver::jointTypeName(j.type), bodies.c_str(), lim.c_str(), q0.c_str(), r[k].c_str(),
-                      d ? driveText(*d, j.type).c_str() : tr("passive").c_str());
-        out += line;
+        out += row({{std::to_string(j.id), 5}, {j.name, 18}, {solver::jointTypeName(j.type), 10}, {bodies, 7}, {lim, 22},
+                    {q0, 9}, {r[k], 13}, {d ? driveText(*d, j.type) : tr("passive"), 0}});
     }
 
     out += "\n" + tr("Spanning tree (parent body <- joint <- body)") + ":\n";

@@ -107,6 +107,15 @@ double ActuatorLengthLaw::lengthRate(double angle) const
     return (c2 * std::cos(angle) - c1 * std::sin(angle)) / (2 * l);
 }
 
+double ActuatorLengthLaw::lengthSecondDerivative(double angle) const
+{
+    const double l2 = lengthSquared(angle);
+    if (!(l2 > 0)) return 0;
+    const double l = std::sqrt(l2);
+    const double d = (c2 * std::cos(angle) - c1 * std::sin(angle)) / (2 * l);
+    return (c0 - l2 - 2 * d * d) / (2 * l);
+}
+
 double ActuatorLengthLaw::angleRate(double angle) const
 {
     const double d = lengthRate(angle);

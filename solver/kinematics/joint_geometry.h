@@ -59,6 +59,9 @@ struct ActuatorLengthLaw {
     double length(double angle) const;  ///< L(θ) [m]
     /// dL/dθ = (c2 cos θ − c1 sin θ) / (2 L) [m/rad]; 0 where L = 0.
     double lengthRate(double angle) const;
+    /// d²L/dθ² = (c0 − L² − 2 (dL/dθ)²) / (2 L) [m/rad^2] (from differentiating
+    /// L² = c0 + c1 cos θ + c2 sin θ twice); 0 where L = 0.
+    double lengthSecondDerivative(double angle) const;
     /// dθ/dL = 1 / (dL/dθ) [rad/m]; infinite at a dead point.
     double angleRate(double angle) const;
     /// Angle whose length is `length` [m], on the branch whose angle (wrapped to

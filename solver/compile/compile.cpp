@@ -1,0 +1,278 @@
+#include "solver/compile/compile.h"
+
+#include "solver/kinematics/joint_geometry.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <unordered_map>
+
+namespace solver {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPi = std::numbers::pi;
+
+// The angle whose actuator length is `length` on the monotonic branch of L(θ) that
+// contains theta0, unwrapped to the turn nearest theta0. The branches are
+// (φ − π, φ) (L grows with θ) and (φ, φ + π) (L shrinks).
+double angleOnBranch(const ActuatorLengthLaw& law, double length, double theta0)
+{
+    const double rho = law.rho();
+    if (!(rho > 0)) return theta0;
+    const double k = std::clamp((length * length - law.c0) / rho, -1.0, 1.0);
+    const double side = wrapAngle(theta0 - law.phi()) >= 0 ? 1.0 : -1.0;
+    const double angle = law.phi() + side * std::acos(k);
+    return theta0 + wrapAngle(angle - theta0);
+}
+
+// limits on θ of a T 1 joint from its length limits
+void actuatorLimits(const JointSpec& joint, const ActuatorLengthLaw& law, double theta0,
+                    double& lower, double& upper)
+{
+    lower = -kInf;
+    upper = kInf;
+    // on θ0's branch, L grows with θ when θ0 − φ lies in (−π, 0)
+    const bool growing = wrapAngle(theta0 - law.phi()) < 0;
+    if (joint.ll) {
+        const double t = angleOnBranch(law, *joint.ll, theta0);
+        (growing ? lower : upper) = t;
+    }
+    if (joint.ul) {
+        const double t = angleOnBranch(law, *joint.ul, theta0);
+        (growing ? upper : lower) = t;
+    }
+    if (lower > upper) std::swap(lower, upper);
+}
+
+CompiledDrive compileDrive(const DriveSpec& spec, const JointSpec& joint, const ActuatorLengthLaw& law)
+{
+    CompiledDrive d;
+    switch (spec.kind) {
+    case DriveKind::Hydraulic: {
+        const DriveSpec::Hydraulic h = spec.hydraulic();
+        d.type = DriveType::Hydraulic;
+        d.vmax = h.vmax;
+        d.vmin = h.vmin;
+        d.fmax = h.fmax;
+        d.fmin = h.fmin;
+        break;
+    }
+    case DriveKind::Motor:
+        d.type = DriveType::Motor;
+        d.t0 = spec.param("T0").value_or(0);
+        d.w0 = spec.param("W0").value_or(0);
+        break;
+    case DriveKind::Pneumatic:
+        d.type = DriveType::Pneumatic;
+        d.force = spec.param("F").value_or(0);
+        break;
+    case DriveKind::Servo: {
+        d.type = DriveType::Servo;
+        d.kp = spec.param("KP").value_or(0);
+        d.ki = spec.param("KI").value_or(0);
+        d.kd = spec.param("KD").value_or(0);
+        d.servoFmax = spec.param("FMAX").value_or(kInf);
+        // set-point range in the modeler's coordinate
+        const bool actuator = joint.type == JointType::Actuator;
+        const double lo = actuator ? law.minLength() : -kPi;
+        const double hi = actuator ? law.maxLength() : kPi;
+        d.setLow = joint.ll.value_or(lo);
+        d.setHigh = joint.ul.value_or(hi);
+        if (!(d.setLow < d.setHigh)) {
+            // one limit beyond the default range on the other side: a range as wide as the default
+            if (joint.ll) d.setHigh = d.setLow + (hi - lo);
+            else d.setLow = d.setHigh - (hi - lo);
+        }
+        break;
+    }
+    }
+    return d;
+}
+
+}  // namespace
+
+std::shared_ptr<const Model> compileModel(const ModelSpec& spec, const Topology& topo,
+                                          Diagnostics& diags)
+{
+    // closed loops come with issue 4
+    if (!topo.loopJoints.empty()) {
+        const JointSpec& cut = spec.joints[static_cast<std::size_t>(topo.loopJoints.front())];
+        diags.error("loops-not-supported", cut.src.pos,
+                    "joint " + std::to_string(cut.id) +
+                        (cut.name.empty() ? std::string() : " \"" + cut.name + "\"") +
+                        " closes a loop: closed loops are not simulated yet",
+                    "the model can be checked, but only open trees can be simulated for now");
+        return nullptr;
+    }
+
+    auto model = std::make_shared<Model>();
+    Model& m = *model;
+    const int nb = static_cast<int>(topo.treeJoints.size());
+    const auto nbs = static_cast<std::size_t>(nb);
+    m.nb = nb;
+    m.gravity = spec.gravity;
+
+    // tree index of every body index and spec joint
+    std::vector<int> treeOfBody(topo.bodyIds.size(), -1);
+    std::vector<int> treeOfJoint(spec.joints.size(), -1);
+    std::vector<int> childBody(nbs);
+    for (int i = 0; i < nb; ++i) {
+        const int j = topo.treeJoints[static_cast<std::size_t>(i)];
+        const int child = topo.reversed[j] ? topo.side1Body[j] : topo.side2Body[j];
+        treeOfBody[child] = i;
+        treeOfJoint[j] = i;
+        childBody[i] = child;
+    }
+    std::unordered_map<int, const BodySpec*> bodyById;
+    for (const BodySpec& b : spec.bodies) bodyById.emplace(b.id, &b);
+    std::unordered_map<int, int> treeBodyById;
+    for (std::size_t b = 1; b < topo.bodyIds.size(); ++b) treeBodyById.emplace(topo.bodyIds[b], treeOfBody[b]);
+    auto treeBody = [&](int id) {
+        auto it = treeBodyById.find(id);
+        return it == treeBodyById.end() ? -1 : it->second;
+    };
+    std::unordered_map<int, int> jointById;
+    for (int i = 0; i < nb; ++i) jointById.emplace(spec.joints[topo.treeJoints[i]].id, i);
+    auto treeJoint = [&](int id) {
+        auto it = jointById.find(id);
+        return it == jointById.end() ? -1 : it->second;
+    };
+
+    m.parent.resize(nbs);
+    m.bodyId.resize(nbs);
+    m.jointId.resize(nbs);
+    m.bodyName.resize(nbs);
+    m.jointName.resize(nbs);
+    m.jointType.resize(nbs);
+    m.X_pj.resize(nbs);
+    m.X_cj.resize(nbs);
+    m.X_jc.resize(nbs);
+    m.axisSign.resize(nbs);
+    m.lengthLaw.resize(nbs);
+    m.cl1.assign(nbs, Eigen::Vector3d::Zero());
+    m.cl2.assign(nbs, Eigen::Vector3d::Zero());
+    m.lower.resize(nbs);
+    m.upper.resize(nbs);
+    m.mass.assign(nbs, 0.0);
+    m.com.assign(nbs, Eigen::Vector3d::Zero());
+    m.inertia.assign(nbs, Eigen::Matrix3d::Zero());
+    m.drive.assign(nbs, CompiledDrive{});
+    m.theta0.resize(nbs);
+    m.thetaDot0.resize(nbs);
+
+    for (int i = 0; i < nb; ++i) {
+        const int j = topo.treeJoints[static_cast<std::size_t>(i)];
+        const JointSpec& joint = spec.joints[static_cast<std::size_t>(j)];
+        const int child = childBody[i];
+        const bool reversed = topo.reversed[j];
+
+        // numbering
+        m.parent[i] = treeOfBody[topo.parentBody[child]];
+        assert(m.parent[i] < i);
+        m.bodyId[i] = topo.bodyIds[child];
+        m.jointId[i] = joint.id;
+        m.jointName[i] = joint.name;
+        m.jointType[i] = joint.type;
+
+        // frames: parent side, child side
+        const JointGeometry geometry = makeJointGeometry(joint);
+        m.X_pj[i] = (reversed ? geometry.side2 : geometry.side1).pose();
+        m.X_cj[i] = (reversed ? geometry.side1 : geometry.side2).pose();
+        m.X_jc[i] = m.X_cj[i].inverse(Eigen::Isometry);
+        m.axisSign[i] = reversed ? -1.0 : 1.0;
+
+        // body
+        if (auto it = bodyById.find(m.bodyId[i]); it != bodyById.end()) {
+            const BodySpec& body = *it->second;
+            m.bodyName[i] = body.name;
+            if (body.hasMass) {
+                m.mass[i] = body.mass;
+                m.com[i] = body.cg;
+                m.inertia[i] = body.inertiaTensor();
+            }
+        }
+
+        // initial coordinate and rate
+        const double theta0 = topo.theta0[static_cast<std::size_t>(j)];
+        m.theta0[i] = theta0;
+        const double vi = joint.vi.value_or(0.0);
+
+        // T 1 length law, limits
+        if (joint.type == JointType::Actuator) {
+            const ActuatorLengthLaw law = geometry.lengthLaw();
+            m.lengthLaw[i] = law;
+            m.cl1[i] = joint.cl1;
+            m.cl2[i] = joint.cl2;
+            actuatorLimits(joint, law, theta0, m.lower[i], m.upper[i]);
+            const double rate = law.lengthRate(theta0);
+            m.thetaDot0[i] = rate != 0 ? vi / rate : 0.0;
+        } else {
+            m.lower[i] = joint.ll.value_or(-kInf);
+            m.upper[i] = joint.ul.value_or(kInf);
+            m.thetaDot0[i] = vi;
+        }
+    }
+
+    // drives
+    for (const DriveSpec& d : spec.drives) {
+        const int i = treeJoint(d.joint);
+        if (i < 0) continue;
+        const JointSpec& joint = spec.joints[static_cast<std::size_t>(topo.treeJoints[i])];
+        m.drive[i] = compileDrive(d, joint, m.lengthLaw[i]);
+    }
+
+    // forces
+    m.forces.reserve(spec.forces.size());
+    for (const ForceSpec& fs : spec.forces) {
+        CompiledForce f;
+        f.id = fs.id;
+        f.kind = fs.kind;
+        f.body = fs.body >= 0 ? treeBody(fs.body) : -1;
+        f.body2 = fs.body2 >= 0 ? treeBody(fs.body2) : -1;
+        f.joint = fs.joint >= 0 ? treeJoint(fs.joint) : -1;
+        f.point = fs.point;
+        f.point2 = fs.point2;
+        const double n = fs.dir.norm();
+        f.dir = n > 0 ? Eigen::Vector3d(fs.dir / n) : fs.dir;
+        f.local = fs.local;
+        f.stiffness = fs.stiffness;
+        f.restLength = fs.restLength;
+        f.damping = fs.hasDamping ? fs.damping : 0.0;
+        f.area = fs.area;
+        f.cd = fs.cd;
+        f.cl = fs.hasCl ? fs.cl : 0.0;
+        f.rho = fs.hasRho ? fs.rho : 1.225;
+
+        // magnitude
+        const MagnitudeSpec& ms = fs.mag;
+        CompiledMagnitude& mag = f.mag;
+        mag.kind = ms.kind;
+        mag.value = ms.value;
+        mag.amplitude = ms.amplitude;
+        mag.frequency = ms.frequency;
+        mag.phase = ms.phase;
+        mag.offset = ms.hasOffset ? ms.offset : 0.0;
+        mag.joint = ms.kind == MagnitudeSpec::Kind::TableJoint ? treeJoint(ms.joint) : -1;
+        mag.x.reserve(ms.table.size());
+        mag.y.reserve(ms.table.size());
+        for (const auto& [x, y] : ms.table) {
+            mag.x.push_back(x);
+            mag.y.push_back(y);
+        }
+        m.forces.push_back(std::move(f));
+    }
+    return model;
+}
+
+std::shared_ptr<const Model> compileLoaded(const LoadedModel& loaded, Diagnostics& diags)
+{
+    if (!loaded.ok() || !loaded.topology) return nullptr;
+    return compileModel(loaded.spec, *loaded.topology, diags);
+}
+
+}  // namespace solver

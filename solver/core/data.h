@@ -1,0 +1,83 @@
+#pragma once
+// Data: values derived from a Model and a State, and the algorithms' scratch.
+// Allocated once by Data(model); the step loop never allocates. One per thread.
+//
+// 3D vectors are in world axes. Spatial vectors (core/spatial.h) are in world axes
+// too: motion vectors [ω; v] and force vectors [moment; force], with the point
+// the velocity or the moment refers to named in each field's comment.
+
+#include "solver/core/model.h"
+#include "solver/core/spatial.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <vector>
+
+namespace solver {
+
+struct Data {
+    explicit Data(const Model& model);
+
+    // ---- kinematics (solver/kinematics/kinematics.h) ------------------------
+    std::vector<Eigen::Isometry3d> X_wb;  ///< pose of each body frame in the world (dim nb)
+    /// Pose in the world of each joint's frame on the child's side (dim nb): origin at
+    /// the child's joint point P, axes (A, R, T) as carried by the child (= X_wb · X_cj).
+    std::vector<Eigen::Isometry3d> X_wj;
+    std::vector<Eigen::Vector3d> omega;   ///< angular velocity, world axes [rad/s] (dim nb)
+    std::vector<Eigen::Vector3d> vel;     ///< velocity of the body frame's origin, world [m/s]
+    std::vector<Eigen::Vector3d> alpha;   ///< angular acceleration, world [rad/s^2]
+    std::vector<Eigen::Vector3d> acc;     ///< acceleration of the body frame's origin, world [m/s^2]
+    /// Joint motion subspace S_i (dim nb): the child's spatial velocity relative to its
+    /// parent per unit θ̇_i, about the world origin: σ[a; p × a] for T 0/T 1 (a: world
+    /// axis A, p: joint point), σ[0; r] for T 2 (r: world direction R).
+    std::vector<Vector6d> S;
+    std::vector<Vector6d> v;   ///< spatial velocity [ω; v_O] of each body, about the world origin
+    std::vector<Vector6d> a;   ///< spatial acceleration [α; a_O] = d/dt v (RBDA §2.11)
+
+    // ---- applied loads (solver/dynamics/applied_forces.h) --------------------
+    std::vector<Vector6d> fext;           ///< applied load on each body, about its frame origin (dim nb)
+    Eigen::VectorXd tauExt;               ///< generalized applied force on each θ (F JOINT, by θ) (dim nb)
+
+    // ---- dynamics (solver/dynamics/forward_dynamics.h) ----------------------
+    Eigen::VectorXd qdd;          ///< θ̈ (dim nb)
+    /// Generalized force the joint transmits along θ (dim nb) [N or N m]: drive +
+    /// tauExt + the limit stop's force. For a joint with prescribed acceleration
+    /// (hydraulic with the relief closed, or at a limit) this is what the hybrid
+    /// algorithm solves for.
+    Eigen::VectorXd tau;
+    /// Per joint: its drive's force in the modeler's coordinate — the cylinder's force
+    /// along its axis [N] for T 1, the force [N] for T 2, the torque [N m] for T 0 —
+    /// positive when it pushes q up; 0 for a passive joint. A hydraulic joint with the
+    /// relief closed, or at a limit, carries what it must: (tau − tauExt) / (dq/dθ).
+    Eigen::VectorXd driveForce;
+    /// Per joint: the generalized force along θ of the limit stop of a joint at a
+    /// limit (tau − drive − tauExt) [N or N m]; ≥ 0 pushes θ up (a lower stop holding),
+    /// ≤ 0 down. 0 for a free joint, and for a hydraulic joint (its cylinder carries
+    /// the load, in driveForce).
+    Eigen::VectorXd limitForce;
+    /// Per joint: the load the parent body exerts on the child through the joint
+    /// (drive and constraint together), world axes, moment about the child's joint
+    /// point (the origin of X_wj): [M; F] [N m; N].
+    std::vector<Vector6d> reactionWorld;
+    /// The same in the axes of the joint frame X_wj (A, R, T): [M_a M_r M_t F_a F_r F_t].
+    std::vector<Vector6d> reactionJoint;
+
+    // ---- scratch of the algorithms (owned by them; do not read) ---------------
+    // forward dynamics (RBDA §7.3 articulated-body algorithm, §9.2 hybrid dynamics),
+    // all about the world origin in world axes
+    std::vector<Vector6d> c;        ///< velocity-product acceleration c_i = v_i ×m S_i θ̇_i
+    std::vector<RigidInertia> Ib;   ///< body spatial inertia
+    std::vector<Vector6d> pb;       ///< body bias force v ×* I v − fext − gravity
+    std::vector<Matrix6d> IA;       ///< articulated-body inertia
+    std::vector<Vector6d> pA;       ///< articulated-body bias force
+    std::vector<Vector6d> U;        ///< U_i = I^A_i S_i
+    std::vector<Vector6d> f;        ///< force transmitted through each joint, parent → child
+    Eigen::VectorXd D;              ///< D_i = S_iᵀ U_i
+    Eigen::VectorXd uA;             ///< u_i = τ_i − S_iᵀ p^A_i
+    Eigen::VectorXd tauKnown;       ///< known generalized force of a free joint (drive + tauExt)
+    Eigen::VectorXd tauDrive;       ///< the drive's generalized force along θ (force-driven joints)
+    std::vector<char> prescribed;   ///< per joint: acceleration known in this evaluation
+};
+
+}  // namespace solver

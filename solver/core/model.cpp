@@ -1,0 +1,32 @@
+#include "solver/core/model.h"
+
+namespace solver {
+
+int Model::jointIndex(int id) const
+{
+    // linear: for look-ups outside the step loop
+    for (int i = 0; i < nb; ++i) {
+        if (jointId[i] == id) return i;
+    }
+    return -1;
+}
+
+int Model::bodyIndex(int id) const
+{
+    for (int i = 0; i < nb; ++i) {
+        if (bodyId[i] == id) return i;
+    }
+    return -1;
+}
+
+double Model::coordinate(int i, double theta) const
+{
+    return jointType[i] == JointType::Actuator ? lengthLaw[i].length(theta) : theta;
+}
+
+double Model::coordinateRate(int i, double theta) const
+{
+    return jointType[i] == JointType::Actuator ? lengthLaw[i].lengthRate(theta) : 1.0;
+}
+
+}  // namespace solver

@@ -1,0 +1,119 @@
+#pragma once
+// Model: the compiled, immutable form of a model, built once by compileModel()
+// (solver/compile/compile.h) and shared as std::shared_ptr<const Model> by every
+// thread that simulates, draws or checks it. It holds no per-step values: those
+// live in State (what the integrator advances) and Data (derived values and
+// scratch), so several States can share one Model.
+//
+// Numbering (Featherstone's, 0-based): the moving bodies are numbered in tree
+// order, 0 … nb−1, so that body i's parent joint is joint i and its parent body
+// parent[i] < i (−1 = ground). Arrays below are indexed by that number ("tree
+// index"); the modeler's ids are in bodyId/jointId.
+//
+// Coordinates: the state holds each joint's kinematic coordinate θ: the angle
+// [rad] for revolute (T 0) and pivoted-actuator (T 1) joints, the displacement
+// [m] for prismatic (T 2) joints. For T 1 the modeler's coordinate is the
+// actuator length L(θ) (lengthLaw), used for limits, drives and output.
+//
+// Frames: each joint has a joint frame with axes (A, R, T = A×R) as columns and
+// origin P. X_pj is its pose in the parent body's frame, X_cj in the child's. The
+// child's pose in the parent's is X_pc(θ) = X_pj · J(σθ) · X_cj⁻¹, where J turns
+// about the joint frame's x axis (= A) for T 0/T 1 or shifts along its y axis
+// (= R) for T 2, and σ = axisSign is +1, or −1 when the modeler wrote the joint
+// from the child to the parent (B1 is the child). Body frames have their origin
+// where the modeler put it (the centre of mass unless CG moves it).
+//
+// Closed loops (issue 4) will add the cut joints as a separate list (their two
+// bodies' tree indices and frames) on top of this tree; everything indexed by tree
+// index below stays as it is.
+
+#include "solver/kinematics/joint_geometry.h"
+#include "solver/model/model_spec.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace solver {
+
+enum class DriveType { None, Hydraulic, Motor, Pneumatic, Servo };
+
+/// A joint's drive, in the joint's own coordinate (T 1: the actuator length).
+struct CompiledDrive {
+    DriveType type = DriveType::None;
+    // Hydraulic: q̇ = u·vmax (u > 0) or u·vmin (u < 0); relief at fmax (extending) / fmin (retracting)
+    double vmax = 0, vmin = 0;   ///< [m/s or rad/s] (magnitudes)
+    double fmax = std::numeric_limits<double>::infinity();  ///< [N or N m] (magnitude)
+    double fmin = std::numeric_limits<double>::infinity();  ///< [N or N m] (magnitude)
+    // Motor: τ = u·t0·(1 − |q̇|/w0), 0 beyond w0
+    double t0 = 0, w0 = 0;       ///< [N m], [rad/s]
+    // Pneumatic: F = u·force
+    double force = 0;            ///< [N]
+    // Servo: PID on the set-point setLow + (u+1)/2·(setHigh − setLow), output clamped to ±servoFmax
+    double kp = 0, ki = 0, kd = 0;
+    double servoFmax = std::numeric_limits<double>::infinity();
+    double setLow = 0, setHigh = 0;
+};
+
+/// A magnitude law (MagnitudeSpec compiled: TABLE Q's joint as a tree index).
+struct CompiledMagnitude {
+    MagnitudeSpec::Kind kind = MagnitudeSpec::Kind::Constant;
+    double value = 0, amplitude = 0, frequency = 0, phase = 0, offset = 0;
+    int joint = -1;  ///< TableJoint: tree index; the table's abscissa is that joint's modeler coordinate
+    std::vector<double> x, y;  ///< table abscissae (increasing) and values
+};
+
+/// An applied force (ForceSpec compiled: bodies and joints as tree indices, −1 = ground).
+struct CompiledForce {
+    int id = 0;
+    ForceKind kind = ForceKind::Point;
+    int body = -1, body2 = -1, joint = -1;
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();   ///< body-local [m]
+    Eigen::Vector3d point2 = Eigen::Vector3d::Zero();  ///< SPRING: on body2, local [m]
+    Eigen::Vector3d dir = Eigen::Vector3d::UnitZ();    ///< unit; world axes unless local
+    bool local = false;
+    CompiledMagnitude mag;
+    double stiffness = 0, restLength = 0, damping = 0;
+    double area = 0, cd = 0, cl = 0, rho = 1.225;
+};
+
+struct Model {
+    int nb = 0;  ///< moving bodies = tree joints
+    Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);  ///< [m/s^2]
+    double restitution = 0;  ///< coefficient of restitution at joint limits (0 = inelastic)
+
+    // per body / joint, by tree index (dim nb)
+    std::vector<int> parent;            ///< parent body's tree index, −1 = ground
+    std::vector<int> bodyId;            ///< modeler's body id
+    std::vector<int> jointId;           ///< modeler's id of the body's parent joint
+    std::vector<std::string> bodyName, jointName;
+    std::vector<JointType> jointType;
+    std::vector<Eigen::Isometry3d> X_pj;  ///< joint frame in the parent body (ground: world)
+    std::vector<Eigen::Isometry3d> X_cj;  ///< joint frame in the child body
+    std::vector<Eigen::Isometry3d> X_jc;  ///< X_cj⁻¹: the child body's frame in its joint frame (derived)
+    std::vector<double> axisSign;         ///< +1, or −1 when written child → parent
+    std::vector<ActuatorLengthLaw> lengthLaw;  ///< T 1 only: L²(θ) law of the actuator
+    std::vector<Eigen::Vector3d> cl1, cl2;     ///< T 1 only: actuator ends, in the B1 and B2 body frames
+    std::vector<double> lower, upper;     ///< limits on θ (T 1: converted from lengths), ±∞ when absent
+    std::vector<double> mass;             ///< [kg]
+    std::vector<Eigen::Vector3d> com;     ///< centre of mass in the body frame [m]
+    std::vector<Eigen::Matrix3d> inertia; ///< about the centre of mass, body axes [kg m^2]
+    std::vector<CompiledDrive> drive;
+    std::vector<double> theta0, thetaDot0;  ///< initial θ and θ̇ (QI/VI converted)
+
+    std::vector<CompiledForce> forces;
+
+    /// Tree index of the joint with modeler id `id`, or −1.
+    int jointIndex(int id) const;
+    /// Tree index of the body with modeler id `id`; −1 for ground or an unknown id.
+    int bodyIndex(int id) const;
+    /// The modeler's coordinate q of joint i at θ (T 1: the length L(θ); else θ).
+    double coordinate(int i, double theta) const;
+    /// dq/dθ of joint i at θ (T 1: dL/dθ; else 1).
+    double coordinateRate(int i, double theta) const;
+};
+
+}  // namespace solver

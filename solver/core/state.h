@@ -1,0 +1,33 @@
+#pragma once
+// State: what the integrator advances, one per simulation (GUI, solver thread,
+// tutorial checker and tests each hold their own). Sized for a Model by
+// makeState(); nothing here is derived (derived values live in Data).
+
+#include "solver/core/model.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace solver {
+
+enum class LimitState { Free, AtLower, AtUpper };
+/// A hydraulic joint's relief valve: closed (rate prescribed) or open, the joint
+/// then driven by the relief force while extending (+fmax) or retracting (−fmin).
+enum class ReliefState { Closed, OpenExtending, OpenRetracting };
+
+struct State {
+    double t = 0;               ///< [s]
+    Eigen::VectorXd q;          ///< θ per joint (dim nb) [rad or m]
+    Eigen::VectorXd qd;         ///< θ̇ per joint (dim nb)
+    Eigen::VectorXd u;          ///< operator command per joint in [−1, 1] (dim nb; ignored without a drive)
+    Eigen::VectorXd servoIntegral;  ///< ∫ set-point error dt per joint (servo drives) (dim nb)
+    std::vector<LimitState> limit;  ///< per joint
+    std::vector<ReliefState> relief;  ///< per joint (hydraulic drives)
+};
+
+/// The initial state: θ = theta0, θ̇ = thetaDot0, t = 0, u = 0, limits/valves at rest
+/// (a joint that starts on a limit is AtLower/AtUpper).
+State makeState(const Model& model);
+
+}  // namespace solver

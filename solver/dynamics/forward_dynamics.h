@@ -1,0 +1,47 @@
+#pragma once
+// Hybrid forward dynamics of the tree in O(n): the articulated-body algorithm with
+// prescribed-acceleration joints (Featherstone, RBDA §7.3 and §9.2 "hybrid
+// dynamics"), then the joint reactions by the Newton–Euler backward pass (RBDA
+// §5.3, thesis eq. 2.8–2.9).
+//
+// Joints with known acceleration (drives.h): hydraulic drives with the relief valve
+// closed and joints at a limit; their generalized force is the unknown. All others
+// have a known generalized force τ = drive (drives.h, converted to θ by dq/dθ) +
+// Data::tauExt, and an unknown θ̈. Every body carries gravity (Model::gravity at its
+// centre of mass) and Data::fext.
+//
+// Everything is about the world origin in world axes (core/spatial.h): body inertias
+// I_i, velocities v_i, motion subspaces S_i (kinematics.h). The passes:
+//   1. p_i = v_i ×* I_i v_i − fext_i − f_gravity,i;  I^A_i = I_i, p^A_i = p_i;
+//   2. leaves → root: free joint: U = I^A S, D = Sᵀ U, u = τ − Sᵀ p^A,
+//        I^A_λ += I^A − U Uᵀ/D,  p^A_λ += p^A + I^A c + U (u − Uᵀc)/D;
+//      prescribed joint: I^A_λ += I^A,  p^A_λ += p^A + I^A (c + S θ̈);
+//   3. root → leaves: a' = a_λ + c;  free: θ̈ = (u − Uᵀa')/D;  a_i = a' + S θ̈;
+//   4. leaves → root: f_i = I_i a_i + p_i + Σ_children f_k (the load the parent
+//      exerts on body i through joint i), τ_i = S_iᵀ f_i.
+// The reaction is f_i moved to the child's joint point (Data::reactionWorld) and
+// turned into the joint frame (Data::reactionJoint).
+//
+// No allocation (everything is pre-sized in Data; sizes are asserted), no exceptions.
+
+#include "solver/core/data.h"
+#include "solver/core/model.h"
+#include "solver/core/state.h"
+
+namespace solver {
+
+/// Sets data.fext and data.tauExt to zero (for callers without applied forces).
+void clearAppliedForces(Data& data);
+
+/// Forward dynamics at `state`: runs forwardKinematics, then hybridDynamics. Reads
+/// data.fext and data.tauExt as filled by the caller (applyForces, or
+/// clearAppliedForces). Outputs data.qdd, tau, driveForce, limitForce, reactionWorld,
+/// reactionJoint, and the accelerations data.a, alpha, acc.
+void forwardDynamics(const Model& model, const State& state, Data& data);
+
+/// The same without the kinematics: data must hold forwardKinematics of `state`
+/// (e.g. forwardKinematics → applyForces → hybridDynamics, which computes the
+/// kinematics once).
+void hybridDynamics(const Model& model, const State& state, Data& data);
+
+}  // namespace solver

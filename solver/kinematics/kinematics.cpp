@@ -1,0 +1,149 @@
+#include "solver/kinematics/kinematics.h"
+
+#include <cassert>
+#include <cmath>
+
+namespace solver {
+
+using Eigen::Vector3d;
+
+void forwardKinematics(const Model& model, const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
+                       Data& data)
+{
+    const int nb = model.nb;
+    assert(q.size() == nb && qd.size() == nb);
+    assert(static_cast<int>(data.X_wb.size()) == nb && static_cast<int>(data.c.size()) == nb);
+
+    for (int i = 0; i < nb; ++i) {
+        const int p = model.parent[i];
+        const double sigma = model.axisSign[i];
+        const double th = sigma * q[i];
+
+        // the child's joint frame: the parent's joint frame moved by J(σθ) (eq. 2.1)
+        Eigen::Isometry3d& X_wj = data.X_wj[i];
+        if (p < 0) {
+            X_wj = model.X_pj[i];
+        } else {
+            X_wj = data.X_wb[p] * model.X_pj[i];
+        }
+        Vector6d& s = data.S[i];
+        if (model.jointType[i] == JointType::Prismatic) {
+            const Vector3d r = X_wj.linear().col(1);
+            X_wj.translation() += th * r;
+            s.head<3>().setZero();
+            s.tail<3>() = sigma * r;
+        } else {
+            // turn about the frame's x axis (A): R ← R · Rx(σθ)
+            const double cs = std::cos(th), sn = std::sin(th);
+            const Vector3d r = X_wj.linear().col(1), t = X_wj.linear().col(2);
+            X_wj.linear().col(1) = cs * r + sn * t;
+            X_wj.linear().col(2) = cs * t - sn * r;
+            const Vector3d axis = sigma * X_wj.linear().col(0);
+            s.head<3>() = axis;
+            s.tail<3>() = X_wj.translation().cross(axis);
+        }
+        data.X_wb[i] = X_wj * model.X_jc[i];
+
+        // velocity (eq. 2.2–2.4) and the velocity-product acceleration
+        const Vector6d vj = s * qd[i];
+        if (p < 0) {
+            data.v[i] = vj;
+        } else {
+            data.v[i] = data.v[p] + vj;
+        }
+        data.c[i] = crossMotion(data.v[i], vj);
+        data.omega[i] = data.v[i].head<3>();
+        data.vel[i] = data.v[i].tail<3>() + data.omega[i].cross(data.X_wb[i].translation());
+    }
+}
+
+void forwardKinematics(const Model& model, const State& state, Data& data)
+{
+    forwardKinematics(model, state.q, state.qd, data);
+}
+
+void bodyAccelerations(const Model& model, const Eigen::VectorXd& qdd, Data& data)
+{
+    const int nb = model.nb;
+    assert(qdd.size() == nb && static_cast<int>(data.a.size()) == nb);
+    for (int i = 0; i < nb; ++i) {
+        // eq. 2.5–2.7 in spatial form
+        const int p = model.parent[i];
+        data.a[i] = data.c[i] + data.S[i] * qdd[i];
+        if (p >= 0) data.a[i] += data.a[p];
+        data.alpha[i] = data.a[i].head<3>();
+        data.acc[i] = data.a[i].tail<3>() + data.alpha[i].cross(data.X_wb[i].translation()) +
+                      data.omega[i].cross(data.vel[i]);
+    }
+}
+
+Vector3d bodyPointPosition(const Data& data, int body, const Vector3d& p)
+{
+    return body < 0 ? p : Vector3d(data.X_wb[body] * p);
+}
+
+Vector3d bodyPointVelocity(const Data& data, int body, const Vector3d& p)
+{
+    if (body < 0) return Vector3d::Zero();
+    const Vector3d x = data.X_wb[body] * p;
+    return data.v[body].tail<3>() + data.omega[body].cross(x);
+}
+
+Vector3d bodyPointAcceleration(const Data& data, int body, const Vector3d& p)
+{
+    if (body < 0) return Vector3d::Zero();
+    // classical acceleration from the spatial one: a_O + α × x + ω × v_x
+    const Vector3d x = data.X_wb[body] * p;
+    const Vector3d vx = data.v[body].tail<3>() + data.omega[body].cross(x);
+    return data.a[body].tail<3>() + data.alpha[body].cross(x) + data.omega[body].cross(vx);
+}
+
+Vector3d comPosition(const Model& model, const Data& data, int body)
+{
+    return bodyPointPosition(data, body, model.com[body]);
+}
+
+Vector3d comVelocity(const Model& model, const Data& data, int body)
+{
+    return bodyPointVelocity(data, body, model.com[body]);
+}
+
+Vector3d comAcceleration(const Model& model, const Data& data, int body)
+{
+    return bodyPointAcceleration(data, body, model.com[body]);
+}
+
+Eigen::Isometry3d jointFramePose(const Model& model, const Data& data, int joint, bool parentSide)
+{
+    if (!parentSide) return data.X_wj[joint];
+    const int p = model.parent[joint];
+    return p < 0 ? model.X_pj[joint] : Eigen::Isometry3d(data.X_wb[p] * model.X_pj[joint]);
+}
+
+double kineticEnergy(const Model& model, const Data& data)
+{
+    double e = 0;
+    for (int i = 0; i < model.nb; ++i) {
+        // ½ m |v_c|² + ½ ωᵀ I ω, with ω in body axes
+        const Vector3d vc = comVelocity(model, data, i);
+        const Vector3d wb = data.X_wb[i].linear().transpose() * data.omega[i];
+        e += 0.5 * model.mass[i] * vc.squaredNorm() + 0.5 * wb.dot(model.inertia[i] * wb);
+    }
+    return e;
+}
+
+double potentialEnergy(const Model& model, const Data& data)
+{
+    double e = 0;
+    for (int i = 0; i < model.nb; ++i) {
+        e -= model.mass[i] * model.gravity.dot(comPosition(model, data, i));
+    }
+    return e;
+}
+
+double mechanicalEnergy(const Model& model, const Data& data)
+{
+    return kineticEnergy(model, data) + potentialEnergy(model, data);
+}
+
+}  // namespace solver
