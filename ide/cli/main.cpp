@@ -3,6 +3,7 @@
 // errors, 2 usage error or unreadable file.
 
 #include "ide/cli/info_report.h"
+#include "ide/cli/simulate.h"
 #include "solver/model/load.h"
 
 #include <QCoreApplication>
@@ -28,6 +29,8 @@ std::string mainHelp()
               "Commands:\n"
               "  check MODEL...        check models and print their problems\n"
               "  info MODEL [--json]   describe a model: bodies, joints, chains, degrees of freedom\n"
+              "  simulate MODEL --time T [OPTIONS]\n"
+              "                        simulate a model and write its trajectory as CSV\n"
               "\n"
               "Options:\n"
               "  -h, --help            show this help (or a command's: padrob COMMAND --help)\n"
@@ -170,6 +173,7 @@ int main(int argc, char** argv)
     }
     if (cmd == "check") return runCheck(rest);
     if (cmd == "info") return runInfo(rest);
+    if (cmd == "simulate") return ide::cli::runSimulate(rest);
     print(stderr, tr("padrob: unknown command '") + cmd + "'\n" + tr("Try 'padrob --help'.") + "\n");
     return kUsage;
 }

@@ -335,6 +335,7 @@ public:
             r.t = m_t;
             r.message = m_failMessage;
             r.badComponent = m_badComponent;
+            r.failureTime = m_failureTime;
             return r;
         }
         // a step of a few ulps is refused by SUNDIALS (TOO_CLOSE); it changes nothing
@@ -365,10 +366,12 @@ public:
             m_failed = true;
             m_failMessage = failureMessage(flag, tret);
             m_badComponent = isUserFunctionFailure(flag) ? m_failure.component : -1;
+            m_failureTime = std::max(tret, m_t);
             r.status = AdvanceStatus::Failed;
             r.t = m_t;
             r.message = m_failMessage;
             r.badComponent = m_badComponent;
+            r.failureTime = m_failureTime;
             return r;
         }
         if (flag == ARK_ROOT_RETURN) {
@@ -529,6 +532,7 @@ private:
     bool m_failed = false;
     std::string m_failMessage;
     int m_badComponent = -1;
+    double m_failureTime = 0;
     long m_stepsSeen = 0;
     Failure m_failure;
     char m_sundialsMessage[512] = {};

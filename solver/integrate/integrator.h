@@ -117,6 +117,9 @@ struct AdvanceResult {
     std::string message;
     /// Failed only: the state component whose derivative was not finite, or −1.
     int badComponent = -1;
+    /// Failed only: the time SUNDIALS reports for the failure [s] (ARKODE: the
+    /// failing stage's time; CVODE: the last successful step's), >= t.
+    double failureTime = 0;
 
     bool ok() const { return status != AdvanceStatus::Failed; }
 };

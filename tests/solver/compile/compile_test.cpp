@@ -103,8 +103,8 @@ TEST(Compile, LinerManipulatorActuatorLawsAndLimits)
     EXPECT_NEAR(boom.c2, 0.58, 1e-12);
     EXPECT_NEAR(m.lower[1], std::asin((1.4 * 1.4 - 2.1425) / 0.58), 1e-12);    // −18.3°
     EXPECT_NEAR(m.upper[1], std::asin((1.617 * 1.617 - 2.1425) / 0.58), 1e-12);  // +54.5°
-    EXPECT_NEAR(m.lower[1], -0.320245, 1e-6);
-    EXPECT_NEAR(m.upper[1], 0.951117, 1e-6);
+    EXPECT_NEAR(m.lower[1], -0.320093, 1e-6);
+    EXPECT_NEAR(m.upper[1], 0.951210, 1e-6);
     EXPECT_NEAR(m.theta0[1], std::asin((1.464 * 1.464 - 2.1425) / 0.58), 1e-12);  // +0.08°
     EXPECT_NEAR(m.coordinate(1, m.theta0[1]), 1.464, 1e-12);
     EXPECT_NEAR(m.coordinateRate(1, m.theta0[1]), 0.29 * std::cos(m.theta0[1]) / 1.464, 1e-12);
@@ -311,7 +311,7 @@ B2 2 P2 -0.5 0 0 A2 0 0 1 R2 1 0 0
 C 3 T 1
 B1 2 P1 0.5 0 0 A1 0 0 1 R1 1 0 0
 B2 3 P2 -0.5 0 0 A2 0 0 1 R2 1 0 0
-CL1 0 0.2 0 CL2 0 0.3 0
+CL1 0.5 0.2 0 CL2 -0.5 0.3 0
 D 1 SERVO KP 100 KI 1 KD 10 FMAX 50
 D 2 SERVO KP 1 KI 0 KD 0
 D 3 SERVO KP 2 KI 0 KD 0
@@ -330,7 +330,8 @@ D 3 SERVO KP 2 KI 0 KD 0
     EXPECT_EQ(d2.servoFmax, kInf);
     EXPECT_DOUBLE_EQ(d2.setLow, -kPi);
     EXPECT_DOUBLE_EQ(d2.setHigh, kPi);
-    // T 1 without limits: the reachable lengths, |0.3 − 0.2| .. 0.3 + 0.2 m
+    // T 1 without limits: the reachable lengths; CL1, CL2 are 0.2 and 0.3 m off the axis:
+    // 0.3 − 0.2 .. 0.3 + 0.2 m
     const CompiledDrive& d3 = m.drive[m.jointIndex(3)];
     EXPECT_NEAR(d3.setLow, 0.1, 1e-12);
     EXPECT_NEAR(d3.setHigh, 0.5, 1e-12);

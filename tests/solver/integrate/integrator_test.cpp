@@ -543,6 +543,8 @@ TEST_P(IntegratorAllMethods, ANanInTheRightHandSideFailsWithAMessage)
     EXPECT_EQ(r.badComponent, 1);
     // time and state stay those of the last good output
     EXPECT_DOUBLE_EQ(r.t, 0.4);
+    EXPECT_GT(r.failureTime, 0.49);
+    EXPECT_LT(r.failureTime, 0.51);
     EXPECT_EQ(in.time(), r.t);
     EXPECT_LT(Oscillator::error(0.4, y), 1e-6);
     EXPECT_LT(in.stats().rhsEvals, 5000);  // gave up at once

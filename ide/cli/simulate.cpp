@@ -1,0 +1,323 @@
+// `padrob simulate`: runs a model headless and writes a CSV trajectory.
+
+#include "ide/cli/simulate.h"
+
+#include "solver/compile/compile.h"
+#include "solver/integrate/simulation.h"
+#include "solver/io/csv_writer.h"
+#include "solver/io/input_table.h"
+#include "solver/kinematics/kinematics.h"
+#include "solver/model/load.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <optional>
+
+namespace ide::cli {
+
+namespace {
+
+constexpr int kOk = 0, kModelErrors = 1, kUsage = 2;
+
+std::string tr(const char* s) { return QCoreApplication::translate("padrob-simulate", s).toStdString(); }
+
+void printErr(const std::string& s) { std::fwrite(s.data(), 1, s.size(), stderr); }
+
+int usage(const std::string& message)
+{
+    printErr("padrob simulate: " + message + "\n" + tr("Try 'padrob simulate --help'.") + "\n");
+    return kUsage;
+}
+
+/// A finite number, the whole of `s`.
+std::optional<double> toNumber(const std::string& s)
+{
+    double v = 0;
+    const char* b = s.data();
+    if (!s.empty() && s[0] == '+') ++b;
+    auto [p, ec] = std::from_chars(b, s.data() + s.size(), v);
+    if (ec != std::errc() || p != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
+    return v;
+}
+
+std::optional<long> toInteger(const std::string& s)
+{
+    long v = 0;
+    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc() || p != s.data() + s.size()) return std::nullopt;
+    return v;
+}
+
+struct Assignment {
+    int joint = 0;
+    double value = 0;
+};
+
+}  // namespace
+
+std::string simulateHelp()
+{
+    return tr("Usage: padrob simulate MODEL --time T [OPTIONS]\n"
+              "\n"
+              "Simulates the model for T seconds and writes its trajectory as CSV.\n"
+              "\n"
+              "  --time T              simulated time [s] (required, > 0)\n"
+              "  --dt H                step [s] (default 0.001): the RK4 step, and how often the\n"
+              "                        inputs are read and output rows may be written\n"
+              "  --integrator M        rk4 (fixed step, the real-time integrator; default) or\n"
+              "                        adaptive (error-controlled, for accuracy)\n"
+              "  --rtol R              relative tolerance of the adaptive integrator (default 1e-8)\n"
+              "  --input FILE.csv      operator commands: a column t and one column u<joint id> per\n"
+              "                        drive, values in [-1, 1], held between rows\n"
+              "  --set J=VALUE         initial coordinate of joint J (overrides QI; T 1: length)\n"
+              "  --rate J=VALUE        initial rate of joint J (overrides VI)\n"
+              "  --passive             ignore every drive (all joints passive)\n"
+              "  --no-limits           ignore the joint limits LL/UL\n"
+              "  --every N             write one row every N steps (default 1)\n"
+              "  --out FILE.csv        write the CSV there (default: standard output)\n"
+              "\n"
+              "Columns: t; q<j> for every joint j in id order; qd<j> likewise; ang<j> (the\n"
+              "angle, rad) for every pivoted-actuator (T 1) joint, whose q<j> is the length;\n"
+              "x<i> y<i> z<i>, the world position of the centre of mass of every body i;\n"
+              "F<j>, the force or torque of every drive; E, the mechanical energy (kinetic +\n"
+              "gravitational) [J]. Events (limits hit and left, relief valves opening and\n"
+              "closing) are printed on standard error, one per line.\n"
+              "\n"
+              "Exit status: 0 success; 1 the model has errors or the simulation failed;\n"
+              "2 usage error or unreadable input. On failure no output file is left behind.\n");
+}
+
+int runSimulate(const std::vector<std::string>& args)
+{
+    std::string modelPath, inputPath, outPath;
+    std::optional<double> time;
+    double dt = 1e-3, rtol = 1e-8;
+    long every = 1;
+    bool passive = false, noLimits = false, adaptive = false;
+    std::vector<std::pair<std::string, std::string>> sets, rates;  // raw J=VALUE
+
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        auto value = [&](const char* name) -> std::optional<std::string> {
+            if (i + 1 >= args.size()) return std::nullopt;
+            (void)name;
+            return args[++i];
+        };
+        if (a == "-h" || a == "--help") {
+            std::fputs(simulateHelp().c_str(), stdout);
+            return kOk;
+        }
+        if (a == "--passive") { passive = true; continue; }
+        if (a == "--no-limits") { noLimits = true; continue; }
+        const bool takesValue = a == "--time" || a == "--dt" || a == "--integrator" || a == "--rtol" || a == "--input" ||
+                                a == "--set" || a == "--rate" || a == "--every" || a == "--out";
+        if (takesValue) {
+            auto v = value(a.c_str());
+            if (!v) return usage(a + tr(" needs a value"));
+            if (a == "--time") {
+                time = toNumber(*v);
+                if (!time || !(*time > 0)) return usage(tr("--time must be a positive number of seconds, not '") + *v + "'");
+            } else if (a == "--dt") {
+                auto d = toNumber(*v);
+                if (!d || !(*d > 0)) return usage(tr("--dt must be a positive number of seconds, not '") + *v + "'");
+                dt = *d;
+            } else if (a == "--rtol") {
+                auto r = toNumber(*v);
+                if (!r || !(*r > 0) || *r >= 1) return usage(tr("--rtol must be a number between 0 and 1, not '") + *v + "'");
+                rtol = *r;
+            } else if (a == "--every") {
+                auto n = toInteger(*v);
+                if (!n || *n < 1) return usage(tr("--every must be a whole number ≥ 1, not '") + *v + "'");
+                every = *n;
+            } else if (a == "--integrator") {
+                if (*v == "rk4") adaptive = false;
+                else if (*v == "adaptive") adaptive = true;
+                else return usage(tr("--integrator must be rk4 or adaptive, not '") + *v + "'");
+            } else if (a == "--input") {
+                inputPath = *v;
+            } else if (a == "--out") {
+                outPath = *v;
+            } else {
+                const std::size_t eq = v->find('=');
+                if (eq == std::string::npos) return usage(a + tr(" takes J=VALUE (a joint id and a number), not '") + *v + "'");
+                (a == "--set" ? sets : rates).emplace_back(v->substr(0, eq), v->substr(eq + 1));
+            }
+            continue;
+        }
+        if (a.size() > 1 && a[0] == '-') return usage(tr("unknown option '") + a + "'");
+        if (!modelPath.empty()) return usage(tr("give one model"));
+        modelPath = a;
+    }
+    if (modelPath.empty()) return usage(tr("no model given"));
+    if (!time) return usage(tr("--time is required"));
+    if (dt > *time) return usage(tr("--dt is longer than --time"));
+    const double steps = std::ceil(*time / dt - 1e-9);
+    if (steps > 1e9) return usage(tr("--time / --dt is more than 1e9 steps"));
+
+    // the model
+    solver::LoadedModel loaded = solver::loadModelFile(modelPath);
+    bool io = false;
+    for (const solver::Diagnostic& d : loaded.diagnostics) {
+        if (d.severity == solver::Severity::Error || d.code == "io-error") printErr(d.format() + "\n");
+        if (d.code == "io-error") io = true;
+    }
+    if (io) return kUsage;
+    if (!loaded.ok()) return kModelErrors;
+    solver::Diagnostics compileDiags(modelPath);
+    std::shared_ptr<const solver::Model> model = solver::compileLoaded(loaded, compileDiags);
+    for (const solver::Diagnostic& d : compileDiags) printErr(d.format() + "\n");
+    if (!model) return kModelErrors;
+    const solver::Model& m = *model;
+
+    // --set / --rate
+    auto parseAssignments = [&](const auto& raw, const char* option, std::vector<Assignment>& out) -> bool {
+        for (const auto& [js, vs] : raw) {
+            auto id = toInteger(js);
+            auto v = toNumber(vs);
+            if (!id || !v) {
+                usage(std::string(option) + tr(" takes J=VALUE (a joint id and a number), not '") + js + "=" + vs + "'");
+                return false;
+            }
+            const int j = m.jointIndex(static_cast<int>(*id));
+            if (j < 0) {
+                usage(std::string(option) + tr(": the model has no joint ") + js);
+                return false;
+            }
+            out.push_back({j, *v});
+        }
+        return true;
+    };
+    std::vector<Assignment> setList, rateList;
+    if (!parseAssignments(sets, "--set", setList) || !parseAssignments(rates, "--rate", rateList)) return kUsage;
+
+    // the input table, checked against the model's drives
+    std::optional<solver::InputTable> inputs;
+    std::vector<int> inputJoint;  // per input column: tree index
+    if (!inputPath.empty()) {
+        solver::Diagnostics diags(inputPath);
+        inputs = solver::InputTable::readFile(inputPath, diags);
+        if (inputs) {
+            std::vector<int> drivenIds, jointIds;
+            for (int j = 0; j < m.nb; ++j) {
+                jointIds.push_back(m.jointId[j]);
+                if (!passive && m.drive[j].type != solver::DriveType::None) drivenIds.push_back(m.jointId[j]);
+            }
+            solver::checkInputColumns(*inputs, drivenIds, jointIds, diags);
+        }
+        for (const solver::Diagnostic& d : diags) printErr(d.format() + "\n");
+        if (!inputs || diags.hasErrors()) return kUsage;
+        for (std::size_t c = 0; c < inputs->columnCount(); ++c) inputJoint.push_back(m.jointIndex(inputs->jointId(c)));
+    }
+
+    // the output
+    solver::CsvWriter out = outPath.empty() ? solver::CsvWriter() : solver::CsvWriter(outPath);
+    if (!out.ok()) {
+        printErr("padrob simulate: " + out.errorString() + "\n");
+        return kUsage;
+    }
+    std::vector<int> joints(static_cast<std::size_t>(m.nb)), bodies(static_cast<std::size_t>(m.nb));
+    for (int j = 0; j < m.nb; ++j) joints[j] = bodies[j] = j;
+    std::sort(joints.begin(), joints.end(), [&](int a, int b) { return m.jointId[a] < m.jointId[b]; });
+    std::sort(bodies.begin(), bodies.end(), [&](int a, int b) { return m.bodyId[a] < m.bodyId[b]; });
+    std::vector<std::string> header{"t"};
+    for (int j : joints) header.push_back("q" + std::to_string(m.jointId[j]));
+    for (int j : joints) header.push_back("qd" + std::to_string(m.jointId[j]));
+    for (int j : joints) {
+        if (m.jointType[j] == solver::JointType::Actuator) header.push_back("ang" + std::to_string(m.jointId[j]));
+    }
+    for (int b : bodies) {
+        const std::string id = std::to_string(m.bodyId[b]);
+        header.insert(header.end(), {"x" + id, "y" + id, "z" + id});
+    }
+    std::vector<int> driven;
+    for (int j : joints) {
+        if (!passive && m.drive[j].type != solver::DriveType::None) {
+            driven.push_back(j);
+            header.push_back("F" + std::to_string(m.jointId[j]));
+        }
+    }
+    header.push_back("E");
+    out.writeHeader(header);
+
+    // the simulation
+    solver::SimulationOptions options;
+    options.integrator.method = adaptive ? solver::IntegrationMethod::Adaptive : solver::IntegrationMethod::Rk4Fixed;
+    options.integrator.step = dt;
+    options.integrator.rtol = rtol;
+    options.integrator.atol = rtol * 1e-2;
+    options.drives = !passive;
+    options.limits = !noLimits;
+    solver::Simulation sim(model, options);
+    for (const Assignment& s : setList) {
+        double theta = s.value;
+        if (m.jointType[s.joint] == solver::JointType::Actuator) {
+            auto a = m.lengthLaw[s.joint].angle(s.value);
+            if (!a) {
+                return usage("--set " + std::to_string(m.jointId[s.joint]) + "=" + std::to_string(s.value) +
+                             tr(": the actuator cannot reach that length"));
+            }
+            theta = *a;
+        }
+        sim.setInitial(s.joint, theta, sim.state().qd[s.joint]);
+    }
+    for (const Assignment& r : rateList) {
+        const double dqdtheta = m.coordinateRate(r.joint, sim.state().q[r.joint]);
+        if (dqdtheta == 0) return usage(tr("--rate: the joint is at a dead point; its rate cannot be set"));
+        sim.setInitial(r.joint, sim.state().q[r.joint], r.value / dqdtheta);
+    }
+
+    std::vector<solver::SimulationEvent> events;
+    auto writeRow = [&] {
+        const solver::State& s = sim.state();
+        const solver::Data& d = sim.data();
+        out.add(s.t);
+        for (int j : joints) out.add(m.coordinate(j, s.q[j]));
+        for (int j : joints) out.add(s.qd[j] * m.coordinateRate(j, s.q[j]));
+        for (int j : joints) {
+            if (m.jointType[j] == solver::JointType::Actuator) out.add(s.q[j]);
+        }
+        for (int b : bodies) {
+            const Eigen::Vector3d c = solver::comPosition(m, d, b);
+            out.add(c.x());
+            out.add(c.y());
+            out.add(c.z());
+        }
+        for (int j : driven) out.add(d.driveForce[j]);
+        out.add(solver::mechanicalEnergy(m, d));
+        out.endRow();
+    };
+    std::optional<solver::InputTable::Cursor> cursor;
+    if (inputs) cursor.emplace(inputs->cursor());
+    const long n = static_cast<long>(steps);
+    std::string error;
+    for (long k = 0; k <= n; ++k) {
+        const double t = std::min(*time, static_cast<double>(k) * dt);
+        if (cursor) {
+            cursor->seek(t);
+            for (std::size_t c = 0; c < inputJoint.size(); ++c) sim.setCommand(inputJoint[c], cursor->value(c));
+        }
+        if (k % every == 0 || k == n) writeRow();
+        if (k == n) break;
+        const double next = std::min(*time, static_cast<double>(k + 1) * dt);
+        events.clear();
+        const bool ok = sim.advanceTo(next, events, error);
+        for (const solver::SimulationEvent& e : events) printErr(e.describe(m) + "\n");
+        if (!ok) {
+            out.abandon();
+            printErr("padrob simulate: " + error + "\n");
+            return kModelErrors;
+        }
+    }
+    if (!out.commit()) {
+        printErr("padrob simulate: " + out.errorString() + "\n");
+        return kUsage;
+    }
+    return kOk;
+}
+
+}  // namespace ide::cli

@@ -1,0 +1,427 @@
+#include "solver/integrate/simulation.h"
+
+#include "solver/dynamics/applied_forces.h"
+#include "solver/dynamics/drives.h"
+#include "solver/dynamics/forward_dynamics.h"
+#include "solver/kinematics/kinematics.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+
+namespace solver {
+
+namespace {
+
+constexpr int kRootsPerJoint = 4;  // lower limit, upper limit, relief extending, relief retracting
+
+bool isHydraulic(const Model& m, int j) { return m.drive[j].type == DriveType::Hydraulic; }
+
+const char* unitOf(JointType t) { return t == JointType::Revolute ? "rad" : "m"; }
+
+std::string fmt(double v)
+{
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
+
+/// Runs kinematics, applied forces and the hybrid dynamics at `state`.
+void evaluateAll(const Model& model, const State& state, Data& data)
+{
+    forwardKinematics(model, state, data);
+    applyForces(model, state, data);
+    hybridDynamics(model, state, data);
+}
+
+/// The commanded rate of joint j's hydraulic drive in the modeler's coordinate.
+double commandRate(const Model& m, const State& s, int j) { return hydraulicCommandRate(m.drive[j], s.u[j]); }
+
+}  // namespace
+
+std::string SimulationEvent::describe(const Model& model) const
+{
+    std::string who = "joint " + std::to_string(model.jointId[joint]);
+    if (!model.jointName[joint].empty()) who += " " + model.jointName[joint];
+    const char* unit = unitOf(model.jointType[joint]);
+    const char* forceUnit = model.jointType[joint] == JointType::Revolute ? "N m" : "N";
+    std::string what;
+    switch (kind) {
+    case Kind::LimitHit:
+        what = std::string("hit its ") + (side < 0 ? "lower" : "upper") + " limit " + fmt(value) + " " + unit;
+        break;
+    case Kind::LimitLeave:
+        what = std::string("left its ") + (side < 0 ? "lower" : "upper") + " limit " + fmt(value) + " " + unit;
+        break;
+    case Kind::ReliefOpen:
+        what = std::string("relief valve opened ") + (side > 0 ? "extending" : "retracting") + " at " + fmt(value) +
+               " " + forceUnit;
+        break;
+    case Kind::ReliefClose:
+        what = std::string("relief valve closed ") + (side > 0 ? "extending" : "retracting");
+        break;
+    }
+    char t0[32];
+    std::snprintf(t0, sizeof t0, "t=%.6f s: ", t);
+    return t0 + who + " " + what;
+}
+
+/// The ODE y = [θ; θ̇; servo integral] (dim 3·nb) with the event functions of the
+/// current modes (kRootsPerJoint per joint; each valid while positive).
+class Simulation::System : public OdeSystem {
+public:
+    System(const Model& model, const State& modes, bool limits)
+        : m_model(model), m_modes(modes), m_work(modes), m_data(model), m_limits(limits)
+    {
+        for (int j = 0; j < model.nb; ++j) {
+            if ((limits && (std::isfinite(model.lower[j]) || std::isfinite(model.upper[j]))) || isHydraulic(model, j))
+                m_needRoots = true;
+        }
+    }
+
+    int size() const override { return 3 * m_model.nb; }
+    int rootCount() const override { return m_needRoots ? kRootsPerJoint * m_model.nb : 0; }
+    int rootDirection(int) const override { return -1; }
+
+    bool rhs(double t, const double* y, double* ydot) override
+    {
+        load(t, y);
+        evaluateAll(m_model, m_work, m_data);
+        const int nb = m_model.nb;
+        for (int j = 0; j < nb; ++j) {
+            ydot[j] = m_work.qd[j];
+            ydot[nb + j] = m_data.qdd[j];
+            ydot[2 * nb + j] = servoError(m_model, m_work, j);
+        }
+        return true;
+    }
+
+    bool roots(double t, const double* y, double* g) override
+    {
+        load(t, y);
+        evaluateAll(m_model, m_work, m_data);
+        eventFunctions(m_model, m_work, m_data, m_limits, g);
+        return true;
+    }
+
+    /// The event functions at a state whose dynamics `data` holds (dim 4·nb).
+    static void eventFunctions(const Model& model, const State& s, const Data& data, bool limits, double* g)
+    {
+        for (int j = 0; j < model.nb; ++j) {
+            double* gj = g + kRootsPerJoint * j;
+            gj[0] = gj[1] = gj[2] = gj[3] = 1.0;
+            const bool hyd = isHydraulic(model, j);
+            if (limits) {
+                switch (s.limit[j]) {
+                case LimitState::Free:
+                    if (std::isfinite(model.lower[j])) gj[0] = s.q[j] - model.lower[j];
+                    if (std::isfinite(model.upper[j])) gj[1] = model.upper[j] - s.q[j];
+                    break;
+                case LimitState::AtLower:
+                    if (!hyd) gj[0] = data.limitForce[j];
+                    break;
+                case LimitState::AtUpper:
+                    if (!hyd) gj[1] = -data.limitForce[j];
+                    break;
+                }
+            }
+            if (!hyd || s.limit[j] != LimitState::Free) continue;
+            const CompiledDrive& d = model.drive[j];
+            const double rate = s.qd[j] * model.coordinateRate(j, s.q[j]);  // q̇ in the modeler's coordinate
+            switch (s.relief[j]) {
+            case ReliefState::Closed:
+                if (std::isfinite(d.fmax)) gj[2] = d.fmax - data.driveForce[j];
+                if (std::isfinite(d.fmin)) gj[3] = d.fmin + data.driveForce[j];
+                break;
+            case ReliefState::OpenExtending: gj[2] = hydraulicCommandRate(d, s.u[j]) - rate; break;
+            case ReliefState::OpenRetracting: gj[3] = rate - hydraulicCommandRate(d, s.u[j]); break;
+            }
+        }
+    }
+
+private:
+    const Model& m_model;
+    const State& m_modes;  // the simulation's state: modes and commands
+    State m_work;          // modes copied from m_modes, values from y
+    Data m_data;
+    bool m_limits;
+    bool m_needRoots = false;
+
+    void load(double t, const double* y)
+    {
+        const int nb = m_model.nb;
+        m_work.t = t;
+        for (int j = 0; j < nb; ++j) {
+            m_work.q[j] = y[j];
+            m_work.qd[j] = y[nb + j];
+            m_work.servoIntegral[j] = y[2 * nb + j];
+            m_work.u[j] = m_modes.u[j];
+            m_work.limit[j] = m_modes.limit[j];
+            m_work.relief[j] = m_modes.relief[j];
+        }
+    }
+};
+
+namespace {
+
+/// The model the options ask for: drives removed (--passive) or limits removed (--no-limits).
+std::shared_ptr<const Model> adapt(std::shared_ptr<const Model> model, const SimulationOptions& o)
+{
+    if (o.drives && o.limits) return model;
+    auto m = std::make_shared<Model>(*model);
+    for (int j = 0; j < m->nb; ++j) {
+        if (!o.drives) m->drive[j] = CompiledDrive{};
+        if (!o.limits) {
+            m->lower[j] = -std::numeric_limits<double>::infinity();
+            m->upper[j] = std::numeric_limits<double>::infinity();
+        }
+    }
+    return m;
+}
+
+}  // namespace
+
+Simulation::Simulation(std::shared_ptr<const Model> model, const SimulationOptions& options)
+    : m_model(adapt(std::move(model), options)),
+      m_options(options),
+      m_state(makeState(*m_model)),
+      m_data(*m_model),
+      m_y(static_cast<std::size_t>(3 * m_model->nb), 0.0)
+{
+    if (!m_options.limits) {
+        for (LimitState& l : m_state.limit) l = LimitState::Free;
+    }
+    m_system = std::make_unique<System>(*m_model, m_state, m_options.limits);
+    if (m_model->nb > 0) m_integrator = std::make_unique<Integrator>(*m_system, m_options.integrator);
+    evaluate();
+}
+
+Simulation::~Simulation() = default;
+
+void Simulation::setCommand(int joint, double u)
+{
+    u = std::isfinite(u) ? std::clamp(u, -1.0, 1.0) : 0.0;
+    if (m_state.u[joint] != u) {
+        m_state.u[joint] = u;
+        m_restart = true;
+    }
+}
+
+void Simulation::setInitial(int joint, double theta, double thetaDot)
+{
+    m_state.q[joint] = theta;
+    m_state.qd[joint] = thetaDot;
+    LimitState& l = m_state.limit[joint];
+    l = LimitState::Free;
+    if (m_options.limits && theta <= m_model->lower[joint]) l = LimitState::AtLower;
+    if (m_options.limits && theta >= m_model->upper[joint]) l = LimitState::AtUpper;
+    m_restart = true;
+    evaluate();
+}
+
+void Simulation::evaluate() { evaluateAll(*m_model, m_state, m_data); }
+
+void Simulation::packState()
+{
+    const int nb = m_model->nb;
+    for (int j = 0; j < nb; ++j) {
+        m_y[j] = m_state.q[j];
+        m_y[nb + j] = m_state.qd[j];
+        m_y[2 * nb + j] = m_state.servoIntegral[j];
+    }
+}
+
+void Simulation::unpackState()
+{
+    const int nb = m_model->nb;
+    for (int j = 0; j < nb; ++j) {
+        m_state.q[j] = m_y[j];
+        m_state.qd[j] = m_y[nb + j];
+        m_state.servoIntegral[j] = m_y[2 * nb + j];
+    }
+}
+
+void Simulation::prescribeRates()
+{
+    for (int j = 0; j < m_model->nb; ++j) {
+        if (isPrescribed(*m_model, m_state, j)) m_state.qd[j] = prescribedRate(*m_model, m_state, j);
+    }
+}
+
+void Simulation::hitLimit(int j, int side)
+{
+    const Model& m = *m_model;
+    m_state.q[j] = side < 0 ? m.lower[j] : m.upper[j];
+    const double into = m_state.qd[j];
+    if (side * into > 0) {
+        // the generalized impulse along θ_j that turns θ̇_j into −e·θ̇_j, with the
+        // prescribed joints held: Δθ̇ = p·r, r = (response of θ̈ to a unit τ_j)
+        State probe = m_state;
+        probe.qd.setZero();
+        probe.limit[j] = LimitState::Free;
+        if (isHydraulic(m, j)) probe.relief[j] = ReliefState::OpenExtending;  // force-driven for the probe
+        forwardKinematics(m, probe, m_data);
+        clearAppliedForces(m_data);
+        hybridDynamics(m, probe, m_data);
+        const Eigen::VectorXd base = m_data.qdd;
+        m_data.tauExt[j] = 1.0;
+        hybridDynamics(m, probe, m_data);
+        const Eigen::VectorXd r = m_data.qdd - base;
+        if (r[j] > 0) {
+            const double p = -(1.0 + m.restitution) * into / r[j];
+            for (int k = 0; k < m.nb; ++k) {
+                if (k == j || !isPrescribed(m, m_state, k)) m_state.qd[k] += p * r[k];
+            }
+        }
+    }
+    if (m.restitution == 0 || side * m_state.qd[j] >= 0) {
+        m_state.qd[j] = 0;
+        m_state.limit[j] = side < 0 ? LimitState::AtLower : LimitState::AtUpper;
+    }
+}
+
+void Simulation::handleRoots(std::span<const int> fired, std::vector<SimulationEvent>& events)
+{
+    const Model& m = *m_model;
+    for (std::size_t i = 0; i < fired.size(); ++i) {
+        if (fired[i] == 0) continue;
+        const int j = static_cast<int>(i) / kRootsPerJoint;
+        const int k = static_cast<int>(i) % kRootsPerJoint;
+        SimulationEvent e;
+        e.t = m_state.t;
+        e.joint = j;
+        if (k < 2) {
+            const int side = k == 0 ? -1 : +1;
+            e.side = side;
+            e.value = m.coordinate(j, side < 0 ? m.lower[j] : m.upper[j]);
+            if (m_state.limit[j] == LimitState::Free) {
+                hitLimit(j, side);
+                e.kind = SimulationEvent::Kind::LimitHit;
+            } else {
+                m_state.limit[j] = LimitState::Free;
+                e.kind = SimulationEvent::Kind::LimitLeave;
+            }
+        } else {
+            const int side = k == 2 ? +1 : -1;
+            e.side = side;
+            if (m_state.relief[j] == ReliefState::Closed) {
+                m_state.relief[j] = side > 0 ? ReliefState::OpenExtending : ReliefState::OpenRetracting;
+                e.kind = SimulationEvent::Kind::ReliefOpen;
+                e.value = side > 0 ? m.drive[j].fmax : -m.drive[j].fmin;
+            } else {
+                m_state.relief[j] = ReliefState::Closed;
+                e.kind = SimulationEvent::Kind::ReliefClose;
+            }
+        }
+        events.push_back(e);
+    }
+}
+
+void Simulation::applyModeRules(std::vector<SimulationEvent>& events)
+{
+    const Model& m = *m_model;
+    // settle: a mode whose event function is already negative switches now
+    // (at the start, after an event, after a command); a few rounds at most
+    constexpr double tol = 1e-12;
+    std::vector<double> g(static_cast<std::size_t>(kRootsPerJoint * m.nb));
+    // a relief valve that opens now opens before the commanded rate is reached: the
+    // joint keeps the rate it had when the rules were applied
+    const Eigen::VectorXd qdBefore = m_state.qd;
+    for (int round = 0; round < 8; ++round) {
+        bool changed = false;
+        // a hydraulic joint on a limit leaves it when its command turns it away
+        for (int j = 0; j < m.nb; ++j) {
+            if (!isHydraulic(m, j) || m_state.limit[j] == LimitState::Free) continue;
+            const double rate = commandRate(m, m_state, j) * (m.coordinateRate(j, m_state.q[j]) < 0 ? -1 : 1);
+            const int side = m_state.limit[j] == LimitState::AtLower ? -1 : +1;
+            if (side * rate < 0) {
+                m_state.limit[j] = LimitState::Free;
+                events.push_back({SimulationEvent::Kind::LimitLeave, m_state.t, j, side,
+                                  m.coordinate(j, side < 0 ? m.lower[j] : m.upper[j])});
+                changed = true;
+            }
+        }
+        prescribeRates();
+        evaluate();
+        System::eventFunctions(m, m_state, m_data, m_options.limits, g.data());
+        std::vector<int> fired(g.size(), 0);
+        bool any = false;
+        for (std::size_t i = 0; i < g.size(); ++i) {
+            const int j = static_cast<int>(i) / kRootsPerJoint;
+            const int k = static_cast<int>(i) % kRootsPerJoint;
+            if (!(g[i] < -tol)) continue;
+            // a free joint past a limit only stops when it moves into it
+            if (k < 2 && m_state.limit[j] == LimitState::Free) {
+                const int side = k == 0 ? -1 : 1;
+                if (side * m_state.qd[j] < 0) continue;
+            }
+            fired[i] = -1;
+            any = true;
+        }
+        if (any) {
+            const std::size_t first = events.size();
+            handleRoots(fired, events);
+            for (std::size_t e = first; e < events.size(); ++e) {
+                if (events[e].kind == SimulationEvent::Kind::ReliefOpen) m_state.qd[events[e].joint] = qdBefore[events[e].joint];
+            }
+            changed = true;
+        }
+        if (!changed) return;
+    }
+}
+
+bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, std::string& error)
+{
+    if (m_model->nb == 0) {
+        m_state.t = tEnd;
+        return true;
+    }
+    int eventCount = 0;
+    while (true) {
+        if (m_restart) {
+            const std::size_t before = events.size();
+            applyModeRules(events);
+            eventCount += static_cast<int>(events.size() - before);
+            packState();
+            m_integrator->reset(m_state.t, m_y.data());
+            m_restart = false;
+        }
+        if (!(tEnd > m_state.t)) break;
+        AdvanceResult r = m_integrator->advanceTo(tEnd, m_y.data());
+        if (r.status == AdvanceStatus::Failed) {
+            const int nb = m_model->nb;
+            int joint = r.badComponent >= 0 ? r.badComponent % nb : -1;
+            for (int j = 0; joint < 0 && j < nb; ++j) {
+                if (!std::isfinite(m_y[j]) || !std::isfinite(m_y[nb + j])) joint = j;
+            }
+            char t0[48];
+            std::snprintf(t0, sizeof t0, "%.6g", r.t);
+            error = std::string("the simulation failed at t = ") + t0 + " s";
+            if (joint >= 0) {
+                error += ", joint " + std::to_string(m_model->jointId[joint]);
+                if (!m_model->jointName[joint].empty()) error += " (" + m_model->jointName[joint] + ")";
+            }
+            error += ": " + r.message;
+            return false;
+        }
+        m_state.t = r.t;
+        unpackState();
+        if (r.status == AdvanceStatus::Reached) break;
+        const std::size_t before = events.size();
+        handleRoots(r.rootsFired, events);
+        applyModeRules(events);
+        eventCount += static_cast<int>(events.size() - before);
+        if (eventCount > m_options.maxEventsPerAdvance) {
+            error = "more than " + std::to_string(m_options.maxEventsPerAdvance) + " events before t = " +
+                    fmt(tEnd) + " s: the joints keep switching (chattering)";
+            return false;
+        }
+        packState();
+        m_integrator->reset(m_state.t, m_y.data());
+    }
+    evaluate();
+    return true;
+}
+
+}  // namespace solver

@@ -1,0 +1,290 @@
+// Simulation: the dynamics integrated in time, with drives, relief valves and
+// limits as events, checked against physics (analytic periods, energy, hand-derived
+// holding forces, analytic event times) and against itself (order of convergence,
+// independence of the modeler's numbering).
+
+#include "solver/compile/compile.h"
+#include "solver/integrate/simulation.h"
+#include "solver/kinematics/kinematics.h"
+#include "solver/model/load.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+using namespace solver;
+
+namespace {
+
+std::shared_ptr<const Model> compileText(const std::string& text)
+{
+    LoadedModel loaded = loadModelText(text, "m.pad");
+    EXPECT_TRUE(loaded.ok()) << (loaded.diagnostics.empty() ? "" : loaded.diagnostics.items()[0].format());
+    Diagnostics d("m.pad");
+    auto model = compileLoaded(loaded, d);
+    EXPECT_TRUE(model) << (d.empty() ? "" : d.items()[0].format());
+    return model;
+}
+
+std::shared_ptr<const Model> compileFile(const std::string& name)
+{
+    LoadedModel loaded = loadModelFile(std::string(PADROB_SOURCE_DIR) + "/models/" + name);
+    EXPECT_TRUE(loaded.ok());
+    Diagnostics d;
+    return compileLoaded(loaded, d);
+}
+
+SimulationOptions adaptive(double rtol)
+{
+    SimulationOptions o;
+    o.integrator.method = IntegrationMethod::Adaptive;
+    o.integrator.rtol = rtol;
+    o.integrator.atol = rtol * 1e-2;
+    return o;
+}
+
+SimulationOptions rk4(double h)
+{
+    SimulationOptions o;
+    o.integrator.method = IntegrationMethod::Rk4Fixed;
+    o.integrator.step = h;
+    return o;
+}
+
+/// Complete elliptic integral of the first kind K(k) by the arithmetic-geometric mean.
+double ellipticK(double k)
+{
+    double a = 1, b = std::sqrt(1 - k * k);
+    for (int i = 0; i < 40; ++i) {
+        const double an = (a + b) / 2;
+        b = std::sqrt(a * b);
+        a = an;
+    }
+    return std::numbers::pi / (2 * a);
+}
+
+const char* kDoublePendulum = R"(
+GRAVITY 0 0 -9.81
+B 1 2.0 0.02 0.01 0.01 NAME "upper"
+B 2 1.5 0.015 0.01 0.008 CG 0 0.05 0 NAME "lower"
+C 1 QI 1.0 NAME "shoulder"
+B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 -1
+B2 1 P2 0 0 0.5 A2 1 0 0 R2 0 0 -1
+C 2 QI -0.6 VI 1.5 NAME "elbow"
+B1 1 P1 0 0 -0.5 A1 1 0 0 R1 0 0 -1
+B2 2 P2 0 0 0.4 A2 1 0 0 R2 0 0 -1
+)";
+
+/// The state every 0.1 s over 2 s (columns).
+Eigen::MatrixXd trajectory(const std::shared_ptr<const Model>& model, const SimulationOptions& o)
+{
+    Simulation sim(model, o);
+    std::vector<SimulationEvent> ev;
+    std::string err;
+    Eigen::MatrixXd y(2 * model->nb, 20);
+    for (int k = 1; k <= 20; ++k) {
+        EXPECT_TRUE(sim.advanceTo(0.1 * k, ev, err)) << err;
+        y.col(k - 1) << sim.state().q, sim.state().qd;
+    }
+    return y;
+}
+
+}  // namespace
+
+TEST(Simulation, PendulumPeriodMatchesTheLargeAmplitudeFormula)
+{
+    auto model = compileFile("pendulum.pad");
+    ASSERT_TRUE(model);
+    Simulation sim(model, adaptive(1e-11));
+    // analytic period of a compound pendulum: I = m L² + Ixx about the pivot, amplitude 0.1 rad
+    const double I = 1.0 * 1.0 + 1e-6, mgl = 1.0 * 9.81 * 1.0, theta0 = 0.1;
+    const double period = 4 * std::sqrt(I / mgl) * ellipticK(std::sin(theta0 / 2));
+    // times where θ̇ goes from + to − (the maxima of θ), interpolated between 1 ms samples
+    std::vector<double> maxima;
+    std::vector<SimulationEvent> ev;
+    std::string err;
+    double tPrev = 0, wPrev = sim.state().qd[0];
+    for (int k = 1; k <= 4200; ++k) {
+        ASSERT_TRUE(sim.advanceTo(k * 1e-3, ev, err)) << err;
+        const double w = sim.state().qd[0];
+        if (wPrev > 0 && w <= 0) maxima.push_back(tPrev + 1e-3 * wPrev / (wPrev - w));
+        tPrev = sim.state().t;
+        wPrev = w;
+    }
+    ASSERT_EQ(maxima.size(), 2u);
+    EXPECT_NEAR(maxima[0], period, 2e-7);
+    EXPECT_NEAR(maxima[1] - maxima[0], period, 2e-7);
+    EXPECT_NEAR(period, 2.0073222, 1e-6);  // the figure quoted in models/pendulum.pad (+ the bob's Ixx)
+}
+
+TEST(Simulation, AdaptiveIntegratorConservesEnergyOfAPassiveModel)
+{
+    auto model = compileText(kDoublePendulum);
+    ASSERT_TRUE(model);
+    Simulation sim(model, adaptive(1e-11));
+    const double e0 = mechanicalEnergy(*model, sim.data());
+    std::vector<SimulationEvent> ev;
+    std::string err;
+    double worst = 0;
+    for (int k = 1; k <= 100; ++k) {
+        ASSERT_TRUE(sim.advanceTo(0.1 * k, ev, err)) << err;
+        worst = std::max(worst, std::abs(mechanicalEnergy(*model, sim.data()) - e0));
+    }
+    // relative to the energy that moves: the kinetic energy scale of the motion
+    const double scale = std::abs(e0 - (-9.81 * (2.0 * -0.5 + 1.5 * -1.4)));
+    EXPECT_LT(worst / scale, 1e-8) << "drift " << worst << " J of " << scale << " J";
+    EXPECT_TRUE(ev.empty());
+}
+
+TEST(Simulation, Rk4ConvergesWithOrderFour)
+{
+    // the double pendulum, swinging moderately (the asymptotic range starts near h = 5 ms)
+    std::string text = kDoublePendulum;
+    text.replace(text.find("QI 1.0"), 6, "QI 0.3");
+    text.replace(text.find("QI -0.6 VI 1.5"), 14, "QI -0.2");
+    auto model = compileText(text);
+    ASSERT_TRUE(model);
+    const Eigen::MatrixXd ref = trajectory(model, adaptive(1e-13));
+    std::vector<double> errors;
+    for (double h : {0.005, 0.0025, 0.00125, 0.000625}) {
+        errors.push_back((trajectory(model, rk4(h)) - ref).cwiseAbs().maxCoeff());
+    }
+    // measured: 1.78e-6, 1.13e-7, 7.15e-9, 4.52e-10 (orders 3.97, 3.99, 3.98)
+    for (std::size_t k = 1; k < errors.size(); ++k) {
+        const double order = std::log2(errors[k - 1] / errors[k]);
+        EXPECT_GT(order, 3.8) << "h = " << 0.005 / (1 << k);
+        EXPECT_LT(order, 4.2) << "h = " << 0.005 / (1 << k);
+    }
+}
+
+TEST(Simulation, PrismaticJointUnderGravityAndItsLimitTime)
+{
+    auto model = compileFile("incline_slider.pad");
+    ASSERT_TRUE(model);
+    Simulation sim(model, adaptive(1e-12));
+    std::vector<SimulationEvent> ev;
+    std::string err;
+    // g sin 30°, with the slope exactly as written (R1 0.8660254 0 -0.5)
+    const double a = 9.81 * 0.5 / std::hypot(0.8660254, 0.5);
+    ASSERT_TRUE(sim.advanceTo(0.5, ev, err)) << err;
+    EXPECT_NEAR(sim.state().q[0], 0.5 * a * 0.25, 1e-10);
+    EXPECT_NEAR(sim.state().qd[0], a * 0.5, 1e-10);
+    ASSERT_TRUE(sim.advanceTo(1.5, ev, err)) << err;
+    ASSERT_EQ(ev.size(), 1u);
+    EXPECT_EQ(ev[0].kind, SimulationEvent::Kind::LimitHit);
+    EXPECT_EQ(ev[0].side, +1);
+    EXPECT_NEAR(ev[0].t, std::sqrt(2 * 2.0 / a), 1e-9);
+    // inelastic stop: it stays there, the stop carrying the weight's component along the slope
+    EXPECT_DOUBLE_EQ(sim.state().q[0], 2.0);
+    EXPECT_EQ(sim.state().qd[0], 0.0);
+    EXPECT_EQ(sim.state().limit[0], LimitState::AtUpper);
+    EXPECT_NEAR(sim.data().limitForce[0], -10.0 * a, 1e-9);
+}
+
+TEST(Simulation, HydraulicCylinderLiftsAtItsSpeedAndItsReliefValveStallsAnOverload)
+{
+    // a 100 kg load on a vertical cylinder: 981 N to hold
+    const std::string text = R"(
+B 1 100 1 1 1
+C 1 T 2 LL 0 UL 1 QI 0.2
+B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 1
+B2 1 P2 0 0 0 A2 1 0 0 R2 0 0 1
+)";
+    {
+        auto model = compileText(text + "D 1 HYD VMAX 0.1 FMAX 2000\n");
+        Simulation sim(model, rk4(1e-3));
+        sim.setCommand(0, 1.0);
+        std::vector<SimulationEvent> ev;
+        std::string err;
+        ASSERT_TRUE(sim.advanceTo(1.0, ev, err)) << err;
+        EXPECT_TRUE(ev.empty());
+        EXPECT_NEAR(sim.state().q[0], 0.3, 1e-12);
+        EXPECT_NEAR(sim.data().driveForce[0], 981.0, 1e-9);
+        // valve closed: it holds
+        sim.setCommand(0, 0.0);
+        ASSERT_TRUE(sim.advanceTo(2.0, ev, err)) << err;
+        EXPECT_NEAR(sim.state().q[0], 0.3, 1e-12);
+    }
+    {
+        auto model = compileText(text + "D 1 HYD VMAX 0.1 FMAX 500\n");
+        Simulation sim(model, adaptive(1e-10));
+        sim.setCommand(0, 1.0);
+        std::vector<SimulationEvent> ev;
+        std::string err;
+        ASSERT_TRUE(sim.advanceTo(0.1, ev, err)) << err;
+        ASSERT_FALSE(ev.empty());
+        EXPECT_EQ(ev[0].kind, SimulationEvent::Kind::ReliefOpen);
+        EXPECT_EQ(ev[0].t, 0.0);
+        EXPECT_EQ(ev[0].side, +1);
+        EXPECT_EQ(sim.state().relief[0], ReliefState::OpenExtending);
+        // the load wins: it sinks with a = (500 − 981) / 100
+        const double a = (500.0 - 981.0) / 100.0;
+        EXPECT_NEAR(sim.state().q[0], 0.2 + 0.5 * a * 0.01, 1e-9);
+        EXPECT_NEAR(sim.data().driveForce[0], 500.0, 1e-9);
+    }
+}
+
+TEST(Simulation, LinerManipulatorHoldsStillWithEveryValveClosed)
+{
+    auto model = compileFile("liner_manipulator.pad");
+    ASSERT_TRUE(model);
+    Simulation sim(model, rk4(1e-3));
+    const Eigen::VectorXd q0 = sim.state().q;
+    const double f2 = sim.data().driveForce[model->jointIndex(2)];
+    std::vector<SimulationEvent> ev;
+    std::string err;
+    ASSERT_TRUE(sim.advanceTo(2.0, ev, err)) << err;
+    EXPECT_LT((sim.state().q - q0).cwiseAbs().maxCoeff(), 1e-12);
+    EXPECT_LT(sim.state().qd.cwiseAbs().maxCoeff(), 1e-12);
+    EXPECT_NEAR(sim.data().driveForce[model->jointIndex(2)], f2, 1e-6 * std::abs(f2));
+    EXPECT_GT(f2, 0.0);  // the boom cylinder pushes
+}
+
+TEST(Simulation, OutputDoesNotDependOnTheModelersNumbering)
+{
+    std::string renumbered = kDoublePendulum;
+    // bodies 1, 2 → 12, 5 and joints 1, 2 → 9, 4, statements in another order
+    renumbered = R"(
+GRAVITY 0 0 -9.81
+C 4 QI -0.6 VI 1.5 NAME "elbow"
+B1 12 P1 0 0 -0.5 A1 1 0 0 R1 0 0 -1
+B2 5 P2 0 0 0.4 A2 1 0 0 R2 0 0 -1
+B 5 1.5 0.015 0.01 0.008 CG 0 0.05 0 NAME "lower"
+C 9 QI 1.0 NAME "shoulder"
+B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 -1
+B2 12 P2 0 0 0.5 A2 1 0 0 R2 0 0 -1
+B 12 2.0 0.02 0.01 0.01 NAME "upper"
+)";
+    auto a = compileText(kDoublePendulum);
+    auto b = compileText(renumbered);
+    ASSERT_TRUE(a && b);
+    Simulation sa(a, rk4(1e-3)), sb(b, rk4(1e-3));
+    std::vector<SimulationEvent> ev;
+    std::string err;
+    ASSERT_TRUE(sa.advanceTo(1.0, ev, err));
+    ASSERT_TRUE(sb.advanceTo(1.0, ev, err));
+    const int s1 = a->jointIndex(1), e1 = a->jointIndex(2), s2 = b->jointIndex(9), e2 = b->jointIndex(4);
+    EXPECT_EQ(sa.state().q[s1], sb.state().q[s2]);
+    EXPECT_EQ(sa.state().q[e1], sb.state().q[e2]);
+    EXPECT_EQ(sa.state().qd[e1], sb.state().qd[e2]);
+}
+
+TEST(Simulation, ADivergingModelStopsWithTheTimeAndTheJoint)
+{
+    // a stiff spring integrated with a far too long step blows up
+    auto model = compileText(R"(
+B 1 1 0.1 0.1 0.1
+C 7 T 2 QI 0.1 NAME "slider"
+B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 1
+B2 1 P2 0 0 0 A2 1 0 0 R2 0 0 1
+F 1 SPRING B1 0 P1 0 0 -1 B2 1 P2 0 0 0 K 1e12 L0 1
+)");
+    ASSERT_TRUE(model);
+    Simulation sim(model, rk4(0.01));
+    std::vector<SimulationEvent> ev;
+    std::string err;
+    EXPECT_FALSE(sim.advanceTo(100.0, ev, err));
+    EXPECT_NE(err.find("the simulation failed at t = "), std::string::npos) << err;
+    EXPECT_NE(err.find("joint 7 (slider)"), std::string::npos) << err;
+}
