@@ -513,10 +513,10 @@ bool checkInputColumns(const InputTable& table, std::span<const int> drivenJoint
     }
     for (int id : driven) {
         if (!table.column(id)) {
-            ok = false;
-            diags.error("missing-column", table.headerPos(),
-                        "no column for joint " + std::to_string(id) + "'s drive",
-                        "add a column u" + std::to_string(id) + " (0 keeps its valve closed)");
+            // not an error: an input that moves one valve need not list the others
+            diags.warning("missing-column", table.headerPos(),
+                          "no column for joint " + std::to_string(id) + "'s drive: its command stays 0 (valve closed)",
+                          "add a column u" + std::to_string(id) + " to drive it");
         }
     }
     return ok;

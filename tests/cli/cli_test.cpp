@@ -8,6 +8,8 @@
 #include <fstream>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
 
 namespace {
 
@@ -179,4 +181,152 @@ TEST(Cli, InfoOnABrokenModelPrintsItsErrors)
     EXPECT_EQ(r.status, 1);
     EXPECT_EQ(r.out, "");
     EXPECT_NE(r.err.find(bad + ":1:5: error: body 1 has a negative mass (-5 kg)"), std::string::npos) << r.err;
+}
+
+// ---- padrob simulate ---------------------------------------------------------
+
+namespace {
+
+std::vector<std::string> lines(const std::string& s)
+{
+    std::vector<std::string> out;
+    std::size_t start = 0;
+    while (start < s.size()) {
+        std::size_t nl = s.find('\n', start);
+        if (nl == std::string::npos) nl = s.size();
+        out.push_back(s.substr(start, nl - start));
+        start = nl + 1;
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST(CliSimulate, HelpListsEveryOption)
+{
+    CliRun r = padrob("simulate --help");
+    EXPECT_EQ(r.status, 0);
+    for (const char* opt : {"--time", "--dt", "--integrator", "--rtol", "--input", "--set", "--rate", "--passive",
+                            "--no-limits", "--every", "--out"}) {
+        EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+    }
+}
+
+TEST(CliSimulate, LinerManipulatorColumnsInTheDocumentedOrder)
+{
+    CliRun r = padrob("simulate models/liner_manipulator.pad --time 0.01 --every 5");
+    ASSERT_EQ(r.status, 0) << r.err;
+    auto rows = lines(r.out);
+    ASSERT_EQ(rows.size(), 4u);  // header, t = 0, 0.005, 0.01
+    EXPECT_EQ(rows[0],
+              "t,q1,q2,q3,q4,q5,q6,q7,q8,q9,qd1,qd2,qd3,qd4,qd5,qd6,qd7,qd8,qd9,ang2,ang5,"
+              "x1,y1,z1,x2,y2,z2,x3,y3,z3,x4,y4,z4,x5,y5,z5,x6,y6,z6,x7,y7,z7,x8,y8,z8,x9,y9,z9,"
+              "F1,F2,F3,F4,F5,F6,F7,F8,F9,E");
+    EXPECT_EQ(rows[1].rfind("0,0,1.464,0,0,0.41", 0), 0u) << rows[1];
+    EXPECT_EQ(rows[3].rfind("0.01,", 0), 0u) << rows[3];
+    EXPECT_EQ(r.err, "");  // valves closed: no events
+}
+
+TEST(CliSimulate, InputsDriveTheCylindersAndEventsGoToStderr)
+{
+    const std::string input = writeTemp("in.csv", "t,u3\n0,1\n0.5,0\n");
+    const std::string out = writeTemp("out.csv", "");
+    CliRun r = padrob("simulate models/liner_manipulator.pad --time 1 --input '" + input + "' --out '" + out + "' --every 1000");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out, "");
+    // the drives without a column are listed once, as warnings
+    EXPECT_NE(r.err.find(input + ":1:1: warning: no column for joint 1's drive: its command stays 0 (valve closed)"),
+              std::string::npos) << r.err;
+    auto rows = lines(slurp(out));
+    ASSERT_EQ(rows.size(), 3u);
+    // the telescope extends at its pump speed (0.0904 m/s) for 0.5 s, then holds
+    const double vmax = 45e-6 * 1480 / 60 / (3.14159265358979 / 4 * 0.125 * 0.125);
+    const std::string last = rows[2];
+    std::vector<double> v;
+    std::size_t p = 0;
+    while (p <= last.size()) {
+        std::size_t c = last.find(',', p);
+        if (c == std::string::npos) c = last.size();
+        v.push_back(std::stod(last.substr(p, c - p)));
+        p = c + 1;
+    }
+    EXPECT_NEAR(v[3], 0.5 * vmax, 1e-9);  // q3
+}
+
+TEST(CliSimulate, LimitEventsAreReported)
+{
+    CliRun r = padrob("simulate models/incline_slider.pad --time 1.2 --every 1200");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("s: joint 1 slope hit its upper limit 2 m\n"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.rfind("t=0.903", 0), 0u) << r.err;
+}
+
+TEST(CliSimulate, SetAndRateOverrideTheInitialValues)
+{
+    CliRun r = padrob("simulate models/pendulum.pad --time 0.001 --set 1=0.5 --rate 1=2 --every 10");
+    ASSERT_EQ(r.status, 0) << r.err;
+    auto rows = lines(r.out);
+    ASSERT_GE(rows.size(), 2u);
+    EXPECT_EQ(rows[1].rfind("0,0.5,2,", 0), 0u) << rows[1];
+}
+
+TEST(CliSimulate, BadArgumentsExitTwoAndLeaveNoFile)
+{
+    const std::string out = (std::filesystem::temp_directory_path() / "padrob_sim_never.csv").string();
+    std::filesystem::remove(out);
+    struct Case {
+        std::string args;
+        std::string message;
+    };
+    const std::string model = "models/liner_manipulator.pad";
+    const std::string missingCol = writeTemp("missing.csv", "u1\n0.5\n");
+    const std::string text = writeTemp("text.csv", "t,u1,u2,u3,u4,u5,u6,u7,u8,u9\n0,0,0,abc,0,0,0,0,0,0\n");
+    const std::string unsorted = writeTemp("unsorted.csv", "t,u1,u2,u3,u4,u5,u6,u7,u8,u9\n1,0,0,0,0,0,0,0,0,0\n0.5,0,0,0,0,0,0,0,0,0\n");
+    const std::string undriven = writeTemp("undriven.csv", "t,u1\n0,0.5\n");
+    const std::vector<Case> cases = {
+        {model + " --time 1 --dt 0", "--dt must be a positive number of seconds, not '0'"},
+        {model + " --time 1 --dt -0.001", "--dt must be a positive number of seconds, not '-0.001'"},
+        {model + " --time nan", "--time must be a positive number of seconds, not 'nan'"},
+        {model, "--time is required"},
+        {model + " --time 1 --integrator euler", "--integrator must be rk4 or adaptive, not 'euler'"},
+        {model + " --time 1 --every 0", "--every must be a whole number ≥ 1, not '0'"},
+        {model + " --time 1 --set 42=1", "--set: the model has no joint 42"},
+        {model + " --time 1 --set 1", "--set takes J=VALUE (a joint id and a number), not '1'"},
+        {model + " --time 1 --input " + missingCol, "t"},
+        {model + " --time 1 --input " + text, "'abc' is not a number"},
+        {model + " --time 1 --input " + unsorted, "0.5"},
+        {"models/pendulum.pad --time 1 --input " + undriven, "joint 1"},
+        {model + " --time 1 --input /nonexistent.csv", "/nonexistent.csv"},
+    };
+    for (const Case& c : cases) {
+        CliRun r = padrob("simulate " + c.args + " --out '" + out + "'");
+        EXPECT_EQ(r.status, 2) << c.args << "\n" << r.err;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
+        EXPECT_FALSE(std::filesystem::exists(out)) << c.args;
+        EXPECT_EQ(r.out, "") << c.args;
+    }
+}
+
+TEST(CliSimulate, ADivergingSimulationFailsWithoutOutput)
+{
+    const std::string model = writeTemp("stiff.pad",
+                                        "B 1 1 0.1 0.1 0.1\n"
+                                        "C 7 T 2 QI 0.1 NAME \"slider\"\n"
+                                        "B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 1\n"
+                                        "B2 1 P2 0 0 0 A2 1 0 0 R2 0 0 1\n"
+                                        "F 1 SPRING B1 0 P1 0 0 -1 B2 1 P2 0 0 0 K 1e12 L0 1\n");
+    const std::string out = (std::filesystem::temp_directory_path() / "padrob_sim_diverge.csv").string();
+    std::filesystem::remove(out);
+    CliRun r = padrob("simulate '" + model + "' --time 100 --dt 0.01 --out '" + out + "'");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find("padrob simulate: the simulation failed at t = "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("joint 7 (slider)"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(CliSimulate, ModelsWithLoopsAreRefusedClearly)
+{
+    CliRun r = padrob("simulate models/four_bar.pad --time 1");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find("closes a loop: closed loops are not simulated yet"), std::string::npos) << r.err;
 }

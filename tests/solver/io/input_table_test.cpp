@@ -406,6 +406,17 @@ TEST(InputColumns, MatchTheDrivenJoints)
     EXPECT_TRUE(diags.empty());
 }
 
+TEST(InputColumns, MissingColumnAloneIsOnlyAWarning)
+{
+    const InputTable t = good("t,u2\n0,0.5\n");
+    Diagnostics diags("in.csv");
+    const std::vector<int> driven{5, 2}, joints{1, 2, 3, 5};
+    EXPECT_TRUE(checkInputColumns(t, driven, joints, diags));
+    ASSERT_EQ(diags.size(), 1u);
+    EXPECT_EQ(diags.items()[0].severity, Severity::Warning);
+    EXPECT_FALSE(diags.hasErrors());
+}
+
 TEST(InputColumns, UnknownJointNoDriveAndMissingColumn)
 {
     const InputTable t = good("t,u7,u3,u2\n0,0,0,0\n");
@@ -421,8 +432,8 @@ TEST(InputColumns, UnknownJointNoDriveAndMissingColumn)
             "drive are 2, 5]",
             "no-drive in.csv:1:6: error: column 'u3': joint 3 has no drive [a command moves a drive: "
             "remove the column, or give the joint a drive (D 3 …)]",
-            "missing-column in.csv:1:1: error: no column for joint 5's drive [add a column u5 (0 keeps "
-            "its valve closed)]",
+            "missing-column in.csv:1:1: warning: no column for joint 5's drive: its command stays 0 "
+            "(valve closed) [add a column u5 to drive it]",
         }));
 }
 
