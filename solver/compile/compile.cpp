@@ -116,6 +116,7 @@ std::shared_ptr<const Model> compileModel(const ModelSpec& spec, const Topology&
     const auto nbs = static_cast<std::size_t>(nb);
     m.nb = nb;
     m.gravity = spec.gravity;
+    m.restitution = spec.restitution;
 
     // tree index of every body index and spec joint
     std::vector<int> treeOfBody(topo.bodyIds.size(), -1);

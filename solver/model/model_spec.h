@@ -175,6 +175,11 @@ struct ModelSpec {
     bool hasGravity = false;
     Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);  ///< [m/s^2]
     SourcePos gravityPos;
+    /// `RESTITUTION e`: coefficient of restitution at joint limits, 0 (inelastic,
+    /// the default) … 1 (elastic).
+    bool hasRestitution = false;
+    double restitution = 0;
+    SourcePos restitutionPos;
     std::vector<BodySpec> bodies;    ///< in file order (body 0 only if written)
     std::vector<JointSpec> joints;   ///< in file order
     std::vector<DriveSpec> drives;

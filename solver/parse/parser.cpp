@@ -17,7 +17,7 @@ namespace {
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 
 /// The statements a line may start with, for "did you mean" suggestions.
-constexpr std::array kStatementKeywords = {"GRAVITY", "B", "C", "B1", "B2", "CL1", "CL2", "D", "F", "G"};
+constexpr std::array kStatementKeywords = {"GRAVITY", "RESTITUTION", "B", "C", "B1", "B2", "CL1", "CL2", "D", "F", "G"};
 
 std::string fmt(double v)
 {
@@ -119,6 +119,7 @@ public:
         if (kw == "CL1" || kw == "CL2") { parseCl(); return; }
         closeJoint();
         if (kw == "GRAVITY") parseGravity();
+        else if (kw == "RESTITUTION") parseRestitution();
         else if (kw == "B") parseBody();
         else if (kw == "C") parseJoint();
         else if (kw == "D") parseDrive();
@@ -127,7 +128,7 @@ public:
         else {
             std::string guess = closest(kw, kStatementKeywords);
             std::string hint = guess.empty()
-                                   ? "statements are GRAVITY, B, C (with B1, B2, CL1), D, F and G; "
+                                   ? "statements are GRAVITY, RESTITUTION, B, C (with B1, B2, CL1), D, F and G; "
                                      "comments start with // or #"
                                    : "did you mean '" + guess + "'?";
             m_d.error("unknown-keyword", first.pos, "unknown keyword '" + first.text + "'", hint);
@@ -518,6 +519,30 @@ private:
         m_spec.hasGravity = true;
         m_spec.gravityPos = pos;
         if (read && ok) m_spec.gravity = g;
+    }
+
+    void parseRestitution()
+    {
+        const SourcePos pos = m_toks[0].pos;
+        bool ok = true;
+        const SourcePos valuePos = here();
+        auto e = number("RESTITUTION", "the coefficient of restitution", ok, "RESTITUTION e (0 inelastic … 1 elastic)");
+        options({}, "RESTITUTION", "RESTITUTION", ok);
+        if (m_spec.hasRestitution) {
+            m_d.error("duplicate-restitution", pos,
+                      "RESTITUTION is given twice (first at line " + std::to_string(m_spec.restitutionPos.line) + ")",
+                      "keep one RESTITUTION statement");
+            return;
+        }
+        m_spec.hasRestitution = true;
+        m_spec.restitutionPos = pos;
+        if (!e) return;
+        if (*e < 0 || *e > 1) {
+            m_d.error("bad-restitution", valuePos, "RESTITUTION " + fmt(*e) + " is outside 0 … 1",
+                      "0 stops a joint dead at its limit, 1 bounces it back at the same speed");
+            return;
+        }
+        m_spec.restitution = *e;
     }
 
     void parseBody()

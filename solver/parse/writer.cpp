@@ -61,7 +61,9 @@ void writeSide(std::string& out, const JointSide& s, char digit)
 std::string writeModel(const ModelSpec& spec)
 {
     std::string out;
-    if (spec.hasGravity) out += "GRAVITY " + vec(spec.gravity) + "\n\n";
+    if (spec.hasGravity) out += "GRAVITY " + vec(spec.gravity) + "\n";
+    if (spec.hasRestitution) out += "RESTITUTION " + formatNumber(spec.restitution) + "\n";
+    if (spec.hasGravity || spec.hasRestitution) out += "\n";
     for (const BodySpec& b : spec.bodies) {
         out += "B " + std::to_string(b.id);
         if (b.hasMass) {

@@ -108,7 +108,7 @@ TEST(Cli, CheckReportsEveryErrorInCompilerFormat)
     CliRun r = padrob("check '" + path + "'");
     EXPECT_EQ(r.status, 1);
     EXPECT_EQ(r.out, path + ":2:5: error: body 1: '2,5' is not a number [use '.' as the decimal separator: 2.5]\n" +
-                         path + ":3:1: error: unknown keyword 'FOO' [statements are GRAVITY, B, C (with B1, B2, CL1), D, F and G; "
+                         path + ":3:1: error: unknown keyword 'FOO' [statements are GRAVITY, RESTITUTION, B, C (with B1, B2, CL1), D, F and G; "
                                 "comments start with // or #]\n" +
                          path + ":6:4: error: joint 1: body 7 (B2) is not defined [add 'B 7 m Ixx Iyy Izz', or use an existing body]\n" +
                          path + ": 3 errors\n");

@@ -84,7 +84,18 @@ const std::vector<Case>& cases()
          R"pad(BODY 1 10 1 1 1
 )pad",
          {{"unknown-keyword",
-              "m.pad:1:1: error: unknown keyword 'BODY' [statements are GRAVITY, B, C (with B1, B2, CL1), D, F and G; comments start with // or #]"}}},
+              "m.pad:1:1: error: unknown keyword 'BODY' [statements are GRAVITY, RESTITUTION, B, C (with B1, B2, CL1), D, F and G; comments start with // or #]"}}},
+        {"RestitutionOutOfRange",
+         R"pad(RESTITUTION 1.5
+)pad",
+         {{"bad-restitution",
+              "m.pad:1:13: error: RESTITUTION 1.5 is outside 0 … 1 [0 stops a joint dead at its limit, 1 bounces it back at the same speed]"}}},
+        {"DuplicateRestitution",
+         R"pad(RESTITUTION 0.2
+RESTITUTION 0.5
+)pad",
+         {{"duplicate-restitution",
+              "m.pad:2:1: error: RESTITUTION is given twice (first at line 1) [keep one RESTITUTION statement]"}}},
         {"StatementStartsWithNumber",
          R"pad(12 B 1
 )pad",

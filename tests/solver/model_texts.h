@@ -110,6 +110,7 @@ B 9 2.0 0.00001 0.00001 0.00001
 /// when meshes/part.stl exists next to it (otherwise: two mesh-not-found errors).
 inline const std::string kEveryStatement = R"pad(// every statement of the model language
 GRAVITY 0 -.2 -9.81   # hash comment
+RESTITUTION 0.3
 
 B 0 NAME "ground"
 B 1

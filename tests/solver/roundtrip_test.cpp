@@ -46,6 +46,8 @@ public:
         same("file", a.file, b.file);
         same("hasGravity", a.hasGravity, b.hasGravity);
         same("gravity", a.gravity, b.gravity);
+        same("hasRestitution", a.hasRestitution, b.hasRestitution);
+        same("restitution", a.restitution, b.restitution);
         list("bodies", a.bodies, b.bodies, [&](const std::string& p, const BodySpec& x, const BodySpec& y) {
             same(p + ".id", x.id, y.id);
             same(p + ".hasMass", x.hasMass, y.hasMass);
@@ -348,6 +350,8 @@ TEST(RoundTrip, ComparerSeesEveryField)
         {"file", [](ModelSpec& s) { s.file = "other.pad"; }},
         {"hasGravity", [](ModelSpec& s) { s.hasGravity = false; }},
         {"gravity", [](ModelSpec& s) { s.gravity.z() = -9.80665; }},
+        {"hasRestitution", [](ModelSpec& s) { s.hasRestitution = !s.hasRestitution; }},
+        {"restitution", [](ModelSpec& s) { s.restitution = 0.25; }},
         {"bodies.size", [](ModelSpec& s) { s.bodies.pop_back(); }},
         {"bodies[2].id", [](ModelSpec& s) { s.bodies[2].id = 7; }},
         {"bodies[2].hasMass", [](ModelSpec& s) { s.bodies[2].hasMass = false; }},

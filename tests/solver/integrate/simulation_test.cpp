@@ -288,3 +288,31 @@ F 1 SPRING B1 0 P1 0 0 -1 B2 1 P2 0 0 0 K 1e12 L0 1
     EXPECT_NE(err.find("the simulation failed at t = "), std::string::npos) << err;
     EXPECT_NE(err.find("joint 7 (slider)"), std::string::npos) << err;
 }
+
+TEST(Simulation, RestitutionBouncesAJointOffItsLimit)
+{
+    // a block falling 0.5 m onto the lower stop of a vertical slider
+    auto model = compileText(R"(
+RESTITUTION 0.5
+B 1 2 0.1 0.1 0.1
+C 1 T 2 LL 0 QI 0.5
+B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 1
+B2 1 P2 0 0 0 A2 1 0 0 R2 0 0 1
+)");
+    ASSERT_TRUE(model);
+    EXPECT_EQ(model->restitution, 0.5);
+    Simulation sim(model, adaptive(1e-12));
+    std::vector<SimulationEvent> ev;
+    std::string err;
+    const double tHit = std::sqrt(2 * 0.5 / 9.81), vHit = 9.81 * tHit;
+    ASSERT_TRUE(sim.advanceTo(tHit + 0.01, ev, err)) << err;
+    ASSERT_EQ(ev.size(), 1u);
+    EXPECT_NEAR(ev[0].t, tHit, 1e-9);
+    // it leaves the stop upwards at half the speed it hit it with, and stays free
+    EXPECT_EQ(sim.state().limit[0], LimitState::Free);
+    EXPECT_NEAR(sim.state().qd[0], 0.5 * vHit - 9.81 * 0.01, 1e-8);
+    // the next hit comes after a flight of 2 · (v/2) / g
+    ASSERT_TRUE(sim.advanceTo(tHit + vHit / 9.81 + 0.001, ev, err)) << err;
+    ASSERT_EQ(ev.size(), 2u);
+    EXPECT_NEAR(ev[1].t, tHit + vHit / 9.81, 1e-8);
+}
