@@ -43,6 +43,7 @@ Data::Data(const Model& model)
     uA = Eigen::VectorXd::Zero(n);
     tauKnown = Eigen::VectorXd::Zero(n);
     tauDrive = Eigen::VectorXd::Zero(n);
+    dq = Eigen::VectorXd::Ones(n);
     prescribed.assign(nb, 0);
 }
 

@@ -77,6 +77,7 @@ struct Data {
     Eigen::VectorXd uA;             ///< u_i = τ_i − S_iᵀ p^A_i
     Eigen::VectorXd tauKnown;       ///< known generalized force of a free joint (drive + tauExt)
     Eigen::VectorXd tauDrive;       ///< the drive's generalized force along θ (force-driven joints)
+    Eigen::VectorXd dq;             ///< dq/dθ: the modeler's coordinate's rate per unit θ̇ (T 1: dL/dθ)
     std::vector<char> prescribed;   ///< per joint: acceleration known in this evaluation
 };
 

@@ -31,29 +31,30 @@ inline Eigen::Matrix3d skew(const Eigen::Vector3d& v)
 /// Motion cross product v ×m m = [ω × m_ω; ω × m_v + v_O × m_ω] (RBDA eq. 2.31).
 inline Vector6d crossMotion(const Vector6d& v, const Vector6d& m)
 {
+    // (3-vectors copied out: Eigen's cross on 6-vector segments is slower)
+    const Eigen::Vector3d w = v.head<3>(), vo = v.tail<3>();
+    const Eigen::Vector3d mw = m.head<3>(), mv = m.tail<3>();
     Vector6d out;
-    const auto w = v.head<3>();
-    out.head<3>() = w.cross(m.head<3>());
-    out.tail<3>() = w.cross(m.tail<3>()) + v.tail<3>().cross(m.head<3>());
+    out << w.cross(mw), w.cross(mv) + vo.cross(mw);
     return out;
 }
 
 /// Force cross product v ×* f = [ω × n + v_O × f; ω × f] (RBDA eq. 2.32).
 inline Vector6d crossForce(const Vector6d& v, const Vector6d& f)
 {
+    const Eigen::Vector3d w = v.head<3>(), vo = v.tail<3>();
+    const Eigen::Vector3d n = f.head<3>(), fo = f.tail<3>();
     Vector6d out;
-    const auto w = v.head<3>();
-    out.head<3>() = w.cross(f.head<3>()) + v.tail<3>().cross(f.tail<3>());
-    out.tail<3>() = w.cross(f.tail<3>());
+    out << w.cross(n) + vo.cross(fo), w.cross(fo);
     return out;
 }
 
 /// A force vector moved from O to the point p: [n_O − p × f; f] (the moment about p).
 inline Vector6d forceAboutPoint(const Vector6d& f, const Eigen::Vector3d& p)
 {
+    const Eigen::Vector3d n = f.head<3>(), fo = f.tail<3>();
     Vector6d out;
-    out.head<3>() = f.head<3>() - p.cross(f.tail<3>());
-    out.tail<3>() = f.tail<3>();
+    out << n - p.cross(fo), fo;
     return out;
 }
 
@@ -70,12 +71,9 @@ struct RigidInertia {
     /// I·v = [Ī ω + h × v_O; m v_O − h × ω] (a force vector).
     Vector6d operator*(const Vector6d& v) const
     {
+        const Eigen::Vector3d w = v.head<3>(), lin = v.tail<3>();
         Vector6d f;
-        const auto w = v.head<3>();
-        const auto lin = v.tail<3>();
-        f.head<3>().noalias() = Ibar * w;
-        f.head<3>() += h.cross(lin);
-        f.tail<3>() = m * lin - h.cross(w);
+        f << Ibar * w + h.cross(lin), m * lin - h.cross(w);
         return f;
     }
 

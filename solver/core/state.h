@@ -26,8 +26,10 @@ struct State {
     std::vector<ReliefState> relief;  ///< per joint (hydraulic drives)
 };
 
-/// The initial state: θ = theta0, θ̇ = thetaDot0, t = 0, u = 0, limits/valves at rest
-/// (a joint that starts on a limit is AtLower/AtUpper).
+/// The initial state: θ = theta0, θ̇ = thetaDot0, t = 0, u = 0, servo integrals 0,
+/// relief valves Closed; a joint that starts on a limit (within 1e-9, relative above
+/// 1) and does not start moving away from it is AtLower/AtUpper, the others Free.
+/// (solver/core/state.cpp)
 State makeState(const Model& model);
 
 }  // namespace solver

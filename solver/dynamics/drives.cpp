@@ -5,6 +5,17 @@
 
 namespace solver {
 
+CoordinateMap coordinateMap(const Model& model, int i, double theta)
+{
+    CoordinateMap map;
+    if (model.jointType[i] == JointType::Actuator) {
+        model.lengthLaw[i].lengthDerivatives(theta, map.q, map.dq, map.ddq);
+    } else {
+        map.q = theta;
+    }
+    return map;
+}
+
 bool isPrescribed(const Model& model, const State& state, int i)
 {
     if (state.limit[i] != LimitState::Free) return true;
@@ -33,14 +44,17 @@ double prescribedRate(const Model& model, const State& state, int i)
 
 double prescribedAcceleration(const Model& model, const State& state, int i)
 {
+    return prescribedAcceleration(model, state, i, coordinateMap(model, i, state.q[i]));
+}
+
+double prescribedAcceleration(const Model& model, const State& state, int i, const CoordinateMap& map)
+{
     if (state.limit[i] != LimitState::Free) return 0.0;
     if (model.jointType[i] != JointType::Actuator) return 0.0;
     // L̇ = L'θ̇ held: θ̈ = −L''θ̇²/L'
-    const ActuatorLengthLaw& law = model.lengthLaw[i];
-    const double th = state.q[i], thd = state.qd[i];
-    const double d1 = law.lengthRate(th);
-    if (d1 == 0 || thd == 0) return 0.0;
-    return -law.lengthSecondDerivative(th) * thd * thd / d1;
+    const double thd = state.qd[i];
+    if (map.dq == 0 || thd == 0) return 0.0;
+    return -map.ddq * thd * thd / map.dq;
 }
 
 double servoSetPoint(const CompiledDrive& drive, double u)
@@ -58,6 +72,12 @@ double servoError(const Model& model, const State& state, int i)
 
 double driveForceLaw(const Model& model, const State& state, int i)
 {
+    if (model.drive[i].type == DriveType::None) return 0.0;
+    return driveForceLaw(model, state, i, coordinateMap(model, i, state.q[i]));
+}
+
+double driveForceLaw(const Model& model, const State& state, int i, const CoordinateMap& map)
+{
     const CompiledDrive& drive = model.drive[i];
     const double u = std::clamp(state.u[i], -1.0, 1.0);
     switch (drive.type) {
@@ -65,13 +85,13 @@ double driveForceLaw(const Model& model, const State& state, int i)
     case DriveType::Motor: {
         // linear torque–speed curve, in the modeler's coordinate
         if (!(drive.w0 > 0)) return u * drive.t0;
-        const double speed = std::abs(model.coordinateRate(i, state.q[i]) * state.qd[i]);
+        const double speed = std::abs(map.dq * state.qd[i]);
         return speed < drive.w0 ? u * drive.t0 * (1.0 - speed / drive.w0) : 0.0;
     }
     case DriveType::Pneumatic: return u * drive.force;
     case DriveType::Servo: {
-        const double e = servoError(model, state, i);
-        const double edot = -model.coordinateRate(i, state.q[i]) * state.qd[i];
+        const double e = servoSetPoint(drive, state.u[i]) - map.q;
+        const double edot = -map.dq * state.qd[i];
         const double force = drive.kp * e + drive.ki * state.servoIntegral[i] + drive.kd * edot;
         return std::clamp(force, -drive.servoFmax, drive.servoFmax);
     }

@@ -25,6 +25,15 @@
 
 namespace solver {
 
+/// The modeler's coordinate of a joint as a function of θ, at one θ: q, dq/dθ and
+/// d²q/dθ² (T 1: L, L', L''; otherwise θ, 1, 0).
+struct CoordinateMap {
+    double q = 0;    ///< [rad or m]
+    double dq = 1;   ///< [m/rad for T 1, else 1]
+    double ddq = 0;  ///< [m/rad^2 for T 1, else 0]
+};
+CoordinateMap coordinateMap(const Model& model, int i, double theta);
+
 /// True when joint i's acceleration is prescribed at `state` (see above).
 bool isPrescribed(const Model& model, const State& state, int i);
 
@@ -41,6 +50,8 @@ double prescribedRate(const Model& model, const State& state, int i);
 /// The θ̈ of a prescribed joint with the command held [rad/s^2 or m/s^2], from
 /// state.qd[i]: 0, or −L''θ̇²/L' for a hydraulic T 1 joint with the relief closed.
 double prescribedAcceleration(const Model& model, const State& state, int i);
+/// The same with joint i's coordinate map at state.q[i] already computed.
+double prescribedAcceleration(const Model& model, const State& state, int i, const CoordinateMap& map);
 
 /// The servo's set-point in the modeler's coordinate for command u (clamped to [−1, 1]).
 double servoSetPoint(const CompiledDrive& drive, double u);
@@ -54,5 +65,7 @@ double servoError(const Model& model, const State& state, int i);
 /// joint and for a hydraulic drive with the relief closed (its force is what the
 /// dynamics find). The law is applied whether or not the joint is at a limit.
 double driveForceLaw(const Model& model, const State& state, int i);
+/// The same with joint i's coordinate map at state.q[i] already computed.
+double driveForceLaw(const Model& model, const State& state, int i, const CoordinateMap& map);
 
 }  // namespace solver

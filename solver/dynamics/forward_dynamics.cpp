@@ -20,7 +20,7 @@ namespace {
            state.servoIntegral.size() == n && state.limit.size() == nb &&
            state.relief.size() == nb && data.X_wb.size() == nb && data.fext.size() == nb &&
            data.tauExt.size() == n && data.qdd.size() == n && data.IA.size() == nb &&
-           data.prescribed.size() == nb && data.reactionJoint.size() == nb;
+           data.prescribed.size() == nb && data.dq.size() == n && data.reactionJoint.size() == nb;
 }
 
 }  // namespace
@@ -45,11 +45,13 @@ void hybridDynamics(const Model& model, const State& state, Data& data)
     // 1. body inertias and bias forces about the world origin; known θ̈ or τ per joint
     for (int i = 0; i < nb; ++i) {
         const Eigen::Isometry3d& X = data.X_wb[i];
-        const Vector3d com = X * model.com[i];
+        const Matrix3d R = X.linear();
+        const Vector3d o = X.translation();
+        const Vector3d com = R * model.com[i] + o;
         Matrix3d ri;
-        ri.noalias() = X.linear() * model.inertia[i];
+        ri.noalias() = R * model.inertia[i];
         Matrix3d ic;
-        ic.noalias() = ri * X.linear().transpose();
+        ic.noalias() = ri * R.transpose();
         data.Ib[i] = rigidInertiaAt(model.mass[i], com, ic);
 
         // p = v ×* I v − fext − gravity (fext is about the body origin o)
@@ -57,17 +59,20 @@ void hybridDynamics(const Model& model, const State& state, Data& data)
         p = crossForce(data.v[i], data.Ib[i] * data.v[i]);
         const Vector6d& fe = data.fext[i];
         const Vector3d fg = model.mass[i] * model.gravity;
-        p.head<3>() -= fe.head<3>() + X.translation().cross(fe.tail<3>()) + com.cross(fg);
-        p.tail<3>() -= fe.tail<3>() + fg;
+        const Vector3d fo = fe.tail<3>();
+        p.head<3>() -= fe.head<3>() + o.cross(fo) + com.cross(fg);
+        p.tail<3>() -= fo + fg;
         data.Ib[i].toMatrix(data.IA[i]);
         data.pA[i] = p;
 
         // the drive's force along θ; known acceleration or known force
-        data.driveForce[i] = driveForceLaw(model, state, i);
-        data.tauDrive[i] = data.driveForce[i] * model.coordinateRate(i, state.q[i]);
+        const CoordinateMap map = coordinateMap(model, i, state.q[i]);
+        data.dq[i] = map.dq;
+        data.driveForce[i] = driveForceLaw(model, state, i, map);
+        data.tauDrive[i] = data.driveForce[i] * map.dq;
         data.prescribed[i] = isPrescribed(model, state, i) ? 1 : 0;
         if (data.prescribed[i]) {
-            data.qdd[i] = prescribedAcceleration(model, state, i);
+            data.qdd[i] = prescribedAcceleration(model, state, i, map);
             data.tauKnown[i] = 0;
         } else {
             data.tauKnown[i] = data.tauDrive[i] + data.tauExt[i];
@@ -126,16 +131,16 @@ void hybridDynamics(const Model& model, const State& state, Data& data)
         const Eigen::Isometry3d& X_wj = data.X_wj[i];
         Vector6d& rw = data.reactionWorld[i];
         rw = forceAboutPoint(f, X_wj.translation());
-        data.reactionJoint[i].head<3>().noalias() = X_wj.linear().transpose() * rw.head<3>();
-        data.reactionJoint[i].tail<3>().noalias() = X_wj.linear().transpose() * rw.tail<3>();
+        const Matrix3d Rt = X_wj.linear().transpose();
+        data.reactionJoint[i].head<3>().noalias() = Rt * rw.head<3>();
+        data.reactionJoint[i].tail<3>().noalias() = Rt * rw.tail<3>();
 
         // drive and limit-stop forces
         // (a held hydraulic joint's cylinder carries what the joint transmits, less tauExt)
         const bool hydraulicHeld =
             model.drive[i].type == DriveType::Hydraulic && data.prescribed[i];
         if (hydraulicHeld) {
-            data.driveForce[i] =
-                (data.tau[i] - data.tauExt[i]) / model.coordinateRate(i, state.q[i]);
+            data.driveForce[i] = (data.tau[i] - data.tauExt[i]) / data.dq[i];
         }
         data.limitForce[i] = state.limit[i] != LimitState::Free && !hydraulicHeld
                                  ? data.tau[i] - data.tauDrive[i] - data.tauExt[i]

@@ -26,7 +26,8 @@ namespace solver {
 // the flag values the code below tests are the same in ARKODE and CVODE
 static_assert(ARK_SUCCESS == CV_SUCCESS && ARK_TSTOP_RETURN == CV_TSTOP_RETURN &&
               ARK_ROOT_RETURN == CV_ROOT_RETURN && ARK_WARNING == CV_WARNING);
-static_assert(ARK_RHSFUNC_FAIL == CV_RHSFUNC_FAIL && ARK_FIRST_RHSFUNC_ERR == CV_FIRST_RHSFUNC_ERR &&
+static_assert(ARK_RHSFUNC_FAIL == CV_RHSFUNC_FAIL &&
+              ARK_FIRST_RHSFUNC_ERR == CV_FIRST_RHSFUNC_ERR &&
               ARK_REPTD_RHSFUNC_ERR == CV_REPTD_RHSFUNC_ERR &&
               ARK_UNREC_RHSFUNC_ERR == CV_UNREC_RHSFUNC_ERR && ARK_RTFUNC_FAIL == CV_RTFUNC_FAIL);
 static_assert(std::is_same_v<sunrealtype, double>, "Padrob needs SUNDIALS built with double");
@@ -63,12 +64,14 @@ using MatrixPtr = std::unique_ptr<std::remove_pointer_t<SUNMatrix>, MatrixDelete
 struct LinearSolverDeleter {
     void operator()(SUNLinearSolver ls) const { SUNLinSolFree(ls); }
 };
-using LinearSolverPtr = std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>, LinearSolverDeleter>;
+using LinearSolverPtr =
+    std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>, LinearSolverDeleter>;
 
 struct ButcherTableDeleter {
     void operator()(ARKodeButcherTable b) const { ARKodeButcherTable_Free(b); }
 };
-using ButcherTablePtr = std::unique_ptr<std::remove_pointer_t<ARKodeButcherTable>, ButcherTableDeleter>;
+using ButcherTablePtr =
+    std::unique_ptr<std::remove_pointer_t<ARKodeButcherTable>, ButcherTableDeleter>;
 
 struct ArkodeMemDeleter {
     void operator()(void* mem) const { ARKStepFree(&mem); }
@@ -115,8 +118,10 @@ public:
     virtual int reinit(double t0, N_Vector y0) = 0;
     virtual int setStopTime(double tstop) = 0;
     virtual int evolve(double tout, N_Vector yout, double* tret) = 0;
-    virtual double currentTime() = 0;  ///< the solver's internal time (may pass the last returned one)
-    virtual long numSteps() = 0;  ///< steps since creation (ARKODE) or since the last reinit (CVODE)
+    /// The solver's internal time (may be past the last returned one).
+    virtual double currentTime() = 0;
+    /// Steps since creation (ARKODE) or since the last reinit (CVODE).
+    virtual long numSteps() = 0;
     virtual int rootInfo(int* info) = 0;
     virtual std::string flagName(int flag) const = 0;
 };
@@ -142,7 +147,6 @@ public:
         void* mem = m_mem.get();
         check(ARKStepSetErrHandlerFn(mem, cb.errorHandler, cb.userData), "ARKStepSetErrHandlerFn");
         check(ARKStepSetUserData(mem, cb.userData), "ARKStepSetUserData");
-        check(ARKStepSStolerances(mem, opt.rtol, opt.atol), "ARKStepSStolerances");
         check(ARKStepSetMaxNumSteps(mem, opt.maxSteps), "ARKStepSetMaxNumSteps");
         if (opt.method == IntegrationMethod::Rk4Fixed) {
             // the classic RK4 (not among 6.4's built-in tables); no embedding
@@ -157,6 +161,7 @@ public:
             check(ARKStepSetTables(mem, 4, 0, nullptr, rk4.get()), "ARKStepSetTables");  // copies
             check(ARKStepSetFixedStep(mem, opt.step), "ARKStepSetFixedStep");
         } else {
+            check(ARKStepSStolerances(mem, opt.rtol, opt.atol), "ARKStepSStolerances");
             check(ARKStepSetTableNum(mem, ARKODE_DIRK_NONE, ARKODE_DORMAND_PRINCE_7_4_5),
                   "ARKStepSetTableNum");
         }
@@ -186,7 +191,10 @@ public:
         return n;
     }
     int rootInfo(int* info) override { return ARKStepGetRootInfo(m_mem.get(), info); }
-    std::string flagName(int flag) const override { return solver::flagName(ARKStepGetReturnFlagName, flag); }
+    std::string flagName(int flag) const override
+    {
+        return solver::flagName(ARKStepGetReturnFlagName, flag);
+    }
 
 private:
     void check(int flag, const char* call) const
@@ -247,7 +255,10 @@ public:
         return n;
     }
     int rootInfo(int* info) override { return CVodeGetRootInfo(m_mem.get(), info); }
-    std::string flagName(int flag) const override { return solver::flagName(CVodeGetReturnFlagName, flag); }
+    std::string flagName(int flag) const override
+    {
+        return solver::flagName(CVodeGetReturnFlagName, flag);
+    }
 
 private:
     void check(int flag, const char* call) const
@@ -265,8 +276,9 @@ private:
 
 bool isUserFunctionFailure(int flag)
 {
-    return flag == ARK_RHSFUNC_FAIL || flag == ARK_FIRST_RHSFUNC_ERR || flag == ARK_REPTD_RHSFUNC_ERR ||
-           flag == ARK_UNREC_RHSFUNC_ERR || flag == ARK_RTFUNC_FAIL;
+    return flag == ARK_RHSFUNC_FAIL || flag == ARK_FIRST_RHSFUNC_ERR ||
+           flag == ARK_REPTD_RHSFUNC_ERR || flag == ARK_UNREC_RHSFUNC_ERR ||
+           flag == ARK_RTFUNC_FAIL;
 }
 
 }  // namespace
@@ -296,7 +308,8 @@ public:
         if (m_options.method == IntegrationMethod::AdaptiveStiff) {
             m_backend = std::make_unique<CvodeBackend>(m_ctx.get(), m_y.get(), m_options, dirs, cb);
         } else {
-            m_backend = std::make_unique<ArkodeBackend>(m_ctx.get(), m_y.get(), m_options, dirs, cb);
+            m_backend =
+                std::make_unique<ArkodeBackend>(m_ctx.get(), m_y.get(), m_options, dirs, cb);
         }
     }
 
@@ -323,7 +336,8 @@ public:
     AdvanceResult advanceTo(double tout, double* y)
     {
         if (!m_initialised) throw std::logic_error("Integrator::advanceTo before reset()");
-        if (!std::isfinite(tout)) throw std::invalid_argument("Integrator::advanceTo: tout is not finite");
+        if (!std::isfinite(tout))
+            throw std::invalid_argument("Integrator::advanceTo: tout is not finite");
         if (tout < m_t) {
             throw std::invalid_argument("Integrator::advanceTo: tout " + formatTime(tout) +
                                         " is behind the current time " + formatTime(m_t));
@@ -396,7 +410,15 @@ public:
     const IntegratorStats& stats() const { return m_stats; }
 
 private:
-    enum class FailureKind { None, RhsFalse, RhsNonFinite, RhsThrew, RootsFalse, RootsNonFinite, RootsThrew };
+    enum class FailureKind {
+        None,
+        RhsFalse,
+        RhsNonFinite,
+        RhsThrew,
+        RootsFalse,
+        RootsNonFinite,
+        RootsThrew
+    };
     struct Failure {
         FailureKind kind = FailureKind::None;
         double t = 0;
@@ -413,10 +435,13 @@ private:
         if (m_nroots < 0) bad("the system's rootCount() must not be negative");
         if (!(m_options.maxSteps > 0)) bad("maxSteps must be positive");
         if (m_options.method == IntegrationMethod::Rk4Fixed) {
-            if (!(std::isfinite(m_options.step) && m_options.step > 0)) bad("step must be positive and finite");
+            if (!(std::isfinite(m_options.step) && m_options.step > 0))
+                bad("step must be positive and finite");
         } else {
-            if (!(std::isfinite(m_options.rtol) && m_options.rtol > 0)) bad("rtol must be positive and finite");
-            if (!(std::isfinite(m_options.atol) && m_options.atol > 0)) bad("atol must be positive and finite");
+            if (!(std::isfinite(m_options.rtol) && m_options.rtol > 0))
+                bad("rtol must be positive and finite");
+            if (!(std::isfinite(m_options.atol) && m_options.atol > 0))
+                bad("atol must be positive and finite");
         }
     }
 
@@ -434,17 +459,26 @@ private:
             char value[40];
             std::snprintf(value, sizeof value, "%g", f.value);
             switch (f.kind) {
-            case FailureKind::RhsFalse: msg += ": the right-hand side reported a failure" + at; break;
+            case FailureKind::RhsFalse:
+                msg += ": the right-hand side reported a failure" + at;
+                break;
             case FailureKind::RhsNonFinite:
                 msg += ": the right-hand side gave a non-finite value in component " +
                        std::to_string(f.component) + " (" + value + ")" + at;
                 break;
-            case FailureKind::RhsThrew: msg += ": the right-hand side threw an exception" + at; break;
-            case FailureKind::RootsFalse: msg += ": the event functions reported a failure" + at; break;
-            case FailureKind::RootsNonFinite:
-                msg += ": event function " + std::to_string(f.component) + " is not finite (" + value + ")" + at;
+            case FailureKind::RhsThrew:
+                msg += ": the right-hand side threw an exception" + at;
                 break;
-            case FailureKind::RootsThrew: msg += ": the event functions threw an exception" + at; break;
+            case FailureKind::RootsFalse:
+                msg += ": the event functions reported a failure" + at;
+                break;
+            case FailureKind::RootsNonFinite:
+                msg += ": event function " + std::to_string(f.component) + " is not finite (" +
+                       value + ")" + at;
+                break;
+            case FailureKind::RootsThrew:
+                msg += ": the event functions threw an exception" + at;
+                break;
             case FailureKind::None: break;
             }
         }
@@ -518,7 +552,10 @@ private:
                       function != nullptr ? function : "?", msg != nullptr ? msg : "");
     }
 
-    static const char* lastError(void* userData) { return static_cast<Impl*>(userData)->m_sundialsMessage; }
+    static const char* lastError(void* userData)
+    {
+        return static_cast<Impl*>(userData)->m_sundialsMessage;
+    }
 
     OdeSystem& m_system;
     IntegratorOptions m_options;
@@ -552,12 +589,33 @@ Integrator::~Integrator() = default;
 Integrator::Integrator(Integrator&&) noexcept = default;
 Integrator& Integrator::operator=(Integrator&&) noexcept = default;
 
-void Integrator::reset(double t0, const double* y0) { m_impl->reset(t0, y0); }
-AdvanceResult Integrator::advanceTo(double tout, double* y) { return m_impl->advanceTo(tout, y); }
-double Integrator::time() const { return m_impl->time(); }
-int Integrator::size() const { return m_impl->size(); }
-int Integrator::rootCount() const { return m_impl->rootCount(); }
-const IntegratorOptions& Integrator::options() const { return m_impl->options(); }
-const IntegratorStats& Integrator::stats() const { return m_impl->stats(); }
+void Integrator::reset(double t0, const double* y0)
+{
+    m_impl->reset(t0, y0);
+}
+AdvanceResult Integrator::advanceTo(double tout, double* y)
+{
+    return m_impl->advanceTo(tout, y);
+}
+double Integrator::time() const
+{
+    return m_impl->time();
+}
+int Integrator::size() const
+{
+    return m_impl->size();
+}
+int Integrator::rootCount() const
+{
+    return m_impl->rootCount();
+}
+const IntegratorOptions& Integrator::options() const
+{
+    return m_impl->options();
+}
+const IntegratorStats& Integrator::stats() const
+{
+    return m_impl->stats();
+}
 
 }  // namespace solver

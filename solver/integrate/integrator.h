@@ -82,7 +82,7 @@ const char* integrationMethodName(IntegrationMethod m);  ///< "rk4", "adaptive",
 
 struct IntegratorOptions {
     IntegrationMethod method = IntegrationMethod::Rk4Fixed;
-    double step = 1e-3;  ///< Rk4Fixed: the step [s] (> 0); the last step before tout is shortened
+    double step = 1e-3;  ///< Rk4Fixed: the step [s] (> 0); a step that would pass tout ends there
     double rtol = 1e-8;  ///< adaptive methods: relative tolerance (> 0)
     double atol = 1e-10;  ///< adaptive methods: absolute tolerance, every component (> 0)
     int maxSteps = 100000;  ///< most internal steps in one advanceTo() call (> 0)
@@ -125,7 +125,8 @@ struct AdvanceResult {
 };
 
 /// RAII owner of one SUNDIALS solver (context, vectors, solver memory, linear
-/// solver) for one OdeSystem. Not copyable; movable.
+/// solver) for one OdeSystem. Not copyable; movable (a moved-from Integrator may
+/// only be destroyed or assigned to).
 class Integrator {
 public:
     /// Sets up the solver for `system` (kept by reference; must outlive the
@@ -139,10 +140,11 @@ public:
     Integrator(const Integrator&) = delete;
     Integrator& operator=(const Integrator&) = delete;
 
-    /// (Re)starts the integration at t0 [s] from y0 (dim size()): at the start, after
-    /// an event changed the state, or when f changed discontinuously (see top of
-    /// file). Clears a previous failure. Cheap for Rk4Fixed and Adaptive (one f
-    /// evaluation); AdaptiveStiff restarts its multistep history.
+    /// (Re)starts the integration at t0 [s] (finite) from y0 (dim size()): at the
+    /// start, after an event changed the state, or when f changed discontinuously
+    /// (see top of file). Clears a previous failure. Cheap for Rk4Fixed and Adaptive
+    /// (one f evaluation); AdaptiveStiff restarts its multistep history. A y0 that is
+    /// not finite is not checked here: the next advanceTo() fails.
     void reset(double t0, const double* y0);
 
     /// Integrates from the current time to tout [s] (>= time(), finite), stopping

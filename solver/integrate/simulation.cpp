@@ -396,7 +396,7 @@ bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, st
                 if (!std::isfinite(m_y[j]) || !std::isfinite(m_y[nb + j])) joint = j;
             }
             char t0[48];
-            std::snprintf(t0, sizeof t0, "%.6g", r.t);
+            std::snprintf(t0, sizeof t0, "%.6g", r.failureTime);
             error = std::string("the simulation failed at t = ") + t0 + " s";
             if (joint >= 0) {
                 error += ", joint " + std::to_string(m_model->jointId[joint]);

@@ -116,6 +116,20 @@ double ActuatorLengthLaw::lengthSecondDerivative(double angle) const
     return (c0 - l2 - 2 * d * d) / (2 * l);
 }
 
+void ActuatorLengthLaw::lengthDerivatives(double angle, double& len, double& rate,
+                                          double& secondRate) const
+{
+    const double c = std::cos(angle), s = std::sin(angle);
+    const double l2 = c0 + c1 * c + c2 * s;
+    if (!(l2 > 0)) {
+        len = rate = secondRate = 0;
+        return;
+    }
+    len = std::sqrt(l2);
+    rate = (c2 * c - c1 * s) / (2 * len);
+    secondRate = (c0 - l2 - 2 * rate * rate) / (2 * len);
+}
+
 double ActuatorLengthLaw::angleRate(double angle) const
 {
     const double d = lengthRate(angle);

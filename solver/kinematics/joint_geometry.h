@@ -62,6 +62,9 @@ struct ActuatorLengthLaw {
     /// d²L/dθ² = (c0 − L² − 2 (dL/dθ)²) / (2 L) [m/rad^2] (from differentiating
     /// L² = c0 + c1 cos θ + c2 sin θ twice); 0 where L = 0.
     double lengthSecondDerivative(double angle) const;
+    /// L [m], dL/dθ [m/rad] and d²L/dθ² [m/rad^2] at once (one sine and cosine, one
+    /// square root), for the step loop; the same values as the three functions above.
+    void lengthDerivatives(double angle, double& length, double& rate, double& secondRate) const;
     /// dθ/dL = 1 / (dL/dθ) [rad/m]; infinite at a dead point.
     double angleRate(double angle) const;
     /// Angle whose length is `length` [m], on the branch whose angle (wrapped to

@@ -20,29 +20,39 @@ void forwardKinematics(const Model& model, const Eigen::VectorXd& q, const Eigen
         const double th = sigma * q[i];
 
         // the child's joint frame: the parent's joint frame moved by J(σθ) (eq. 2.1)
-        Eigen::Isometry3d& X_wj = data.X_wj[i];
-        if (p < 0) {
-            X_wj = model.X_pj[i];
-        } else {
-            X_wj = data.X_wb[p] * model.X_pj[i];
+        // (3×3 and 3×1 parts, which Eigen multiplies faster than the 4×4 storage)
+        Eigen::Matrix3d R = model.X_pj[i].linear();
+        Vector3d x = model.X_pj[i].translation();
+        if (p >= 0) {
+            const Eigen::Matrix3d Rp = data.X_wb[p].linear();
+            const Eigen::Matrix3d Rpj = R;
+            R.noalias() = Rp * Rpj;
+            x = Rp * x + data.X_wb[p].translation();
         }
         Vector6d& s = data.S[i];
         if (model.jointType[i] == JointType::Prismatic) {
-            const Vector3d r = X_wj.linear().col(1);
-            X_wj.translation() += th * r;
+            const Vector3d r = R.col(1);
+            x += th * r;
             s.head<3>().setZero();
             s.tail<3>() = sigma * r;
         } else {
             // turn about the frame's x axis (A): R ← R · Rx(σθ)
             const double cs = std::cos(th), sn = std::sin(th);
-            const Vector3d r = X_wj.linear().col(1), t = X_wj.linear().col(2);
-            X_wj.linear().col(1) = cs * r + sn * t;
-            X_wj.linear().col(2) = cs * t - sn * r;
-            const Vector3d axis = sigma * X_wj.linear().col(0);
+            const Vector3d r = R.col(1), t = R.col(2);
+            R.col(1) = cs * r + sn * t;
+            R.col(2) = cs * t - sn * r;
+            const Vector3d axis = sigma * R.col(0);
             s.head<3>() = axis;
-            s.tail<3>() = X_wj.translation().cross(axis);
+            s.tail<3>() = x.cross(axis);
         }
-        data.X_wb[i] = X_wj * model.X_jc[i];
+        Eigen::Isometry3d& X_wj = data.X_wj[i];
+        X_wj.linear() = R;
+        X_wj.translation() = x;
+        Eigen::Isometry3d& X_wb = data.X_wb[i];
+        const Eigen::Matrix3d Rjc = model.X_jc[i].linear();
+        X_wb.linear().noalias() = R * Rjc;
+        X_wb.translation().noalias() = R * model.X_jc[i].translation();
+        X_wb.translation() += x;
 
         // velocity (eq. 2.2–2.4) and the velocity-product acceleration
         const Vector6d vj = s * qd[i];
