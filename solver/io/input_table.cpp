@@ -1,5 +1,8 @@
 #include "solver/io/input_table.h"
 
+#include "solver/core/text_file.h"
+#include "solver/parse/lexer.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -16,37 +19,6 @@ namespace {
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isBlank(char c) { return c == ' ' || c == '\t'; }
 
-/// Matches [+-]?(d+(.d*)?|.d+)([eE][+-]?d+)? exactly (the model language's numbers).
-bool looksLikeNumber(std::string_view w)
-{
-    std::size_t i = 0;
-    if (i < w.size() && (w[i] == '+' || w[i] == '-')) ++i;
-    std::size_t digits = 0;
-    while (i < w.size() && isDigit(w[i])) { ++i; ++digits; }
-    if (i < w.size() && w[i] == '.') {
-        ++i;
-        while (i < w.size() && isDigit(w[i])) { ++i; ++digits; }
-    }
-    if (digits == 0) return false;
-    if (i < w.size() && (w[i] == 'e' || w[i] == 'E')) {
-        ++i;
-        if (i < w.size() && (w[i] == '+' || w[i] == '-')) ++i;
-        std::size_t expDigits = 0;
-        while (i < w.size() && isDigit(w[i])) { ++i; ++expDigits; }
-        if (expDigits == 0) return false;
-    }
-    return i == w.size();
-}
-
-std::string upperAscii(std::string_view s)
-{
-    std::string out(s);
-    for (char& c : out) {
-        if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
-    }
-    return out;
-}
-
 /// Shortest round-trip text of a number.
 std::string fmt(double v)
 {
@@ -61,17 +33,17 @@ enum class NumberStatus { Ok, Empty, NotANumber, DecimalComma, NotFinite, OutOfR
 NumberStatus readNumber(std::string_view w, double& out)
 {
     if (w.empty()) return NumberStatus::Empty;
-    if (!looksLikeNumber(w)) {
+    if (!parse::looksLikeNumber(w)) {
         std::string_view body = w;
         if (body[0] == '+' || body[0] == '-') body.remove_prefix(1);
-        const std::string u = upperAscii(body);
+        const std::string u = parse::upper(body);
         if (u == "NAN" || u == "INF" || u == "INFINITY") return NumberStatus::NotFinite;
         const std::size_t comma = w.find(',');
         if (comma != std::string_view::npos && comma > 0 && isDigit(w[comma - 1]) &&
             w.find(',', comma + 1) == std::string_view::npos) {
             std::string dotted(w);
             dotted[comma] = '.';
-            if (looksLikeNumber(dotted)) return NumberStatus::DecimalComma;
+            if (parse::looksLikeNumber(dotted)) return NumberStatus::DecimalComma;
         }
         return NumberStatus::NotANumber;
     }
@@ -418,30 +390,11 @@ std::optional<InputTable> InputTable::readFile(const std::string& path, Diagnost
 {
     namespace fs = std::filesystem;
     if (diags.file().empty()) diags.setFile(path);
-    auto fail = [&](std::string message, std::string hint) {
-        Diagnostic& d = diags.error("io-error", {}, std::move(message), std::move(hint));
-        d.file = path;
-        return std::nullopt;
-    };
-    std::error_code ec;
-    const fs::file_status st = fs::status(path, ec);
-    if (ec || !fs::exists(st)) return fail("no such file", "check the path");
-    if (fs::is_directory(st))
-        return fail("this is a folder, not an input file", "give the path of a .csv file");
-    if (!fs::is_regular_file(st))
-        return fail("this is not a regular file", "give the path of a .csv file");
-    const auto size = fs::file_size(path, ec);
-    if (!ec && size > kMaxInputFileBytes) {
-        return fail("the file is too large for an input table (over " +
-                        std::to_string(kMaxInputFileBytes / (1024 * 1024)) + " MB)",
-                    "split the session, or record the commands less often");
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return fail("cannot be read (permission denied?)", "check the file's permissions");
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (in.bad()) return fail("reading failed", "check the disk and the file's permissions");
-    return parse(ss.str(), diags);
+    std::optional<std::string> text =
+        readTextFile(path, kMaxInputFileBytes, "an input", ".csv",
+                     "split the session, or record the commands less often", diags);
+    if (!text) return std::nullopt;
+    return parse(*text, diags);
 }
 
 std::optional<std::size_t> InputTable::column(int jointId) const

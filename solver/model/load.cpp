@@ -1,11 +1,10 @@
 #include "solver/model/load.h"
 
+#include "solver/core/text_file.h"
 #include "solver/model/validate.h"
 #include "solver/parse/parser.h"
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace solver {
 
@@ -145,35 +144,17 @@ LoadedModel loadModelText(std::string_view text, const std::string& file)
 
 LoadedModel loadModelFile(const std::string& path)
 {
-    namespace fs = std::filesystem;
-    auto fail = [&](std::string message, std::string hint) {
+    Diagnostics diags(path);
+    std::optional<std::string> text =
+        readTextFile(path, kMaxModelFileBytes, "a model", ".pad",
+                     "a model is a short text; put meshes in their own files (G … MESH \"file\")", diags);
+    if (!text) {
         LoadedModel m;
         m.spec.file = path;
-        m.diagnostics.setFile(path);
-        m.diagnostics.error("io-error", {}, std::move(message), std::move(hint));
+        m.diagnostics = std::move(diags);
         return m;
-    };
-    std::error_code ec;
-    fs::file_status st = fs::status(path, ec);
-    if (ec || !fs::exists(st)) return fail("no such file", "check the path");
-    if (fs::is_directory(st)) return fail("this is a folder, not a model file", "give the path of a .pad file");
-    if (!fs::is_regular_file(st)) return fail("this is not a regular file", "give the path of a .pad file");
-    const auto size = fs::file_size(path, ec);
-    if (!ec && size > kMaxModelFileBytes) {
-        // the size in MB rounded up to a tenth, so that a file just over the limit does
-        // not read "16 MB; the limit is 16 MB"
-        const auto tenths = (size * 10 + 1024 * 1024 - 1) / (1024 * 1024);
-        return fail("the file is too large for a model (" + std::to_string(tenths / 10) + "." +
-                        std::to_string(tenths % 10) + " MB; the limit is " +
-                        std::to_string(kMaxModelFileBytes / (1024 * 1024)) + " MB)",
-                    "a model is a short text; put meshes in their own files (G … MESH \"file\")");
     }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return fail("cannot be read (permission denied?)", "check the file's permissions");
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (in.bad()) return fail("reading failed", "check the disk and the file's permissions");
-    return loadModelText(ss.str(), path);
+    return loadModelText(*text, path);
 }
 
 }  // namespace solver

@@ -34,7 +34,8 @@ namespace {
 
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 
-/// Matches [+-]?(d+(.d*)?|.d+)([eE][+-]?d+)? exactly.
+}  // namespace
+
 bool looksLikeNumber(std::string_view w)
 {
     std::size_t i = 0;
@@ -55,6 +56,8 @@ bool looksLikeNumber(std::string_view w)
     }
     return i == w.size();
 }
+
+namespace {
 
 /// Parses a word that looksLikeNumber; false when out of the range of a double.
 bool toDouble(std::string_view w, double& out)

@@ -36,6 +36,10 @@ std::string numberProblem(std::string_view word);
 /// characters, numbers out of range) go to `diags`.
 std::vector<Token> tokenizeLine(std::string_view line, int lineNo, Diagnostics& diags);
 
+/// True when `word` is a number of the language exactly:
+/// [+-]?(d+(.d*)?|.d+)([eE][+-]?d+)? (the range is not checked).
+bool looksLikeNumber(std::string_view word);
+
 /// Upper-cases ASCII letters.
 std::string upper(std::string_view s);
 

@@ -32,14 +32,6 @@ std::string listing(const Diagnostics& diags)
     return s.empty() ? "  (none)\n" : s;
 }
 
-std::string corrected()
-{
-    std::string text = kAppendixA;
-    const auto at = text.find("4,38325");
-    EXPECT_NE(at, std::string::npos);
-    text[at + 1] = '.';
-    return text;
-}
 
 /// Ids of the bodies whose diagonal inertia breaks Ixx + Iyy >= Izz or a permutation,
 /// computed here from the spec (every Appendix A body has zero products).
@@ -114,7 +106,7 @@ TEST(AppendixA, UnchangedGivesExactlyTheDecimalCommaError)
 
 TEST(AppendixA, CorrectedLoadsWithTheTriangleWarnings)
 {
-    LoadedModel m = loadModelText(corrected(), "m.pad");
+    LoadedModel m = loadModelText(solver::test::appendixACorrected(), "m.pad");
     ASSERT_EQ(m.diagnostics.size(), 3u) << listing(m.diagnostics);
     EXPECT_EQ(m.diagnostics.items()[0].format(), kTriangle3);
     EXPECT_EQ(m.diagnostics.items()[1].format(), kTriangle5);
@@ -133,7 +125,7 @@ TEST(AppendixA, CorrectedLoadsWithTheTriangleWarnings)
 
 TEST(AppendixA, CorrectedSpecHasTheThesisValues)
 {
-    LoadedModel m = loadModelText(corrected(), "m.pad");
+    LoadedModel m = loadModelText(solver::test::appendixACorrected(), "m.pad");
     const ModelSpec& s = m.spec;
     ASSERT_EQ(s.bodies.size(), 10u);  // B 0 … B 9
     ASSERT_EQ(s.joints.size(), 9u);

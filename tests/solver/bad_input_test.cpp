@@ -129,7 +129,7 @@ TEST(BadInput, FileOfSeventeenMegabytesIsTooLarge)
     EXPECT_EQ(d.code, "io-error");
     EXPECT_EQ(d.pos, (SourcePos{0, 0}));
     EXPECT_EQ(d.format(), file +
-                              ": error: the file is too large for a model (17.0 MB; the limit is 16 MB) [a model is a "
+                              ": error: the file is too large for a model file (17.0 MB; the limit is 16 MB) [a model is a "
                               "short text; put meshes in their own files (G … MESH \"file\")]");
     EXPECT_FALSE(m.ok());
     EXPECT_FALSE(m.topology.has_value());
@@ -142,7 +142,7 @@ TEST(BadInput, FileJustOverTheLimitSaysByHowMuch)
     LoadedModel m = loadModelFile(file);
     ASSERT_EQ(m.diagnostics.size(), 1u) << listing(m.diagnostics);
     // not "16 MB; the limit is 16 MB"
-    EXPECT_EQ(m.diagnostics.items()[0].message, "the file is too large for a model (16.1 MB; the limit is 16 MB)");
+    EXPECT_EQ(m.diagnostics.items()[0].message, "the file is too large for a model file (16.1 MB; the limit is 16 MB)");
 }
 
 TEST(BadInput, FileAtTheLimitIsRead)

@@ -371,12 +371,6 @@ void fuzz(const std::string& seedText, std::uint32_t seed, int count, int minLoa
     }
 }
 
-std::string correctedAppendixA()
-{
-    std::string text = solver::test::kAppendixA;
-    text[text.find("4,38325") + 1] = '.';
-    return text;
-}
 
 }  // namespace
 
@@ -386,7 +380,7 @@ TEST(Fuzz, SeedsSatisfyTheInvariants)
     const Outcome a = checkInvariants(solver::test::kAppendixA);
     EXPECT_EQ(a.problem, "");
     EXPECT_FALSE(a.loaded);  // the decimal comma
-    const Outcome c = checkInvariants(correctedAppendixA());
+    const Outcome c = checkInvariants(solver::test::appendixACorrected());
     EXPECT_EQ(c.problem, "");
     EXPECT_TRUE(c.loaded);
     const Outcome e = checkInvariants(solver::test::kEveryStatement, folder.modelFile());
@@ -408,7 +402,7 @@ TEST(Fuzz, CheckerSeesBadPositions)
 TEST(Fuzz, AppendixAMutants)
 {
     fuzz(solver::test::kAppendixA, 1, 600, 0);
-    fuzz(correctedAppendixA(), 2, 900, 90);
+    fuzz(solver::test::appendixACorrected(), 2, 900, 90);
 }
 
 TEST(Fuzz, EveryStatementMutants)

@@ -105,6 +105,14 @@ B 8 2.0 0.00001 0.00001 0.00001
 B 9 2.0 0.00001 0.00001 0.00001
 )pad";
 
+/// Appendix A with its one typo fixed (body 4's "4,38325" read as 4.38325).
+inline std::string appendixACorrected()
+{
+    std::string text = kAppendixA;
+    text.replace(text.find("4,38325"), 7, "4.38325");
+    return text;
+}
+
 /// Every statement, option, kind and shape of the language, with numbers written in
 /// every form the lexer reads (.2, -.2, 1e-3, +4.5E2, DEG). It loads without errors
 /// when meshes/part.stl exists next to it (otherwise: two mesh-not-found errors).

@@ -251,12 +251,6 @@ void expectRoundTrip(const std::string& text)
     EXPECT_EQ(parse::writeModel(second), written);
 }
 
-std::string correctedAppendixA()
-{
-    std::string text = kAppendixA;
-    text[text.find("4,38325") + 1] = '.';
-    return text;
-}
 
 }  // namespace
 
@@ -286,7 +280,7 @@ TEST(RoundTrip, EveryStatementOptionAndShape)
 
 TEST(RoundTrip, AppendixACorrected)
 {
-    expectRoundTrip(correctedAppendixA());
+    expectRoundTrip(solver::test::appendixACorrected());
 }
 
 TEST(RoundTrip, AwkwardNumbersAreExact)

@@ -2,6 +2,7 @@
 
 #include "solver/kinematics/joint_geometry.h"
 #include "solver/model/load.h"
+#include "tests/solver/model_texts.h"
 #include "tests/solver/spec_builder.h"
 
 #include <gtest/gtest.h>
@@ -50,60 +51,9 @@ Diagnostic single(const LoadedModel& m, const std::string& code, Severity severi
 
 // ------------------------------------------------------------------ Appendix A
 
-// Thesis Appendix A (graphics not included), with its decimal-comma typo fixed.
-const char* const kLinerManipulator = R"(//Body "A" and "B" GIRO PLUMA
-C 1 QI 0.0
-B1 0 P1 0.0 0.0 0.0 A1 0.0 0.0 1.0 R1 0.0 1.0 0.0
-B2 1 P2 0.0 0.0 -0.21 A2 0.0 0.0 1.0 R2 0.0 1.0 0.0
-//Body "B" and "C" LEVANTE PLUMA
-C 2 T 1 LL 1.4 UL 1.617 QI 1.464
-B1 1 P1 0.0 0.0 0.0 A1 1.0 0.0 0.0 R1 0.0 1.0 0.0
-B2 2 P2 0.0 -0.8 0.0 A2 1.0 0.0 0.0 R2 0.0 1.0 0.0
-CL1 0.030 0 -.200 CL2 0.030 .650 0
-// Body "C" and "D" EXTENSION 1 Y 2
-C 3 T 2 LL 0.0 UL 0.900 QI 0.0
-B1 2 P1 0.0 0.800 0.0 A1 0.0 0.0 1.0 R1 0.0 1.0 0.0
-B2 3 P2 0.0 -0.600 0.0 A2 0.0 0.0 1.0 R2 0.0 1.0 0.0
-// Body "E" and "F" GIRO MUÑECA
-C 4 LL -1.1344 UL 1.1344 QI 0.0
-B1 3 P1 0.0 0.0 0.0 A1 0.0 0.0 1.0 R1 0.0 1.0 0.0
-B2 4 P2 0.0 -0.225 0.0 A2 0.0 0.0 1.0 R2 0.0 1.0 0.0
-// Body "F" and "G" LEVANTE MUÑECA
-C 5 T 1 LL 0.044 UL 0.413 QI 0.412
-B1 4 P1 0.0 0.0 -0.3 A1 1.0 0.0 0.0 R1 0.0 1.0 0.0
-B2 5 P2 0.0 -0.25 0.0 A2 1.0 0.0 0.0 R2 0.0 1.0 0.0
-CL1 0.0 -0.150 -0.450 CL2 0.0 0.0 -0.050
-// Body "G" and "H" ROTACION MUÑECA
-C 6 QI 0.0
-B1 5 P1 0.0 0.0 0.3 A1 0.0 1.0 0.0 R1 0.0 0.0 1.0
-B2 6 P2 0.0 -0.25 0.0 A2 0.0 1.0 0.0 R2 0.0 0.0 1.0
-// Body "H" and "J" PISTON
-C 7 T 2 LL 0.075 UL 0.200 QI 0.075
-B1 6 P1 0.0 0.05 0.0 A1 0.0 0.0 1.0 R1 0.0 1.0 0.0
-B2 7 P2 0.0 -0.10 0.0 A2 0.0 0.0 1.0 R2 0.0 1.0 0.0
-// Body "H" and "K" GARRA SUPERIOR
-C 8 T 2 LL -0.150 UL 0.0 QI 0.0
-B1 6 P1 0.0 0.05 0.35 A1 0.0 1.0 0.0 R1 0.0 0.0 1.0
-B2 8 P2 0.0 -0.10 0.0 A2 0.0 1.0 0.0 R2 0.0 0.0 1.0
-// Body "H" and "I" GARRA INFERIOR
-C 9 T 2 LL 0.0 UL 0.150 QI 0.0
-B1 6 P1 0.0 0.05 -0.35 A1 0.0 1.0 0.0 R1 0.0 0.0 1.0
-B2 9 P2 0.0 -0.10 0.0 A2 0.0 1.0 0.0 R2 0.0 0.0 1.0
-B 0
-B 1
-B 2 306.0 73.4487 15.1982 73.4487
-B 3 594.0 58.2474 190.9768 58.2474
-B 4 200.0 2.07742 3.89517 4.38325
-B 5 100.0 0.54153 1.25234 4.11914
-B 6 100.0 1.4359 2.65596 0.369125
-B 7 10.0 0.0001 0.0001 0.0001
-B 8 2.0 0.00001 0.00001 0.00001
-B 9 2.0 0.00001 0.00001 0.00001
-)";
-
 TEST(Topology, LinerManipulatorAppendixA)
 {
-    const LoadedModel m = loadModelText(kLinerManipulator, "m.pad");
+    const LoadedModel m = loadModelText(solver::test::appendixACorrected(), "m.pad");
     ASSERT_TRUE(m.ok()) << listing(m.diagnostics);
     ASSERT_TRUE(m.topology.has_value());
     const Topology& t = *m.topology;
