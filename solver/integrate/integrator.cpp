@@ -162,6 +162,7 @@ public:
             check(ARKStepSetFixedStep(mem, opt.step), "ARKStepSetFixedStep");
         } else {
             check(ARKStepSStolerances(mem, opt.rtol, opt.atol), "ARKStepSStolerances");
+            if (opt.maxStep > 0) check(ARKStepSetMaxStep(mem, opt.maxStep), "ARKStepSetMaxStep");
             check(ARKStepSetTableNum(mem, ARKODE_DIRK_NONE, ARKODE_DORMAND_PRINCE_7_4_5),
                   "ARKStepSetTableNum");
         }
@@ -228,6 +229,7 @@ public:
         check(CVodeSetUserData(mem, cb.userData), "CVodeSetUserData");
         check(CVodeSStolerances(mem, opt.rtol, opt.atol), "CVodeSStolerances");
         check(CVodeSetMaxNumSteps(mem, opt.maxSteps), "CVodeSetMaxNumSteps");
+        if (opt.maxStep > 0) check(CVodeSetMaxStep(mem, opt.maxStep), "CVodeSetMaxStep");
         check(CVodeSetLinearSolver(mem, m_ls.get(), m_a.get()), "CVodeSetLinearSolver");
         if (!dirs.empty()) {
             check(CVodeRootInit(mem, static_cast<int>(dirs.size()), cb.roots), "CVodeRootInit");
@@ -434,6 +436,8 @@ private:
         if (m_n <= 0) bad("the system's size() must be positive");
         if (m_nroots < 0) bad("the system's rootCount() must not be negative");
         if (!(m_options.maxSteps > 0)) bad("maxSteps must be positive");
+        if (!(m_options.maxStep >= 0) || !std::isfinite(m_options.maxStep))
+            bad("maxStep must be zero (unlimited) or positive");
         if (m_options.method == IntegrationMethod::Rk4Fixed) {
             if (!(std::isfinite(m_options.step) && m_options.step > 0))
                 bad("step must be positive and finite");

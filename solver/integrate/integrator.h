@@ -86,6 +86,9 @@ struct IntegratorOptions {
     double rtol = 1e-8;  ///< adaptive methods: relative tolerance (> 0)
     double atol = 1e-10;  ///< adaptive methods: absolute tolerance, every component (> 0)
     int maxSteps = 100000;  ///< most internal steps in one advanceTo() call (> 0)
+    /// Adaptive methods: the longest internal step [s]; 0 = unlimited. Event functions
+    /// are only sampled at step ends, so an event shorter than this can be missed.
+    double maxStep = 0;
 };
 
 /// Counters since construction (reset() does not clear them), for benchmarks.

@@ -193,7 +193,9 @@ Simulation::Simulation(std::shared_ptr<const Model> model, const SimulationOptio
         for (LimitState& l : m_state.limit) l = LimitState::Free;
     }
     m_system = std::make_unique<System>(*m_model, m_state, m_options.limits);
-    if (m_model->nb > 0) m_integrator = std::make_unique<Integrator>(*m_system, m_options.integrator);
+    IntegratorOptions io = m_options.integrator;
+    if (io.method != IntegrationMethod::Rk4Fixed && io.maxStep == 0) io.maxStep = kDefaultMaxStep;
+    if (m_model->nb > 0) m_integrator = std::make_unique<Integrator>(*m_system, io);
     evaluate();
 }
 

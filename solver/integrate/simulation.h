@@ -37,6 +37,8 @@
 namespace solver {
 
 struct SimulationOptions {
+    /// The integrator; an adaptive one with maxStep 0 gets kDefaultMaxStep, so that an
+    /// overload or a force pulse shorter than its steps is not stepped over.
     IntegratorOptions integrator;
     bool drives = true;  ///< false: every joint passive (drives ignored)
     bool limits = true;  ///< false: joint limits ignored
@@ -54,6 +56,9 @@ struct SimulationEvent {
     /// One line, e.g. "t=1.2345 s: joint 2 LEVANTE PLUMA hit its upper limit 1.617 m".
     std::string describe(const Model& model) const;
 };
+
+/// The longest adaptive step a Simulation takes unless told otherwise [s].
+inline constexpr double kDefaultMaxStep = 0.01;
 
 class Simulation {
 public:

@@ -316,3 +316,98 @@ B2 1 P2 0 0 0 A2 1 0 0 R2 0 0 1
     ASSERT_EQ(ev.size(), 2u);
     EXPECT_NEAR(ev[1].t, tHit + vHit / 9.81, 1e-8);
 }
+
+TEST(Simulation, AJointLeavesItsLimitWhenTheDynamicsPullItAway)
+{
+    // a 100 kg block resting on the lower stop of a vertical slider; a force ramping
+    // up from 0 to 2000 N over 1 s lifts it off when it exceeds the weight, at t = 0.4905 s
+    auto model = compileText(R"(
+B 1 100 1 1 1
+C 1 T 2 LL 0 QI 0
+B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 1
+B2 1 P2 0 0 0 A2 1 0 0 R2 0 0 1
+F 1 POINT B 1 P 0 0 0 DIR 0 0 1 MAG TABLE T 0 0 1 2000
+)");
+    ASSERT_TRUE(model);
+    Simulation sim(model, adaptive(1e-12));
+    EXPECT_EQ(sim.state().limit[0], LimitState::AtLower);
+    std::vector<SimulationEvent> ev;
+    std::string err;
+    ASSERT_TRUE(sim.advanceTo(0.3, ev, err)) << err;
+    EXPECT_TRUE(ev.empty());
+    EXPECT_NEAR(sim.data().limitForce[0], 981.0 - 600.0, 1e-9);  // the stop carries the rest of the weight
+    EXPECT_EQ(sim.state().q[0], 0.0);
+    ASSERT_TRUE(sim.advanceTo(0.6, ev, err)) << err;
+    ASSERT_EQ(ev.size(), 1u);
+    EXPECT_EQ(ev[0].kind, SimulationEvent::Kind::LimitLeave);
+    EXPECT_EQ(ev[0].side, -1);
+    EXPECT_NEAR(ev[0].t, 0.4905, 1e-9);
+    EXPECT_GT(sim.state().q[0], 0.0);
+}
+
+TEST(Simulation, AHydraulicCylinderStallsAtItsLimitAndLeavesItWhenCommandedBack)
+{
+    auto model = compileText(R"(
+B 1 100 1 1 1
+C 1 T 2 LL 0 UL 0.25 QI 0.2
+B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 1
+B2 1 P2 0 0 0 A2 1 0 0 R2 0 0 1
+D 1 HYD VMAX 0.1 FMAX 5000
+)");
+    ASSERT_TRUE(model);
+    Simulation sim(model, rk4(1e-3));
+    sim.setCommand(0, 1.0);
+    std::vector<SimulationEvent> ev;
+    std::string err;
+    ASSERT_TRUE(sim.advanceTo(1.0, ev, err)) << err;
+    ASSERT_EQ(ev.size(), 1u);
+    EXPECT_EQ(ev[0].kind, SimulationEvent::Kind::LimitHit);
+    EXPECT_NEAR(ev[0].t, 0.5, 1e-12);  // 0.05 m at 0.1 m/s
+    EXPECT_EQ(sim.state().q[0], 0.25);
+    EXPECT_EQ(sim.state().qd[0], 0.0);
+    EXPECT_NEAR(sim.data().driveForce[0], 981.0, 1e-9);  // the cylinder still carries the load
+    // pushing further changes nothing; commanding back leaves the stop at once
+    sim.setCommand(0, -0.5);
+    ev.clear();
+    ASSERT_TRUE(sim.advanceTo(1.2, ev, err)) << err;
+    ASSERT_EQ(ev.size(), 1u);
+    EXPECT_EQ(ev[0].kind, SimulationEvent::Kind::LimitLeave);
+    EXPECT_EQ(ev[0].t, 1.0);
+    EXPECT_NEAR(sim.state().q[0], 0.25 - 0.05 * 0.2, 1e-12);
+}
+
+TEST(Simulation, AReliefValveOpensUnderAnOverloadAndClosesWhenItPasses)
+{
+    // lifting 100 kg at 0.1 m/s needs 981 N; an extra 500 N pushes down from 0.2 s to
+    // 0.4 s, beyond the 1200 N relief setting: the valve opens, the load sinks, and
+    // when the push ends the cylinder accelerates it back to its commanded rate
+    auto model = compileText(R"(
+B 1 100 1 1 1
+C 1 T 2 LL 0 UL 2 QI 0.5
+B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 1
+B2 1 P2 0 0 0 A2 1 0 0 R2 0 0 1
+D 1 HYD VMAX 0.1 FMAX 1200
+F 1 POINT B 1 P 0 0 0 DIR 0 0 -1 MAG TABLE T 0.19999 0 0.2 500 0.4 500 0.40001 0
+)");
+    ASSERT_TRUE(model);
+    Simulation sim(model, adaptive(1e-11));
+    sim.setCommand(0, 1.0);
+    std::vector<SimulationEvent> ev;
+    std::string err;
+    ASSERT_TRUE(sim.advanceTo(1.0, ev, err)) << err;
+    ASSERT_EQ(ev.size(), 2u);
+    EXPECT_EQ(ev[0].kind, SimulationEvent::Kind::ReliefOpen);
+    EXPECT_EQ(ev[0].side, +1);
+    EXPECT_DOUBLE_EQ(ev[0].value, 1200.0);
+    // the push reaches 1200 − 981 = 219 N on its ramp from 0.19999 s
+    EXPECT_NEAR(ev[0].t, 0.19999 + 1e-5 * 219.0 / 500.0, 1e-9);
+    EXPECT_EQ(ev[1].kind, SimulationEvent::Kind::ReliefClose);
+    EXPECT_GT(ev[1].t, 0.4);
+    EXPECT_EQ(sim.state().relief[0], ReliefState::Closed);
+    EXPECT_NEAR(sim.state().qd[0], 0.1, 1e-12);
+    // while open, the cylinder pushed with 1200 N: net (1200 − 981 − 500) / 100 m/s² down
+    // for 0.2 s, then (1200 − 981)/100 up until back at 0.1 m/s
+    const double down = (1200.0 - 981.0 - 500.0) / 100.0, up = (1200.0 - 981.0) / 100.0;
+    const double vLow = 0.1 + down * 0.2;  // at 0.4 s (ramps neglected: 1e-5 s)
+    EXPECT_NEAR(ev[1].t, 0.4 + (0.1 - vLow) / up, 1e-4);
+}
