@@ -19,6 +19,8 @@ packages=(
   # hypre, Trilinos, MUMPS, gfortran and HDF5 that we never use. If install time
   # matters, build SUNDIALS from source instead (serial only: ARKODE, CVODE, dense).
   libsundials-dev
+  # assimp 5.2 (mesh files for graphics and the inertia calculator)
+  libassimp-dev
   # Qt (the CLI's QtCore now; widgets, Linguist tools and translations for the apps)
   qt6-base-dev qt6-base-dev-tools qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
   # tests

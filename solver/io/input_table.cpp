@@ -464,13 +464,20 @@ bool checkInputColumns(const InputTable& table, std::span<const int> drivenJoint
                     std::to_string(id) + " …)");
         }
     }
+    // not an error: an input that moves one valve need not list the others
+    std::string missing;
+    int nMissing = 0;
     for (int id : driven) {
-        if (!table.column(id)) {
-            // not an error: an input that moves one valve need not list the others
-            diags.warning("missing-column", table.headerPos(),
-                          "no column for joint " + std::to_string(id) + "'s drive: its command stays 0 (valve closed)",
-                          "add a column u" + std::to_string(id) + " to drive it");
-        }
+        if (table.column(id)) continue;
+        missing += (missing.empty() ? "" : ", ") + std::to_string(id);
+        ++nMissing;
+    }
+    if (nMissing > 0) {
+        diags.warning("missing-column", table.headerPos(),
+                      nMissing == 1 ? "no column for joint " + missing + "'s drive: its command stays 0 (valve closed)"
+                                    : "no columns for the drives of joints " + missing +
+                                          ": their commands stay 0 (valves closed)",
+                      "add a column u<joint id> to drive one");
     }
     return ok;
 }

@@ -406,14 +406,16 @@ TEST(InputColumns, MatchTheDrivenJoints)
     EXPECT_TRUE(diags.empty());
 }
 
-TEST(InputColumns, MissingColumnAloneIsOnlyAWarning)
+TEST(InputColumns, MissingColumnsAreOneWarning)
 {
     const InputTable t = good("t,u2\n0,0.5\n");
     Diagnostics diags("in.csv");
-    const std::vector<int> driven{5, 2}, joints{1, 2, 3, 5};
+    const std::vector<int> driven{5, 2, 1, 3}, joints{1, 2, 3, 5};
     EXPECT_TRUE(checkInputColumns(t, driven, joints, diags));
     ASSERT_EQ(diags.size(), 1u);
-    EXPECT_EQ(diags.items()[0].severity, Severity::Warning);
+    EXPECT_EQ(diags.items()[0].format(),
+              "in.csv:1:1: warning: no columns for the drives of joints 1, 3, 5: their commands stay 0 (valves "
+              "closed) [add a column u<joint id> to drive one]");
     EXPECT_FALSE(diags.hasErrors());
 }
 
@@ -433,7 +435,7 @@ TEST(InputColumns, UnknownJointNoDriveAndMissingColumn)
             "no-drive in.csv:1:6: error: column 'u3': joint 3 has no drive [a command moves a drive: "
             "remove the column, or give the joint a drive (D 3 …)]",
             "missing-column in.csv:1:1: warning: no column for joint 5's drive: its command stays 0 "
-            "(valve closed) [add a column u5 to drive it]",
+            "(valve closed) [add a column u<joint id> to drive one]",
         }));
 }
 
