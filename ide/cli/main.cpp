@@ -2,6 +2,7 @@
 // inertia, bench, export, tutorial). Exit codes: 0 success, 1 the model has
 // errors, 2 usage error or unreadable file.
 
+#include "ide/cli/inertia.h"
 #include "ide/cli/info_report.h"
 #include "ide/cli/simulate.h"
 #include "solver/model/load.h"
@@ -31,6 +32,8 @@ std::string mainHelp()
               "  info MODEL [--json]   describe a model: bodies, joints, chains, degrees of freedom\n"
               "  simulate MODEL --time T [OPTIONS]\n"
               "                        simulate a model and write its trajectory as CSV\n"
+              "  inertia MODEL [--body I] [--write]\n"
+              "                        compute bodies' mass and inertia from their solids\n"
               "\n"
               "Options:\n"
               "  -h, --help            show this help (or a command's: padrob COMMAND --help)\n"
@@ -174,6 +177,7 @@ int main(int argc, char** argv)
     if (cmd == "check") return runCheck(rest);
     if (cmd == "info") return runInfo(rest);
     if (cmd == "simulate") return ide::cli::runSimulate(rest);
+    if (cmd == "inertia") return ide::cli::runInertia(rest);
     print(stderr, tr("padrob: unknown command '") + cmd + "'\n" + tr("Try 'padrob --help'.") + "\n");
     return kUsage;
 }

@@ -1,5 +1,7 @@
 #include "solver/inertia/triangle_mesh.h"
 
+#include <Eigen/Geometry>
+
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
