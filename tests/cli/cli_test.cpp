@@ -331,3 +331,100 @@ TEST(CliSimulate, ModelsWithLoopsAreRefusedClearly)
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.err.find("closes a loop: closed loops are not simulated yet"), std::string::npos) << r.err;
 }
+
+namespace {
+
+/// A model with two bodies drawn by solids, comments and a NAME on the B lines.
+std::string inertiaModel()
+{
+    return "// inertia test model\n"
+           "B 1 10 1 1 1 NAME \"arm\"   // the arm\n"
+           "B 2 5 0.1 0.1 0.1\n"
+           "C 1\n"
+           "B1 0 P1 0 0 0 A1 0 0 1 R1 0 1 0\n"
+           "B2 1 P2 0 0 0 A2 0 0 1 R2 0 1 0\n"
+           "C 2\n"
+           "B1 1 P1 0 1 0 A1 0 0 1 R1 0 1 0\n"
+           "B2 2 P2 0 0 0 A2 0 0 1 R2 0 1 0\n"
+           "G 1 B 1 BOX 0.2 0.4 0.6 RHO 1000 POS 0 0.1 0  # 48 kg\n"
+           "G 2 B 2 SPHERE 0.1 MASS 5\n";
+}
+
+}  // namespace
+
+TEST(CliInertia, PrintsComputedBesideWrittenLines)
+{
+    const std::string model = writeTemp("inertia_print.pad", inertiaModel());
+    CliRun r = padrob("inertia '" + model + "'");
+    EXPECT_EQ(r.status, 0) << r.err;
+    // box 0.2 × 0.4 × 0.6 m, 1000 kg/m³: 48 kg, Ixx = 2.08, Iyy = 1.6, Izz = 0.8; sphere: 0.4·5·0.01 = 0.02
+    EXPECT_NE(r.out.find("body 1 \"arm\"\n  file:      B 1 10 1 1 1 NAME \"arm\"   // the arm\n"
+                         "  computed:  B 1 48 2.08 1.6 0.8 0 0 0 CG 0 0.1 0\n"
+                         "  difference: m +380.00%  Ixx +108.00%  Iyy +60.00%  Izz -20.00%\n"),
+              std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("  computed:  B 2 5 0.02 0.02 0.02 0 0 0 CG 0 0 0\n"), std::string::npos) << r.out;
+    EXPECT_EQ(slurp(model), inertiaModel());  // printing changes nothing
+    CliRun one = padrob("inertia '" + model + "' --body 2");
+    EXPECT_EQ(one.status, 0);
+    EXPECT_EQ(one.out.find("body 1"), std::string::npos) << one.out;
+    EXPECT_NE(one.out.find("body 2"), std::string::npos) << one.out;
+    EXPECT_FALSE(std::filesystem::exists(model + ".bak"));
+}
+
+TEST(CliInertia, WriteKeepsEverythingElseAndMakesABackup)
+{
+    const std::string model = writeTemp("inertia_write.pad", inertiaModel());
+    std::filesystem::remove(model + ".bak");
+    CliRun r = padrob("inertia '" + model + "' --write");
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("Wrote 2 B lines to " + model), std::string::npos) << r.out;
+    EXPECT_EQ(slurp(model + ".bak"), inertiaModel());
+    std::string want = inertiaModel();
+    const std::string oldArm = "B 1 10 1 1 1 NAME \"arm\"   // the arm";
+    want.replace(want.find(oldArm), oldArm.size(), "B 1 48 2.08 1.6 0.8 0 0 0 CG 0 0.1 0 NAME \"arm\"  // the arm");
+    want.replace(want.find("B 2 5 0.1 0.1 0.1"), 17, "B 2 5 0.02 0.02 0.02 0 0 0 CG 0 0 0");
+    EXPECT_EQ(slurp(model), want);
+    EXPECT_EQ(padrob("check '" + model + "'").status, 0);
+    // a second run finds nothing to change
+    CliRun again = padrob("inertia '" + model + "'");
+    EXPECT_NE(again.out.find("  difference: m +0.00%  Ixx +0.00%  Iyy +0.00%  Izz +0.00%\n"), std::string::npos) << again.out;
+}
+
+TEST(CliInertia, ErrorsLeaveTheFileAlone)
+{
+    // a model with errors: exit 1, untouched, no backup
+    const std::string bad = writeTemp("inertia_bad.pad", inertiaModel() + "G 3 B 1 BOX 1 1 1 RHO -5\n");
+    std::filesystem::remove(bad + ".bak");
+    CliRun r = padrob("inertia '" + bad + "' --write");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find(bad + ":12:"), std::string::npos) << r.err;
+    EXPECT_EQ(slurp(bad), inertiaModel() + "G 3 B 1 BOX 1 1 1 RHO -5\n");
+    EXPECT_FALSE(std::filesystem::exists(bad + ".bak"));
+    // an open mesh: the error names the open edges, at the statement
+    const std::string mesh = writeTemp("inertia_open.stl",
+                                       "solid t\nfacet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 0 1 0\n"
+                                       " endloop\nendfacet\nendsolid t\n");
+    const std::string open = writeTemp("inertia_open.pad", inertiaModel() + "G 3 B 1 MESH \"inertia_open.stl\" RHO 1\n");
+    CliRun o = padrob("inertia '" + open + "' --write");
+    EXPECT_EQ(o.status, 1);
+    EXPECT_NE(o.err.find(open + ":12:14: error: graphic 3: the mesh is not closed: 3 open edges"), std::string::npos) << o.err;
+    EXPECT_FALSE(std::filesystem::exists(open + ".bak"));
+    // usage errors
+    const std::string model = writeTemp("inertia_usage.pad", inertiaModel());
+    EXPECT_EQ(padrob("inertia").status, 2);
+    EXPECT_EQ(padrob("inertia '" + model + "' --bogus").status, 2);
+    EXPECT_EQ(padrob("inertia '" + model + "' --body").status, 2);
+    EXPECT_EQ(padrob("inertia '" + model + "' --body x").status, 2);
+    CliRun nb = padrob("inertia '" + model + "' --body 9");
+    EXPECT_EQ(nb.status, 2);
+    EXPECT_NE(nb.err.find("--body: the model has no body 9"), std::string::npos) << nb.err;
+    EXPECT_EQ(padrob("inertia /nonexistent.pad").status, 2);
+    CliRun h = padrob("inertia --help");
+    EXPECT_EQ(h.status, 0);
+    EXPECT_NE(h.out.find("--write"), std::string::npos);
+    EXPECT_NE(padrob("--help").out.find("inertia MODEL [--body I] [--write]"), std::string::npos);
+    // a model without solids: nothing to compute
+    CliRun none = padrob("inertia models/pendulum.pad");
+    EXPECT_EQ(none.status, 0);
+    EXPECT_NE(none.out.find("nothing to compute"), std::string::npos) << none.out;
+}
