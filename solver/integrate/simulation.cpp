@@ -3,6 +3,7 @@
 #include "solver/dynamics/applied_forces.h"
 #include "solver/dynamics/drives.h"
 #include "solver/dynamics/forward_dynamics.h"
+#include "solver/dynamics/mass_matrix.h"
 #include "solver/kinematics/kinematics.h"
 
 #include <cmath>
@@ -246,8 +247,37 @@ void Simulation::unpackState()
 
 void Simulation::prescribeRates()
 {
-    for (int j = 0; j < m_model->nb; ++j) {
-        if (isPrescribed(*m_model, m_state, j)) m_state.qd[j] = prescribedRate(*m_model, m_state, j);
+    const Model& m = *m_model;
+    // the prescribed joints take their rates at once; the free joints receive the
+    // impulse that this takes (momentum along the free coordinates is conserved):
+    // M_FF Δθ̇_F = −M_FP Δθ̇_P
+    Eigen::VectorXd jump = Eigen::VectorXd::Zero(m.nb);
+    std::vector<int> free;
+    bool any = false;
+    for (int j = 0; j < m.nb; ++j) {
+        if (!isPrescribed(m, m_state, j)) {
+            free.push_back(j);
+            continue;
+        }
+        const double rate = prescribedRate(m, m_state, j);
+        jump[j] = rate - m_state.qd[j];
+        m_state.qd[j] = rate;
+        any = any || jump[j] != 0;
+    }
+    if (!any || free.empty()) return;
+    forwardKinematics(m, m_state, m_data);
+    Eigen::MatrixXd M;
+    massMatrix(m, m_data, M);
+    const auto nf = static_cast<Eigen::Index>(free.size());
+    Eigen::MatrixXd mff(nf, nf);
+    Eigen::VectorXd rhs(nf);
+    for (Eigen::Index a = 0; a < nf; ++a) {
+        for (Eigen::Index b = 0; b < nf; ++b) mff(a, b) = M(free[a], free[b]);
+        rhs[a] = -M.row(free[a]).dot(jump);
+    }
+    const Eigen::VectorXd dq = mff.ldlt().solve(rhs);
+    for (Eigen::Index a = 0; a < nf; ++a) {
+        if (std::isfinite(dq[a])) m_state.qd[free[a]] += dq[a];
     }
 }
 

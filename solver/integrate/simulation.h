@@ -23,7 +23,9 @@
 //
 // Commands (u per joint in [−1, 1]) are read at the start of every advanceTo():
 // a new command sets the prescribed rates at once (the valve spool moves) and
-// restarts the integrator there.
+// restarts the integrator there. The free joints take the impulse of that jump
+// (M_FF Δθ̇_F = −M_FP Δθ̇_P): a load hanging from a boom that starts to slew keeps
+// its velocity in the world at that instant and starts to swing.
 
 #include "solver/core/data.h"
 #include "solver/core/model.h"

@@ -411,3 +411,33 @@ F 1 POINT B 1 P 0 0 0 DIR 0 0 -1 MAG TABLE T 0.19999 0 0.2 500 0.4 500 0.40001 0
     const double vLow = 0.1 + down * 0.2;  // at 0.4 s (ramps neglected: 1e-5 s)
     EXPECT_NEAR(ev[1].t, 0.4 + (0.1 - vLow) / up, 1e-4);
 }
+
+TEST(Simulation, ASuddenHydraulicStartSwingsAHangingLoadInsteadOfJerkingIt)
+{
+    // a hydraulic carriage on a horizontal rail carries a 1 m pendulum with a point-like
+    // 10 kg bob; when the carriage starts at 0.2 m/s at once, the rod (which can only
+    // pull along itself) leaves the bob's horizontal velocity at 0: θ̇ = −0.2 / 1 rad/s
+    auto model = compileText(R"(
+B 1 50 1 1 1 NAME "carriage"
+B 2 10 1e-9 1e-9 1e-9 NAME "bob"
+C 1 T 2 QI 0
+B1 0 P1 0 0 0 A1 0 0 1 R1 0 1 0
+B2 1 P2 0 0 0 A2 0 0 1 R2 0 1 0
+C 2 QI 0
+B1 1 P1 0 0 0 A1 1 0 0 R1 0 0 -1
+B2 2 P2 0 0 1 A2 1 0 0 R2 0 0 -1
+D 1 HYD VMAX 0.2
+)");
+    ASSERT_TRUE(model);
+    Simulation sim(model, adaptive(1e-12));
+    sim.setCommand(model->jointIndex(1), 1.0);
+    std::vector<SimulationEvent> ev;
+    std::string err;
+    ASSERT_TRUE(sim.advanceTo(1e-9, ev, err)) << err;
+    const int rail = model->jointIndex(1), swing = model->jointIndex(2);
+    EXPECT_NEAR(sim.state().qd[rail], 0.2, 1e-15);
+    // the bob's world velocity stays 0: the carriage's 0.2 m/s and the swing's L·θ̇ cancel
+    const Eigen::Vector3d vBob = comVelocity(*model, sim.data(), model->bodyIndex(2));
+    EXPECT_NEAR(vBob.norm(), 0.0, 1e-8);
+    EXPECT_NEAR(std::abs(sim.state().qd[swing]), 0.2, 1e-8);
+}
