@@ -358,7 +358,8 @@ void Simulation::applyModeRules(std::vector<SimulationEvent>& events)
     constexpr double tol = 1e-12;
     std::vector<double> g(static_cast<std::size_t>(kRootsPerJoint * m.nb));
     // a relief valve that opens now opens before the commanded rate is reached: the
-    // joint keeps the rate it had when the rules were applied
+    // joint keeps the rate it had when the rules were applied, and so do the joints
+    // that its rate jump would have pushed
     const Eigen::VectorXd qdBefore = m_state.qd;
     for (int round = 0; round < 8; ++round) {
         bool changed = false;
@@ -394,8 +395,10 @@ void Simulation::applyModeRules(std::vector<SimulationEvent>& events)
         if (any) {
             const std::size_t first = events.size();
             handleRoots(fired, events);
+            // the rates return to where they were, and the next round prescribes the
+            // still-closed valves' rates again (with their impulses) from there
             for (std::size_t e = first; e < events.size(); ++e) {
-                if (events[e].kind == SimulationEvent::Kind::ReliefOpen) m_state.qd[events[e].joint] = qdBefore[events[e].joint];
+                if (events[e].kind == SimulationEvent::Kind::ReliefOpen) m_state.qd = qdBefore;
             }
             changed = true;
         }
