@@ -464,7 +464,8 @@ bool checkInputColumns(const InputTable& table, std::span<const int> drivenJoint
                     std::to_string(id) + " …)");
         }
     }
-    // not an error: an input that moves one valve need not list the others
+    // the format has one column per drive (issue 3): a missing one is an error, so
+    // that a typo in a column name does not silently leave a valve closed
     std::string missing;
     int nMissing = 0;
     for (int id : driven) {
@@ -473,11 +474,11 @@ bool checkInputColumns(const InputTable& table, std::span<const int> drivenJoint
         ++nMissing;
     }
     if (nMissing > 0) {
-        diags.warning("missing-column", table.headerPos(),
-                      nMissing == 1 ? "no column for joint " + missing + "'s drive: its command stays 0 (valve closed)"
-                                    : "no columns for the drives of joints " + missing +
-                                          ": their commands stay 0 (valves closed)",
-                      "add a column u<joint id> to drive one");
+        ok = false;
+        diags.error("missing-column", table.headerPos(),
+                    nMissing == 1 ? "no column for joint " + missing + "'s drive"
+                                  : "no columns for the drives of joints " + missing,
+                    "the table has one column u<joint id> per drive; write 0 in a column to keep that valve closed");
     }
     return ok;
 }

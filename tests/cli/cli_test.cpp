@@ -229,15 +229,12 @@ TEST(CliSimulate, LinerManipulatorColumnsInTheDocumentedOrder)
 
 TEST(CliSimulate, InputsDriveTheCylindersAndEventsGoToStderr)
 {
-    const std::string input = writeTemp("in.csv", "t,u3\n0,1\n0.5,0\n");
+    const std::string input = writeTemp("in.csv", "t,u1,u2,u3,u4,u5,u6,u7,u8,u9\n0,0,0,1,0,0,0,0,0,0\n0.5,0,0,0,0,0,0,0,0,0\n");
     const std::string out = writeTemp("out.csv", "");
     CliRun r = padrob("simulate models/liner_manipulator.pad --time 1 --input '" + input + "' --out '" + out + "' --every 1000");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.out, "");
-    // the drives without a column are listed once, as warnings
-    EXPECT_NE(r.err.find(input + ":1:1: warning: no columns for the drives of joints 1, 2, 4, 5, 6, 7, 8, 9: their "
-                                 "commands stay 0 (valves closed) [add a column u<joint id> to drive one]\n"),
-              std::string::npos) << r.err;
+    EXPECT_EQ(r.err, "t=0.000000 s: joint 3 EXTENSIÓN left its lower limit 0 m\n");
     auto rows = lines(slurp(out));
     ASSERT_EQ(rows.size(), 3u);
     // the telescope extends at its pump speed (0.0904 m/s) for 0.5 s, then holds
@@ -280,7 +277,8 @@ TEST(CliSimulate, BadArgumentsExitTwoAndLeaveNoFile)
         std::string message;
     };
     const std::string model = "models/liner_manipulator.pad";
-    const std::string missingCol = writeTemp("missing.csv", "u1\n0.5\n");
+    const std::string missingT = writeTemp("missingt.csv", "u1\n0.5\n");
+    const std::string missingCol = writeTemp("missing.csv", "t,u1,u2,u4,u5,u6,u7,u8,u9\n0,0,0,0,0,0,0,0,0\n");
     const std::string text = writeTemp("text.csv", "t,u1,u2,u3,u4,u5,u6,u7,u8,u9\n0,0,0,abc,0,0,0,0,0,0\n");
     const std::string unsorted = writeTemp("unsorted.csv", "t,u1,u2,u3,u4,u5,u6,u7,u8,u9\n1,0,0,0,0,0,0,0,0,0\n0.5,0,0,0,0,0,0,0,0,0\n");
     const std::string undriven = writeTemp("undriven.csv", "t,u1\n0,0.5\n");
@@ -293,7 +291,8 @@ TEST(CliSimulate, BadArgumentsExitTwoAndLeaveNoFile)
         {model + " --time 1 --every 0", "--every must be a whole number ≥ 1, not '0'"},
         {model + " --time 1 --set 42=1", "--set: the model has no joint 42"},
         {model + " --time 1 --set 1", "--set takes J=VALUE (a joint id and a number), not '1'"},
-        {model + " --time 1 --input " + missingCol, "t"},
+        {model + " --time 1 --input " + missingT, "t"},
+        {model + " --time 1 --input " + missingCol, "error: no column for joint 3's drive"},
         {model + " --time 1 --input " + text, "'abc' is not a number"},
         {model + " --time 1 --input " + unsorted, "0.5"},
         {"models/pendulum.pad --time 1 --input " + undriven, "joint 1"},

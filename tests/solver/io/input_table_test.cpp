@@ -406,17 +406,16 @@ TEST(InputColumns, MatchTheDrivenJoints)
     EXPECT_TRUE(diags.empty());
 }
 
-TEST(InputColumns, MissingColumnsAreOneWarning)
+TEST(InputColumns, MissingColumnsAreOneError)
 {
     const InputTable t = good("t,u2\n0,0.5\n");
     Diagnostics diags("in.csv");
     const std::vector<int> driven{5, 2, 1, 3}, joints{1, 2, 3, 5};
-    EXPECT_TRUE(checkInputColumns(t, driven, joints, diags));
+    EXPECT_FALSE(checkInputColumns(t, driven, joints, diags));
     ASSERT_EQ(diags.size(), 1u);
     EXPECT_EQ(diags.items()[0].format(),
-              "in.csv:1:1: warning: no columns for the drives of joints 1, 3, 5: their commands stay 0 (valves "
-              "closed) [add a column u<joint id> to drive one]");
-    EXPECT_FALSE(diags.hasErrors());
+              "in.csv:1:1: error: no columns for the drives of joints 1, 3, 5 [the table has one column "
+              "u<joint id> per drive; write 0 in a column to keep that valve closed]");
 }
 
 TEST(InputColumns, UnknownJointNoDriveAndMissingColumn)
@@ -434,8 +433,8 @@ TEST(InputColumns, UnknownJointNoDriveAndMissingColumn)
             "drive are 2, 5]",
             "no-drive in.csv:1:6: error: column 'u3': joint 3 has no drive [a command moves a drive: "
             "remove the column, or give the joint a drive (D 3 …)]",
-            "missing-column in.csv:1:1: warning: no column for joint 5's drive: its command stays 0 "
-            "(valve closed) [add a column u<joint id> to drive one]",
+            "missing-column in.csv:1:1: error: no column for joint 5's drive [the table has one column "
+            "u<joint id> per drive; write 0 in a column to keep that valve closed]",
         }));
 }
 
