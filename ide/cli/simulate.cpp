@@ -306,6 +306,8 @@ int runSimulate(const std::vector<std::string>& args)
         const double next = std::min(*time, static_cast<double>(k + 1) * dt);
         events.clear();
         const bool ok = sim.advanceTo(next, events, error);
+        // whole rows before each event line when both streams go to one terminal
+        if (!events.empty() && out.toStdout()) std::fflush(stdout);
         for (const solver::SimulationEvent& e : events) printErr(e.describe(m) + "\n");
         if (!ok) {
             out.abandon();
