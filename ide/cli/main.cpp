@@ -1,6 +1,6 @@
-// padrob — the headless front end: check and describe models (later: simulate,
-// inertia, bench, export, tutorial). Exit codes: 0 success, 1 the model has
-// errors, 2 usage error or unreadable file.
+// padrob — the headless front end: check, describe, simulate models and compute
+// their inertias (later: bench, export, tutorial). Exit codes: 0 success, 1 the
+// model has errors (or a simulation failed), 2 usage error or unreadable file.
 
 #include "ide/cli/inertia.h"
 #include "ide/cli/info_report.h"
