@@ -375,12 +375,11 @@ std::optional<Topology> analyzeTopology(const ModelSpec& spec, Diagnostics& diag
     checkConnected(spec, topo, reached, diags);
 
     // 3. joint geometry, T 1 checks, QI
-    std::vector<JointGeometry> geometry(nj);
+    const std::vector<JointGeometry> geometry = makeJointGeometries(spec);
     Eigen::VectorXd theta = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(nj));
     topo.q0.assign(nj, 0.0);
     for (std::size_t j = 0; j < nj; ++j) {
         const JointSpec& joint = spec.joints[j];
-        geometry[j] = makeJointGeometry(joint);
         if (joint.type == JointType::Actuator) {
             analyzeActuator(joint, geometry[j], diags, topo.q0[j], theta[j]);
         } else {

@@ -229,4 +229,12 @@ double JointGeometry::measureCoordinate(const Eigen::Isometry3d& X_w1,
     return measureKinematic(X_w1, X_w2);
 }
 
+std::vector<JointGeometry> makeJointGeometries(const ModelSpec& spec)
+{
+    std::vector<JointGeometry> geometry;
+    geometry.reserve(spec.joints.size());
+    for (const JointSpec& joint : spec.joints) geometry.push_back(makeJointGeometry(joint));
+    return geometry;
+}
+
 }  // namespace solver

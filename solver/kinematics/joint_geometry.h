@@ -18,6 +18,7 @@
 #include <Eigen/Geometry>
 
 #include <optional>
+#include <vector>
 
 namespace solver {
 
@@ -113,6 +114,9 @@ struct JointGeometry {
 
 /// Builds a joint's geometry from its spec (frames normalised, see makeJointFrame).
 JointGeometry makeJointGeometry(const JointSpec& joint);
+
+/// The geometry of every joint of a spec, indexed like spec.joints.
+std::vector<JointGeometry> makeJointGeometries(const ModelSpec& spec);
 
 /// Wraps an angle to (−π, π] [rad].
 double wrapAngle(double angle);

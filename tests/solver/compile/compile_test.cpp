@@ -245,8 +245,7 @@ void expectPosesAgreeWithTopology(const LoadedModel& loaded)
     ASSERT_TRUE(model);
     const Model& m = *model;
     const Topology& topo = *loaded.topology;
-    std::vector<JointGeometry> geometry;
-    for (const JointSpec& j : loaded.spec.joints) geometry.push_back(makeJointGeometry(j));
+    const std::vector<JointGeometry> geometry = makeJointGeometries(loaded.spec);
 
     std::mt19937 rng(11);
     Data data(m);

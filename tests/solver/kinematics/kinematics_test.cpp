@@ -165,8 +165,7 @@ void checkEnergy(const LoadedModel& loaded, unsigned seed)
     ASSERT_TRUE(model);
     const Model& m = *model;
     const Topology& topo = *loaded.topology;
-    std::vector<JointGeometry> geometry;
-    for (const JointSpec& j : loaded.spec.joints) geometry.push_back(makeJointGeometry(j));
+    const std::vector<JointGeometry> geometry = makeJointGeometries(loaded.spec);
     std::vector<BodyInertia> inertia(topo.bodyIds.size());
     for (std::size_t b = 1; b < topo.bodyIds.size(); ++b) {
         const BodySpec* body = loaded.spec.body(topo.bodyIds[b]);

@@ -16,13 +16,6 @@ using Eigen::Vector3d;
 using test::side;
 constexpr double kPi = std::numbers::pi;
 
-std::vector<JointGeometry> geometryOf(const ModelSpec& spec)
-{
-    std::vector<JointGeometry> g;
-    for (const JointSpec& j : spec.joints) g.push_back(makeJointGeometry(j));
-    return g;
-}
-
 // Planar four-bar: ground pivots at (0,0,0) and (2,0,0); crank 1 m (body 1), coupler 2 m
 // (body 2), rocker 1.5 m (body 3); links along their local x, all axes z. Joint 4 closes it.
 ModelSpec fourBar()
@@ -59,7 +52,7 @@ void expectJacobianMatchesFiniteDifferences(const ModelSpec& spec, const Eigen::
     Topology topo;
     buildSpanningTree(spec, topo);
     ASSERT_FALSE(topo.loopJoints.empty());
-    const auto geometry = geometryOf(spec);
+    const auto geometry = makeJointGeometries(spec);
     Eigen::MatrixXd jac;
     closureJacobian(topo, geometry, bodyPoses(topo, geometry, theta), jac);
     ASSERT_EQ(jac.rows(), 5 * static_cast<Eigen::Index>(topo.loopJoints.size()));
@@ -120,7 +113,7 @@ TEST(LoopClosure, ResidualVanishesAtHandSolvedFourBar)
     const ModelSpec spec = fourBar();
     Topology topo;
     buildSpanningTree(spec, topo);
-    const auto geometry = geometryOf(spec);
+    const auto geometry = makeJointGeometries(spec);
     Eigen::VectorXd theta(4);
     theta << kPi / 3, -0.7554323113484815, -2.143214898887717, 0;
     Eigen::VectorXd phi;
@@ -139,7 +132,7 @@ TEST(LoopClosure, SolveFromNearbyGuess)
     const ModelSpec spec = fourBar();
     Topology topo;
     buildSpanningTree(spec, topo);
-    const auto geometry = geometryOf(spec);
+    const auto geometry = makeJointGeometries(spec);
     Eigen::VectorXd theta(4);
     theta << kPi / 3, -0.5, -2.5, 0;
     const ClosureSolveResult r = solveClosure(topo, geometry, {1, 2}, theta);

@@ -15,13 +15,6 @@ using Eigen::Vector3d;
 using test::side;
 constexpr double kPi = std::numbers::pi;
 
-std::vector<JointGeometry> geometryOf(const ModelSpec& spec)
-{
-    std::vector<JointGeometry> g;
-    for (const JointSpec& j : spec.joints) g.push_back(makeJointGeometry(j));
-    return g;
-}
-
 // A double pendulum in the xy plane: link 1 (body 1) of 1 m from the origin along its local x,
 // link 2 (body 2) of 0.5 m hung at link 1's tip; both joints about z, R = x, so q = 0 is stretched
 // along world x and each angle is measured from the previous link.
@@ -40,7 +33,7 @@ TEST(Positions, DoublePendulumByHand)
     const ModelSpec spec = doublePendulum();
     Topology topo;
     buildSpanningTree(spec, topo);
-    const auto geometry = geometryOf(spec);
+    const auto geometry = makeJointGeometries(spec);
 
     const double q1 = kPi / 6, q2 = kPi / 4;
     const auto X = bodyPoses(topo, geometry, Eigen::Vector2d(q1, q2));
@@ -80,14 +73,14 @@ TEST(Positions, ReversedRevoluteJoint)
     EXPECT_EQ(treeParentBody(topo, 0), 0);
 
     const double q = 0.3;
-    const auto X = bodyPoses(topo, geometryOf(b.spec), Eigen::VectorXd::Constant(1, q));
+    const auto X = bodyPoses(topo, makeJointGeometries(b.spec), Eigen::VectorXd::Constant(1, q));
     EXPECT_TRUE(
         X[1].linear().isApprox(Eigen::AngleAxisd(-q, Vector3d::UnitZ()).toRotationMatrix()));
     // body 1's point (−1, 0, 0) sits on ground's (2, 0, 0); body 1's origin 1 m along its own x
     EXPECT_TRUE((X[1] * Vector3d(-1, 0, 0)).isApprox(Vector3d(2, 0, 0)));
     EXPECT_TRUE(X[1].translation().isApprox(Vector3d(2 + std::cos(-q), std::sin(-q), 0)));
     // the measured angle is q again
-    EXPECT_NEAR(geometryOf(b.spec)[0].measureKinematic(X[1], X[0]), q, 1e-12);
+    EXPECT_NEAR(makeJointGeometries(b.spec)[0].measureKinematic(X[1], X[0]), q, 1e-12);
 }
 
 TEST(Positions, ReversedPrismaticJoint)
@@ -99,7 +92,7 @@ TEST(Positions, ReversedPrismaticJoint)
     Topology topo;
     buildSpanningTree(b.spec, topo);
     EXPECT_TRUE(topo.reversed[0]);
-    const auto X = bodyPoses(topo, geometryOf(b.spec), Eigen::VectorXd::Constant(1, 0.4));
+    const auto X = bodyPoses(topo, makeJointGeometries(b.spec), Eigen::VectorXd::Constant(1, 0.4));
     EXPECT_TRUE(X[1].translation().isApprox(Vector3d(-0.4, 0, 0)));
 }
 
@@ -128,7 +121,7 @@ TEST(Positions, MotionVectorsMatchFiniteDifferences)
     ASSERT_EQ(topo.treeJoints, (std::vector<int>{0, 1, 2, 3}));
     EXPECT_FALSE(topo.reversed[0]);
     EXPECT_TRUE(topo.reversed[1]);
-    const auto geometry = geometryOf(b.spec);
+    const auto geometry = makeJointGeometries(b.spec);
 
     const Eigen::Vector4d theta(0.3, -0.7, 0.15, 0.4);
     const auto X = bodyPoses(topo, geometry, theta);
