@@ -245,6 +245,37 @@ void Simulation::unpackState()
     }
 }
 
+namespace {
+
+/// The rate change (dim nb; 0 on the held joints) of the joints `free` under the
+/// generalized impulse `impulse` (dim nb), every other joint held: M_FF Δθ̇_F = impulse_F.
+Eigen::VectorXd freeResponse(const Eigen::MatrixXd& M, const std::vector<int>& free, const Eigen::VectorXd& impulse)
+{
+    const auto nf = static_cast<Eigen::Index>(free.size());
+    Eigen::MatrixXd mff(nf, nf);
+    Eigen::VectorXd rhs(nf);
+    for (Eigen::Index a = 0; a < nf; ++a) {
+        for (Eigen::Index b = 0; b < nf; ++b) mff(a, b) = M(free[a], free[b]);
+        rhs[a] = impulse[free[a]];
+    }
+    const Eigen::VectorXd dq = mff.ldlt().solve(rhs);
+    Eigen::VectorXd out = Eigen::VectorXd::Zero(impulse.size());
+    for (Eigen::Index a = 0; a < nf; ++a) {
+        if (std::isfinite(dq[a])) out[free[a]] = dq[a];
+    }
+    return out;
+}
+
+}  // namespace
+
+Eigen::MatrixXd Simulation::massMatrixNow()
+{
+    forwardKinematics(*m_model, m_state, m_data);
+    Eigen::MatrixXd M;
+    massMatrix(*m_model, m_data, M);
+    return M;
+}
+
 void Simulation::prescribeRates()
 {
     const Model& m = *m_model;
@@ -265,20 +296,8 @@ void Simulation::prescribeRates()
         any = any || jump[j] != 0;
     }
     if (!any || free.empty()) return;
-    forwardKinematics(m, m_state, m_data);
-    Eigen::MatrixXd M;
-    massMatrix(m, m_data, M);
-    const auto nf = static_cast<Eigen::Index>(free.size());
-    Eigen::MatrixXd mff(nf, nf);
-    Eigen::VectorXd rhs(nf);
-    for (Eigen::Index a = 0; a < nf; ++a) {
-        for (Eigen::Index b = 0; b < nf; ++b) mff(a, b) = M(free[a], free[b]);
-        rhs[a] = -M.row(free[a]).dot(jump);
-    }
-    const Eigen::VectorXd dq = mff.ldlt().solve(rhs);
-    for (Eigen::Index a = 0; a < nf; ++a) {
-        if (std::isfinite(dq[a])) m_state.qd[free[a]] += dq[a];
-    }
+    const Eigen::MatrixXd M = massMatrixNow();
+    m_state.qd += freeResponse(M, free, -(M * jump));
 }
 
 void Simulation::hitLimit(int j, int side)
@@ -287,25 +306,14 @@ void Simulation::hitLimit(int j, int side)
     m_state.q[j] = side < 0 ? m.lower[j] : m.upper[j];
     const double into = m_state.qd[j];
     if (side * into > 0) {
-        // the generalized impulse along θ_j that turns θ̇_j into −e·θ̇_j, with the
-        // prescribed joints held: Δθ̇ = p·r, r = (response of θ̈ to a unit τ_j)
-        State probe = m_state;
-        probe.qd.setZero();
-        probe.limit[j] = LimitState::Free;
-        if (isHydraulic(m, j)) probe.relief[j] = ReliefState::OpenExtending;  // force-driven for the probe
-        forwardKinematics(m, probe, m_data);
-        clearAppliedForces(m_data);
-        hybridDynamics(m, probe, m_data);
-        const Eigen::VectorXd base = m_data.qdd;
-        m_data.tauExt[j] = 1.0;
-        hybridDynamics(m, probe, m_data);
-        const Eigen::VectorXd r = m_data.qdd - base;
-        if (r[j] > 0) {
-            const double p = -(1.0 + m.restitution) * into / r[j];
-            for (int k = 0; k < m.nb; ++k) {
-                if (k == j || !isPrescribed(m, m_state, k)) m_state.qd[k] += p * r[k];
-            }
+        // the generalized impulse p along θ_j that turns θ̇_j into −e·θ̇_j, the other
+        // prescribed joints held: Δθ̇ = p·r with r = M_FF⁻¹ e_j (j counted free)
+        std::vector<int> free;
+        for (int k = 0; k < m.nb; ++k) {
+            if (k == j || !isPrescribed(m, m_state, k)) free.push_back(k);
         }
+        const Eigen::VectorXd r = freeResponse(massMatrixNow(), free, Eigen::VectorXd::Unit(m.nb, j));
+        if (r[j] > 0) m_state.qd += (-(1.0 + m.restitution) * into / r[j]) * r;
     }
     if (m.restitution == 0 || side * m_state.qd[j] >= 0) {
         m_state.qd[j] = 0;

@@ -105,6 +105,7 @@ private:
     void handleRoots(std::span<const int> fired, std::vector<SimulationEvent>& events);
     void hitLimit(int joint, int side);
     void prescribeRates();
+    Eigen::MatrixXd massMatrixNow();  ///< M at the current positions (events only: allocates)
     void packState();
     void unpackState();
 };
