@@ -103,9 +103,8 @@ int runSimulate(const std::vector<std::string>& args)
 
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
-        auto value = [&](const char* name) -> std::optional<std::string> {
+        auto value = [&]() -> std::optional<std::string> {
             if (i + 1 >= args.size()) return std::nullopt;
-            (void)name;
             return args[++i];
         };
         if (a == "-h" || a == "--help") {
@@ -117,7 +116,7 @@ int runSimulate(const std::vector<std::string>& args)
         const bool takesValue = a == "--time" || a == "--dt" || a == "--integrator" || a == "--rtol" || a == "--input" ||
                                 a == "--set" || a == "--rate" || a == "--every" || a == "--out";
         if (takesValue) {
-            auto v = value(a.c_str());
+            auto v = value();
             if (!v) return usage(a + tr(" needs a value"));
             if (a == "--time") {
                 time = toNumber(*v);
