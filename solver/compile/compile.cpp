@@ -99,16 +99,28 @@ CompiledDrive compileDrive(const DriveSpec& spec, const JointSpec& joint, const 
 std::shared_ptr<const Model> compileModel(const ModelSpec& spec, const Topology& topo,
                                           Diagnostics& diags)
 {
-    // closed loops come with issue 4
-    if (!topo.loopJoints.empty()) {
-        const JointSpec& cut = spec.joints[static_cast<std::size_t>(topo.loopJoints.front())];
-        diags.error("loops-not-supported", cut.src.pos,
-                    "joint " + std::to_string(cut.id) +
-                        (cut.name.empty() ? std::string() : " \"" + cut.name + "\"") +
-                        " closes a loop: closed loops are not simulated yet",
-                    "the model can be checked, but only open trees can be simulated for now");
-        return nullptr;
+    // a loop-closure joint is a constraint, not a coordinate: it cannot carry a drive,
+    // and its limits are not enforced (the spanning tree takes driven joints first, so
+    // this only happens when every joint of a loop is driven)
+    bool driveOnCut = false;
+    for (int j : topo.loopJoints) {
+        const JointSpec& cut = spec.joints[static_cast<std::size_t>(j)];
+        const std::string who =
+            "joint " + std::to_string(cut.id) + (cut.name.empty() ? std::string() : " \"" + cut.name + "\"");
+        for (const DriveSpec& d : spec.drives) {
+            if (d.joint != cut.id) continue;
+            diags.error("loop-joint-driven", d.src.pos,
+                        "the drive on " + who + " cannot act: the joint closes a loop, so it is a constraint, not a coordinate",
+                        "move the drive to another joint of the loop, or leave one joint of the loop passive");
+            driveOnCut = true;
+        }
+        if (cut.ll || cut.ul) {
+            diags.warning("loop-joint-limits-ignored", cut.src.pos,
+                          who + " closes a loop: its limits LL/UL are not enforced",
+                          "put the limits on another joint of the loop (a tree joint)");
+        }
     }
+    if (driveOnCut) return nullptr;
 
     auto model = std::make_shared<Model>();
     Model& m = *model;
@@ -165,6 +177,10 @@ std::shared_ptr<const Model> compileModel(const ModelSpec& spec, const Topology&
     m.drive.assign(nbs, CompiledDrive{});
     m.theta0.resize(nbs);
     m.thetaDot0.resize(nbs);
+    m.dependent.assign(nbs, 0);
+    for (int j : topo.dependent) {
+        if (treeOfJoint[static_cast<std::size_t>(j)] >= 0) m.dependent[treeOfJoint[static_cast<std::size_t>(j)]] = 1;
+    }
 
     for (int i = 0; i < nb; ++i) {
         const int j = topo.treeJoints[static_cast<std::size_t>(i)];
@@ -218,6 +234,27 @@ std::shared_ptr<const Model> compileModel(const ModelSpec& spec, const Topology&
             m.thetaDot0[i] = vi;
         }
     }
+
+    // loop-closure joints; the length scale of the constraints
+    double size = 0;
+    for (int i = 0; i < nb; ++i) {
+        size = std::max({size, m.X_pj[i].translation().norm(), m.X_cj[i].translation().norm()});
+    }
+    for (int j : topo.loopJoints) {
+        const JointSpec& joint = spec.joints[static_cast<std::size_t>(j)];
+        const JointGeometry geometry = makeJointGeometry(joint);
+        CutJoint cut;
+        cut.jointId = joint.id;
+        cut.name = joint.name;
+        cut.type = joint.type;
+        cut.body1 = treeOfBody[static_cast<std::size_t>(topo.side1Body[j])];
+        cut.body2 = treeOfBody[static_cast<std::size_t>(topo.side2Body[j])];
+        cut.X_1 = geometry.side1.pose();
+        cut.X_2 = geometry.side2.pose();
+        size = std::max({size, cut.X_1.translation().norm(), cut.X_2.translation().norm()});
+        m.cuts.push_back(std::move(cut));
+    }
+    m.lengthScale = std::max(size, 1e-3);
 
     // drives
     for (const DriveSpec& d : spec.drives) {

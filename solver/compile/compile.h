@@ -23,8 +23,11 @@
 //      ground), DIR normalised, TABLE Q's joint as a tree index;
 //   8. initial θ from Topology::theta0, θ̇ from VI (T 1: θ̇ = VI / (dL/dθ)).
 //
-// Closed loops are not simulated yet (issue 4): a model with cut joints gives
-// nullptr and one error "loops-not-supported" at the first cut joint.
+//   9. loop-closure (cut) joints into Model::cuts (their two bodies and frames),
+//      dependent coordinates flagged, Model::lengthScale the largest distance of a
+//      joint point from its body's origin. A drive on a cut joint is an error
+//      "loop-joint-driven" (nullptr); limits on one are ignored with a warning
+//      "loop-joint-limits-ignored".
 
 #include "solver/compile/topology.h"
 #include "solver/core/diagnostic.h"

@@ -6,6 +6,7 @@
 // too: motion vectors [ω; v] and force vectors [moment; force], with the point
 // the velocity or the moment refers to named in each field's comment.
 
+#include "solver/core/constraint.h"
 #include "solver/core/model.h"
 #include "solver/core/spatial.h"
 
@@ -63,6 +64,20 @@ struct Data {
     /// The same in the axes of the joint frame X_wj (A, R, T): [M_a M_r M_t F_a F_r F_t].
     std::vector<Vector6d> reactionJoint;
 
+    // ---- constraints: loop closures and welds (solver/dynamics/constraints.h) --
+    /// The constraints of the last dynamics evaluation: Model::cuts, then State::welds.
+    std::vector<Constraint> constraints;
+    /// Per constraint: the load body 1 exerts on body 2 through it, world axes,
+    /// moment about body 2's constraint point (P2): [M; F] [N m; N].
+    std::vector<Vector6d> constraintReactionWorld;
+    /// The same in the axes of the constraint's frame on body 2 (A, R, T).
+    std::vector<Vector6d> constraintReactionJoint;
+    /// Singular values of the constraint Jacobian over the coordinates that are free
+    /// in this evaluation (scaled rows), largest first; their ratios tell how close
+    /// the loops are to locking up (Simulation's loop-lock event).
+    Eigen::VectorXd constraintSingular;
+    int constraintRank = 0;  ///< its numerical rank (singular values above 1e-9 of the largest)
+
     // ---- scratch of the algorithms (owned by them; do not read) ---------------
     // forward dynamics (RBDA §7.3 articulated-body algorithm, §9.2 hybrid dynamics),
     // all about the world origin in world axes
@@ -79,6 +94,16 @@ struct Data {
     Eigen::VectorXd tauDrive;       ///< the drive's generalized force along θ (force-driven joints)
     Eigen::VectorXd dq;             ///< dq/dθ: the modeler's coordinate's rate per unit θ̇ (T 1: dL/dθ)
     std::vector<char> prescribed;   ///< per joint: acceleration known in this evaluation
+    // constrained dynamics (forward_dynamics.cpp, constraints.cpp); sized on first use
+    Eigen::MatrixXd M;              ///< joint-space mass matrix (nb × nb)
+    Eigen::VectorXd bias;           ///< C: generalized force for θ̈ = 0 (gravity, fext, velocity terms)
+    std::vector<Vector6d> a0;       ///< body spatial acceleration for θ̈ = 0
+    Eigen::MatrixXd G;              ///< constraint Jacobian (rows × nb), scaled rows
+    Eigen::VectorXd gamma;          ///< G θ̈ = γ (scaled rows)
+    Eigen::VectorXd phi;            ///< constraint residual Φ (scaled rows)
+    Eigen::VectorXd lambda;         ///< constraint multipliers (scaled rows)
+    std::vector<Vector6d> W1, W2;   ///< per row: its load on body 1 and body 2 per unit λ
+    std::vector<int> rowConstraint; ///< per row: its constraint's index in `constraints`
 };
 
 }  // namespace solver

@@ -23,9 +23,10 @@
 // from the child to the parent (B1 is the child). Body frames have their origin
 // where the modeler put it (the centre of mass unless CG moves it).
 //
-// Closed loops (issue 4) will add the cut joints as a separate list (their two
-// bodies' tree indices and frames) on top of this tree; everything indexed by tree
-// index below stays as it is.
+// Closed loops: the joints the spanning tree leaves out (cut joints, Topology::
+// loopJoints) are kept in `cuts` with their two bodies' tree indices and frames;
+// the dynamics hold them closed as constraints (solver/dynamics/constraints.h).
+// Everything indexed by tree index stays as it is.
 
 #include "solver/kinematics/joint_geometry.h"
 #include "solver/model/model_spec.h"
@@ -80,6 +81,17 @@ struct CompiledForce {
     double area = 0, cd = 0, cl = 0, rho = 1.225;
 };
 
+/// A loop-closure (cut) joint: a constraint between two bodies, not a coordinate.
+/// A T 1 cut joint constrains like a revolute (its length is then not a coordinate).
+struct CutJoint {
+    int jointId = 0;           ///< modeler's id
+    std::string name;
+    JointType type = JointType::Revolute;
+    int body1 = -1, body2 = -1;  ///< tree indices of side 1 (B1) and side 2 (B2); −1 = ground
+    Eigen::Isometry3d X_1 = Eigen::Isometry3d::Identity();  ///< joint frame (A, R, T at P1) in body 1's frame
+    Eigen::Isometry3d X_2 = Eigen::Isometry3d::Identity();  ///< joint frame at P2 in body 2's frame
+};
+
 struct Model {
     int nb = 0;  ///< moving bodies = tree joints
     Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);  ///< [m/s^2]
@@ -103,8 +115,16 @@ struct Model {
     std::vector<Eigen::Matrix3d> inertia; ///< about the centre of mass, body axes [kg m^2]
     std::vector<CompiledDrive> drive;
     std::vector<double> theta0, thetaDot0;  ///< initial θ and θ̇ (QI/VI converted)
+    /// Per joint: 1 when its coordinate follows from the loop closures (Topology::
+    /// dependent): its initial rate is solved from the others', its VI is not used.
+    std::vector<char> dependent;
 
     std::vector<CompiledForce> forces;
+
+    std::vector<CutJoint> cuts;  ///< loop-closure joints (empty for an open tree)
+    /// Length [m] that makes the constraints' length rows comparable to their
+    /// dimensionless (direction) rows: the size of the mechanism (≥ 1 mm).
+    double lengthScale = 1.0;
 
     /// Tree index of the joint with modeler id `id`, or −1.
     int jointIndex(int id) const;

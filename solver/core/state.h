@@ -6,6 +6,7 @@
 #include "solver/core/model.h"
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <vector>
 
@@ -16,6 +17,14 @@ enum class LimitState { Free, AtLower, AtUpper };
 /// then driven by the relief force while extending (+fmax) or retracting (−fmin).
 enum class ReliefState { Closed, OpenExtending, OpenRetracting };
 
+/// A run-time weld (Simulation::weld): body b held at the pose X_ab in body a's frame
+/// (a grasp). Tree indices; a = −1 welds b to the ground.
+struct Weld {
+    int bodyA = -1;
+    int bodyB = -1;
+    Eigen::Isometry3d X_ab = Eigen::Isometry3d::Identity();
+};
+
 struct State {
     double t = 0;               ///< [s]
     Eigen::VectorXd q;          ///< θ per joint (dim nb) [rad or m]
@@ -24,6 +33,7 @@ struct State {
     Eigen::VectorXd servoIntegral;  ///< ∫ set-point error dt per joint (servo drives) (dim nb)
     std::vector<LimitState> limit;  ///< per joint
     std::vector<ReliefState> relief;  ///< per joint (hydraulic drives)
+    std::vector<Weld> welds;          ///< welds in force (none at the start)
 };
 
 /// The initial state: θ = theta0, θ̇ = thetaDot0, t = 0, u = 0, servo integrals 0,

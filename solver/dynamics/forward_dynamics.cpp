@@ -1,9 +1,14 @@
 #include "solver/dynamics/forward_dynamics.h"
 
+#include "solver/dynamics/constraints.h"
 #include "solver/dynamics/drives.h"
 #include "solver/kinematics/kinematics.h"
 
+#include <Eigen/Cholesky>
+#include <Eigen/SVD>
+
 #include <cassert>
+#include <vector>
 
 namespace solver {
 
@@ -37,9 +42,12 @@ void forwardDynamics(const Model& model, const State& state, Data& data)
     hybridDynamics(model, state, data);
 }
 
-void hybridDynamics(const Model& model, const State& state, Data& data)
+namespace {
+
+/// Pass 1: body inertias and bias forces about the world origin; per joint its drive
+/// force and whether its acceleration (prescribed) or its force (tauKnown) is known.
+void bodyTerms(const Model& model, const State& state, Data& data)
 {
-    assert(sized(model, state, data));
     const int nb = model.nb;
 
     // 1. body inertias and bias forces about the world origin; known θ̈ or τ per joint
@@ -78,6 +86,59 @@ void hybridDynamics(const Model& model, const State& state, Data& data)
             data.tauKnown[i] = data.tauDrive[i] + data.tauExt[i];
         }
     }
+}
+
+/// Pass 4: with data.f holding each body's I a + p less the constraint loads on it,
+/// the joint forces leaves to root, the reactions, the drive and limit-stop forces.
+void jointForces(const Model& model, const State& state, Data& data)
+{
+    const int nb = model.nb;
+    // 4. joint forces, leaves to root (eq. 2.8–2.9 summed over each subtree)
+    for (int i = nb - 1; i >= 0; --i) {
+        const int lam = model.parent[i];
+        const Vector6d& f = data.f[i];
+        data.tau[i] = data.S[i].dot(f);
+
+        // reaction at the child's joint point, in world and joint axes
+        const Eigen::Isometry3d& X_wj = data.X_wj[i];
+        Vector6d& rw = data.reactionWorld[i];
+        rw = forceAboutPoint(f, X_wj.translation());
+        const Matrix3d Rt = X_wj.linear().transpose();
+        data.reactionJoint[i].head<3>().noalias() = Rt * rw.head<3>();
+        data.reactionJoint[i].tail<3>().noalias() = Rt * rw.tail<3>();
+
+        // drive and limit-stop forces
+        // (a held hydraulic joint's cylinder carries what the joint transmits, less tauExt)
+        const bool hydraulicHeld =
+            model.drive[i].type == DriveType::Hydraulic && data.prescribed[i];
+        if (hydraulicHeld) {
+            data.driveForce[i] = (data.tau[i] - data.tauExt[i]) / data.dq[i];
+        }
+        data.limitForce[i] = state.limit[i] != LimitState::Free && !hydraulicHeld
+                                 ? data.tau[i] - data.tauDrive[i] - data.tauExt[i]
+                                 : 0.0;
+
+        if (lam >= 0) data.f[lam] += f;
+    }
+}
+
+/// Dense dynamics of a tree with constraints (loop closures, welds); see the header.
+void constrainedDynamics(const Model& model, const State& state, Data& data);
+
+}  // namespace
+
+void hybridDynamics(const Model& model, const State& state, Data& data)
+{
+    assert(sized(model, state, data));
+    const int nb = model.nb;
+    bodyTerms(model, state, data);
+    if (hasConstraints(model, state)) {
+        constrainedDynamics(model, state, data);
+        return;
+    }
+    data.constraints.clear();
+    data.constraintReactionWorld.clear();
+    data.constraintReactionJoint.clear();
 
     // 2. articulated-body inertias and bias forces, leaves to root (RBDA table 7.1, §9.2)
     for (int i = nb - 1; i >= 0; --i) {
@@ -121,33 +182,142 @@ void hybridDynamics(const Model& model, const State& state, Data& data)
         data.f[i] = data.Ib[i] * a + data.pb[i];
     }
 
-    // 4. joint forces, leaves to root (eq. 2.8–2.9 summed over each subtree)
-    for (int i = nb - 1; i >= 0; --i) {
-        const int lam = model.parent[i];
-        const Vector6d& f = data.f[i];
-        data.tau[i] = data.S[i].dot(f);
-
-        // reaction at the child's joint point, in world and joint axes
-        const Eigen::Isometry3d& X_wj = data.X_wj[i];
-        Vector6d& rw = data.reactionWorld[i];
-        rw = forceAboutPoint(f, X_wj.translation());
-        const Matrix3d Rt = X_wj.linear().transpose();
-        data.reactionJoint[i].head<3>().noalias() = Rt * rw.head<3>();
-        data.reactionJoint[i].tail<3>().noalias() = Rt * rw.tail<3>();
-
-        // drive and limit-stop forces
-        // (a held hydraulic joint's cylinder carries what the joint transmits, less tauExt)
-        const bool hydraulicHeld =
-            model.drive[i].type == DriveType::Hydraulic && data.prescribed[i];
-        if (hydraulicHeld) {
-            data.driveForce[i] = (data.tau[i] - data.tauExt[i]) / data.dq[i];
-        }
-        data.limitForce[i] = state.limit[i] != LimitState::Free && !hydraulicHeld
-                                 ? data.tau[i] - data.tauDrive[i] - data.tauExt[i]
-                                 : 0.0;
-
-        if (lam >= 0) data.f[lam] += f;
-    }
+    jointForces(model, state, data);
 }
+
+namespace {
+
+constexpr double kRankTolerance = 1e-9;  // singular values below this fraction of the largest are zero
+
+void constrainedDynamics(const Model& model, const State& state, Data& data)
+{
+    const int nb = model.nb;
+    const auto n = static_cast<Eigen::Index>(nb);
+
+    // mass matrix by composite rigid bodies (RBDA §6.2), the articulated inertias as scratch
+    for (int i = 0; i < nb; ++i) data.Ib[i].toMatrix(data.IA[i]);
+    for (int i = nb - 1; i >= 0; --i) {
+        if (model.parent[i] >= 0) data.IA[model.parent[i]] += data.IA[i];
+    }
+    if (data.M.rows() != n) data.M.resize(n, n);
+    for (int i = 0; i < nb; ++i) {
+        const Vector6d f = data.IA[i] * data.S[i];
+        data.M(i, i) = data.S[i].dot(f);
+        for (int j = model.parent[i]; j >= 0; j = model.parent[j]) data.M(j, i) = data.M(i, j) = data.S[j].dot(f);
+    }
+
+    // bias: accelerations and generalized forces at θ̈ = 0 (RNEA)
+    data.a0.resize(static_cast<std::size_t>(nb));
+    data.bias.resize(n);
+    for (int i = 0; i < nb; ++i) {
+        const int lam = model.parent[i];
+        data.a0[i] = data.c[i];
+        if (lam >= 0) data.a0[i] += data.a0[lam];
+        data.f[i] = data.Ib[i] * data.a0[i] + data.pb[i];
+    }
+    for (int i = nb - 1; i >= 0; --i) {
+        data.bias[i] = data.S[i].dot(data.f[i]);
+        if (model.parent[i] >= 0) data.f[model.parent[i]] += data.f[i];
+    }
+
+    // constraint rows
+    collectConstraints(model, state, data.constraints);
+    constraintJacobian(model, data, &data.a0);
+    const Eigen::Index m = data.G.rows();
+
+    // free (unknown θ̈) and prescribed (known θ̈) coordinates
+    std::vector<int> F;
+    F.reserve(static_cast<std::size_t>(nb));
+    for (int i = 0; i < nb; ++i) {
+        if (!data.prescribed[i]) F.push_back(i);
+    }
+    const auto nF = static_cast<Eigen::Index>(F.size());
+    Eigen::MatrixXd MFF(nF, nF), GF(m, nF);
+    Eigen::VectorXd rhs(nF);
+    Eigen::VectorXd gp = data.gamma;
+    for (int p = 0; p < nb; ++p) {
+        if (data.prescribed[p]) gp -= data.G.col(p) * data.qdd[p];
+    }
+    for (Eigen::Index a = 0; a < nF; ++a) {
+        const int i = F[static_cast<std::size_t>(a)];
+        double r = data.tauKnown[i] - data.bias[i];
+        for (int p = 0; p < nb; ++p) {
+            if (data.prescribed[p]) r -= data.M(i, p) * data.qdd[p];
+        }
+        rhs[a] = r;
+        for (Eigen::Index b = 0; b < nF; ++b) MFF(a, b) = data.M(i, F[static_cast<std::size_t>(b)]);
+        GF.col(a) = data.G.col(i);
+    }
+
+    // θ̈_F = particular + null-space part: G_F θ̈_F = γ' (least squares, redundant rows
+    // allowed), Nᵀ(M_FF θ̈_F − rhs) = 0; then λ from G_Fᵀ λ = M_FF θ̈_F − rhs (min-norm)
+    data.lambda.setZero(m);
+    if (nF > 0 && m > 0) {
+        Eigen::JacobiSVD<Eigen::MatrixXd> svd(GF, Eigen::ComputeThinU | Eigen::ComputeFullV);
+        data.constraintSingular = svd.singularValues();
+        const Eigen::VectorXd& sv = data.constraintSingular;
+        Eigen::Index r = 0;
+        while (r < sv.size() && sv[r] > kRankTolerance * sv[0]) ++r;
+        data.constraintRank = static_cast<int>(r);
+        const auto& U = svd.matrixU();
+        const auto& V = svd.matrixV();
+        const Eigen::VectorXd sinv = sv.head(r).cwiseInverse();
+        Eigen::VectorXd qF = V.leftCols(r) * sinv.cwiseProduct(U.leftCols(r).transpose() * gp);
+        if (nF > r) {
+            const Eigen::MatrixXd N = V.rightCols(nF - r);
+            const Eigen::MatrixXd A = N.transpose() * MFF * N;
+            const Eigen::VectorXd z = A.ldlt().solve(N.transpose() * (rhs - MFF * qF));
+            qF += N * z;
+        }
+        const Eigen::VectorXd excess = MFF * qF - rhs;
+        data.lambda = U.leftCols(r) * sinv.cwiseProduct(V.leftCols(r).transpose() * excess);
+        for (Eigen::Index a = 0; a < nF; ++a) data.qdd[F[static_cast<std::size_t>(a)]] = qF[a];
+    } else {
+        data.constraintSingular.resize(0);
+        data.constraintRank = 0;
+        if (nF > 0) {
+            const Eigen::VectorXd qF = MFF.ldlt().solve(rhs);
+            for (Eigen::Index a = 0; a < nF; ++a) data.qdd[F[static_cast<std::size_t>(a)]] = qF[a];
+        }
+    }
+
+    // accelerations, and each body's I a + p less the constraint loads on it
+    for (int i = 0; i < nb; ++i) {
+        const int lam = model.parent[i];
+        Vector6d& a = data.a[i];
+        a = data.c[i] + data.S[i] * data.qdd[i];
+        if (lam >= 0) a += data.a[lam];
+        data.alpha[i] = a.head<3>();
+        data.acc[i] = a.tail<3>() + data.alpha[i].cross(data.X_wb[i].translation()) +
+                      data.omega[i].cross(data.vel[i]);
+        data.f[i] = data.Ib[i] * a + data.pb[i];
+    }
+    const auto nc = data.constraints.size();
+    data.constraintReactionWorld.assign(nc, Vector6d::Zero());
+    data.constraintReactionJoint.assign(nc, Vector6d::Zero());
+    for (Eigen::Index row = 0; row < m; ++row) {
+        const auto k = static_cast<std::size_t>(data.rowConstraint[static_cast<std::size_t>(row)]);
+        const Constraint& c = data.constraints[k];
+        const double l = data.lambda[row];
+        const Vector6d& w1 = data.W1[static_cast<std::size_t>(row)];
+        const Vector6d& w2 = data.W2[static_cast<std::size_t>(row)];
+        if (c.body1 >= 0) data.f[c.body1] -= l * w1;
+        if (c.body2 >= 0) data.f[c.body2] -= l * w2;
+        data.constraintReactionWorld[k] += l * w2;  // about the origin for now
+    }
+    for (std::size_t k = 0; k < nc; ++k) {
+        const Constraint& c = data.constraints[k];
+        const Eigen::Isometry3d F2 = c.body2 >= 0 ? data.X_wb[c.body2] * c.X_2 : c.X_2;
+        Vector6d& rw = data.constraintReactionWorld[k];
+        rw = forceAboutPoint(rw, F2.translation());
+        const Matrix3d Rt = F2.linear().transpose();
+        data.constraintReactionJoint[k].head<3>() = Rt * rw.head<3>();
+        data.constraintReactionJoint[k].tail<3>() = Rt * rw.tail<3>();
+    }
+
+    jointForces(model, state, data);
+}
+
+}  // namespace
 
 }  // namespace solver

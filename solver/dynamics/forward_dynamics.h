@@ -22,7 +22,23 @@
 // The reaction is f_i moved to the child's joint point (Data::reactionWorld) and
 // turned into the joint frame (Data::reactionJoint).
 //
-// No allocation (everything is pre-sized in Data; sizes are asserted), no exceptions.
+// With constraints (Model::cuts, State::welds; dynamics/constraints.h) the tree's
+// O(n) algorithm gives way to a dense one: the mass matrix M by composite rigid
+// bodies, the bias C by RNEA at θ̈ = 0, the constraint rows G θ̈ = γ, and then, with
+// F the free and P the prescribed coordinates,
+//   G_F θ̈_F = γ − G_P θ̈_P                 (least squares by SVD: redundant rows, as in
+//                                           a planar loop seen in space, are allowed)
+//   Nᵀ (M_FF θ̈_F − (τ_F − C_F − M_FP θ̈_P)) = 0   (N: null space of G_F)
+//   G_Fᵀ λ = M_FF θ̈_F − (τ_F − C_F − M_FP θ̈_P)  (λ: the minimum-norm multipliers; with
+//                                           redundant rows the reactions of a spatially
+//                                           over-constrained loop are not unique)
+// and the loads λ·W of the constraints enter the backward pass of 4., which so gives
+// every tree joint's reaction; each constraint's own reaction is in
+// Data::constraintReactionWorld/Joint. The singular values of G_F are kept
+// (Data::constraintSingular) for the loop-lock event.
+//
+// Without constraints: no allocation (everything is pre-sized in Data; sizes are
+// asserted). With constraints the dense solves allocate. No exceptions.
 
 #include "solver/core/data.h"
 #include "solver/core/model.h"

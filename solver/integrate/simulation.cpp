@@ -1,11 +1,16 @@
 #include "solver/integrate/simulation.h"
 
 #include "solver/dynamics/applied_forces.h"
+#include "solver/dynamics/constraints.h"
 #include "solver/dynamics/drives.h"
 #include "solver/dynamics/forward_dynamics.h"
 #include "solver/dynamics/mass_matrix.h"
 #include "solver/kinematics/kinematics.h"
 
+#include <Eigen/Cholesky>
+#include <Eigen/SVD>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -36,6 +41,14 @@ void evaluateAll(const Model& model, const State& state, Data& data)
     hybridDynamics(model, state, data);
 }
 
+std::string bodyLabel(const Model& m, int b)
+{
+    if (b < 0) return "the ground";
+    std::string s = "body " + std::to_string(m.bodyId[b]);
+    if (!m.bodyName[b].empty()) s += " " + m.bodyName[b];
+    return s;
+}
+
 /// The commanded rate of joint j's hydraulic drive in the modeler's coordinate.
 double commandRate(const Model& m, const State& s, int j) { return hydraulicCommandRate(m.drive[j], s.u[j]); }
 
@@ -43,6 +56,23 @@ double commandRate(const Model& m, const State& s, int j) { return hydraulicComm
 
 std::string SimulationEvent::describe(const Model& model) const
 {
+    char t0[32];
+    std::snprintf(t0, sizeof t0, "t=%.6f s: ", t);
+    const std::string when = t0;
+    switch (kind) {
+    case Kind::Weld: return when + bodyLabel(model, body2) + " welded to " + bodyLabel(model, body);
+    case Kind::Release: return when + bodyLabel(model, body2) + " released from " + bodyLabel(model, body);
+    case Kind::LoopLocked: {
+        std::string joints;
+        for (const CutJoint& c : model.cuts) {
+            joints += (joints.empty() ? "" : ", ") + std::to_string(c.jointId);
+            if (!c.name.empty()) joints += " " + c.name;
+        }
+        return when + "the closed loops (closing joints " + joints +
+               ") locked up: a singular configuration, the mechanism cannot move on";
+    }
+    default: break;
+    }
     std::string who = "joint " + std::to_string(model.jointId[joint]);
     if (!model.jointName[joint].empty()) who += " " + model.jointName[joint];
     const char* unit = unitOf(model.jointType[joint]);
@@ -62,14 +92,13 @@ std::string SimulationEvent::describe(const Model& model) const
     case Kind::ReliefClose:
         what = std::string("relief valve closed ") + (side > 0 ? "extending" : "retracting");
         break;
+    default: break;
     }
-    char t0[32];
-    std::snprintf(t0, sizeof t0, "t=%.6f s: ", t);
-    return t0 + who + " " + what;
+    return when + who + " " + what;
 }
 
 /// The ODE y = [θ; θ̇; servo integral] (dim 3·nb) with the event functions of the
-/// current modes (kRootsPerJoint per joint; each valid while positive).
+/// current modes (kRootsPerJoint per joint, then the loop lock; each valid while positive).
 class Simulation::System : public OdeSystem {
 public:
     System(const Model& model, const State& modes, bool limits)
@@ -79,10 +108,15 @@ public:
             if ((limits && (std::isfinite(model.lower[j]) || std::isfinite(model.upper[j]))) || isHydraulic(model, j))
                 m_needRoots = true;
         }
+        if (!model.cuts.empty()) m_needRoots = true;
     }
 
+    /// Rank of the constraint Jacobian over the free coordinates that the loop-lock
+    /// event watches (set at every mode change).
+    int expectedRank = 0;
+
     int size() const override { return 3 * m_model.nb; }
-    int rootCount() const override { return m_needRoots ? kRootsPerJoint * m_model.nb : 0; }
+    int rootCount() const override { return m_needRoots ? kRootsPerJoint * m_model.nb + 1 : 0; }
     int rootDirection(int) const override { return -1; }
 
     bool rhs(double t, const double* y, double* ydot) override
@@ -102,13 +136,20 @@ public:
     {
         load(t, y);
         evaluateAll(m_model, m_work, m_data);
-        eventFunctions(m_model, m_work, m_data, m_limits, g);
+        eventFunctions(m_model, m_work, m_data, m_limits, expectedRank, g);
         return true;
     }
 
-    /// The event functions at a state whose dynamics `data` holds (dim 4·nb).
-    static void eventFunctions(const Model& model, const State& s, const Data& data, bool limits, double* g)
+    /// The event functions at a state whose dynamics `data` holds (dim 4·nb + 1).
+    static void eventFunctions(const Model& model, const State& s, const Data& data, bool limits, int rank,
+                               double* g)
     {
+        // the loop lock: the smallest expected singular value, relative, above kLoopLockRatio
+        double& lock = g[kRootsPerJoint * model.nb];
+        lock = 1.0;
+        const Eigen::VectorXd& sv = data.constraintSingular;
+        if (rank > 0 && sv.size() >= rank && sv[0] > 0) lock = sv[rank - 1] / sv[0] - kLoopLockRatio;
+
         for (int j = 0; j < model.nb; ++j) {
             double* gj = g + kRootsPerJoint * j;
             gj[0] = gj[1] = gj[2] = gj[3] = 1.0;
@@ -161,6 +202,7 @@ private:
             m_work.limit[j] = m_modes.limit[j];
             m_work.relief[j] = m_modes.relief[j];
         }
+        m_work.welds = m_modes.welds;
     }
 };
 
@@ -197,7 +239,22 @@ Simulation::Simulation(std::shared_ptr<const Model> model, const SimulationOptio
     IntegratorOptions io = m_options.integrator;
     if (io.method != IntegrationMethod::Rk4Fixed && io.maxStep == 0) io.maxStep = kDefaultMaxStep;
     if (m_model->nb > 0) m_integrator = std::make_unique<Integrator>(*m_system, io);
+    // with loops, the initial rates of the dependent coordinates follow from the others'
+    if (!m_model->cuts.empty()) {
+        for (int j = 0; j < m_model->nb; ++j) {
+            if (!m_model->dependent[j]) m_held.push_back(j);
+        }
+        assemble();
+        m_held.clear();
+    }
     evaluate();
+}
+
+void Simulation::assemble()
+{
+    std::vector<char> held(static_cast<std::size_t>(m_model->nb), 0);
+    for (int j : m_held) held[static_cast<std::size_t>(j)] = 1;
+    m_assemblyFailed = !project(held) && !project(std::vector<char>(held.size(), 0));
 }
 
 Simulation::~Simulation() = default;
@@ -220,6 +277,17 @@ void Simulation::setInitial(int joint, double theta, double thetaDot)
     if (m_options.limits && theta <= m_model->lower[joint]) l = LimitState::AtLower;
     if (m_options.limits && theta >= m_model->upper[joint]) l = LimitState::AtUpper;
     m_restart = true;
+    if (hasConstraints(*m_model, m_state)) {
+        // the loops close again around what was set (since the last step), moving the
+        // dependent coordinates
+        for (int j = 0; j < m_model->nb; ++j) {
+            if (!m_model->dependent[j]) m_held.push_back(j);
+        }
+        m_setJoints.push_back(joint);
+        for (int j : m_setJoints) m_held.push_back(j);
+        assemble();
+        m_held.clear();
+    }
     evaluate();
 }
 
@@ -247,9 +315,40 @@ void Simulation::unpackState()
 
 namespace {
 
+/// Δ (dim nb) on the joints `free` (the others held) with Δ_F = M_FF⁻¹ G_Fᵀ μ and
+/// G_F Δ_F = target: the mass-weighted least change that moves the constraint rows
+/// G by `target` (minimum-norm μ when the rows are redundant or conflicting).
+Eigen::VectorXd constraintCorrection(const Eigen::MatrixXd& M, const std::vector<int>& free,
+                                     const Eigen::MatrixXd& G, const Eigen::VectorXd& target)
+{
+    const auto nf = static_cast<Eigen::Index>(free.size());
+    Eigen::VectorXd out = Eigen::VectorXd::Zero(M.rows());
+    if (nf == 0 || G.rows() == 0) return out;
+    Eigen::MatrixXd mff(nf, nf), gf(G.rows(), nf);
+    for (Eigen::Index a = 0; a < nf; ++a) {
+        for (Eigen::Index b = 0; b < nf; ++b) mff(a, b) = M(free[a], free[b]);
+        gf.col(a) = G.col(free[a]);
+    }
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(mff);
+    const Eigen::MatrixXd minvGt = ldlt.solve(gf.transpose());  // M_FF⁻¹ G_Fᵀ
+    const Eigen::MatrixXd S = gf * minvGt;
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(S, Eigen::ComputeThinU | Eigen::ComputeThinV);
+    svd.setThreshold(1e-10);
+    const Eigen::VectorXd mu = svd.solve(target);
+    const Eigen::VectorXd d = minvGt * mu;
+    for (Eigen::Index a = 0; a < nf; ++a) {
+        if (std::isfinite(d[a])) out[free[a]] = d[a];
+    }
+    return out;
+}
+
 /// The rate change (dim nb; 0 on the held joints) of the joints `free` under the
-/// generalized impulse `impulse` (dim nb), every other joint held: M_FF Δθ̇_F = impulse_F.
-Eigen::VectorXd freeResponse(const Eigen::MatrixXd& M, const std::vector<int>& free, const Eigen::VectorXd& impulse)
+/// generalized impulse `impulse` (dim nb), every other joint held, the constraints
+/// G kept: M_FF Δθ̇_F = impulse_F + G_Fᵀ μ with G (θ̇ + Δθ̇) = 0, where θ̇ = `rates`
+/// (pass zeros for the response alone). Without constraints (G has no rows):
+/// M_FF Δθ̇_F = impulse_F.
+Eigen::VectorXd freeResponse(const Eigen::MatrixXd& M, const std::vector<int>& free, const Eigen::VectorXd& impulse,
+                             const Eigen::MatrixXd& G, const Eigen::VectorXd& rates)
 {
     const auto nf = static_cast<Eigen::Index>(free.size());
     Eigen::MatrixXd mff(nf, nf);
@@ -263,10 +362,64 @@ Eigen::VectorXd freeResponse(const Eigen::MatrixXd& M, const std::vector<int>& f
     for (Eigen::Index a = 0; a < nf; ++a) {
         if (std::isfinite(dq[a])) out[free[a]] = dq[a];
     }
+    if (G.rows() > 0) out -= constraintCorrection(M, free, G, G * (rates + out));
     return out;
 }
 
 }  // namespace
+
+Eigen::MatrixXd Simulation::constraintJacobianNow()
+{
+    forwardKinematics(*m_model, m_state, m_data);
+    collectConstraints(*m_model, m_state, m_data.constraints);
+    if (m_data.constraints.empty()) return Eigen::MatrixXd(0, m_model->nb);
+    constraintJacobian(*m_model, m_data, nullptr);
+    return m_data.G;
+}
+
+std::vector<char> Simulation::freeMask() const
+{
+    std::vector<char> free(static_cast<std::size_t>(m_model->nb), 0);
+    for (int j = 0; j < m_model->nb; ++j) free[j] = isPrescribed(*m_model, m_state, j) ? 0 : 1;
+    return free;
+}
+
+bool Simulation::project(const std::vector<char>& held)
+{
+    const Model& m = *m_model;
+    if (!hasConstraints(m, m_state)) return true;
+    std::vector<int> free;
+    const std::vector<char> mask = freeMask();
+    for (int j = 0; j < m.nb; ++j) {
+        if (mask[j] && !held[j]) free.push_back(j);
+    }
+    // positions: Gauss–Newton, each step the mass-weighted least change
+    constexpr double tol = 1e-12;
+    bool closed = false;
+    Eigen::VectorXd phi;
+    for (int it = 0; it < 20; ++it) {
+        forwardKinematics(m, m_state, m_data);
+        collectConstraints(m, m_state, m_data.constraints);
+        constraintResidual(m, m_data, m_data.constraints, phi);
+        if (phi.lpNorm<Eigen::Infinity>() <= tol) {
+            closed = true;
+            break;
+        }
+        const Eigen::MatrixXd G = constraintJacobianNow();
+        const Eigen::MatrixXd M = massMatrixNow();
+        m_state.q -= constraintCorrection(M, free, G, phi);
+    }
+    if (!closed) {
+        forwardKinematics(m, m_state, m_data);
+        constraintResidual(m, m_data, m_data.constraints, phi);
+        closed = phi.lpNorm<Eigen::Infinity>() <= 1e-9;  // close enough to go on
+    }
+    // velocities: the plastic-impact projection
+    const Eigen::MatrixXd G = constraintJacobianNow();
+    const Eigen::MatrixXd M = massMatrixNow();
+    m_state.qd -= constraintCorrection(M, free, G, G * m_state.qd);
+    return closed;
+}
 
 Eigen::MatrixXd Simulation::massMatrixNow()
 {
@@ -295,9 +448,10 @@ void Simulation::prescribeRates()
         m_state.qd[j] = rate;
         any = any || jump[j] != 0;
     }
-    if (!any || free.empty()) return;
+    const bool constrained = hasConstraints(m, m_state);
+    if ((!any && !constrained) || free.empty()) return;
     const Eigen::MatrixXd M = massMatrixNow();
-    m_state.qd += freeResponse(M, free, -(M * jump));
+    m_state.qd += freeResponse(M, free, -(M * jump), constraintJacobianNow(), m_state.qd);
 }
 
 void Simulation::hitLimit(int j, int side)
@@ -312,7 +466,8 @@ void Simulation::hitLimit(int j, int side)
         for (int k = 0; k < m.nb; ++k) {
             if (k == j || !isPrescribed(m, m_state, k)) free.push_back(k);
         }
-        const Eigen::VectorXd r = freeResponse(massMatrixNow(), free, Eigen::VectorXd::Unit(m.nb, j));
+        const Eigen::VectorXd r = freeResponse(massMatrixNow(), free, Eigen::VectorXd::Unit(m.nb, j),
+                                               constraintJacobianNow(), Eigen::VectorXd::Zero(m.nb));
         if (r[j] > 0) m_state.qd += (-(1.0 + m.restitution) * into / r[j]) * r;
     }
     if (m.restitution == 0 || side * m_state.qd[j] >= 0) {
@@ -326,6 +481,14 @@ void Simulation::handleRoots(std::span<const int> fired, std::vector<SimulationE
     const Model& m = *m_model;
     for (std::size_t i = 0; i < fired.size(); ++i) {
         if (fired[i] == 0) continue;
+        if (static_cast<int>(i) == kRootsPerJoint * m.nb) {
+            SimulationEvent e;
+            e.kind = SimulationEvent::Kind::LoopLocked;
+            e.t = m_state.t;
+            events.push_back(e);
+            m_locked = true;
+            continue;
+        }
         const int j = static_cast<int>(i) / kRootsPerJoint;
         const int k = static_cast<int>(i) % kRootsPerJoint;
         SimulationEvent e;
@@ -364,7 +527,7 @@ void Simulation::applyModeRules(std::vector<SimulationEvent>& events)
     // settle: a mode whose event function is already negative switches now
     // (at the start, after an event, after a command); a few rounds at most
     constexpr double tol = 1e-12;
-    std::vector<double> g(static_cast<std::size_t>(kRootsPerJoint * m.nb));
+    std::vector<double> g(static_cast<std::size_t>(kRootsPerJoint * m.nb + 1));
     // a relief valve that opens now opens before the commanded rate is reached: the
     // joint keeps the rate it had when the rules were applied, and so do the joints
     // that its rate jump would have pushed
@@ -385,13 +548,20 @@ void Simulation::applyModeRules(std::vector<SimulationEvent>& events)
         }
         prescribeRates();
         evaluate();
-        System::eventFunctions(m, m_state, m_data, m_options.limits, g.data());
+        m_expectedRank = m_data.constraintRank;
+        m_system->expectedRank = m_expectedRank;
+        System::eventFunctions(m, m_state, m_data, m_options.limits, m_expectedRank, g.data());
         std::vector<int> fired(g.size(), 0);
         bool any = false;
         for (std::size_t i = 0; i < g.size(); ++i) {
             const int j = static_cast<int>(i) / kRootsPerJoint;
             const int k = static_cast<int>(i) % kRootsPerJoint;
             if (!(g[i] < -tol)) continue;
+            if (j == m.nb) {  // the loop lock
+                fired[i] = -1;
+                any = true;
+                continue;
+            }
             // a free joint past a limit only stops when it moves into it
             if (k < 2 && m_state.limit[j] == LimitState::Free) {
                 const int side = k == 0 ? -1 : 1;
@@ -403,6 +573,7 @@ void Simulation::applyModeRules(std::vector<SimulationEvent>& events)
         if (any) {
             const std::size_t first = events.size();
             handleRoots(fired, events);
+            if (m_locked) return;
             // the rates return to where they were, and the next round prescribes the
             // still-closed valves' rates again (with their impulses) from there
             for (std::size_t e = first; e < events.size(); ++e) {
@@ -414,18 +585,45 @@ void Simulation::applyModeRules(std::vector<SimulationEvent>& events)
     }
 }
 
+namespace {
+
+std::string lockMessage(double t)
+{
+    return "the closed loops locked up at t = " + fmt(t) +
+           " s (a singular configuration: the loop-closure equations lost rank, so the "
+           "mechanism cannot move on there); drive it another way or change the geometry";
+}
+
+}  // namespace
+
 bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, std::string& error)
 {
     if (m_model->nb == 0) {
         m_state.t = tEnd;
         return true;
     }
+    if (m_locked) {
+        error = lockMessage(m_state.t);
+        return false;
+    }
+    const bool constrained = hasConstraints(*m_model, m_state);
     int eventCount = 0;
     while (true) {
+        m_setJoints.clear();
+        if (m_assemblyFailed) {
+            error = "the closed loops cannot be closed at t = " + fmt(m_state.t) +
+                    " s from the coordinates given: set coordinates the loops can reach";
+            return false;
+        }
         if (m_restart) {
             const std::size_t before = events.size();
             applyModeRules(events);
             eventCount += static_cast<int>(events.size() - before);
+            if (m_locked) {
+                evaluate();
+                error = lockMessage(m_state.t);
+                return false;
+            }
             packState();
             m_integrator->reset(m_state.t, m_y.data());
             m_restart = false;
@@ -450,11 +648,39 @@ bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, st
         }
         m_state.t = r.t;
         unpackState();
+        if (constrained) {
+            // back onto the constraints. A step may also end past a lock-up that the
+            // root finder could not see coming (the motion ends there in finite time):
+            // then the loops do not close again, or close near-singular.
+            const bool closed = project(std::vector<char>(static_cast<std::size_t>(m_model->nb), 0));
+            evaluate();
+            const Eigen::VectorXd& sv = m_data.constraintSingular;
+            const int rank = m_expectedRank;
+            const bool nearSingular = rank > 0 && (sv.size() < rank || !(sv[rank - 1] >= kLoopLockRatio * sv[0]));
+            if (!closed || nearSingular) {
+                SimulationEvent e;
+                e.kind = SimulationEvent::Kind::LoopLocked;
+                e.t = m_state.t;
+                events.push_back(e);
+                m_locked = true;
+                error = lockMessage(m_state.t);
+                return false;
+            }
+            if (r.status == AdvanceStatus::Reached) {
+                packState();
+                m_integrator->reset(m_state.t, m_y.data());
+            }
+        }
         if (r.status == AdvanceStatus::Reached) break;
         const std::size_t before = events.size();
         handleRoots(r.rootsFired, events);
-        applyModeRules(events);
+        if (!m_locked) applyModeRules(events);
         eventCount += static_cast<int>(events.size() - before);
+        if (m_locked) {
+            evaluate();
+            error = lockMessage(m_state.t);
+            return false;
+        }
         if (eventCount > m_options.maxEventsPerAdvance) {
             error = "more than " + std::to_string(m_options.maxEventsPerAdvance) + " events before t = " +
                     fmt(tEnd) + " s: the joints keep switching (chattering)";
@@ -463,6 +689,79 @@ bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, st
         packState();
         m_integrator->reset(m_state.t, m_y.data());
     }
+    evaluate();
+    return true;
+}
+
+namespace {
+
+bool inWeld(const State& s, int body)
+{
+    for (const Weld& w : s.welds) {
+        if (w.bodyA == body || w.bodyB == body) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+bool Simulation::weld(int a, int b, std::vector<SimulationEvent>& events, std::string& error)
+{
+    const Model& m = *m_model;
+    if (b < 0 || b >= m.nb || a < -1 || a >= m.nb) {
+        error = "cannot weld: no such body";
+        return false;
+    }
+    if (a == b) {
+        error = "cannot weld " + bodyLabel(m, b) + " to itself";
+        return false;
+    }
+    for (int body : {a, b}) {
+        if (body >= 0 && inWeld(m_state, body)) {
+            error = "cannot weld " + bodyLabel(m, b) + " to " + bodyLabel(m, a) + ": " + bodyLabel(m, body) +
+                    " is already welded (release that weld first)";
+            return false;
+        }
+    }
+    forwardKinematics(m, m_state, m_data);
+    const Eigen::Isometry3d X_wa = a < 0 ? Eigen::Isometry3d::Identity() : m_data.X_wb[a];
+    Weld w;
+    w.bodyA = a;
+    w.bodyB = b;
+    w.X_ab = X_wa.inverse(Eigen::Isometry) * m_data.X_wb[b];
+    m_state.welds.push_back(w);
+    // the bodies' relative velocity goes, as in a plastic impact (momentum kept)
+    project(std::vector<char>(static_cast<std::size_t>(m.nb), 0));
+    SimulationEvent e;
+    e.kind = SimulationEvent::Kind::Weld;
+    e.t = m_state.t;
+    e.body = a;
+    e.body2 = b;
+    events.push_back(e);
+    m_restart = true;
+    evaluate();
+    return true;
+}
+
+bool Simulation::release(int a, int b, std::vector<SimulationEvent>& events, std::string& error)
+{
+    const Model& m = *m_model;
+    auto it = std::find_if(m_state.welds.begin(), m_state.welds.end(),
+                           [&](const Weld& w) { return w.bodyA == a && w.bodyB == b; });
+    if (it == m_state.welds.end()) {
+        const bool ok = b >= 0 && b < m.nb && a >= -1 && a < m.nb;
+        error = ok ? "cannot release: " + bodyLabel(m, b) + " is not welded to " + bodyLabel(m, a)
+                   : "cannot release: no such body";
+        return false;
+    }
+    m_state.welds.erase(it);
+    SimulationEvent e;
+    e.kind = SimulationEvent::Kind::Release;
+    e.t = m_state.t;
+    e.body = a;
+    e.body2 = b;
+    events.push_back(e);
+    m_restart = true;
     evaluate();
     return true;
 }

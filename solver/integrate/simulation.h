@@ -19,6 +19,20 @@
 //    falls through −fmin) the valve opens (State::relief): the joint is then
 //    driven by that force, stalls or yields. It closes when the joint's rate
 //    reaches the commanded rate again (the force is then within the limits).
+//  - Closed loops and welds (Model::cuts, State::welds) are constraints of the
+//    dynamics. After every step the state is projected back onto them (positions
+//    by Gauss–Newton, velocities by the plastic-impact projection, both weighted by
+//    the mass matrix and moving only the free coordinates), so they drift by no
+//    more than the projection's tolerance (1e-12, scaled). Velocity jumps (a new
+//    command, a limit's impulse, a weld) keep the constraints too.
+//  - A loop that locks up (the constraint Jacobian over the free coordinates loses
+//    rank: a singular configuration, where the joint rates and forces would grow
+//    without bound) is the event LoopLocked, raised when its smallest expected
+//    singular value falls below kLoopLockRatio of its largest; the simulation stops
+//    there (advanceTo() returns false with the reason; the state is kept).
+//  - weld(a, b) holds body b at its current pose in body a's frame until release();
+//    b's mass then loads a's chain through the weld's constraint force. Welding
+//    bodies that move apart is a plastic impact: momentum is conserved.
 // Each switch is reported as a SimulationEvent.
 //
 // Commands (u per joint in [−1, 1]) are read at the start of every advanceTo():
@@ -48,12 +62,13 @@ struct SimulationOptions {
 };
 
 struct SimulationEvent {
-    enum class Kind { LimitHit, LimitLeave, ReliefOpen, ReliefClose };
+    enum class Kind { LimitHit, LimitLeave, ReliefOpen, ReliefClose, Weld, Release, LoopLocked };
     Kind kind = Kind::LimitHit;
     double t = 0;    ///< [s]
     int joint = 0;   ///< tree index
     int side = 0;    ///< limits: −1 lower, +1 upper; relief: +1 extending (fmax), −1 retracting (fmin)
     double value = 0;  ///< the limit (modeler coordinate) or the relief force [N or N m]
+    int body = -1, body2 = -1;  ///< Weld, Release: bodies a and b (tree indices, −1 = ground)
 
     /// One line, e.g. "t=1.2345 s: joint 2 LEVANTE PLUMA hit its upper limit 1.617 m".
     std::string describe(const Model& model) const;
@@ -61,6 +76,10 @@ struct SimulationEvent {
 
 /// The longest adaptive step a Simulation takes unless told otherwise [s].
 inline constexpr double kDefaultMaxStep = 0.01;
+
+/// A loop locks up when the ratio of its constraint Jacobian's smallest expected
+/// singular value to its largest falls below this.
+inline constexpr double kLoopLockRatio = 1e-4;
 
 class Simulation {
 public:
@@ -90,6 +109,18 @@ public:
     /// Recomputes data() at the current state.
     void evaluate();
 
+    /// Welds body b to body a (tree indices; a = −1: the ground) at their current
+    /// relative pose, from now on. Their relative velocity is taken away as in a
+    /// plastic impact. Appends a Weld event. Returns false with `error` set, and
+    /// changes nothing, when a = b, a body is out of range, or either body (other
+    /// than the ground) is already in a weld.
+    bool weld(int a, int b, std::vector<SimulationEvent>& events, std::string& error);
+    /// Releases the weld of body b to body a. Returns false with `error` set, and
+    /// changes nothing, when there is no such weld. Appends a Release event.
+    bool release(int a, int b, std::vector<SimulationEvent>& events, std::string& error);
+    /// True after a LoopLocked event: advanceTo() fails until the simulation is rebuilt.
+    bool locked() const { return m_locked; }
+
 private:
     class System;
     std::shared_ptr<const Model> m_model;
@@ -100,12 +131,25 @@ private:
     std::unique_ptr<Integrator> m_integrator;
     std::vector<double> m_y;
     bool m_restart = true;  // the integrator must be reset before the next step
+    bool m_locked = false;  // a loop locked up (LoopLocked)
+    int m_expectedRank = 0; // rank of the free coordinates' constraint Jacobian since the last mode change
+    std::vector<int> m_held;       // joints the assembly holds (independent ones, and those set)
+    std::vector<int> m_setJoints;  // joints setInitial() set since the last step
+    bool m_assemblyFailed = false;  // the loops could not be closed at the initial state
 
     void applyModeRules(std::vector<SimulationEvent>& events);
     void handleRoots(std::span<const int> fired, std::vector<SimulationEvent>& events);
     void hitLimit(int joint, int side);
     void prescribeRates();
     Eigen::MatrixXd massMatrixNow();  ///< M at the current positions (events only: allocates)
+    /// The constraint Jacobian at the current positions (events only: allocates); 0 rows without constraints.
+    Eigen::MatrixXd constraintJacobianNow();
+    /// Projects the state onto the constraints (positions, then velocities), moving
+    /// the free coordinates that are not held. False when the positions cannot be
+    /// brought within tolerance.
+    bool project(const std::vector<char>& held);
+    std::vector<char> freeMask() const;
+    void assemble();  ///< project(), holding m_held (or nothing, when that fails)  ///< per joint: 1 when its acceleration is not prescribed
     void packState();
     void unpackState();
 };

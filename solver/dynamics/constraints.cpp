@@ -1,0 +1,248 @@
+#include "solver/dynamics/constraints.h"
+
+#include <cassert>
+
+namespace solver {
+
+using Eigen::Vector3d;
+
+namespace {
+
+ConstraintKind kindOf(JointType type)
+{
+    return type == JointType::Prismatic ? ConstraintKind::Prismatic : ConstraintKind::Revolute;
+}
+
+/// A body's motion at one instant: velocity and bias acceleration (θ̈ = 0), spatial.
+struct BodyMotion {
+    Vector3d w = Vector3d::Zero(), vo = Vector3d::Zero();   // ω, v_O
+    Vector3d al = Vector3d::Zero(), ao = Vector3d::Zero();  // α, a_O at θ̈ = 0
+
+    Vector3d pointVel(const Vector3d& x) const { return vo + w.cross(x); }
+    Vector3d pointAcc(const Vector3d& x) const { return ao + al.cross(x) + w.cross(pointVel(x)); }
+    Vector3d dirVel(const Vector3d& d) const { return w.cross(d); }
+    Vector3d dirAcc(const Vector3d& d) const { return al.cross(d) + w.cross(w.cross(d)); }
+};
+
+BodyMotion motionOf(const Data& data, const std::vector<Vector6d>* a0, int body)
+{
+    BodyMotion m;
+    if (body < 0) return m;
+    m.w = data.v[body].head<3>();
+    m.vo = data.v[body].tail<3>();
+    if (a0) {
+        m.al = (*a0)[body].head<3>();
+        m.ao = (*a0)[body].tail<3>();
+    }
+    return m;
+}
+
+Eigen::Isometry3d worldFrame(const Data& data, int body, const Eigen::Isometry3d& X)
+{
+    return body < 0 ? X : data.X_wb[body] * X;
+}
+
+/// One constraint's frames in the world.
+struct Frames {
+    Vector3d p1, a1, r1, t1, p2, a2, r2, t2;
+};
+
+Frames framesOf(const Data& data, const Constraint& c)
+{
+    const Eigen::Isometry3d F1 = worldFrame(data, c.body1, c.X_1);
+    const Eigen::Isometry3d F2 = worldFrame(data, c.body2, c.X_2);
+    Frames f;
+    f.p1 = F1.translation();
+    f.a1 = F1.linear().col(0);
+    f.r1 = F1.linear().col(1);
+    f.t1 = F1.linear().col(2);
+    f.p2 = F2.translation();
+    f.a2 = F2.linear().col(0);
+    f.r2 = F2.linear().col(1);
+    f.t2 = F2.linear().col(2);
+    return f;
+}
+
+Vector6d wrench(const Vector3d& moment, const Vector3d& force)
+{
+    Vector6d w;
+    w << moment, force;
+    return w;
+}
+
+/// One equation: value, loads on the two bodies per unit λ, and −Φ̈ at θ̈ = 0.
+struct Row {
+    double phi = 0;
+    Vector6d w1 = Vector6d::Zero(), w2 = Vector6d::Zero();
+    double gamma = 0;
+};
+
+// (p2 − p1)·e, e a fixed world axis
+Row pointRow(const Frames& f, const BodyMotion& m1, const BodyMotion& m2, const Vector3d& e, bool accel)
+{
+    Row r;
+    r.phi = (f.p2 - f.p1).dot(e);
+    r.w1 = -wrench(f.p1.cross(e), e);
+    r.w2 = wrench(f.p2.cross(e), e);
+    if (accel) r.gamma = -(m2.pointAcc(f.p2) - m1.pointAcc(f.p1)).dot(e);
+    return r;
+}
+
+// x·y, x a direction on body 1, y on body 2
+Row dotRow(const Vector3d& x, const Vector3d& y, const BodyMotion& m1, const BodyMotion& m2, bool accel)
+{
+    Row r;
+    r.phi = x.dot(y);
+    const Vector3d xy = x.cross(y);
+    r.w1 = wrench(xy, Vector3d::Zero());
+    r.w2 = wrench(-xy, Vector3d::Zero());
+    if (accel) {
+        r.gamma = -(m1.dirAcc(x).dot(y) + 2 * m1.dirVel(x).dot(m2.dirVel(y)) + x.dot(m2.dirAcc(y)));
+    }
+    return r;
+}
+
+// (p2 − p1)·d, d a direction on body 1
+Row offsetRow(const Frames& f, const Vector3d& d, const BodyMotion& m1, const BodyMotion& m2, bool accel)
+{
+    Row r;
+    const Vector3d delta = f.p2 - f.p1;
+    r.phi = delta.dot(d);
+    r.w1 = wrench(-f.p1.cross(d) + d.cross(delta), -d);
+    r.w2 = wrench(f.p2.cross(d), d);
+    if (accel) {
+        const Vector3d dv = m2.pointVel(f.p2) - m1.pointVel(f.p1);
+        const Vector3d da = m2.pointAcc(f.p2) - m1.pointAcc(f.p1);
+        r.gamma = -(da.dot(d) + 2 * dv.dot(m1.dirVel(d)) + delta.dot(m1.dirAcc(d)));
+    }
+    return r;
+}
+
+void scaleRow(Row& r, double s)
+{
+    r.phi *= s;
+    r.w1 *= s;
+    r.w2 *= s;
+    r.gamma *= s;
+}
+
+/// The rows of one constraint, in the order of the header, length rows scaled.
+template <typename Sink>
+void constraintRows(const Model& model, const Data& data, const Constraint& c, const std::vector<Vector6d>* a0,
+                    Sink&& sink)
+{
+    const Frames f = framesOf(data, c);
+    const BodyMotion m1 = motionOf(data, a0, c.body1);
+    const BodyMotion m2 = motionOf(data, a0, c.body2);
+    const bool accel = a0 != nullptr;
+    const double s = 1.0 / model.lengthScale;
+    auto point = [&](int axis) {
+        Row r = pointRow(f, m1, m2, Vector3d::Unit(axis), accel);
+        scaleRow(r, s);
+        sink(r);
+    };
+    switch (c.kind) {
+    case ConstraintKind::Revolute:
+        for (int k = 0; k < 3; ++k) point(k);
+        sink(dotRow(f.a1, f.r2, m1, m2, accel));
+        sink(dotRow(f.a1, f.t2, m1, m2, accel));
+        break;
+    case ConstraintKind::Prismatic: {
+        sink(dotRow(f.a1, f.r2, m1, m2, accel));
+        sink(dotRow(f.a1, f.t2, m1, m2, accel));
+        sink(dotRow(f.r1, f.t2, m1, m2, accel));
+        Row ra = offsetRow(f, f.a1, m1, m2, accel);
+        scaleRow(ra, s);
+        sink(ra);
+        Row rt = offsetRow(f, f.t1, m1, m2, accel);
+        scaleRow(rt, s);
+        sink(rt);
+        break;
+    }
+    case ConstraintKind::Weld:
+        for (int k = 0; k < 3; ++k) point(k);
+        sink(dotRow(f.a1, f.r2, m1, m2, accel));
+        sink(dotRow(f.a1, f.t2, m1, m2, accel));
+        sink(dotRow(f.r1, f.t2, m1, m2, accel));
+        break;
+    }
+}
+
+}  // namespace
+
+void collectConstraints(const Model& model, const State& state, std::vector<Constraint>& out)
+{
+    out.clear();
+    for (std::size_t k = 0; k < model.cuts.size(); ++k) {
+        const CutJoint& cut = model.cuts[k];
+        Constraint c;
+        c.kind = kindOf(cut.type);
+        c.body1 = cut.body1;
+        c.body2 = cut.body2;
+        c.X_1 = cut.X_1;
+        c.X_2 = cut.X_2;
+        c.cut = static_cast<int>(k);
+        out.push_back(c);
+    }
+    for (std::size_t k = 0; k < state.welds.size(); ++k) {
+        const Weld& w = state.welds[k];
+        Constraint c;
+        c.kind = ConstraintKind::Weld;
+        c.body1 = w.bodyA;
+        c.body2 = w.bodyB;
+        c.X_1 = Eigen::Isometry3d::Identity();  // body a's own frame
+        c.X_2 = w.X_ab.inverse(Eigen::Isometry);  // the same frame seen from body b
+        c.weld = static_cast<int>(k);
+        out.push_back(c);
+    }
+}
+
+int constraintRowTotal(const std::vector<Constraint>& constraints)
+{
+    int n = 0;
+    for (const Constraint& c : constraints) n += constraintRowCount(c.kind);
+    return n;
+}
+
+bool hasConstraints(const Model& model, const State& state) { return !model.cuts.empty() || !state.welds.empty(); }
+
+void constraintResidual(const Model& model, const Data& data, const std::vector<Constraint>& constraints,
+                        Eigen::VectorXd& phi)
+{
+    phi.resize(constraintRowTotal(constraints));
+    Eigen::Index row = 0;
+    for (const Constraint& c : constraints) {
+        constraintRows(model, data, c, nullptr, [&](const Row& r) { phi[row++] = r.phi; });
+    }
+}
+
+void constraintJacobian(const Model& model, Data& data, const std::vector<Vector6d>* a0)
+{
+    const int rows = constraintRowTotal(data.constraints);
+    const auto nrows = static_cast<std::size_t>(rows);
+    if (data.G.rows() != rows || data.G.cols() != model.nb) data.G.resize(rows, model.nb);
+    data.G.setZero();
+    data.gamma.resize(rows);
+    data.phi.resize(rows);
+    data.W1.resize(nrows);
+    data.W2.resize(nrows);
+    data.rowConstraint.resize(nrows);
+
+    int row = 0;
+    for (std::size_t k = 0; k < data.constraints.size(); ++k) {
+        const Constraint& c = data.constraints[k];
+        constraintRows(model, data, c, a0, [&](const Row& r) {
+            data.phi[row] = r.phi;
+            data.gamma[row] = r.gamma;
+            data.W1[static_cast<std::size_t>(row)] = r.w1;
+            data.W2[static_cast<std::size_t>(row)] = r.w2;
+            data.rowConstraint[static_cast<std::size_t>(row)] = static_cast<int>(k);
+            for (int j = c.body1; j >= 0; j = model.parent[j]) data.G(row, j) += r.w1.dot(data.S[j]);
+            for (int j = c.body2; j >= 0; j = model.parent[j]) data.G(row, j) += r.w2.dot(data.S[j]);
+            ++row;
+        });
+    }
+    assert(row == rows);
+}
+
+}  // namespace solver
