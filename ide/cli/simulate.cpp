@@ -1,4 +1,6 @@
-// `padrob simulate`: runs a model headless and writes a CSV trajectory.
+// `padrob simulate`: runs a model headless and writes a CSV trajectory; the
+// options (docs/cli.md, simulateHelp()) set the time, step, integrator, inputs,
+// initial values, and welds made and released at given times (--weld, --release).
 
 #include "ide/cli/simulate.h"
 
@@ -13,6 +15,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -45,6 +48,14 @@ std::optional<double> toNumber(const std::string& s)
     return v;
 }
 
+/// A number as the user would write it back: 6 significant digits.
+std::string fmtNumber(double v)
+{
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
+
 std::optional<long> toInteger(const std::string& s)
 {
     long v = 0;
@@ -57,6 +68,68 @@ struct Assignment {
     int joint = 0;
     double value = 0;
 };
+
+/// A --weld or --release T:A:B: at time t, weld body b to body a (or release that weld).
+struct WeldSwitch {
+    bool weld = true;  ///< false: --release
+    std::string text;  ///< T:A:B as given, for messages
+    double t = 0;      ///< [s]
+    long a = 0, b = 0;  ///< the modeler's body ids; 0 = the ground
+    const char* option() const { return weld ? "--weld" : "--release"; }
+    std::string prefix() const { return std::string(option()) + " '" + text + "': "; }
+};
+
+/// Parses T:A:B; nullopt with `problem` set when it is malformed or T is not ≥ 0
+/// or A, B cannot be welded whatever the model (checked against the model later).
+std::optional<WeldSwitch> parseWeldSwitch(bool weld, const std::string& text, std::string& problem)
+{
+    WeldSwitch w;
+    w.weld = weld;
+    w.text = text;
+    const std::size_t c1 = text.find(':');
+    const std::size_t c2 = c1 == std::string::npos ? std::string::npos : text.find(':', c1 + 1);
+    const std::string ts = text.substr(0, c1);
+    std::optional<long> a, b;
+    if (c2 != std::string::npos && text.find(':', c2 + 1) == std::string::npos) {
+        a = toInteger(text.substr(c1 + 1, c2 - c1 - 1));
+        b = toInteger(text.substr(c2 + 1));
+    }
+    // the time: any number here (from_chars also reads inf and nan), judged below
+    double t = 0;
+    const char* tb = ts.data();
+    if (!ts.empty() && ts[0] == '+') ++tb;
+    auto [p, ec] = std::from_chars(tb, ts.data() + ts.size(), t);
+    if (!a || !b || ts.empty() || ec != std::errc() || p != ts.data() + ts.size()) {
+        problem = std::string(w.option()) +
+                  (weld ? tr(" takes T:A:B: a time [s] and two body ids, to weld body B to body A (0 = the ground), "
+                             "e.g. 0.5:0:2; not '")
+                        : tr(" takes T:A:B: a time [s] and two body ids, to release the weld of body B to body A "
+                             "(0 = the ground), e.g. 1.5:0:2; not '")) +
+                  text + "'";
+        return std::nullopt;
+    }
+    if (!std::isfinite(t) || t < 0) {
+        problem = w.prefix() + tr("the time must be a finite number of seconds ≥ 0 (from the start), not '") + ts + "'";
+        return std::nullopt;
+    }
+    w.t = t;
+    w.a = *a;
+    w.b = *b;
+    if (w.a == w.b) {
+        problem = w.prefix() + (weld ? tr("cannot weld a body to itself: give two different bodies A and B")
+                                     : tr("cannot release a body from itself: give the two bodies of a --weld"));
+        return std::nullopt;
+    }
+    if (w.b == 0) {
+        problem = w.prefix() +
+                  (weld ? tr("the ground cannot be welded to a body: put the ground as A, '")
+                        : tr("the ground is never the welded body B: a weld to the ground is written with the ground "
+                             "as A, '")) +
+                  ts + ":" + std::to_string(w.b) + ":" + std::to_string(w.a) + "'";
+        return std::nullopt;
+    }
+    return w;
+}
 
 }  // namespace
 
@@ -80,13 +153,25 @@ std::string simulateHelp()
               "  --no-limits           ignore the joint limits LL/UL\n"
               "  --every N             write one row every N steps (default 1)\n"
               "  --out FILE.csv        write the CSV there (default: standard output)\n"
+              "  --weld T:A:B          at time T [s] weld body B to body A (0 = the ground) at\n"
+              "                        their relative pose then; repeatable\n"
+              "  --release T:A:B       at time T [s] release the weld of body B to body A;\n"
+              "                        repeatable\n"
               "\n"
               "Columns: t; q<j> for every joint j in id order; qd<j> likewise; ang<j> (the\n"
               "angle, rad) for every pivoted-actuator (T 1) joint, whose q<j> is the length;\n"
               "x<i> y<i> z<i>, the world position of the centre of mass of every body i;\n"
               "F<j>, the force or torque of every drive; E, the mechanical energy (kinetic +\n"
               "gravitational) [J]. Events (limits hit and left, relief valves opening and\n"
-              "closing) are printed on standard error, one per line.\n"
+              "closing, welds made and released, a closed loop locking up) are printed on\n"
+              "standard error, one per line.\n"
+              "\n"
+              "Welds: the simulation stops exactly at each T (between output rows if T is not\n"
+              "a multiple of --dt; the rows stay every --dt), makes or releases the weld and\n"
+              "goes on; a row at T shows the state after it. Several at one T apply in the\n"
+              "order given. B is never the ground (put the ground as A); a body other than\n"
+              "the ground is in one weld at a time, and --release needs that weld in force\n"
+              "at T (else the run fails, exit status 1).\n"
               "\n"
               "Exit status: 0 success; 1 the model has errors or the simulation failed;\n"
               "2 usage error or unreadable input. On failure no output file is left behind.\n");
@@ -100,6 +185,7 @@ int runSimulate(const std::vector<std::string>& args)
     long every = 1;
     bool passive = false, noLimits = false, adaptive = false;
     std::vector<std::pair<std::string, std::string>> sets, rates;  // raw J=VALUE
+    std::vector<WeldSwitch> switches;  // --weld and --release, in command-line order
 
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
@@ -114,7 +200,8 @@ int runSimulate(const std::vector<std::string>& args)
         if (a == "--passive") { passive = true; continue; }
         if (a == "--no-limits") { noLimits = true; continue; }
         const bool takesValue = a == "--time" || a == "--dt" || a == "--integrator" || a == "--rtol" || a == "--input" ||
-                                a == "--set" || a == "--rate" || a == "--every" || a == "--out";
+                                a == "--set" || a == "--rate" || a == "--every" || a == "--out" ||
+                                a == "--weld" || a == "--release";
         if (takesValue) {
             auto v = value();
             if (!v) return usage(a + tr(" needs a value"));
@@ -141,6 +228,11 @@ int runSimulate(const std::vector<std::string>& args)
                 inputPath = *v;
             } else if (a == "--out") {
                 outPath = *v;
+            } else if (a == "--weld" || a == "--release") {
+                std::string problem;
+                auto w = parseWeldSwitch(a == "--weld", *v, problem);
+                if (!w) return usage(problem);
+                switches.push_back(*w);
             } else {
                 const std::size_t eq = v->find('=');
                 if (eq == std::string::npos) return usage(a + tr(" takes J=VALUE (a joint id and a number), not '") + *v + "'");
@@ -157,6 +249,12 @@ int runSimulate(const std::vector<std::string>& args)
     if (dt > *time) return usage(tr("--dt is longer than --time"));
     const double steps = std::ceil(*time / dt - 1e-9);
     if (steps > 1e9) return usage(tr("--time / --dt is more than 1e9 steps"));
+    for (const WeldSwitch& w : switches) {
+        if (w.t > *time) {
+            return usage(w.prefix() + tr("the time is after the end of the simulation (--time ") + fmtNumber(*time) +
+                         tr(" s): give a T between 0 and --time"));
+        }
+    }
 
     // the model
     solver::LoadedModel loaded = solver::loadModelFile(modelPath);
@@ -193,6 +291,20 @@ int runSimulate(const std::vector<std::string>& args)
     };
     std::vector<Assignment> setList, rateList;
     if (!parseAssignments(sets, "--set", setList) || !parseAssignments(rates, "--rate", rateList)) return kUsage;
+
+    // --weld / --release: the bodies must exist
+    for (const WeldSwitch& w : switches) {
+        for (long id : {w.a, w.b}) {
+            if (id == 0 || (id >= INT_MIN && id <= INT_MAX && m.bodyIndex(static_cast<int>(id)) >= 0)) continue;
+            std::vector<int> ids(m.bodyId.begin(), m.bodyId.end());
+            std::sort(ids.begin(), ids.end());
+            std::string list = tr("0 (the ground)");
+            for (int i : ids) list += ", " + std::to_string(i);
+            return usage(w.prefix() + tr("the model has no body ") + std::to_string(id) + tr("; its bodies are ") + list);
+        }
+    }
+    // applied in time order; at one time in command-line order
+    std::stable_sort(switches.begin(), switches.end(), [](const WeldSwitch& x, const WeldSwitch& y) { return x.t < y.t; });
 
     // the input table, checked against the model's drives
     std::optional<solver::InputTable> inputs;
@@ -294,25 +406,49 @@ int runSimulate(const std::vector<std::string>& args)
     if (inputs) cursor.emplace(inputs->cursor());
     const long n = static_cast<long>(steps);
     std::string error;
+    // Prints the events; on failure drops the output and prints the error. Returns ok.
+    auto report = [&](bool ok) {
+        // whole rows before each event line when both streams go to one terminal
+        if (!events.empty() && out.toStdout()) std::fflush(stdout);
+        for (const solver::SimulationEvent& e : events) printErr(e.describe(m) + "\n");
+        events.clear();
+        if (!ok) {
+            out.abandon();
+            printErr("padrob simulate: " + error + "\n");
+        }
+        return ok;
+    };
+    // Makes and releases the welds due by time `now` (a switch within a billionth
+    // of a step of a row's time applies there).
+    const double tolerance = 1e-9 * dt;
+    std::size_t nextSwitch = 0;
+    auto applySwitches = [&](double now) {
+        bool ok = true;
+        while (ok && nextSwitch < switches.size() && switches[nextSwitch].t <= now + tolerance) {
+            const WeldSwitch& w = switches[nextSwitch++];
+            const int a = w.a == 0 ? -1 : m.bodyIndex(static_cast<int>(w.a));
+            const int b = m.bodyIndex(static_cast<int>(w.b));
+            ok = w.weld ? sim.weld(a, b, events, error) : sim.release(a, b, events, error);
+            if (!ok) error = w.prefix() + error;
+        }
+        return report(ok);
+    };
     for (long k = 0; k <= n; ++k) {
         const double t = std::min(*time, static_cast<double>(k) * dt);
         if (cursor) {
             cursor->seek(t);
             for (std::size_t c = 0; c < inputJoint.size(); ++c) sim.setCommand(inputJoint[c], cursor->value(c));
         }
+        if (!applySwitches(t)) return kModelErrors;
         if (k % every == 0 || k == n) writeRow();
         if (k == n) break;
         const double next = std::min(*time, static_cast<double>(k + 1) * dt);
-        events.clear();
-        const bool ok = sim.advanceTo(next, events, error);
-        // whole rows before each event line when both streams go to one terminal
-        if (!events.empty() && out.toStdout()) std::fflush(stdout);
-        for (const solver::SimulationEvent& e : events) printErr(e.describe(m) + "\n");
-        if (!ok) {
-            out.abandon();
-            printErr("padrob simulate: " + error + "\n");
-            return kModelErrors;
+        // a weld or release inside the step: stop exactly there
+        while (nextSwitch < switches.size() && switches[nextSwitch].t < next - tolerance) {
+            const double at = switches[nextSwitch].t;
+            if (!report(sim.advanceTo(at, events, error)) || !applySwitches(at)) return kModelErrors;
         }
+        if (!report(sim.advanceTo(next, events, error))) return kModelErrors;
     }
     if (!out.commit()) {
         printErr("padrob simulate: " + out.errorString() + "\n");

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -207,7 +208,7 @@ TEST(CliSimulate, HelpListsEveryOption)
     CliRun r = padrob("simulate --help");
     EXPECT_EQ(r.status, 0);
     for (const char* opt : {"--time", "--dt", "--integrator", "--rtol", "--input", "--set", "--rate", "--passive",
-                            "--no-limits", "--every", "--out"}) {
+                            "--no-limits", "--every", "--out", "--weld", "--release"}) {
         EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
     }
 }
@@ -324,11 +325,223 @@ TEST(CliSimulate, ADivergingSimulationFailsWithoutOutput)
     EXPECT_FALSE(std::filesystem::exists(out));
 }
 
-TEST(CliSimulate, ModelsWithLoopsAreRefusedClearly)
+namespace {
+
+/// A CSV of numbers with a header, parsed.
+struct Csv {
+    std::vector<std::string> header;
+    std::vector<std::vector<double>> rows;
+
+    std::size_t column(const std::string& name) const
+    {
+        for (std::size_t c = 0; c < header.size(); ++c) {
+            if (header[c] == name) return c;
+        }
+        ADD_FAILURE() << "no column " << name;
+        return 0;
+    }
+    double at(std::size_t row, const std::string& name) const { return rows.at(row).at(column(name)); }
+    /// The row whose t is `t` (to 1e-9).
+    std::size_t rowAt(double t) const
+    {
+        for (std::size_t r = 0; r < rows.size(); ++r) {
+            if (std::abs(rows[r][0] - t) < 1e-9) return r;
+        }
+        ADD_FAILURE() << "no row at t = " << t;
+        return 0;
+    }
+};
+
+Csv parseCsv(const std::string& text)
 {
-    CliRun r = padrob("simulate models/four_bar.pad --time 1");
-    EXPECT_EQ(r.status, 1);
-    EXPECT_NE(r.err.find("closes a loop: closed loops are not simulated yet"), std::string::npos) << r.err;
+    auto split = [](const std::string& line) {
+        std::vector<std::string> fields;
+        std::size_t p = 0;
+        while (p <= line.size()) {
+            std::size_t c = line.find(',', p);
+            if (c == std::string::npos) c = line.size();
+            fields.push_back(line.substr(p, c - p));
+            p = c + 1;
+        }
+        return fields;
+    };
+    Csv csv;
+    auto ls = lines(text);
+    if (ls.empty()) return csv;
+    csv.header = split(ls[0]);
+    for (std::size_t i = 1; i < ls.size(); ++i) {
+        std::vector<double> row;
+        for (const std::string& f : split(ls[i])) row.push_back(std::stod(f));
+        EXPECT_EQ(row.size(), csv.header.size()) << ls[i];
+        csv.rows.push_back(std::move(row));
+    }
+    return csv;
+}
+
+}  // namespace
+
+TEST(CliSimulate, ClosedLoopModelsSimulate)
+{
+    // four-bar: the motor at full command turns the crank; the coupler's centre of
+    // mass stays midway between the crank pin A and the rocker pin B (the loop closes)
+    const std::string input = writeTemp("four_bar_in.csv", "t,u1\n0,1\n");
+    CliRun fb = padrob("simulate models/four_bar.pad --time 1 --input '" + input + "'");
+    ASSERT_EQ(fb.status, 0) << fb.err;
+    Csv four = parseCsv(fb.out);
+    ASSERT_EQ(four.rows.size(), 1001u);
+    EXPECT_EQ(four.header.front(), "t");
+    EXPECT_EQ(four.rows.back()[0], 1.0);
+    EXPECT_GT(four.rows.back()[four.column("q1")], four.rows.front()[four.column("q1")] + 0.5);
+    for (std::size_t r : {std::size_t(0), std::size_t(500), four.rows.size() - 1}) {
+        const double ax = 2 * four.at(r, "x1"), ay = 2 * four.at(r, "y1");  // crank: O2 at the origin
+        const double bx = 2 * four.at(r, "x3") - 0.4, by = 2 * four.at(r, "y3");  // rocker: O4 = (0.4, 0)
+        EXPECT_NEAR(four.at(r, "x2"), (ax + bx) / 2, 1e-6) << "t = " << four.rows[r][0];
+        EXPECT_NEAR(four.at(r, "y2"), (ay + by) / 2, 1e-6) << "t = " << four.rows[r][0];
+        EXPECT_NEAR(std::hypot(bx - ax, by - ay), 0.35, 1e-6);
+    }
+
+    // slider-crank, turning at its initial rate: the piston follows
+    // x_B = r cos θ2 + √(l² − r² sin² θ2)
+    CliRun sc = padrob("simulate models/slider_crank.pad --time 1");
+    ASSERT_EQ(sc.status, 0) << sc.err;
+    Csv slider = parseCsv(sc.out);
+    ASSERT_EQ(slider.rows.size(), 1001u);
+    EXPECT_EQ(slider.rows.back()[0], 1.0);
+    for (std::size_t r = 0; r < slider.rows.size(); r += 100) {
+        const double th = slider.at(r, "q1"), rr = 0.1, l = 0.35;
+        EXPECT_NEAR(slider.at(r, "x3"), rr * std::cos(th) + std::sqrt(l * l - rr * rr * std::sin(th) * std::sin(th)), 1e-6)
+            << "t = " << slider.rows[r][0];
+    }
+}
+
+TEST(CliSimulate, ALoopDrivenToItsDeadCentreLocksUp)
+{
+    // the slider-crank's piston pushed by a cylinder at 0.1 m/s from x = 0.39 m toward
+    // the dead centre x = 0.45 m (crank and rod in line), reached at t = 0.6 s
+    std::string text = slurp(std::string(PADROB_SOURCE_DIR) + "/models/slider_crank.pad");
+    const std::string c4 = "C 4 T 2 QI 0.39 NAME \"cylinder\"";
+    ASSERT_NE(text.find(c4), std::string::npos);
+    text.replace(text.find(c4), c4.size(), "C 4 T 2 QI 0.39 LL 0.2 UL 0.46 NAME \"cylinder\"");
+    const std::size_t motor = text.find("D 1 MOTOR");
+    ASSERT_NE(motor, std::string::npos);
+    text.erase(motor, text.find('\n', motor) + 1 - motor);
+    text += "D 4 HYD VMAX 0.1\n";
+    const std::string model = writeTemp("slider_crank_lock.pad", text);
+    const std::string input = writeTemp("slider_crank_lock.csv", "t,u4\n0,1\n");
+    const std::string out = (std::filesystem::temp_directory_path() / "padrob_sim_lock.csv").string();
+    std::filesystem::remove(out);
+    CliRun r = padrob("simulate '" + model + "' --time 1 --input '" + input + "' --out '" + out + "'");
+    EXPECT_EQ(r.status, 1) << r.err;
+    EXPECT_NE(r.err.find("locked up"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.rfind("t=0.600000 s: ", 0), 0u) << r.err;  // the event line, first
+    EXPECT_NE(r.err.find("padrob simulate: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("0.6 s"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(CliSimulate, WeldAndReleaseHoldTheRelativePose)
+{
+    // double pendulum: bob 2 welded to bob 1 from 0.5 s to 1 s swings with it rigidly
+    CliRun r = padrob("simulate models/double_pendulum.pad --time 1.5 --weld 0.5:1:2 --release 1:1:2");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "t=0.500000 s: body 2 bob 2 welded to body 1 bob 1\n"
+                     "t=1.000000 s: body 2 bob 2 released from body 1 bob 1\n");
+    Csv csv = parseCsv(r.out);
+    ASSERT_EQ(csv.rows.size(), 1501u);
+    const std::size_t w = csv.rowAt(0.5), rel = csv.rowAt(1.0);
+    const double q2 = csv.at(w, "q2");
+    EXPECT_NE(q2, csv.at(w - 1, "q2"));  // it moved before
+    for (std::size_t k = w; k <= rel; ++k) {
+        EXPECT_NEAR(csv.at(k, "q2"), q2, 1e-9) << "t = " << csv.rows[k][0];
+        EXPECT_NEAR(csv.at(k, "qd2"), 0, 1e-9) << "t = " << csv.rows[k][0];
+    }
+    EXPECT_GT(std::abs(csv.at(rel, "q1") - csv.at(w, "q1")), 0.01);  // the pair kept swinging
+    EXPECT_GT(std::abs(csv.rows.back()[csv.column("q2")] - q2), 1e-3);  // free again after the release
+
+    // a weld between output rows (--dt 0.01, T = 0.505): the run stops there, the
+    // rows stay on the --dt grid; at one T the switches apply in the order given
+    CliRun off = padrob("simulate models/double_pendulum.pad --time 0.6 --dt 0.01 --weld 0.505:1:2 "
+                        "--release 0.52:1:2 --weld 0.52:0:1");
+    ASSERT_EQ(off.status, 0) << off.err;
+    EXPECT_EQ(off.err, "t=0.505000 s: body 2 bob 2 welded to body 1 bob 1\n"
+                       "t=0.520000 s: body 2 bob 2 released from body 1 bob 1\n"
+                       "t=0.520000 s: body 1 bob 1 welded to the ground\n");
+    Csv grid = parseCsv(off.out);
+    ASSERT_EQ(grid.rows.size(), 61u);
+    for (std::size_t k = 0; k < grid.rows.size(); ++k) EXPECT_NEAR(grid.rows[k][0], 0.01 * static_cast<double>(k), 1e-12);
+    const std::size_t r50 = grid.rowAt(0.5), r51 = grid.rowAt(0.51), r52 = grid.rowAt(0.52);
+    EXPECT_NE(grid.at(r50, "q2"), grid.at(r51, "q2"));  // the weld came after the row at 0.5
+    EXPECT_NEAR(grid.at(r52, "q2"), grid.at(r51, "q2"), 1e-9);
+    for (std::size_t k = r52; k < grid.rows.size(); ++k) {  // bob 1 held by the ground, bob 2 free
+        EXPECT_NEAR(grid.at(k, "q1"), grid.at(r52, "q1"), 1e-9) << "t = " << grid.rows[k][0];
+    }
+    EXPECT_GT(std::abs(grid.rows.back()[grid.column("q2")] - grid.at(r52, "q2")), 1e-3);
+
+    // the same switches the other way round: bob 1 is still welded to bob 2
+    const std::string out = (std::filesystem::temp_directory_path() / "padrob_sim_weld_order.csv").string();
+    std::filesystem::remove(out);
+    CliRun rev = padrob("simulate models/double_pendulum.pad --time 0.6 --dt 0.01 --weld 0.505:1:2 "
+                        "--weld 0.52:0:1 --release 0.52:1:2 --out '" + out + "'");
+    EXPECT_EQ(rev.status, 1);
+    EXPECT_NE(rev.err.find("padrob simulate: --weld '0.52:0:1': cannot weld body 1 bob 1 to the ground: "
+                           "body 1 bob 1 is already welded"),
+              std::string::npos) << rev.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(CliSimulate, BadWeldsAreUsageErrors)
+{
+    const std::string out = (std::filesystem::temp_directory_path() / "padrob_sim_weld_never.csv").string();
+    std::filesystem::remove(out);
+    struct Case {
+        std::string args;
+        std::string message;
+    };
+    const std::string model = "models/double_pendulum.pad --time 1";
+    const std::vector<Case> cases = {
+        {model + " --weld", "--weld needs a value"},
+        {model + " --weld 0.5", "--weld takes T:A:B: a time [s] and two body ids, to weld body B to body A (0 = the ground), "
+                                "e.g. 0.5:0:2; not '0.5'"},
+        {model + " --weld 0.5:1", "--weld takes T:A:B"},
+        {model + " --weld 0.5:1:2:3", "--weld takes T:A:B"},
+        {model + " --weld x:1:2", "--weld takes T:A:B"},
+        {model + " --weld 0.5:one:2", "--weld takes T:A:B"},
+        {model + " --release 0.5:1:", "--release takes T:A:B"},
+        {model + " --weld -0.5:1:2", "--weld '-0.5:1:2': the time must be a finite number of seconds ≥ 0"},
+        {model + " --weld inf:1:2", "--weld 'inf:1:2': the time must be a finite number of seconds ≥ 0"},
+        {model + " --release nan:1:2", "--release 'nan:1:2': the time must be a finite number of seconds ≥ 0"},
+        {model + " --weld 1.5:1:2", "--weld '1.5:1:2': the time is after the end of the simulation (--time 1 s)"},
+        {"models/double_pendulum.pad --release 2:1:2 --time 1", "--release '2:1:2': the time is after the end"},
+        {model + " --weld 0.5:1:7", "--weld '0.5:1:7': the model has no body 7; its bodies are 0 (the ground), 1, 2"},
+        {model + " --release 0.5:9:2", "--release '0.5:9:2': the model has no body 9; its bodies are 0 (the ground), 1, 2"},
+        {model + " --weld 0.5:2:2", "--weld '0.5:2:2': cannot weld a body to itself"},
+        {model + " --release 0.5:1:1", "--release '0.5:1:1': cannot release a body from itself"},
+        {model + " --weld 0.5:1:0", "--weld '0.5:1:0': the ground cannot be welded to a body: put the ground as A, '0.5:0:1'"},
+        {model + " --release 0.5:2:0", "--release '0.5:2:0': the ground is never the welded body B"},
+    };
+    for (const Case& c : cases) {
+        CliRun r = padrob("simulate --out '" + out + "' " + c.args);
+        EXPECT_EQ(r.status, 2) << c.args << "\n" << r.err;
+        EXPECT_EQ(r.err.rfind("padrob simulate: " + c.message, 0), 0u) << c.args << "\n" << r.err;
+        EXPECT_FALSE(std::filesystem::exists(out)) << c.args;
+        EXPECT_EQ(r.out, "") << c.args;
+    }
+    // errors that depend on the run: exit 1 with the simulation's reason, no file left
+    const std::vector<Case> runtime = {
+        {model + " --release 0.5:1:2", "padrob simulate: --release '0.5:1:2': cannot release: body 2 bob 2 is not welded "
+                                       "to body 1 bob 1\n"},
+        {model + " --weld 0.2:1:2 --release 0.4:1:2 --release 0.6:1:2",
+         "padrob simulate: --release '0.6:1:2': cannot release: body 2 bob 2 is not welded to body 1 bob 1\n"},
+        {model + " --weld 0.5:1:2 --weld 0.7:0:2",
+         "padrob simulate: --weld '0.7:0:2': cannot weld body 2 bob 2 to the ground: body 2 bob 2 is already welded "
+         "(release that weld first)\n"},
+    };
+    for (const Case& c : runtime) {
+        CliRun r = padrob("simulate --out '" + out + "' " + c.args);
+        EXPECT_EQ(r.status, 1) << c.args << "\n" << r.err;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
+        EXPECT_FALSE(std::filesystem::exists(out)) << c.args;
+    }
 }
 
 namespace {

@@ -417,26 +417,78 @@ F 5 AERO B 3 P 0 0 0 AREA 0.5 CD 1.2 CL 0.3 RHO 1.0
 
 // ------------------------------------------------------------------ what is not compiled
 
-TEST(Compile, LoopsAreRejectedAtTheFirstCutJoint)
+TEST(Compile, LoopModelsKeepTheirCutJoints)
 {
-    struct Case {
-        const char* file;
-        int line;  // of the cut joint's C statement
-    };
-    for (const Case& c : {Case{"four_bar.pad", 63}, Case{"slider_crank.pad", 58}}) {
-        SCOPED_TRACE(c.file);
-        const LoadedModel loaded = loadModelFile(test::modelPath(c.file));
-        ASSERT_TRUE(loaded.ok());
-        ASSERT_FALSE(loaded.topology->loopJoints.empty());
-        Diagnostics diags(loaded.spec.file);
-        EXPECT_EQ(compileModel(loaded.spec, *loaded.topology, diags), nullptr);
-        ASSERT_EQ(diags.size(), 1u);
-        const Diagnostic& d = diags.items().front();
-        EXPECT_EQ(d.severity, Severity::Error);
-        EXPECT_EQ(d.code, "loops-not-supported");
-        EXPECT_EQ(d.pos.line, c.line) << d.format();
-        EXPECT_NE(d.message.find("closed loops are not simulated yet"), std::string::npos);
+    // four-bar: tree 1 (crank), 2 (coupler on the crank), 3 (rocker); joint 4 closes the loop
+    const auto model = test::compileExample("four_bar.pad");
+    ASSERT_TRUE(model);
+    const Model& m = *model;
+    EXPECT_EQ(m.nb, 3);
+    ASSERT_EQ(m.cuts.size(), 1u);
+    const CutJoint& cut = m.cuts[0];
+    EXPECT_EQ(cut.jointId, 4);
+    EXPECT_EQ(cut.name, "rocker pin B");
+    EXPECT_EQ(cut.type, JointType::Revolute);
+    EXPECT_EQ(cut.body1, m.bodyIndex(2));
+    EXPECT_EQ(cut.body2, m.bodyIndex(3));
+    EXPECT_TRUE(cut.X_1.translation().isApprox(Vector3d(0.175, 0, 0)));
+    EXPECT_TRUE(cut.X_2.translation().isApprox(Vector3d(0.15, 0, 0)));
+    EXPECT_TRUE(cut.X_1.linear().col(0).isApprox(Vector3d::UnitZ()));  // A
+    EXPECT_TRUE(cut.X_1.linear().col(1).isApprox(Vector3d::UnitX()));  // R
+    // the largest joint point distance from a body origin: O4 at 0.4 m from the world's
+    EXPECT_NEAR(m.lengthScale, 0.4, 1e-12);
+    // the crank's coordinate is the degree of freedom; coupler and rocker follow
+    EXPECT_FALSE(m.dependent[m.jointIndex(1)]);
+    EXPECT_TRUE(m.dependent[m.jointIndex(2)]);
+    EXPECT_TRUE(m.dependent[m.jointIndex(3)]);
+
+    // slider-crank: the piston's slide (a prismatic joint) is the tree joint of the
+    // piston or the cut; either way the cut's kind follows its joint type
+    const auto sc = test::compileExample("slider_crank.pad");
+    ASSERT_TRUE(sc);
+    ASSERT_EQ(sc->cuts.size(), 1u);
+    EXPECT_EQ(sc->nb, 3);
+}
+
+TEST(Compile, DriveOnALoopClosingJointIsAnError)
+{
+    // every joint of the loop driven: the spanning tree must cut a driven joint
+    const std::string text = R"(B 1 1 0.01 0.01 0.01
+B 2 1 0.01 0.01 0.01
+C 1
+B1 0 P1 0 0 0 A1 0 0 1 R1 1 0 0
+B2 1 P2 -0.5 0 0 A2 0 0 1 R2 1 0 0
+C 2
+B1 1 P1 0.5 0 0 A1 0 0 1 R1 1 0 0
+B2 2 P2 -0.5 0 0 A2 0 0 1 R2 1 0 0
+C 3 LL -1 UL 1
+B1 2 P1 0.5 0 0 A1 0 0 1 R1 1 0 0
+B2 0 P2 2 0 0 A2 0 0 1 R2 1 0 0
+D 1 MOTOR T0 1 W0 1
+D 2 MOTOR T0 1 W0 1
+D 3 MOTOR T0 1 W0 1
+)";
+    const LoadedModel loaded = loadModelText(text, "loop.pad");
+    ASSERT_TRUE(loaded.ok());
+    ASSERT_EQ(loaded.topology->loopJoints.size(), 1u);
+    Diagnostics diags(loaded.spec.file);
+    EXPECT_EQ(compileModel(loaded.spec, *loaded.topology, diags), nullptr);
+    bool driven = false, limits = false;
+    for (const Diagnostic& d : diags) {
+        if (d.code == "loop-joint-driven") {
+            driven = true;
+            EXPECT_EQ(d.severity, Severity::Error);
+            EXPECT_EQ(d.pos.line, 14) << d.format();  // the D 3 line
+            EXPECT_NE(d.message.find("closes a loop"), std::string::npos);
+        }
+        if (d.code == "loop-joint-limits-ignored") {
+            limits = true;
+            EXPECT_EQ(d.severity, Severity::Warning);
+            EXPECT_EQ(d.pos.line, 9) << d.format();
+        }
     }
+    EXPECT_TRUE(driven);
+    EXPECT_TRUE(limits);
 }
 
 TEST(Compile, ModelWithErrorsGivesNothing)

@@ -139,18 +139,5 @@ TEST(ThesisOracle, InitialStatesOfEveryModel)
     }
 }
 
-TEST(ThesisOracle, LoopModelsAreRejected)
-{
-    for (const char* name : {"four_bar.pad", "slider_crank.pad"}) {
-        SCOPED_TRACE(name);
-        const LoadedModel loaded = loadModelFile(test::modelPath(name));
-        ASSERT_TRUE(loaded.ok());
-        Diagnostics diags;
-        EXPECT_EQ(compileLoaded(loaded, diags), nullptr);
-        ASSERT_EQ(diags.errorCount(), 1u);
-        EXPECT_EQ(diags.items().front().code, "loops-not-supported");
-    }
-}
-
 }  // namespace
 }  // namespace solver
