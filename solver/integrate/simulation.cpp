@@ -21,6 +21,9 @@ namespace solver {
 namespace {
 
 constexpr int kRootsPerJoint = 4;  // lower limit, upper limit, relief extending, relief retracting
+// relative: a relief valve opens above (1 + this)·its setting, and closes when the rate
+// passes the commanded rate by this much (relative to 1 + |command|)
+constexpr double kReliefMargin = 1e-8;
 
 bool isHydraulic(const Model& m, int j) { return m.drive[j].type == DriveType::Hydraulic; }
 
@@ -173,11 +176,25 @@ public:
             const double rate = s.qd[j] * model.coordinateRate(j, s.q[j]);  // q̇ in the modeler's coordinate
             switch (s.relief[j]) {
             case ReliefState::Closed:
-                if (std::isfinite(d.fmax)) gj[2] = d.fmax - data.driveForce[j];
-                if (std::isfinite(d.fmin)) gj[3] = d.fmin + data.driveForce[j];
+                // (kReliefMargin: a force that only grazes the setting, rising to it and
+                // falling back within the root finder's tolerance, leaves the valve closed
+                // instead of opening and closing it forever at one instant)
+                if (std::isfinite(d.fmax)) gj[2] = d.fmax * (1 + kReliefMargin) - data.driveForce[j];
+                if (std::isfinite(d.fmin)) gj[3] = d.fmin * (1 + kReliefMargin) + data.driveForce[j];
                 break;
-            case ReliefState::OpenExtending: gj[2] = hydraulicCommandRate(d, s.u[j]) - rate; break;
-            case ReliefState::OpenRetracting: gj[3] = rate - hydraulicCommandRate(d, s.u[j]); break;
+            // (open: closes when the rate is back at the command; the margin keeps g > 0 at
+            // the instant it opened, when the rate still equals the command — a zero there
+            // would be taken for a root at once)
+            case ReliefState::OpenExtending: {
+                const double cmd = hydraulicCommandRate(d, s.u[j]);
+                gj[2] = cmd - rate + kReliefMargin * (1 + std::abs(cmd));
+                break;
+            }
+            case ReliefState::OpenRetracting: {
+                const double cmd = hydraulicCommandRate(d, s.u[j]);
+                gj[3] = rate - cmd + kReliefMargin * (1 + std::abs(cmd));
+                break;
+            }
             }
         }
     }
@@ -448,8 +465,13 @@ void Simulation::prescribeRates()
         m_state.qd[j] = rate;
         any = any || jump[j] != 0;
     }
-    const bool constrained = hasConstraints(m, m_state);
-    if ((!any && !constrained) || free.empty()) return;
+    // with constraints the rates must also satisfy them (after a weld, a projection)
+    bool violated = false;
+    if (hasConstraints(m, m_state) && !free.empty()) {
+        const Eigen::MatrixXd G = constraintJacobianNow();
+        violated = (G * m_state.qd).lpNorm<Eigen::Infinity>() > 1e-12 * (1.0 + m_state.qd.lpNorm<Eigen::Infinity>());
+    }
+    if ((!any && !violated) || free.empty()) return;
     const Eigen::MatrixXd M = massMatrixNow();
     m_state.qd += freeResponse(M, free, -(M * jump), constraintJacobianNow(), m_state.qd);
 }
