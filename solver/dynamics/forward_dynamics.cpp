@@ -200,6 +200,7 @@ void constrainedDynamics(const Model& model, const State& state, Data& data)
         if (model.parent[i] >= 0) data.IA[model.parent[i]] += data.IA[i];
     }
     if (data.M.rows() != n) data.M.resize(n, n);
+    data.M.setZero();  // bodies on different branches do not couple
     for (int i = 0; i < nb; ++i) {
         const Vector6d f = data.IA[i] * data.S[i];
         data.M(i, i) = data.S[i].dot(f);
@@ -270,7 +271,7 @@ void constrainedDynamics(const Model& model, const State& state, Data& data)
             qF += N * z;
         }
         const Eigen::VectorXd excess = MFF * qF - rhs;
-        data.lambda = U.leftCols(r) * sinv.cwiseProduct(V.leftCols(r).transpose() * excess);
+            data.lambda = U.leftCols(r) * sinv.cwiseProduct(V.leftCols(r).transpose() * excess);
         for (Eigen::Index a = 0; a < nF; ++a) data.qdd[F[static_cast<std::size_t>(a)]] = qF[a];
     } else {
         data.constraintSingular.resize(0);
