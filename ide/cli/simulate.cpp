@@ -5,6 +5,7 @@
 #include "ide/cli/simulate.h"
 
 #include "solver/compile/compile.h"
+#include "solver/dynamics/constraints.h"
 #include "solver/integrate/simulation.h"
 #include "solver/io/csv_writer.h"
 #include "solver/io/input_table.h"
@@ -158,8 +159,9 @@ std::string simulateHelp()
               "  --release T:A:B       at time T [s] release the weld of body B to body A;\n"
               "                        repeatable\n"
               "\n"
-              "Columns: t; q<j> for every joint j in id order; qd<j> likewise; ang<j> (the\n"
-              "angle, rad) for every pivoted-actuator (T 1) joint, whose q<j> is the length;\n"
+              "Columns: t; q<j> for every joint j in id order (loop-closing joints too);\n"
+              "qd<j> likewise; ang<j> (the angle, rad) for every pivoted-actuator (T 1)\n"
+              "joint, whose q<j> is the length;\n"
               "x<i> y<i> z<i>, the world position of the centre of mass of every body i;\n"
               "F<j>, the force or torque of every drive; E, the mechanical energy (kinetic +\n"
               "gravitational) [J]. Events (limits hit and left, relief valves opening and\n"
@@ -335,11 +337,26 @@ int runSimulate(const std::vector<std::string>& args)
     for (int j = 0; j < m.nb; ++j) joints[j] = bodies[j] = j;
     std::sort(joints.begin(), joints.end(), [&](int a, int b) { return m.jointId[a] < m.jointId[b]; });
     std::sort(bodies.begin(), bodies.end(), [&](int a, int b) { return m.bodyId[a] < m.bodyId[b]; });
+    // every joint in id order: tree joints (their coordinates) and loop-closing joints
+    // (what they read at the loop's positions)
+    struct JointColumn {
+        int id = 0;
+        int tree = -1;  // tree index, or −1
+        int cut = -1;   // index in m.cuts, or −1
+        solver::JointType type = solver::JointType::Revolute;
+    };
+    std::vector<JointColumn> jointColumns;
+    for (int j : joints) jointColumns.push_back({m.jointId[j], j, -1, m.jointType[j]});
+    for (std::size_t k = 0; k < m.cuts.size(); ++k) {
+        jointColumns.push_back({m.cuts[k].jointId, -1, static_cast<int>(k), m.cuts[k].type});
+    }
+    std::sort(jointColumns.begin(), jointColumns.end(),
+              [](const JointColumn& a, const JointColumn& b) { return a.id < b.id; });
     std::vector<std::string> header{"t"};
-    for (int j : joints) header.push_back("q" + std::to_string(m.jointId[j]));
-    for (int j : joints) header.push_back("qd" + std::to_string(m.jointId[j]));
-    for (int j : joints) {
-        if (m.jointType[j] == solver::JointType::Actuator) header.push_back("ang" + std::to_string(m.jointId[j]));
+    for (const JointColumn& c : jointColumns) header.push_back("q" + std::to_string(c.id));
+    for (const JointColumn& c : jointColumns) header.push_back("qd" + std::to_string(c.id));
+    for (const JointColumn& c : jointColumns) {
+        if (c.type == solver::JointType::Actuator) header.push_back("ang" + std::to_string(c.id));
     }
     for (int b : bodies) {
         const std::string id = std::to_string(m.bodyId[b]);
@@ -383,14 +400,23 @@ int runSimulate(const std::vector<std::string>& args)
     }
 
     std::vector<solver::SimulationEvent> events;
+    std::vector<solver::CutReading> cutReadings;
     auto writeRow = [&] {
         const solver::State& s = sim.state();
         const solver::Data& d = sim.data();
         out.add(s.t);
-        for (int j : joints) out.add(m.coordinate(j, s.q[j]));
-        for (int j : joints) out.add(s.qd[j] * m.coordinateRate(j, s.q[j]));
-        for (int j : joints) {
-            if (m.jointType[j] == solver::JointType::Actuator) out.add(s.q[j]);
+        cutReadings.clear();
+        for (std::size_t k = 0; k < m.cuts.size(); ++k) cutReadings.push_back(solver::readCut(m, d, static_cast<int>(k)));
+        for (const JointColumn& c : jointColumns) {
+            out.add(c.tree >= 0 ? m.coordinate(c.tree, s.q[c.tree]) : cutReadings[static_cast<std::size_t>(c.cut)].q);
+        }
+        for (const JointColumn& c : jointColumns) {
+            out.add(c.tree >= 0 ? s.qd[c.tree] * m.coordinateRate(c.tree, s.q[c.tree])
+                                : cutReadings[static_cast<std::size_t>(c.cut)].qd);
+        }
+        for (const JointColumn& c : jointColumns) {
+            if (c.type != solver::JointType::Actuator) continue;
+            out.add(c.tree >= 0 ? s.q[c.tree] : cutReadings[static_cast<std::size_t>(c.cut)].angle);
         }
         for (int b : bodies) {
             const Eigen::Vector3d c = solver::comPosition(m, d, b);

@@ -251,6 +251,8 @@ std::shared_ptr<const Model> compileModel(const ModelSpec& spec, const Topology&
         cut.body2 = treeOfBody[static_cast<std::size_t>(topo.side2Body[j])];
         cut.X_1 = geometry.side1.pose();
         cut.X_2 = geometry.side2.pose();
+        cut.cl1 = joint.cl1;
+        cut.cl2 = joint.cl2;
         size = std::max({size, cut.X_1.translation().norm(), cut.X_2.translation().norm()});
         m.cuts.push_back(std::move(cut));
     }

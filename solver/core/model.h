@@ -90,6 +90,7 @@ struct CutJoint {
     int body1 = -1, body2 = -1;  ///< tree indices of side 1 (B1) and side 2 (B2); −1 = ground
     Eigen::Isometry3d X_1 = Eigen::Isometry3d::Identity();  ///< joint frame (A, R, T at P1) in body 1's frame
     Eigen::Isometry3d X_2 = Eigen::Isometry3d::Identity();  ///< joint frame at P2 in body 2's frame
+    Eigen::Vector3d cl1 = Eigen::Vector3d::Zero(), cl2 = Eigen::Vector3d::Zero();  ///< T 1: ends, in bodies 1 and 2
 };
 
 struct Model {

@@ -1,6 +1,7 @@
 #include "solver/dynamics/constraints.h"
 
 #include <cassert>
+#include <cmath>
 
 namespace solver {
 
@@ -243,6 +244,41 @@ void constraintJacobian(const Model& model, Data& data, const std::vector<Vector
         });
     }
     assert(row == rows);
+}
+
+CutReading readCut(const Model& model, const Data& data, int k)
+{
+    const CutJoint& c = model.cuts[static_cast<std::size_t>(k)];
+    const Eigen::Isometry3d F1 = worldFrame(data, c.body1, c.X_1);
+    const Eigen::Isometry3d F2 = worldFrame(data, c.body2, c.X_2);
+    const BodyMotion m1 = motionOf(data, nullptr, c.body1);
+    const BodyMotion m2 = motionOf(data, nullptr, c.body2);
+    const Vector3d a1 = F1.linear().col(0), r1 = F1.linear().col(1), r2 = F2.linear().col(1);
+    CutReading out;
+    out.angle = std::atan2(r1.cross(r2).dot(a1), r1.dot(r2));
+    const double angleRate = (m2.w - m1.w).dot(a1);
+    switch (c.type) {
+    case JointType::Prismatic: {
+        const Vector3d delta = F2.translation() - F1.translation();
+        out.q = delta.dot(r1);
+        out.qd = (m2.pointVel(F2.translation()) - m1.pointVel(F1.translation())).dot(r1) + delta.dot(m1.dirVel(r1));
+        out.angle = 0;
+        break;
+    }
+    case JointType::Actuator: {
+        const Vector3d e1 = c.body1 < 0 ? c.cl1 : Vector3d(data.X_wb[c.body1] * c.cl1);
+        const Vector3d e2 = c.body2 < 0 ? c.cl2 : Vector3d(data.X_wb[c.body2] * c.cl2);
+        const Vector3d d = e2 - e1;
+        out.q = d.norm();
+        out.qd = out.q > 0 ? (m2.pointVel(e2) - m1.pointVel(e1)).dot(d) / out.q : 0.0;
+        break;
+    }
+    case JointType::Revolute:
+        out.q = out.angle;
+        out.qd = angleRate;
+        break;
+    }
+    return out;
 }
 
 }  // namespace solver

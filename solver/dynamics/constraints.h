@@ -48,4 +48,14 @@ void constraintResidual(const Model& model, const Data& data, const std::vector<
 /// every body, θ̈ = 0) also data.gamma; pass nullptr to skip it.
 void constraintJacobian(const Model& model, Data& data, const std::vector<Vector6d>* a0);
 
+/// What a loop-closing joint would read as a tree joint, at the positions and
+/// velocities of the last forwardKinematics: its modeler's coordinate q and rate q̇
+/// (revolute: the angle from R1 to R2 about A1 [rad]; prismatic: (P2 − P1)·R1 [m];
+/// T 1: the length |CL2 − CL1| [m]) and, for revolute and T 1 joints, the angle.
+struct CutReading {
+    double q = 0, qd = 0;
+    double angle = 0;
+};
+CutReading readCut(const Model& model, const Data& data, int cut);
+
 }  // namespace solver

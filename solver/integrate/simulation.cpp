@@ -81,12 +81,19 @@ std::string SimulationEvent::describe(const Model& model) const
     const char* unit = unitOf(model.jointType[joint]);
     const char* forceUnit = model.jointType[joint] == JointType::Revolute ? "N m" : "N";
     std::string what;
+    // side is on θ; for a T 1 joint whose length shrinks as its angle grows, the
+    // lower limit on θ is the upper limit on the length the modeler wrote
+    int written = side;
+    if (kind == Kind::LimitHit || kind == Kind::LimitLeave) {
+        const double limit = side < 0 ? model.lower[joint] : model.upper[joint];
+        if (std::isfinite(limit) && model.coordinateRate(joint, limit) < 0) written = -side;
+    }
     switch (kind) {
     case Kind::LimitHit:
-        what = std::string("hit its ") + (side < 0 ? "lower" : "upper") + " limit " + fmt(value) + " " + unit;
+        what = std::string("hit its ") + (written < 0 ? "lower" : "upper") + " limit " + fmt(value) + " " + unit;
         break;
     case Kind::LimitLeave:
-        what = std::string("left its ") + (side < 0 ? "lower" : "upper") + " limit " + fmt(value) + " " + unit;
+        what = std::string("left its ") + (written < 0 ? "lower" : "upper") + " limit " + fmt(value) + " " + unit;
         break;
     case Kind::ReliefOpen:
         what = std::string("relief valve opened ") + (side > 0 ? "extending" : "retracting") + " at " + fmt(value) +

@@ -66,7 +66,10 @@ struct SimulationEvent {
     Kind kind = Kind::LimitHit;
     double t = 0;    ///< [s]
     int joint = 0;   ///< tree index
-    int side = 0;    ///< limits: −1 lower, +1 upper; relief: +1 extending (fmax), −1 retracting (fmin)
+    /// limits: −1 lower, +1 upper limit on θ (for a T 1 joint whose length shrinks as θ
+    /// grows that is the upper limit on its length; describe() says the written one);
+    /// relief: +1 extending (fmax), −1 retracting (fmin)
+    int side = 0;
     double value = 0;  ///< the limit (modeler coordinate) or the relief force [N or N m]
     int body = -1, body2 = -1;  ///< Weld, Release: bodies a and b (tree indices, −1 = ground)
 
