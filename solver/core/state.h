@@ -34,6 +34,12 @@ struct State {
     std::vector<LimitState> limit;  ///< per joint
     std::vector<ReliefState> relief;  ///< per joint (hydraulic drives)
     std::vector<Weld> welds;          ///< welds in force (none at the start)
+    /// Rank of the constraint Jacobian over the free coordinates, as the Simulation
+    /// fixed it at its last mode change (on the constraints, where the redundant rows
+    /// of a planar loop are exactly redundant); the dynamics use that many singular
+    /// values. −1: the dynamics find it from the singular values (above 1e-9 of the
+    /// largest).
+    int constraintRank = -1;
 };
 
 /// The initial state: θ = theta0, θ̇ = thetaDot0, t = 0, u = 0, servo integrals 0,

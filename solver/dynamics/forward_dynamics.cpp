@@ -7,6 +7,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/SVD>
 
+#include <algorithm>
 #include <cassert>
 #include <vector>
 
@@ -257,9 +258,15 @@ void constrainedDynamics(const Model& model, const State& state, Data& data)
         Eigen::JacobiSVD<Eigen::MatrixXd> svd(GF, Eigen::ComputeThinU | Eigen::ComputeFullV);
         data.constraintSingular = svd.singularValues();
         const Eigen::VectorXd& sv = data.constraintSingular;
-        Eigen::Index r = 0;
-        while (r < sv.size() && sv[r] > kRankTolerance * sv[0]) ++r;
-        data.constraintRank = static_cast<int>(r);
+        Eigen::Index numerical = 0;
+        while (numerical < sv.size() && sv[numerical] > kRankTolerance * sv[0]) ++numerical;
+        data.constraintRank = static_cast<int>(numerical);
+        // the rank the simulation fixed at its last mode change, on the constraints: off
+        // them (an integrator's intermediate stage) a redundant row of a planar loop is
+        // no longer exactly redundant, and taking its tiny singular value for a
+        // constraint would give nonsense accelerations
+        Eigen::Index r = state.constraintRank >= 0 ? std::min<Eigen::Index>(state.constraintRank, sv.size()) : numerical;
+        while (r > 0 && !(sv[r - 1] > 0)) --r;
         const auto& U = svd.matrixU();
         const auto& V = svd.matrixV();
         const Eigen::VectorXd sinv = sv.head(r).cwiseInverse();

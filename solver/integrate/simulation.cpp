@@ -227,6 +227,7 @@ private:
             m_work.relief[j] = m_modes.relief[j];
         }
         m_work.welds = m_modes.welds;
+        m_work.constraintRank = m_modes.constraintRank;
     }
 };
 
@@ -576,7 +577,9 @@ void Simulation::applyModeRules(std::vector<SimulationEvent>& events)
             }
         }
         prescribeRates();
+        m_state.constraintRank = -1;  // found anew, here on the constraints
         evaluate();
+        m_state.constraintRank = m_data.constraintRank;
         m_expectedRank = m_data.constraintRank;
         m_system->expectedRank = m_expectedRank;
         System::eventFunctions(m, m_state, m_data, m_options.limits, m_expectedRank, g.data());
@@ -760,6 +763,7 @@ bool Simulation::weld(int a, int b, std::vector<SimulationEvent>& events, std::s
     w.X_ab = X_wa.inverse(Eigen::Isometry) * m_data.X_wb[b];
     m_state.welds.push_back(w);
     // the bodies' relative velocity goes, as in a plastic impact (momentum kept)
+    m_state.constraintRank = -1;  // more rows: found anew at the next mode change
     project(std::vector<char>(static_cast<std::size_t>(m.nb), 0));
     SimulationEvent e;
     e.kind = SimulationEvent::Kind::Weld;
@@ -784,6 +788,7 @@ bool Simulation::release(int a, int b, std::vector<SimulationEvent>& events, std
         return false;
     }
     m_state.welds.erase(it);
+    m_state.constraintRank = -1;
     SimulationEvent e;
     e.kind = SimulationEvent::Kind::Release;
     e.t = m_state.t;

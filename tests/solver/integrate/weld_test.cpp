@@ -7,6 +7,7 @@
 
 #include "solver/integrate/simulation.h"
 #include "solver/kinematics/kinematics.h"
+#include "tests/solver/integrate/statics.h"
 #include "tests/solver/test_models.h"
 
 #include <gtest/gtest.h>
@@ -181,24 +182,6 @@ B2 25 P2 0 0 0 A2 1 0 0 R2 0 1 0
 )";
 }
 
-/// The lift cylinder's (C 2) moment arm about the boom pivot, and the pivot's point
-/// and axis, at the state in `data` (from the joint's geometry alone).
-void liftGeometry(const Model& m, const Data& d, double& arm, Vector3d& pivot, Vector3d& axis)
-{
-    const int j = m.jointIndex(2);
-    const Eigen::Isometry3d F = jointFramePose(m, d, j);
-    pivot = F.translation();
-    axis = F.linear().col(0);
-    // CL1 on B1, CL2 on B2; B1 is the parent unless the joint is written child → parent
-    const int parent = m.parent[j];
-    const int b1 = m.axisSign[j] > 0 ? parent : j;
-    const int b2 = m.axisSign[j] > 0 ? j : parent;
-    auto world = [&](int b, const Vector3d& p) { return b < 0 ? p : Vector3d(d.X_wb[b] * p); };
-    const Vector3d c1 = world(b1, m.cl1[j]), c2 = world(b2, m.cl2[j]);
-    const Vector3d e = (c2 - c1).normalized();
-    arm = std::abs((c2 - pivot).cross(e).dot(axis));
-}
-
 TEST(Welds, AWeldedLinerLoadsTheLiftCylinderByItsMomentAboutTheBoomPivot)
 {
     const auto model = test::compileText(linerStation(), "liner_station.pad");
@@ -224,11 +207,9 @@ TEST(Welds, AWeldedLinerLoadsTheLiftCylinderByItsMomentAboutTheBoomPivot)
     const double after = sim.data().driveForce[m.jointIndex(2)];
 
     // by hand: ΔF · arm = m g · (the liner's lever about the pivot axis)
-    double arm;
-    Vector3d pivot, axis;
-    liftGeometry(m, sim.data(), arm, pivot, axis);
-    const Vector3d weight = 4500 * m.gravity;
-    const double moment = std::abs((grip - pivot).cross(weight).dot(axis));
+    const int lift = m.jointIndex(2);
+    const double arm = test::cylinderArm(m, sim.data(), lift);
+    const double moment = std::abs(test::weightMoment(m, test::jointPivot(m, sim.data(), lift), 4500, grip));
     const double expected = moment / arm;
     EXPECT_GT(after - before, 0.0) << "the cylinder must push harder";
     EXPECT_NEAR(after - before, expected, 1e-6 * expected)
