@@ -6,6 +6,7 @@
 
 #include "solver/compile/compile.h"
 #include "solver/core/model.h"
+#include "solver/integrate/simulation.h"
 #include "solver/model/load.h"
 
 #include <gtest/gtest.h>
@@ -14,6 +15,15 @@
 #include <string>
 
 namespace solver::test {
+
+/// Simulation options: classic RK4 at the fixed step h [s].
+inline SimulationOptions rk4(double h)
+{
+    SimulationOptions o;
+    o.integrator.method = IntegrationMethod::Rk4Fixed;
+    o.integrator.step = h;
+    return o;
+}
 
 /// Path of an example model in the source tree's models/ folder.
 inline std::string modelPath(const std::string& name)

@@ -8,6 +8,8 @@
 #include "solver/kinematics/kinematics.h"
 #include "solver/model/load.h"
 
+#include "tests/solver/test_models.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -27,13 +29,7 @@ std::shared_ptr<const Model> compileCrane()
     return compileLoaded(loaded, d);
 }
 
-SimulationOptions rk4(double h)
-{
-    SimulationOptions o;
-    o.integrator.method = IntegrationMethod::Rk4Fixed;
-    o.integrator.step = h;
-    return o;
-}
+using test::rk4;
 
 constexpr double kG = 9.81;
 

@@ -24,13 +24,7 @@ using Eigen::Vector3d;
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180;
 
-SimulationOptions rk4(double h)
-{
-    SimulationOptions o;
-    o.integrator.method = IntegrationMethod::Rk4Fixed;
-    o.integrator.step = h;
-    return o;
-}
+using test::rk4;
 
 /// Angle of body b's local x axis in the world x-y plane.
 double planarAngle(const Data& d, int b)

@@ -18,13 +18,7 @@ namespace {
 
 using Eigen::Vector3d;
 
-SimulationOptions rk4(double h)
-{
-    SimulationOptions o;
-    o.integrator.method = IntegrationMethod::Rk4Fixed;
-    o.integrator.step = h;
-    return o;
-}
+using test::rk4;
 
 /// Largest gap between the two sides of the loop-closing revolute joints.
 double loopGap(const Simulation& sim)

@@ -8,6 +8,8 @@
 #include "solver/kinematics/kinematics.h"
 #include "solver/model/load.h"
 
+#include "tests/solver/test_models.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -44,13 +46,7 @@ SimulationOptions adaptive(double rtol)
     return o;
 }
 
-SimulationOptions rk4(double h)
-{
-    SimulationOptions o;
-    o.integrator.method = IntegrationMethod::Rk4Fixed;
-    o.integrator.step = h;
-    return o;
-}
+using test::rk4;
 
 /// Complete elliptic integral of the first kind K(k) by the arithmetic-geometric mean.
 double ellipticK(double k)

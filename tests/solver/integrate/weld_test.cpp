@@ -21,13 +21,7 @@ namespace {
 
 using Eigen::Vector3d;
 
-SimulationOptions rk4(double h)
-{
-    SimulationOptions o;
-    o.integrator.method = IntegrationMethod::Rk4Fixed;
-    o.integrator.step = h;
-    return o;
-}
+using test::rk4;
 
 // Two carts on parallel rails along x (no gravity): 2 kg at +1 m/s and 3 kg at −0.5 m/s;
 // a disc of 0.5 kg m² spinning at 4 rad/s beside a coaxial disc of 1.5 kg m² at 0.
