@@ -23,6 +23,11 @@ packages=(
   libassimp-dev
   # Qt (the CLI's QtCore now; widgets, Linguist tools and translations for the apps)
   qt6-base-dev qt6-base-dev-tools qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
+  # padrob-studio: OpenGL widgets (only recommended by qt6-base-dev), charts, the xcb
+  # platform plugin, Mesa's software GL, fonts
+  libqt6opengl6-dev qt6-charts-dev qt6-qpa-plugins libgl1-mesa-dri fonts-dejavu-core
+  # GUI tests: a virtual X server (QOpenGLWidget needs xcb, not `offscreen`)
+  xvfb xauth
   # tests
   libgtest-dev libgmock-dev libbenchmark-dev locales
 )

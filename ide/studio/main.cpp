@@ -1,0 +1,17 @@
+// padrob-studio [MODEL]: the application (see app/main_window.h).
+#include "ide/studio/app/main_window.h"
+
+#include <QApplication>
+
+int main(int argc, char** argv)
+{
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName("Padrob");
+    QApplication::setApplicationName("padrob-studio");
+    QApplication::setApplicationVersion(PADROB_VERSION);
+    studio::MainWindow window;
+    const QStringList args = QApplication::arguments();
+    window.openInitial(args.size() > 1 ? args.at(1) : QString());
+    window.show();
+    return QApplication::exec();
+}

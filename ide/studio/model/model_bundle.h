@@ -1,0 +1,38 @@
+#pragma once
+// ModelBundle: one model that loaded and compiled without errors, shared read-only
+// (std::shared_ptr<const ModelBundle>) by every part of padrob-studio: the
+// viewport (graphics of the spec, frames of the compiled model), the model tree,
+// the plots, the sliders and the solver thread. A model with errors never becomes
+// a bundle: the widgets keep the last good one (DESIGN: nothing half-loaded).
+
+#include "solver/core/model.h"
+#include "solver/model/load.h"
+
+#include <QString>
+
+#include <memory>
+
+namespace studio {
+
+struct ModelBundle {
+    /// The model as written: statements with source positions, graphics (G), names,
+    /// and its topology (chains, loops, independent/dependent joints). ok() is true.
+    std::shared_ptr<const solver::LoadedModel> loaded;
+    /// The compiled model (tree numbering: bodies and joints by tree index).
+    std::shared_ptr<const solver::Model> model;
+    /// The file it came from ("" when never saved): mesh paths are relative to its folder.
+    QString filePath;
+    /// Increases with every bundle made in this process: tells a new model from the same one.
+    quint64 serial = 0;
+
+    const solver::ModelSpec& spec() const { return loaded->spec; }
+    const solver::Topology& topology() const { return *loaded->topology; }
+};
+
+/// Loads and compiles `text` (named `filePath` in diagnostics and for mesh paths).
+/// On success returns the bundle; on errors returns nullptr. Either way every
+/// diagnostic (load and compile) is appended to `diagnostics`.
+std::shared_ptr<const ModelBundle> makeBundle(const QString& text, const QString& filePath,
+                                              solver::Diagnostics& diagnostics);
+
+}  // namespace studio
