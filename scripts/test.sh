@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what Padrob needs, builds it, and runs every test:
-#   1. the default build (RelWithDebInfo) and all its tests;
+#   1. the default build (RelWithDebInfo) and all its tests, the GUI's as real windows
+#      on an X server (a virtual one, Xvfb, when there is no DISPLAY);
 #   2. the solver and its tests again under AddressSanitizer + UBSan (parser fuzzing,
 #      bad input), so memory errors and undefined behaviour fail the run.
 set -euo pipefail
@@ -10,6 +11,21 @@ jobs=${PADROB_JOBS:-2}
 
 cmake --preset default >/dev/null
 cmake --build --preset default -j "$jobs"
+
+# the GUI tests need an X server (QOpenGLWidget does not work with Qt's `offscreen`
+# platform): without a display, start a virtual one for the run
+xvfb_pid=""
+if [ -z "${DISPLAY:-}" ]; then
+  for n in $(seq 90 120); do
+    [ -e "/tmp/.X11-unix/X$n" ] || [ -e "/tmp/.X$n-lock" ] && continue
+    Xvfb ":$n" -screen 0 1920x1080x24 -nolisten tcp >/dev/null 2>&1 &
+    xvfb_pid=$!
+    export DISPLAY=":$n"
+    break
+  done
+  trap '[ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null || true' EXIT
+  for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X${DISPLAY#:}" ] && break; sleep 0.1; done
+fi
 ctest --preset default -j "$jobs"
 
 cmake --preset asan >/dev/null

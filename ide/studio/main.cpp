@@ -1,10 +1,13 @@
 // padrob-studio [MODEL]: the application (see app/main_window.h).
 #include "ide/studio/app/main_window.h"
+#include "ide/studio/view/viewport.h"
 
 #include <QApplication>
+#include <QSurfaceFormat>
 
 int main(int argc, char** argv)
 {
+    QSurfaceFormat::setDefaultFormat(studio::Viewport::surfaceFormat());  // OpenGL 3.3 core, before the app
     QApplication app(argc, argv);
     QApplication::setOrganizationName("Padrob");
     QApplication::setApplicationName("padrob-studio");

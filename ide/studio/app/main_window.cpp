@@ -1,11 +1,589 @@
 #include "ide/studio/app/main_window.h"
 
+#include "ide/studio/dialogs/inertia_dialog.h"
+#include "ide/studio/editor/editor_panel.h"
+#include "ide/studio/plots/plot_panel.h"
+#include "ide/studio/sim/keyboard_input.h"
+#include "ide/studio/sim/simulation_runner.h"
+#include "ide/studio/tree/joint_sliders.h"
+#include "ide/studio/tree/model_tree.h"
+#include "ide/studio/view/viewport.h"
+#include "ide/studio/view/viewport_layout.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStackedWidget>
+#include <QStatusBar>
+#include <QTextBrowser>
+#include <QTimer>
+#include <QToolBar>
+#include <QVBoxLayout>
+
 namespace studio {
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {}
+namespace {
 
-MainWindow::~MainWindow() = default;
+constexpr int kMaxRecent = 8;
 
-void MainWindow::openInitial(const QString& path) { (void)path; }
+QString modelsDir()
+{
+    // next to the executable in an install, else the source tree's
+    const QString installed = QCoreApplication::applicationDirPath() + "/../share/padrob/models";
+    if (QDir(installed).exists()) return QDir(installed).canonicalPath();
+    return QStringLiteral(PADROB_MODELS_DIR);
+}
+
+QString docsDir()
+{
+    const QString installed = QCoreApplication::applicationDirPath() + "/../share/padrob/docs";
+    if (QDir(installed).exists()) return QDir(installed).canonicalPath();
+    return QStringLiteral(PADROB_DOCS_DIR);
+}
+
+/// A page for a workspace that comes with a later issue.
+QWidget* comingPage(const QString& title, const QString& text)
+{
+    auto* page = new QWidget;
+    auto* layout = new QVBoxLayout(page);
+    auto* heading = new QLabel("<h2>" + title.toHtmlEscaped() + "</h2>");
+    auto* body = new QLabel(text);
+    body->setWordWrap(true);
+    layout->addStretch();
+    layout->addWidget(heading, 0, Qt::AlignHCenter);
+    layout->addWidget(body, 0, Qt::AlignHCenter);
+    layout->addStretch();
+    return page;
+}
+
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_runner(std::make_unique<SimulationRunner>())
+{
+    setObjectName("MainWindow");
+    buildWorkspaces();
+    buildMenus();
+
+    // status bar: simulated time, real-time factor and overruns, frame time, model
+    m_timeLabel = new QLabel;
+    m_rtLabel = new QLabel;
+    m_frameLabel = new QLabel;
+    m_modelLabel = new QLabel;
+    statusBar()->addPermanentWidget(m_modelLabel);
+    statusBar()->addPermanentWidget(m_timeLabel);
+    statusBar()->addPermanentWidget(m_rtLabel);
+    statusBar()->addPermanentWidget(m_frameLabel);
+
+    // the operator's keys drive the solver thread
+    m_keyboard = new KeyboardInput(m_runner.get(), this);
+    m_keyboard->attachTo(m_viewports);
+    m_plots->setRunner(m_runner.get());
+    connect(m_plots, &PlotPanel::exportFailed, this,
+            [this](const QString& message) { QMessageBox::warning(this, tr("Export"), message); });
+
+    connect(m_runner.get(), &SimulationRunner::failed, this, &MainWindow::onSimulationFailed);
+    connect(m_runner.get(), &SimulationRunner::stateChanged, this, [this](bool running) {
+        m_runAction->setEnabled(!running);
+        m_pauseAction->setEnabled(running);
+        m_stepAction->setEnabled(!running);
+        m_sliders->setEnabled(!running);
+    });
+
+    m_pollTimer = new QTimer(this);
+    m_pollTimer->setInterval(16);
+    connect(m_pollTimer, &QTimer::timeout, this, &MainWindow::poll);
+    m_pollTimer->start();
+
+    resize(1600, 1000);
+    restoreLayout();
+    updateTitle();
+}
+
+MainWindow::~MainWindow()
+{
+    m_pollTimer->stop();
+    m_runner->pause();
+}
+
+// ---------------------------------------------------------------- layout
+
+void MainWindow::buildWorkspaces()
+{
+    m_workspaces = new QStackedWidget;
+
+    // Model: an inner main window, so the docks belong to this workspace
+    m_modelSpace = new QMainWindow;
+    m_modelSpace->setObjectName("ModelWorkspace");
+    m_modelSpace->setDockNestingEnabled(true);
+    m_viewports = new ViewportLayout;
+    m_modelSpace->setCentralWidget(m_viewports);
+
+    auto dock = [this](const QString& title, const QString& name, QWidget* widget, Qt::DockWidgetArea area) {
+        auto* d = new QDockWidget(title, m_modelSpace);
+        d->setObjectName(name);
+        d->setWidget(widget);
+        m_modelSpace->addDockWidget(area, d);
+        m_docks.append(d);
+        return d;
+    };
+    m_tree = new ModelTree;
+    m_sliders = new JointSliders;
+    m_editor = new EditorPanel;
+    m_plots = new PlotPanel;
+    QDockWidget* treeDock = dock(tr("Model"), "ModelTreeDock", m_tree, Qt::LeftDockWidgetArea);
+    QDockWidget* sliderDock = dock(tr("Joints"), "JointSlidersDock", m_sliders, Qt::LeftDockWidgetArea);
+    m_modelSpace->tabifyDockWidget(treeDock, sliderDock);
+    treeDock->raise();
+    QDockWidget* editorDock = dock(tr("Editor"), "EditorDock", m_editor, Qt::RightDockWidgetArea);
+    QDockWidget* plotsDock = dock(tr("Plots"), "PlotsDock", m_plots, Qt::BottomDockWidgetArea);
+    m_modelSpace->resizeDocks({treeDock, editorDock}, {320, 560}, Qt::Horizontal);
+    m_modelSpace->resizeDocks({plotsDock}, {240}, Qt::Vertical);
+
+    m_workspaces->addWidget(m_modelSpace);
+    m_workspaces->addWidget(comingPage(tr("Station"), tr("Input devices, calibration and valve mapping for the "
+                                                         "operator's station will be set up here.")));
+    m_workspaces->addWidget(comingPage(tr("Train"), tr("Tutorials, scoring and trainee records will be run "
+                                                       "here.")));
+    setCentralWidget(m_workspaces);
+
+    // the mode bar
+    auto* modes = new QToolBar(tr("Workspaces"));
+    modes->setObjectName("WorkspaceBar");
+    modes->setMovable(false);
+    modes->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    addToolBar(Qt::LeftToolBarArea, modes);
+    m_workspaceGroup = new QActionGroup(this);
+    const QStringList names{tr("Model"), tr("Station"), tr("Train")};
+    for (int i = 0; i < names.size(); ++i) {
+        QAction* a = modes->addAction(names[i]);
+        a->setCheckable(true);
+        a->setShortcut(QKeySequence(Qt::CTRL | Qt::Key(Qt::Key_1 + i)));
+        m_workspaceGroup->addAction(a);
+        m_workspaceActions.append(a);
+        connect(a, &QAction::triggered, this, [this, i] { setWorkspace(static_cast<Workspace>(i)); });
+    }
+    m_workspaceActions.front()->setChecked(true);
+
+    // wiring between the parts
+    connect(m_editor, &EditorPanel::applied, this, [this](std::shared_ptr<const ModelBundle> b) { applyBundle(b); });
+    connect(m_editor, &EditorPanel::modificationChanged, this, [this](bool) { updateTitle(); });
+    connect(m_editor, &EditorPanel::diagnosticsChanged, this, [this](int errors, int warnings) {
+        m_modelLabel->setText(errors > 0 ? tr("%n error(s)", nullptr, errors) + (warnings > 0 ? ", " + tr("%n warning(s)", nullptr, warnings) : QString())
+                                         : (warnings > 0 ? tr("%n warning(s)", nullptr, warnings) : tr("no problems")));
+    });
+    connect(m_editor, &EditorPanel::fileChangedOnDisk, this, &MainWindow::onFileChangedOnDisk);
+    connect(m_tree, &ModelTree::bodySelected, this, [this](int body) { m_viewports->setHighlight(body, -1); });
+    connect(m_tree, &ModelTree::jointSelected, this, [this](int joint) { m_viewports->setHighlight(-1, joint); });
+    connect(m_tree, &ModelTree::sourceSelected, this, [this](int line) { m_editor->goToLine(line, 1); });
+    connect(m_sliders, &JointSliders::posesChanged, this,
+            [this](const std::vector<Eigen::Isometry3d>& poses) { m_viewports->setPoses(poses); });
+}
+
+void MainWindow::setWorkspace(Workspace w)
+{
+    const int i = static_cast<int>(w);
+    m_workspaces->setCurrentIndex(i);
+    m_workspaceActions[i]->setChecked(true);
+}
+
+MainWindow::Workspace MainWindow::workspace() const
+{
+    return static_cast<Workspace>(m_workspaces->currentIndex());
+}
+
+void MainWindow::buildMenus()
+{
+    // File
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&New"), QKeySequence::New, this, &MainWindow::newModel);
+    file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::openDialog);
+    file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
+    file->addAction(tr("Save &As…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
+    m_recentMenu = file->addMenu(tr("&Recent Files"));
+    QMenu* examples = file->addMenu(tr("&Examples"));
+    const QFileInfoList models = QDir(modelsDir()).entryInfoList({"*.pad"}, QDir::Files, QDir::Name);
+    for (const QFileInfo& f : models) {
+        examples->addAction(f.completeBaseName(), this, [this, path = f.absoluteFilePath()] {
+            if (maybeSave()) openFile(path);
+        });
+    }
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+    updateRecentMenu();
+
+    // Edit
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    edit->addAction(tr("&Undo"), QKeySequence::Undo, this, [this] { m_editor->undo(); });
+    edit->addAction(tr("&Redo"), QKeySequence::Redo, this, [this] { m_editor->redo(); });
+    edit->addSeparator();
+    edit->addAction(tr("&Apply Model"), QKeySequence(Qt::CTRL | Qt::Key_Return), this, [this] { m_editor->apply(); });
+    edit->addAction(tr("&Inertia Calculator…"), this, &MainWindow::showInertiaDialog);
+
+    // View
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    auto* modes = new QActionGroup(this);
+    const std::pair<QString, DisplayMode> modeList[] = {{tr("&Schematic"), DisplayMode::Schematic},
+                                                        {tr("&Dressed"), DisplayMode::Dressed},
+                                                        {tr("&Both"), DisplayMode::Both}};
+    for (const auto& [name, mode] : modeList) {
+        QAction* a = view->addAction(name, this, [this, mode = mode] { m_viewports->setDisplayMode(mode); });
+        a->setCheckable(true);
+        a->setChecked(mode == DisplayMode::Dressed);
+        modes->addAction(a);
+    }
+    view->addSeparator();
+    QMenu* cameras = view->addMenu(tr("&Camera"));
+    for (const QString& name : Viewport::cameraNames()) {
+        cameras->addAction(Viewport::cameraLabel(name), this, [this, name] { m_viewports->setCamera(name); });
+    }
+    view->addAction(tr("&Fit All"), QKeySequence(Qt::Key_F), this, [this] { m_viewports->fitAll(); });
+    QAction* frames = view->addAction(tr("Body &Frames"));
+    frames->setCheckable(true);
+    connect(frames, &QAction::toggled, this, [this](bool on) { m_viewports->setShowFrames(on); });
+    QMenu* screens = view->addMenu(tr("&Screens"));
+    auto* screenGroup = new QActionGroup(this);
+    for (int n = 1; n <= 3; ++n) {
+        QAction* a = screens->addAction(tr("%n Screen(s)", nullptr, n), this, [this, n] {
+            m_viewports->setSeparateWindows(false);
+            m_viewports->setScreens(n);
+        });
+        a->setCheckable(true);
+        a->setChecked(n == 1);
+        screenGroup->addAction(a);
+    }
+    QAction* separate = screens->addAction(tr("Three &Windows (three monitors)"), this, [this] {
+        m_viewports->setScreens(3);
+        m_viewports->setSeparateWindows(true);
+    });
+    separate->setCheckable(true);
+    screenGroup->addAction(separate);
+    view->addSeparator();
+    for (QDockWidget* d : m_docks) view->addAction(d->toggleViewAction());
+
+    // Simulation
+    QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
+    m_runAction = sim->addAction(tr("&Run"), QKeySequence(Qt::Key_F5), this, &MainWindow::run);
+    m_pauseAction = sim->addAction(tr("&Pause"), QKeySequence(Qt::Key_F6), this, &MainWindow::pause);
+    m_stepAction = sim->addAction(tr("&Step"), QKeySequence(Qt::Key_F10), this, &MainWindow::step);
+    m_resetAction = sim->addAction(tr("R&eset"), QKeySequence(Qt::CTRL | Qt::Key_R), this, &MainWindow::reset);
+    m_pauseAction->setEnabled(false);
+    QMenu* speed = sim->addMenu(tr("S&peed"));
+    m_speedGroup = new QActionGroup(this);
+    for (double s : {0.1, 0.25, 0.5, 1.0, 2.0, 4.0}) {
+        QAction* a = speed->addAction(QStringLiteral("×%1").arg(QLocale().toString(s)), this, [this, s] { setSpeed(s); });
+        a->setCheckable(true);
+        a->setChecked(s == 1.0);
+        m_speedGroup->addAction(a);
+    }
+    sim->addSeparator();
+    sim->addAction(tr("&Keyboard Controls…"), this, [this] {
+        QString text = "<table>";
+        for (const KeyBinding& b : m_keyboard->bindings()) {
+            text += "<tr><td><b>" + b.keysText().toHtmlEscaped() + "</b></td><td>C " + QString::number(b.jointId) + " " +
+                    b.jointName.toHtmlEscaped() + "</td></tr>";
+        }
+        text += "</table>";
+        QMessageBox::information(this, tr("Keyboard Controls"),
+                                 tr("With the 3D view focused, hold a key to open a valve:") + "<br>" + text);
+    });
+
+    // Help
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("Model &Language Reference"), QKeySequence::HelpContents, this, &MainWindow::showLanguageReference);
+    help->addAction(tr("&About Padrob Studio"), this, &MainWindow::showAbout);
+}
+
+// ---------------------------------------------------------------- files
+
+void MainWindow::openInitial(const QString& path)
+{
+    offerRecovery();
+    if (!m_editor->filePath().isEmpty() || m_editor->isModified()) return;  // a recovered model
+    const QString initial = path.isEmpty() ? modelsDir() + "/liner_manipulator.pad" : path;
+    if (!openFile(initial)) m_editor->newModel();
+}
+
+bool MainWindow::openFile(const QString& path)
+{
+    QString error;
+    if (!m_editor->open(path, &error)) {
+        QMessageBox::warning(this, tr("Open Model"), tr("Cannot open %1:\n%2").arg(QDir::toNativeSeparators(path), error));
+        return false;
+    }
+    addRecent(QFileInfo(path).absoluteFilePath());
+    m_editor->apply();  // a model with errors is not applied (the problems list shows them)
+    updateTitle();
+    QTimer::singleShot(0, this, [this] { m_viewports->fitAll(); });
+    return true;
+}
+
+void MainWindow::newModel()
+{
+    if (!maybeSave()) return;
+    m_editor->newModel();
+    updateTitle();
+}
+
+void MainWindow::openDialog()
+{
+    if (!maybeSave()) return;
+    const QString start = m_editor->filePath().isEmpty() ? modelsDir() : QFileInfo(m_editor->filePath()).absolutePath();
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Model"), start, tr("Padrob models (*.pad);;All files (*)"));
+    if (!path.isEmpty()) openFile(path);
+}
+
+bool MainWindow::save()
+{
+    if (m_editor->filePath().isEmpty()) return saveAs();
+    QString error;
+    if (!m_editor->save(&error)) {
+        QMessageBox::warning(this, tr("Save Model"), tr("The model was not saved:\n%1\n\nUse Save As to choose another place.").arg(error));
+        return false;
+    }
+    updateTitle();
+    return true;
+}
+
+bool MainWindow::saveAs()
+{
+    const QString start = m_editor->filePath().isEmpty() ? QDir::homePath() + "/model.pad" : m_editor->filePath();
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save Model As"), start, tr("Padrob models (*.pad)"));
+    if (path.isEmpty()) return false;
+    QString error;
+    if (!m_editor->saveAs(path, &error)) {
+        QMessageBox::warning(this, tr("Save Model"), tr("The model was not saved:\n%1").arg(error));
+        return false;
+    }
+    addRecent(path);
+    updateTitle();
+    return true;
+}
+
+bool MainWindow::maybeSave()
+{
+    if (!m_editor->isModified()) return true;
+    const auto answer = QMessageBox::question(
+        this, tr("Unsaved Changes"), tr("The model has unsaved changes. Save them?"),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Cancel) return false;
+    if (answer == QMessageBox::Save) return save();
+    return true;
+}
+
+void MainWindow::updateRecentMenu()
+{
+    m_recentMenu->clear();
+    const QStringList recent = QSettings().value("recentFiles").toStringList();
+    for (const QString& path : recent) {
+        m_recentMenu->addAction(QDir::toNativeSeparators(path), this, [this, path] {
+            if (maybeSave()) openFile(path);
+        });
+    }
+    m_recentMenu->setEnabled(!recent.isEmpty());
+}
+
+void MainWindow::addRecent(const QString& path)
+{
+    QSettings settings;
+    QStringList recent = settings.value("recentFiles").toStringList();
+    recent.removeAll(path);
+    recent.prepend(path);
+    while (recent.size() > kMaxRecent) recent.removeLast();
+    settings.setValue("recentFiles", recent);
+    updateRecentMenu();
+}
+
+void MainWindow::updateTitle()
+{
+    const QString path = m_editor->filePath();
+    const QString name = path.isEmpty() ? tr("Untitled") : QFileInfo(path).fileName();
+    setWindowTitle(name + (m_editor->isModified() ? "*" : "") + " — Padrob Studio");
+}
+
+void MainWindow::offerRecovery()
+{
+    const QList<EditorPanel::Recovery> copies = EditorPanel::recoveryFiles();
+    for (const EditorPanel::Recovery& r : copies) {
+        const QString what = r.originalPath.isEmpty() ? tr("an untitled model") : QDir::toNativeSeparators(r.originalPath);
+        const auto answer = QMessageBox::question(
+            this, tr("Recover Unsaved Changes"),
+            tr("Padrob Studio was closed with unsaved changes to %1 (recovery copy of %2). Restore them?")
+                .arg(what, QLocale().toString(r.saved, QLocale::ShortFormat)),
+            QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes);
+        if (answer == QMessageBox::Yes) {
+            m_editor->restoreRecovery(r);
+            m_editor->apply();
+            updateTitle();
+            return;
+        }
+        EditorPanel::discardRecovery(r);
+    }
+}
+
+void MainWindow::onFileChangedOnDisk(const QString& path, bool deleted)
+{
+    if (deleted) {
+        statusBar()->showMessage(tr("%1 was deleted or moved on disk; the text in the editor is kept — save it to "
+                                    "write it again.").arg(QDir::toNativeSeparators(path)));
+        return;
+    }
+    const QString question = m_editor->isModified()
+                                 ? tr("%1 changed on disk. Reload it and lose your unsaved changes?")
+                                 : tr("%1 changed on disk. Reload it?");
+    if (QMessageBox::question(this, tr("Model Changed on Disk"), question.arg(QDir::toNativeSeparators(path))) ==
+        QMessageBox::Yes) {
+        m_editor->reload();
+        m_editor->apply();
+    }
+}
+
+// ---------------------------------------------------------------- the model and the simulation
+
+void MainWindow::applyBundle(std::shared_ptr<const ModelBundle> bundle)
+{
+    if (!bundle) return;
+    m_bundle = bundle;
+    m_runner->setBundle(bundle);
+    m_viewports->setBundle(bundle);
+    m_tree->setBundle(bundle);
+    m_sliders->setBundle(bundle);
+    m_shownSerial = bundle->serial;
+    m_shownStep = -1;
+    statusBar()->showMessage(tr("Model applied: %n bodies", nullptr, bundle->model->nb), 4000);
+}
+
+void MainWindow::run()
+{
+    if (!m_bundle) return;
+    m_runner->start();
+}
+
+void MainWindow::pause() { m_runner->pause(); }
+
+void MainWindow::step() { m_runner->stepOnce(); }
+
+void MainWindow::reset()
+{
+    m_runner->reset();
+    m_sliders->reset();
+    m_shownStep = -1;
+}
+
+void MainWindow::setSpeed(double speed) { m_runner->setSpeed(speed); }
+
+void MainWindow::poll()
+{
+    const std::shared_ptr<const Snapshot> s = m_runner->latest();
+    if (s && s->bundle == m_bundle && s->step != m_shownStep) {
+        m_shownStep = s->step;
+        m_viewports->setSnapshot(s);
+        m_timeLabel->setText(tr("t = %1 s").arg(QLocale().toString(s->t, 'f', 3)));
+        m_rtLabel->setText(s->running ? tr("real time ×%1, %2 µs/step, %n overrun(s)", nullptr, static_cast<int>(s->overruns))
+                                              .arg(QLocale().toString(s->realTimeFactor, 'f', 2),
+                                                   QLocale().toString(s->stepMicros, 'f', 0))
+                                        : tr("paused"));
+    }
+    m_frameLabel->setText(tr("frame %1 ms").arg(QLocale().toString(m_viewports->frameMillis(), 'f', 1)));
+}
+
+void MainWindow::onSimulationFailed(const QString& message)
+{
+    statusBar()->showMessage(tr("Simulation stopped: %1").arg(message));
+    // not modal: the editor stays usable (and a test is not blocked)
+    auto* box = new QMessageBox(QMessageBox::Warning, tr("Simulation Stopped"),
+                                tr("%1\n\nThe simulation is paused at the last good state; the editor stays usable. "
+                                   "Reset to start again.").arg(message),
+                                QMessageBox::Ok, this);
+    box->setObjectName("SimulationStoppedBox");
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->setWindowModality(Qt::NonModal);
+    box->show();
+}
+
+// ---------------------------------------------------------------- dialogs
+
+void MainWindow::showInertiaDialog()
+{
+    if (!m_bundle) return;
+    auto* dialog = new InertiaDialog(m_bundle, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setSourceText(m_editor->text());
+    connect(dialog, &InertiaDialog::bLineReady, this, [this](int, const QString& line, int existingLine) {
+        InertiaDialog::applyBLine(m_editor->editor(), existingLine, line);
+    });
+    dialog->show();
+}
+
+void MainWindow::showLanguageReference()
+{
+    auto* dialog = new QDialog(this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setWindowTitle(tr("Model Language Reference"));
+    auto* layout = new QVBoxLayout(dialog);
+    auto* browser = new QTextBrowser;
+    QFile f(docsDir() + "/model-language.md");
+    if (f.open(QIODevice::ReadOnly)) {
+        browser->setMarkdown(QString::fromUtf8(f.readAll()));
+    } else {
+        browser->setPlainText(tr("The reference (docs/model-language.md) was not found at %1.").arg(docsDir()));
+    }
+    layout->addWidget(browser);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close);
+    connect(buttons, &QDialogButtonBox::rejected, dialog, &QDialog::close);
+    layout->addWidget(buttons);
+    dialog->resize(900, 800);
+    dialog->show();
+}
+
+void MainWindow::showAbout()
+{
+    QMessageBox::about(this, tr("About Padrob Studio"),
+                       tr("<h3>Padrob Studio %1</h3><p>Real-time training simulators of heavy machines, built from a "
+                          "model file: bodies, joints, hydraulic drives, forces and graphics.</p>")
+                           .arg(QStringLiteral(PADROB_VERSION)));
+}
+
+// ---------------------------------------------------------------- settings and close
+
+void MainWindow::restoreLayout()
+{
+    QSettings settings;
+    restoreGeometry(settings.value("window/geometry").toByteArray());
+    restoreState(settings.value("window/state").toByteArray());
+    m_modelSpace->restoreState(settings.value("window/modelWorkspace").toByteArray());
+}
+
+void MainWindow::saveLayout()
+{
+    QSettings settings;
+    settings.setValue("window/geometry", saveGeometry());
+    settings.setValue("window/state", saveState());
+    settings.setValue("window/modelWorkspace", m_modelSpace->saveState());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
+    m_runner->pause();
+    saveLayout();
+    m_editor->discardOwnRecovery();
+    event->accept();
+}
 
 }  // namespace studio

@@ -1,11 +1,43 @@
 #pragma once
-// MainWindow: padrob-studio's window. Three workspaces (DESIGN.md): Model (editor,
-// model tree, 3D viewport, plots), Station and Train (their issues). Menus File,
-// Edit, View, Simulation, Help; layout and recent files persist in QSettings.
+// MainWindow: padrob-studio's window (DESIGN.md "layout").
+//
+// A mode bar on the left switches the three workspaces: Model (now), Station and
+// Train (their issues: the pages say so). The Model workspace is an inner main
+// window whose central widget is the 3D viewport layout, with docks for the model
+// tree, the joint sliders, the editor (with its problems list) and the plots; its
+// dock layout and the window geometry persist in QSettings, as do the recent files.
+//
+// Data flow: the editor checks the text as it is typed; "Apply" gives a ModelBundle
+// (only a model without errors) to the viewport, the tree, the sliders, the plots and
+// the solver thread (SimulationRunner), which restarts paused at the model's initial
+// state; a model with errors is never applied, the last good one keeps running. A
+// 60 Hz timer draws the newest snapshot of the solver thread (never blocking it).
+
+#include "ide/studio/model/model_bundle.h"
 
 #include <QMainWindow>
+#include <QPointer>
+
+#include <memory>
+
+class QAction;
+class QActionGroup;
+class QDockWidget;
+class QLabel;
+class QMenu;
+class QStackedWidget;
+class QTimer;
 
 namespace studio {
+
+class EditorPanel;
+class InertiaDialog;
+class JointSliders;
+class KeyboardInput;
+class ModelTree;
+class PlotPanel;
+class SimulationRunner;
+class ViewportLayout;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -13,8 +45,86 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    /// Opens `path`, or the bundled liner manipulator when it is empty.
+    /// Opens `path`, or the bundled liner manipulator when it is empty; offers the
+    /// recovery copies a crash left behind first.
     void openInitial(const QString& path);
+    /// Opens a model file into the editor and applies it when it has no errors.
+    bool openFile(const QString& path);
+
+    // parts, for tests and wiring
+    EditorPanel* editor() const { return m_editor; }
+    ViewportLayout* viewports() const { return m_viewports; }
+    ModelTree* modelTree() const { return m_tree; }
+    JointSliders* sliders() const { return m_sliders; }
+    PlotPanel* plots() const { return m_plots; }
+    SimulationRunner* runner() const { return m_runner.get(); }
+    std::shared_ptr<const ModelBundle> bundle() const { return m_bundle; }
+
+    enum class Workspace { Model, Station, Train };
+    void setWorkspace(Workspace w);
+    Workspace workspace() const;
+
+    /// The simulation menu's actions.
+    void run();
+    void pause();
+    void step();
+    void reset();
+    void setSpeed(double speed);
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
+private:
+    void buildWorkspaces();
+    void buildMenus();
+    void applyBundle(std::shared_ptr<const ModelBundle> bundle);
+    void poll();
+    void updateTitle();
+    void updateRecentMenu();
+    void addRecent(const QString& path);
+    bool maybeSave();  ///< false when the user cancelled
+    bool save();
+    bool saveAs();
+    void newModel();
+    void openDialog();
+    void showLanguageReference();
+    void showAbout();
+    void showInertiaDialog();
+    void offerRecovery();
+    void onSimulationFailed(const QString& message);
+    void onFileChangedOnDisk(const QString& path, bool deleted);
+    void restoreLayout();
+    void saveLayout();
+
+    std::shared_ptr<const ModelBundle> m_bundle;
+    std::unique_ptr<SimulationRunner> m_runner;
+    KeyboardInput* m_keyboard = nullptr;
+
+    QStackedWidget* m_workspaces = nullptr;
+    QMainWindow* m_modelSpace = nullptr;
+    ViewportLayout* m_viewports = nullptr;
+    EditorPanel* m_editor = nullptr;
+    ModelTree* m_tree = nullptr;
+    JointSliders* m_sliders = nullptr;
+    PlotPanel* m_plots = nullptr;
+    QList<QDockWidget*> m_docks;
+    QActionGroup* m_workspaceGroup = nullptr;
+    QList<QAction*> m_workspaceActions;
+
+    QMenu* m_recentMenu = nullptr;
+    QAction* m_runAction = nullptr;
+    QAction* m_pauseAction = nullptr;
+    QAction* m_stepAction = nullptr;
+    QAction* m_resetAction = nullptr;
+    QActionGroup* m_speedGroup = nullptr;
+
+    QLabel* m_timeLabel = nullptr;
+    QLabel* m_rtLabel = nullptr;
+    QLabel* m_frameLabel = nullptr;
+    QLabel* m_modelLabel = nullptr;
+    QTimer* m_pollTimer = nullptr;
+    quint64 m_shownSerial = 0;
+    long m_shownStep = -1;
 };
 
 }  // namespace studio

@@ -1,0 +1,244 @@
+#include "ide/studio/editor/editor_panel.h"
+
+#include "ide/studio/editor/code_editor.h"
+#include "ide/studio/editor/diagnostic_text.h"
+#include "ide/studio/editor/model_checker.h"
+#include "ide/studio/editor/problems_view.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSplitter>
+#include <QStyle>
+#include <QTextDocument>
+#include <QTimer>
+#include <QVBoxLayout>
+
+namespace studio {
+
+EditorPanel::EditorPanel(QWidget* parent) : QWidget(parent)
+{
+    m_editor = new CodeEditor(this);
+    m_document = new ModelDocument(m_editor->document(), this);
+    m_problems = new ProblemsView(this);
+    m_checker = new ModelChecker(this);
+
+    m_status = new QLabel(this);
+    m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_apply = new QPushButton(style()->standardIcon(QStyle::SP_DialogApplyButton), tr("Apply"), this);
+    // (no shortcut here: the main window's Apply Model action has Ctrl+Return)
+    m_apply->setToolTip(tr("Use this model in the 3D view and the simulation"));
+
+    auto* bar = new QHBoxLayout;
+    bar->setContentsMargins(4, 2, 4, 2);
+    bar->addWidget(m_status, 1);
+    bar->addWidget(m_apply);
+    auto* bottom = new QWidget(this);
+    auto* bottomLayout = new QVBoxLayout(bottom);
+    bottomLayout->setContentsMargins(0, 0, 0, 0);
+    bottomLayout->setSpacing(2);
+    bottomLayout->addLayout(bar);
+    bottomLayout->addWidget(m_problems);
+
+    m_splitter = new QSplitter(Qt::Vertical, this);
+    m_splitter->addWidget(m_editor);
+    m_splitter->addWidget(bottom);
+    m_splitter->setStretchFactor(0, 3);
+    m_splitter->setStretchFactor(1, 1);
+    m_splitter->setChildrenCollapsible(false);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_splitter);
+
+    m_debounce = new QTimer(this);
+    m_debounce->setSingleShot(true);
+    m_debounce->setInterval(kDefaultCheckDelayMs);
+
+    connect(m_debounce, &QTimer::timeout, this, &EditorPanel::checkNow);
+    connect(m_editor->document(), &QTextDocument::contentsChange, this, [this](int, int removed, int added) {
+        if (removed || added) textChanged();
+    });
+    connect(m_checker, &ModelChecker::finished, this, [this](const ModelChecker::Result& r) {
+        onChecked(r.revision, r.bundle, r.diagnostics);
+    });
+    connect(m_problems, &ProblemsView::problemActivated, this, &EditorPanel::goToLine);
+    connect(m_apply, &QPushButton::clicked, this, &EditorPanel::apply);
+    connect(m_document, &ModelDocument::modificationChanged, this, &EditorPanel::modificationChanged);
+    // underlines of the old text go before it does (thousands of live cursors slow a big replace)
+    connect(m_document, &ModelDocument::aboutToReplaceText, m_editor, &CodeEditor::clearDiagnostics);
+    connect(m_document, &ModelDocument::fileChangedOnDisk, this, &EditorPanel::fileChangedOnDisk);
+    connect(m_document, &ModelDocument::filePathChanged, this, [this](const QString& path) {
+        // mesh paths are relative to the file: the same text may check differently
+        ++m_revision;
+        checkNow();
+        emit filePathChanged(path);
+    });
+
+    checkNow();
+}
+
+EditorPanel::~EditorPanel()
+{
+    delete m_checker;  // stops its thread before the rest goes
+    m_checker = nullptr;
+}
+
+// ---- text and file ------------------------------------------------------------------
+
+QString EditorPanel::text() const { return m_document->text(); }
+
+void EditorPanel::setText(const QString& text) { m_document->setText(text); }
+
+void EditorPanel::newModel(const QString& text)
+{
+    m_document->newModel(text);
+    checkNow();
+}
+
+bool EditorPanel::open(const QString& path, QString* errorMessage)
+{
+    if (!m_document->open(path, errorMessage)) return false;
+    checkNow();
+    return true;
+}
+
+bool EditorPanel::save(QString* errorMessage) { return m_document->save(errorMessage); }
+
+bool EditorPanel::saveAs(const QString& path, QString* errorMessage) { return m_document->saveAs(path, errorMessage); }
+
+bool EditorPanel::reload(QString* errorMessage)
+{
+    if (!m_document->reload(errorMessage)) return false;
+    checkNow();
+    return true;
+}
+
+QList<EditorPanel::Recovery> EditorPanel::recoveryFiles() { return ModelDocument::recoveryEntries(); }
+
+bool EditorPanel::discardRecovery(const Recovery& recovery) { return ModelDocument::discardRecovery(recovery); }
+
+bool EditorPanel::restoreRecovery(const Recovery& recovery, QString* errorMessage)
+{
+    if (!m_document->restoreRecovery(recovery, errorMessage)) return false;
+    checkNow();
+    return true;
+}
+
+void EditorPanel::discardOwnRecovery() { m_document->removeRecoveryCopy(); }
+
+QString EditorPanel::filePath() const { return m_document->filePath(); }
+
+bool EditorPanel::isModified() const { return m_document->isModified(); }
+
+QString EditorPanel::displayName() const { return m_document->displayName(); }
+
+void EditorPanel::undo() { m_editor->undo(); }
+
+void EditorPanel::redo() { m_editor->redo(); }
+
+void EditorPanel::goToLine(int line, int column) { m_editor->goToLine(line, column); }
+
+// ---- checking -------------------------------------------------------------------------
+
+void EditorPanel::setCheckDelay(int ms) { m_debounce->setInterval(std::max(0, ms)); }
+
+int EditorPanel::checkDelay() const { return m_debounce->interval(); }
+
+bool EditorPanel::isChecking() const { return m_checkedRevision != m_revision; }
+
+std::shared_ptr<const ModelBundle> EditorPanel::checkedBundle() const
+{
+    return m_checkedRevision == m_revision ? m_checked : nullptr;
+}
+
+void EditorPanel::textChanged()
+{
+    ++m_revision;
+    m_refusal.clear();
+    m_debounce->start();
+    updateStatus();
+}
+
+void EditorPanel::checkNow()
+{
+    m_debounce->stop();
+    if (m_requestedRevision == m_revision || m_checkedRevision == m_revision) return;
+    m_requestedRevision = m_revision;
+    m_checker->check(m_revision, m_document->text(), m_document->filePath());
+    updateStatus();
+}
+
+void EditorPanel::onChecked(quint64 revision, std::shared_ptr<const ModelBundle> bundle, const solver::Diagnostics& diags)
+{
+    if (revision != m_revision) return;  // the text changed meanwhile: a newer check follows
+    m_checkedRevision = revision;
+    m_checked = std::move(bundle);
+    m_diagnostics = diags.items();
+    m_errors = int(diags.errorCount());
+    m_warnings = int(diags.warningCount());
+    m_editor->setDiagnostics(m_diagnostics);
+    m_problems->setDiagnostics(m_diagnostics);
+    updateStatus();
+    emit diagnosticsChanged(m_errors, m_warnings);
+    if (std::exchange(m_applyPending, false)) apply();
+}
+
+// ---- apply ---------------------------------------------------------------------------------
+
+void EditorPanel::apply()
+{
+    if (m_checkedRevision != m_revision) {
+        m_applyPending = true;  // after the check of this text
+        checkNow();
+        return;
+    }
+    if (!m_checked) {
+        m_refusal = m_errors > 0
+                        ? tr("Not applied: the model has %n error(s). The model applied before stays in use.", nullptr, m_errors)
+                        : tr("Not applied: the model could not be compiled.");
+        updateStatus();
+        return;
+    }
+    m_refusal.clear();
+    m_lastGood = m_checked;
+    updateStatus();
+    emit applied(m_lastGood);
+}
+
+// ---- status -------------------------------------------------------------------------------
+
+QString EditorPanel::statusText() const { return m_status->text(); }
+
+void EditorPanel::setStatus(const QString& text, const QColor& color)
+{
+    m_status->setText(text);
+    QPalette pal = m_status->palette();
+    pal.setColor(QPalette::WindowText, color.isValid() ? color : palette().color(QPalette::WindowText));
+    m_status->setPalette(pal);
+}
+
+void EditorPanel::updateStatus()
+{
+    const bool current = m_checkedRevision == m_revision;
+    // with errors in the current text there is nothing to apply
+    m_apply->setEnabled(!(current && m_errors > 0));
+    if (!m_refusal.isEmpty()) {
+        setStatus(m_refusal, severityColor(solver::Severity::Error));
+        return;
+    }
+    if (!current && m_requestedRevision == m_revision) {
+        setStatus(tr("Checking…"), QColor());
+        return;
+    }
+    if (m_errors == 0 && m_warnings == 0) {
+        setStatus(current ? tr("No problems") : QString(), QColor());
+        return;
+    }
+    QStringList parts;
+    if (m_errors > 0) parts << tr("%n error(s)", nullptr, m_errors);
+    if (m_warnings > 0) parts << tr("%n warning(s)", nullptr, m_warnings);
+    setStatus(parts.join(QStringLiteral(", ")),
+              severityColor(m_errors > 0 ? solver::Severity::Error : solver::Severity::Warning));
+}
+
+}  // namespace studio

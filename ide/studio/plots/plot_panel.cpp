@@ -1,0 +1,535 @@
+#include "ide/studio/plots/plot_panel.h"
+
+#include "ide/studio/sim/simulation_runner.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QDir>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLegend>
+#include <QLineSeries>
+#include <QPixmap>
+#include <QPushButton>
+#include <QSaveFile>
+#include <QSplitter>
+#include <QTimer>
+#include <QTreeWidget>
+#include <QTreeWidgetItemIterator>
+#include <QValueAxis>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <limits>
+
+namespace studio {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr int kKeyRole = Qt::UserRole + 1;
+
+/// A CSV field, quoted when it must be (RFC 4180).
+QByteArray csvField(const QString& text)
+{
+    QByteArray utf8 = text.toUtf8();
+    if (!utf8.contains(',') && !utf8.contains('"') && !utf8.contains('\n') && !utf8.contains('\r')) return utf8;
+    utf8.replace("\"", "\"\"");
+    return '"' + utf8 + '"';
+}
+
+/// The shortest decimal that reads back to `v` ("" for NaN).
+void appendNumber(QByteArray& out, double v)
+{
+    if (std::isnan(v)) return;
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    out.append(buf, int(r.ptr - buf));
+}
+
+}  // namespace
+
+PlotPanel::PlotPanel(QWidget* parent) : QWidget(parent)
+{
+    auto* split = new QSplitter(Qt::Horizontal, this);
+
+    auto* side = new QWidget(split);
+    auto* sideLayout = new QVBoxLayout(side);
+    sideLayout->setContentsMargins(0, 0, 0, 0);
+    m_list = new QTreeWidget(side);
+    m_list->setHeaderHidden(true);
+    m_list->setToolTip(tr("Tick the signals to plot; each unit gets its own chart."));
+    sideLayout->addWidget(m_list, 1);
+    auto* buttons = new QHBoxLayout;
+    auto* clearButton = new QPushButton(tr("Clear"), side);
+    clearButton->setToolTip(tr("Forget the samples plotted so far"));
+    auto* csvButton = new QPushButton(tr("CSV…"), side);
+    csvButton->setToolTip(tr("Export time and the ticked signals as CSV"));
+    auto* pngButton = new QPushButton(tr("PNG…"), side);
+    pngButton->setToolTip(tr("Save the charts as a PNG image"));
+    buttons->addWidget(clearButton);
+    buttons->addWidget(csvButton);
+    buttons->addWidget(pngButton);
+    sideLayout->addLayout(buttons);
+
+    m_chartArea = new QWidget(split);
+    m_chartLayout = new QVBoxLayout(m_chartArea);
+    m_chartLayout->setContentsMargins(0, 0, 0, 0);
+    m_chartLayout->setSpacing(0);
+    m_placeholder = new QLabel(tr("Tick signals in the list to plot them against time."), m_chartArea);
+    m_placeholder->setAlignment(Qt::AlignCenter);
+    m_placeholder->setWordWrap(true);
+    m_chartLayout->addWidget(m_placeholder, 1);
+
+    split->addWidget(side);
+    split->addWidget(m_chartArea);
+    split->setStretchFactor(0, 0);
+    split->setStretchFactor(1, 1);
+    split->setSizes({260, 740});
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(split);
+
+    m_redrawTimer = new QTimer(this);
+    m_redrawTimer->setInterval(100);
+    connect(m_redrawTimer, &QTimer::timeout, this, [this] {
+        if (m_dirty && isVisible()) refresh();
+    });
+    m_redrawTimer->start();
+    m_pollTimer = new QTimer(this);
+    m_pollTimer->setInterval(16);
+    connect(m_pollTimer, &QTimer::timeout, this, &PlotPanel::poll);
+
+    connect(m_list, &QTreeWidget::itemChanged, this, &PlotPanel::onItemChanged);
+    connect(clearButton, &QPushButton::clicked, this, [this] {
+        clear();
+        refresh();
+    });
+    connect(csvButton, &QPushButton::clicked, this, &PlotPanel::exportCsvInteractive);
+    connect(pngButton, &QPushButton::clicked, this, &PlotPanel::exportPngInteractive);
+}
+
+PlotPanel::~PlotPanel() = default;
+
+void PlotPanel::setBundle(std::shared_ptr<const ModelBundle> bundle)
+{
+    m_bundle = std::move(bundle);
+    m_samples.clear();
+    m_signals.clear();
+    if (m_bundle && m_bundle->model) {
+        const solver::Model& m = *m_bundle->model;
+        std::vector<int> joints(std::size_t(m.nb));
+        for (int i = 0; i < m.nb; ++i) joints[std::size_t(i)] = i;
+        std::sort(joints.begin(), joints.end(),
+                  [&](int a, int b) { return m.jointId[std::size_t(a)] < m.jointId[std::size_t(b)]; });
+        for (int i : joints) {
+            const std::size_t k = std::size_t(i);
+            const int id = m.jointId[k];
+            const QString name = QString::fromStdString(m.jointName[k]);
+            const QString joint = name.isEmpty() ? tr("C %1").arg(id) : tr("C %1 %2").arg(id).arg(name);
+            const bool turns = m.jointType[k] == solver::JointType::Revolute;
+            const QString length = turns ? QStringLiteral("rad") : QStringLiteral("m");
+            const QString rate = turns ? QStringLiteral("rad/s") : QStringLiteral("m/s");
+            const QString force = turns ? QStringLiteral("N m") : QStringLiteral("N");
+            auto add = [&](Kind kind, const QString& prefix, const QString& symbol, const QString& unit) {
+                Signal s;
+                s.kind = kind;
+                s.tree = i;
+                s.key = prefix + QLatin1Char(':') + QString::number(id);
+                s.unit = unit;
+                s.label = QStringLiteral("%1 %2 [%3]").arg(joint, symbol, unit);
+                m_signals.push_back(s);
+            };
+            add(Kind::Q, QStringLiteral("q"), QStringLiteral("q"), length);
+            add(Kind::Qd, QStringLiteral("qd"), QStringLiteral("dq/dt"), rate);
+            if (m.drive[k].type != solver::DriveType::None) add(Kind::Force, QStringLiteral("f"), tr("F drive"), force);
+            add(Kind::Ma, QStringLiteral("Ma"), QStringLiteral("M_A"), QStringLiteral("N m"));
+            add(Kind::Mr, QStringLiteral("Mr"), QStringLiteral("M_R"), QStringLiteral("N m"));
+            add(Kind::Mt, QStringLiteral("Mt"), QStringLiteral("M_T"), QStringLiteral("N m"));
+            add(Kind::Fa, QStringLiteral("Fa"), QStringLiteral("F_A"), QStringLiteral("N"));
+            add(Kind::Fr, QStringLiteral("Fr"), QStringLiteral("F_R"), QStringLiteral("N"));
+            add(Kind::Ft, QStringLiteral("Ft"), QStringLiteral("F_T"), QStringLiteral("N"));
+        }
+        Signal e;
+        e.kind = Kind::Energy;
+        e.key = QStringLiteral("energy");
+        e.unit = QStringLiteral("J");
+        e.label = tr("mechanical energy [J]");
+        m_signals.push_back(e);
+    }
+    const QStringList before = m_selected;
+    m_selected.clear();
+    for (const QString& key : before) {
+        if (indexOf(key) >= 0) m_selected << key;
+    }
+    rebuildList();
+    rebuildCharts();
+    if (before != m_selected) emit selectionChanged();
+}
+
+void PlotPanel::setRunner(SimulationRunner* runner)
+{
+    if (m_runner) disconnect(m_runner, nullptr, this, nullptr);
+    m_runner = runner;
+    m_lastPolled.reset();
+    if (!runner) {
+        m_pollTimer->stop();
+        return;
+    }
+    connect(runner, &SimulationRunner::bundleChanged, this, [this] {
+        if (m_runner) setBundle(m_runner->bundle());
+    });
+    connect(runner, &SimulationRunner::restarted, this, [this] {
+        clear();
+        refresh();
+    });
+    setBundle(runner->bundle());
+    m_pollTimer->start();
+}
+
+void PlotPanel::poll()
+{
+    if (!m_runner) return;
+    std::shared_ptr<const Snapshot> s = m_runner->latest();
+    if (!s || s == m_lastPolled) return;
+    m_lastPolled = s;
+    addSnapshot(*s);
+}
+
+void PlotPanel::addSnapshot(const Snapshot& snapshot)
+{
+    if (!snapshot.bundle) return;
+    if (snapshot.bundle != m_bundle) setBundle(snapshot.bundle);
+    if (!m_samples.empty()) {
+        const double last = m_samples.back().t;
+        if (snapshot.t < last) {
+            clear();  // a reset
+        } else if (snapshot.t == last || snapshot.t - last < m_minInterval) {
+            return;
+        }
+    }
+    auto at = [](const Eigen::VectorXd& v, int i) { return i >= 0 && i < v.size() ? v[i] : kNaN; };
+    Sample sample;
+    sample.t = snapshot.t;
+    sample.values.resize(m_signals.size());
+    for (std::size_t k = 0; k < m_signals.size(); ++k) {
+        const Signal& s = m_signals[k];
+        double v = kNaN;
+        switch (s.kind) {
+        case Kind::Q: v = at(snapshot.q, s.tree); break;
+        case Kind::Qd: v = at(snapshot.qd, s.tree); break;
+        case Kind::Force: v = at(snapshot.driveForce, s.tree); break;
+        case Kind::Ma:
+        case Kind::Mr:
+        case Kind::Mt:
+        case Kind::Fa:
+        case Kind::Fr:
+        case Kind::Ft:
+            if (s.tree >= 0 && std::size_t(s.tree) < snapshot.reactionJoint.size()) {
+                v = snapshot.reactionJoint[std::size_t(s.tree)][int(s.kind) - int(Kind::Ma)];
+            }
+            break;
+        case Kind::Energy: v = snapshot.energy; break;
+        }
+        sample.values[k] = v;
+    }
+    m_samples.push_back(std::move(sample));
+    const double from = snapshot.t - m_window;
+    while (!m_samples.empty() && m_samples.front().t < from) m_samples.pop_front();
+    m_dirty = true;
+}
+
+void PlotPanel::clear()
+{
+    m_samples.clear();
+    m_dirty = true;
+}
+
+QStringList PlotPanel::signalKeys() const
+{
+    QStringList keys;
+    for (const Signal& s : m_signals) keys << s.key;
+    return keys;
+}
+
+int PlotPanel::indexOf(const QString& key) const
+{
+    for (std::size_t k = 0; k < m_signals.size(); ++k) {
+        if (m_signals[k].key == key) return int(k);
+    }
+    return -1;
+}
+
+QString PlotPanel::signalLabel(const QString& key) const
+{
+    const int k = indexOf(key);
+    return k < 0 ? QString() : m_signals[std::size_t(k)].label;
+}
+
+QString PlotPanel::signalUnit(const QString& key) const
+{
+    const int k = indexOf(key);
+    return k < 0 ? QString() : m_signals[std::size_t(k)].unit;
+}
+
+void PlotPanel::setSignalSelected(const QString& key, bool selected)
+{
+    if (indexOf(key) < 0 || m_selected.contains(key) == selected) return;
+    if (selected) {
+        m_selected << key;
+    } else {
+        m_selected.removeAll(key);
+    }
+    // tick the list to match
+    m_updatingList = true;
+    for (QTreeWidgetItemIterator it(m_list); *it; ++it) {
+        if ((*it)->data(0, kKeyRole).toString() == key) (*it)->setCheckState(0, selected ? Qt::Checked : Qt::Unchecked);
+    }
+    m_updatingList = false;
+    rebuildCharts();
+    emit selectionChanged();
+}
+
+void PlotPanel::onItemChanged(QTreeWidgetItem* item, int column)
+{
+    if (m_updatingList || column != 0) return;
+    const QString key = item->data(0, kKeyRole).toString();
+    if (!key.isEmpty()) setSignalSelected(key, item->checkState(0) == Qt::Checked);
+}
+
+void PlotPanel::rebuildList()
+{
+    m_updatingList = true;
+    m_list->clear();
+    QTreeWidgetItem* group = nullptr;
+    int groupTree = -2;
+    for (const Signal& s : m_signals) {
+        QTreeWidgetItem* item = nullptr;
+        if (s.kind == Kind::Energy) {
+            item = new QTreeWidgetItem(m_list, {tr("Mechanical energy [J]")});
+        } else {
+            if (s.tree != groupTree) {
+                const solver::Model& m = *m_bundle->model;
+                const std::size_t k = std::size_t(s.tree);
+                const QString name = QString::fromStdString(m.jointName[k]);
+                group = new QTreeWidgetItem(m_list, {name.isEmpty() ? tr("C %1").arg(m.jointId[k])
+                                                                    : tr("C %1 %2").arg(m.jointId[k]).arg(name)});
+                group->setFlags(Qt::ItemIsEnabled);
+                groupTree = s.tree;
+            }
+            QString text;
+            switch (s.kind) {
+            case Kind::Q: text = tr("coordinate q [%1]"); break;
+            case Kind::Qd: text = tr("rate dq/dt [%1]"); break;
+            case Kind::Force: text = tr("drive force [%1]"); break;
+            case Kind::Ma: text = tr("reaction moment about A [%1]"); break;
+            case Kind::Mr: text = tr("reaction moment about R [%1]"); break;
+            case Kind::Mt: text = tr("reaction moment about T [%1]"); break;
+            case Kind::Fa: text = tr("reaction force along A [%1]"); break;
+            case Kind::Fr: text = tr("reaction force along R [%1]"); break;
+            case Kind::Ft: text = tr("reaction force along T [%1]"); break;
+            case Kind::Energy: break;
+            }
+            item = new QTreeWidgetItem(group, {text.arg(s.unit)});
+        }
+        item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
+        item->setData(0, kKeyRole, s.key);
+        item->setToolTip(0, s.label);
+        item->setCheckState(0, m_selected.contains(s.key) ? Qt::Checked : Qt::Unchecked);
+        if (group && m_selected.contains(s.key)) group->setExpanded(true);
+    }
+    m_updatingList = false;
+}
+
+void PlotPanel::rebuildCharts()
+{
+    for (Chart& c : m_charts) delete c.view;  // (owns its chart, axes and series)
+    m_charts.clear();
+    for (const QString& key : m_selected) {
+        const int k = indexOf(key);
+        const Signal& s = m_signals[std::size_t(k)];
+        auto chart = std::find_if(m_charts.begin(), m_charts.end(), [&](const Chart& c) { return c.unit == s.unit; });
+        if (chart == m_charts.end()) {
+            Chart c;
+            c.unit = s.unit;
+            auto* qchart = new QChart;
+            qchart->setAnimationOptions(QChart::NoAnimation);
+            qchart->legend()->setAlignment(Qt::AlignTop);
+            qchart->setMargins(QMargins(4, 4, 4, 4));
+            c.x = new QValueAxis;
+            c.x->setTitleText(tr("t [s]"));
+            c.x->setLabelFormat(QStringLiteral("%.1f"));
+            c.y = new QValueAxis;
+            c.y->setTitleText(s.unit);
+            c.y->setLabelFormat(QStringLiteral("%.6g"));
+            qchart->addAxis(c.x, Qt::AlignBottom);
+            qchart->addAxis(c.y, Qt::AlignLeft);
+            c.view = new QChartView(qchart, m_chartArea);
+            c.view->setMinimumHeight(150);
+            m_chartLayout->addWidget(c.view, 1);
+            m_charts.push_back(c);
+            chart = m_charts.end() - 1;
+        }
+        auto* series = new QLineSeries;
+        series->setName(s.label);
+        chart->view->chart()->addSeries(series);
+        series->attachAxis(chart->x);
+        series->attachAxis(chart->y);
+        chart->signalIndices.push_back(k);
+        chart->series.push_back(series);
+    }
+    m_placeholder->setVisible(m_charts.empty());
+    refresh();
+}
+
+QLineSeries* PlotPanel::series(const QString& key) const
+{
+    const int k = indexOf(key);
+    for (const Chart& c : m_charts) {
+        for (std::size_t i = 0; i < c.signalIndices.size(); ++i) {
+            if (c.signalIndices[i] == k) return c.series[i];
+        }
+    }
+    return nullptr;
+}
+
+void PlotPanel::refresh()
+{
+    m_dirty = false;
+    const std::size_t n = m_samples.size();
+    double x0 = 0, x1 = m_window;
+    if (n > 0) {
+        const double first = m_samples.front().t, last = m_samples.back().t;
+        x0 = last - first < m_window ? first : last - m_window;
+        x1 = x0 + m_window;
+    }
+    QList<QPointF> points;
+    points.reserve(qsizetype(std::min<std::size_t>(n, std::size_t(m_maxPoints)) + 2));
+    for (Chart& c : m_charts) {
+        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        for (std::size_t i = 0; i < c.series.size(); ++i) {
+            const std::size_t k = std::size_t(c.signalIndices[i]);
+            points.clear();
+            auto add = [&](std::size_t row) {
+                const double v = m_samples[row].values[k];
+                points.append(QPointF(m_samples[row].t, v));
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
+            };
+            if (n <= std::size_t(m_maxPoints)) {
+                for (std::size_t row = 0; row < n; ++row) {
+                    if (std::isfinite(m_samples[row].values[k])) add(row);
+                }
+            } else {
+                // each bucket's minimum and maximum, in time order
+                const std::size_t buckets = std::size_t(m_maxPoints) / 2;
+                for (std::size_t b = 0; b < buckets; ++b) {
+                    const std::size_t from = b * n / buckets, to = (b + 1) * n / buckets;
+                    std::size_t rmin = to, rmax = to;
+                    for (std::size_t row = from; row < to; ++row) {
+                        const double v = m_samples[row].values[k];
+                        if (!std::isfinite(v)) continue;
+                        if (rmin == to || v < m_samples[rmin].values[k]) rmin = row;
+                        if (rmax == to || v > m_samples[rmax].values[k]) rmax = row;
+                    }
+                    if (rmin == to) continue;
+                    add(std::min(rmin, rmax));
+                    if (rmin != rmax) add(std::max(rmin, rmax));
+                }
+            }
+            c.series[i]->replace(points);
+        }
+        if (!(lo <= hi)) {
+            lo = -1;
+            hi = 1;
+        }
+        const double span = hi - lo;
+        const double pad = span > 0 ? 0.05 * span : (hi == 0 ? 1.0 : 0.05 * std::abs(hi));
+        c.x->setRange(x0, x1);
+        c.y->setRange(lo - pad, hi + pad);
+        c.y->applyNiceNumbers();
+    }
+}
+
+bool PlotPanel::exportCsv(const QString& path)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly)) {
+        m_error = tr("Cannot write %1: %2").arg(QDir::toNativeSeparators(path), file.errorString());
+        return false;
+    }
+    std::vector<std::size_t> columns;
+    QByteArray out = csvField(tr("t [s]"));
+    for (const QString& key : m_selected) {
+        const std::size_t k = std::size_t(indexOf(key));
+        columns.push_back(k);
+        out += ',' + csvField(m_signals[k].label);
+    }
+    out += '\n';
+    for (const Sample& s : m_samples) {
+        appendNumber(out, s.t);
+        for (std::size_t k : columns) {
+            out += ',';
+            appendNumber(out, s.values[k]);
+        }
+        out += '\n';
+    }
+    if (file.write(out) != out.size() || !file.commit()) {
+        m_error = tr("Cannot write %1: %2").arg(QDir::toNativeSeparators(path), file.errorString());
+        return false;
+    }
+    m_error.clear();
+    return true;
+}
+
+bool PlotPanel::exportPng(const QString& path)
+{
+    refresh();
+    const QPixmap image = m_chartArea->grab();
+    if (image.isNull() || !image.save(path, "PNG")) {
+        m_error = tr("Cannot save the image %1").arg(QDir::toNativeSeparators(path));
+        return false;
+    }
+    m_error.clear();
+    return true;
+}
+
+void PlotPanel::exportCsvInteractive()
+{
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Export plots as CSV"), QString(), tr("CSV files (*.csv)"));
+    if (!path.isEmpty() && !exportCsv(path)) emit exportFailed(m_error);
+}
+
+void PlotPanel::exportPngInteractive()
+{
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Save plots as PNG"), QString(), tr("PNG images (*.png)"));
+    if (!path.isEmpty() && !exportPng(path)) emit exportFailed(m_error);
+}
+
+void PlotPanel::setWindow(double seconds)
+{
+    m_window = std::isfinite(seconds) ? std::max(0.1, seconds) : 20.0;
+    if (!m_samples.empty()) {
+        const double from = m_samples.back().t - m_window;
+        while (m_samples.front().t < from) m_samples.pop_front();
+    }
+    m_dirty = true;
+}
+
+void PlotPanel::setMinSampleInterval(double seconds)
+{
+    m_minInterval = std::isfinite(seconds) ? std::max(0.0, seconds) : 0.0;
+}
+
+void PlotPanel::setMaxPoints(int points)
+{
+    m_maxPoints = std::max(10, points);
+    m_dirty = true;
+}
+
+}  // namespace studio

@@ -1,0 +1,155 @@
+#pragma once
+// PlotPanel: live plots of a simulation against time (QtCharts). The user ticks
+// signals in a list — for every tree joint its coordinate q, its rate q̇, its drive's
+// force (driven joints) and the six reaction components in the joint's axes (A, R,
+// T), and the mechanical energy — and sees them while the machine moves: one chart
+// per unit (rad, m, N, N m, …), several signals in a chart, stacked. (The rate is
+// written dq/dt: the fonts of a bare X server do not draw a combining dot.)
+//
+// Data: fed by addSnapshot() (or by setRunner(), which polls the runner's latest()
+// at 60 Hz). Every signal's history is kept, not only the ticked ones', so a signal
+// ticked later shows its past at once; only the last window() seconds are kept
+// (default 20 s), at most one sample per minSampleInterval(). A snapshot earlier than
+// the last (a reset) or of another model clears the history. The charts are redrawn
+// at 10 Hz with at most maxPoints() points per series: longer histories are reduced
+// to each bucket's minimum and maximum, so peaks survive and llvmpipe keeps up.
+//
+// Signals are named by stable keys: "q:J", "qd:J", "f:J", "Ma:J", "Mr:J", "Mt:J",
+// "Fa:J", "Fr:J", "Ft:J" for the joint with id J (C J), and "energy"; a new model
+// keeps the ticks of the keys it still has.
+//
+// Export: exportCsv() writes t and the ticked signals (every kept sample, shortest
+// round-trip decimals, "." as the decimal point); exportPng() the charts as shown.
+
+#include "ide/studio/model/model_bundle.h"
+#include "ide/studio/sim/snapshot.h"
+
+#include <QPointer>
+#include <QString>
+#include <QStringList>
+#include <QWidget>
+
+#include <deque>
+#include <memory>
+#include <vector>
+
+QT_BEGIN_NAMESPACE
+class QChartView;
+class QLabel;
+class QLineSeries;
+class QTimer;
+class QTreeWidget;
+class QTreeWidgetItem;
+class QValueAxis;
+class QVBoxLayout;
+QT_END_NAMESPACE
+
+namespace studio {
+
+class SimulationRunner;
+
+class PlotPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit PlotPanel(QWidget* parent = nullptr);
+    ~PlotPanel() override;
+
+    /// The model whose signals are listed; clears the history. Ticks of keys the new
+    /// model also has stay.
+    void setBundle(std::shared_ptr<const ModelBundle> bundle);
+    /// Follows `runner`: its model (bundleChanged), its resets (clear), and its newest
+    /// snapshot, polled at 60 Hz. nullptr: stops following.
+    void setRunner(SimulationRunner* runner);
+
+    /// Adds one sample (ignored when less than minSampleInterval() after the last).
+    void addSnapshot(const Snapshot& snapshot);
+    /// Forgets the history (the list and the ticks stay).
+    void clear();
+
+    /// Every signal of the model, in list order.
+    QStringList signalKeys() const;
+    /// "C 2 LEVANTE PLUMA q [m]" (as in the legend and the CSV header); "" for an unknown key.
+    QString signalLabel(const QString& key) const;
+    /// "m", "rad/s", "N", "N m", "J"…
+    QString signalUnit(const QString& key) const;
+    void setSignalSelected(const QString& key, bool selected);
+    /// The ticked signals, in the order they were ticked.
+    QStringList selectedSignals() const { return m_selected; }
+
+    void setWindow(double seconds);  ///< history kept and shown [s] (≥ 0.1)
+    double window() const { return m_window; }
+    void setMinSampleInterval(double seconds);  ///< default 4 ms
+    double minSampleInterval() const { return m_minInterval; }
+    void setMaxPoints(int points);  ///< per series on screen (≥ 10; default 1000)
+    int maxPoints() const { return m_maxPoints; }
+
+    int sampleCount() const { return int(m_samples.size()); }
+    /// Charts on screen (one per unit of the ticked signals).
+    int chartCount() const { return int(m_charts.size()); }
+    /// The series of a ticked signal (nullptr otherwise): its points after refresh().
+    QLineSeries* series(const QString& key) const;
+    /// Redraws now (it happens by itself at 10 Hz when new samples came).
+    void refresh();
+
+    /// Writes t and the ticked signals to `path`. False (errorString()) on I/O errors.
+    bool exportCsv(const QString& path);
+    /// Saves the charts as shown to `path` (PNG). False (errorString()) on errors.
+    bool exportPng(const QString& path);
+    QString errorString() const { return m_error; }
+
+signals:
+    void selectionChanged();
+    /// An export from the panel's own buttons failed (for the window to show).
+    void exportFailed(const QString& message);
+
+private:
+    enum class Kind { Q, Qd, Force, Ma, Mr, Mt, Fa, Fr, Ft, Energy };
+    struct Signal {
+        QString key, label, unit;
+        Kind kind = Kind::Q;
+        int tree = -1;  // tree joint
+    };
+    struct Sample {
+        double t = 0;
+        std::vector<double> values;  // per signal (m_signals order)
+    };
+    struct Chart {
+        QString unit;
+        QChartView* view = nullptr;
+        QValueAxis* x = nullptr;
+        QValueAxis* y = nullptr;
+        std::vector<int> signalIndices;
+        std::vector<QLineSeries*> series;
+    };
+
+    int indexOf(const QString& key) const;
+    void rebuildList();
+    void rebuildCharts();
+    void onItemChanged(QTreeWidgetItem* item, int column);
+    void poll();
+    void exportCsvInteractive();
+    void exportPngInteractive();
+
+    std::shared_ptr<const ModelBundle> m_bundle;
+    std::vector<Signal> m_signals;
+    QStringList m_selected;
+    std::deque<Sample> m_samples;
+    std::vector<Chart> m_charts;
+    double m_window = 20;
+    double m_minInterval = 0.004;
+    int m_maxPoints = 1000;
+    bool m_dirty = false;
+    bool m_updatingList = false;
+    QString m_error;
+
+    QPointer<SimulationRunner> m_runner;
+    std::shared_ptr<const Snapshot> m_lastPolled;
+    QTimer* m_pollTimer = nullptr;
+    QTimer* m_redrawTimer = nullptr;
+    QTreeWidget* m_list = nullptr;
+    QWidget* m_chartArea = nullptr;
+    QVBoxLayout* m_chartLayout = nullptr;
+    QLabel* m_placeholder = nullptr;
+};
+
+}  // namespace studio

@@ -1,0 +1,43 @@
+#version 330 core
+// Key light from the upper left, a cool fill from the right, and a hemisphere
+// ambient (brighter from the sky) so that faces turned differently read differently.
+// The side facing the viewer is lit, whatever the triangles' winding.
+in vec3 vNormal;
+in vec3 vColor;
+in vec3 vEye;
+in vec3 vWorld;
+
+uniform int uLit;            // 0: flat colour (grid lines)
+uniform vec4 uTint;          // rgb, and how much of it replaces the colour (highlight)
+uniform float uAlpha;
+uniform vec3 uUpEye;         // world up (z) in eye space
+uniform vec2 uFadeCentre;    // grid fade: centre (world x, y)
+uniform float uFadeRadius;   // 0: no fade
+
+out vec4 fragColor;
+
+void main()
+{
+    vec3 base = mix(vColor, uTint.rgb, uTint.a);
+    vec3 color = base;
+    if (uLit != 0) {
+        vec3 n = normalize(vNormal);
+        vec3 v = normalize(-vEye);
+        if (dot(n, v) < 0.0) n = -n;
+        vec3 key = normalize(vec3(-0.45, 0.60, 0.66));
+        vec3 fill = normalize(vec3(0.75, -0.15, 0.45));
+        float hemi = 0.5 + 0.5 * dot(n, normalize(uUpEye));
+        vec3 ambient = mix(vec3(0.16, 0.15, 0.14), vec3(0.30, 0.31, 0.34), hemi);
+        float diffuse = 0.70 * max(dot(n, key), 0.0);
+        vec3 fillLight = vec3(0.22, 0.24, 0.28) * max(dot(n, fill), 0.0);
+        vec3 h = normalize(key + v);
+        float specular = 0.20 * pow(max(dot(n, h), 0.0), 40.0);
+        color = base * (ambient + vec3(diffuse) + fillLight) + vec3(specular);
+    }
+    float alpha = uAlpha;
+    if (uFadeRadius > 0.0) {
+        float d = length(vWorld.xy - uFadeCentre);
+        alpha *= 1.0 - smoothstep(0.5 * uFadeRadius, uFadeRadius, d);
+    }
+    fragColor = vec4(color, alpha);
+}

@@ -1,0 +1,633 @@
+#include "ide/studio/sim/simulation_runner.h"
+
+#include "solver/integrate/simulation.h"
+
+#include <QMetaObject>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <deque>
+#include <limits>
+#include <mutex>
+#include <string>
+#include <utility>
+
+#include <pthread.h>
+#include <time.h>
+
+namespace studio {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr double kLead = 2e-3;       // a step is computed up to this long before its deadline [s]
+constexpr double kTick = 1e-3;       // shortest interval between two batches [s]
+constexpr double kMaxLag = 0.05;     // further behind than this: stop catching up [s]
+constexpr double kMaxBatch = 0.01;   // longest batch before a snapshot is published [s]
+constexpr double kStatsPeriod = 0.1; // statistics refreshed this often [s]
+constexpr double kStatsWindow = 1.0; // over the last [s]
+constexpr std::size_t kStepSamples = 1 << 15;  // ring of step timings
+
+/// CPU time the calling thread has used [s], or −1 when the platform cannot tell.
+double threadCpuSeconds()
+{
+#if defined(CLOCK_THREAD_CPUTIME_ID)
+    timespec ts{};
+    if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts) == 0) return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+#endif
+    return -1;
+}
+
+/// Median of `v` (reordered); 0 when empty.
+double median(std::vector<float>& v)
+{
+    if (v.empty()) return 0;
+    const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+    std::nth_element(v.begin(), mid, v.end());
+    return *mid;
+}
+
+}  // namespace
+
+// ---- state shared by the GUI thread and the solver thread ----------------------
+
+struct SimulationRunner::Shared {
+    // control: written by the GUI (and by the solver when it fails), read by the
+    // solver between batches; every change bumps controlVersion and notifies `wake`
+    std::mutex control;
+    std::condition_variable wake;
+    std::atomic<unsigned> controlVersion{0};
+    bool stop = false;
+    bool hasSimulation = false;
+    bool running = false;
+    bool failed = false;     // the current simulation failed: stays stopped until replaced
+    int stepRequests = 0;    // stepOnce() calls not yet done
+    double speed = 1;
+    bool pending = false;    // a new simulation (or none) to take over
+    std::unique_ptr<solver::Simulation> pendingSimulation;
+    std::shared_ptr<const ModelBundle> pendingBundle;
+    double pendingStep = kDefaultTimeStep;
+    long pendingGeneration = 0;
+
+    // commands: the newest input snapshot
+    std::mutex commandMutex;
+    std::vector<double> commands;
+    std::atomic<unsigned> commandVersion{0};
+
+    // snapshots: `latest` is replaced only by the generation it belongs to, so that a
+    // step of a replaced simulation cannot overwrite the new one's first snapshot
+    mutable std::mutex snapshotMutex;
+    std::shared_ptr<const Snapshot> latest;
+    long publishGeneration = 0;
+
+    void bump() { controlVersion.fetch_add(1, std::memory_order_release); }
+
+    void publish(std::shared_ptr<const Snapshot> snapshot, long generation)
+    {
+        {
+            std::lock_guard lock(snapshotMutex);
+            if (generation != publishGeneration) return;
+            latest.swap(snapshot);
+        }
+        // the replaced snapshot (in `snapshot`) is freed here, outside the lock
+    }
+};
+
+// ---- the solver thread ---------------------------------------------------------
+
+class SimulationRunner::Worker {
+public:
+    explicit Worker(SimulationRunner& runner) : m_runner(runner), m_shared(*runner.m_shared)
+    {
+        m_stepSamples.resize(kStepSamples);
+        m_scratch.reserve(kStepSamples);
+        m_events.reserve(64);
+    }
+
+    void run()
+    {
+        std::unique_lock lock(m_shared.control);
+        while (!m_shared.stop) {
+            if (m_shared.pending) adopt();
+            const bool wantRun = m_shared.running && m_sim && !m_failed;
+            const int steps = std::exchange(m_shared.stepRequests, 0);
+            const double speed = m_shared.speed;
+            const unsigned version = m_shared.controlVersion.load(std::memory_order_acquire);
+            lock.unlock();
+            m_retired.reset();  // a replaced simulation is freed outside the lock
+
+            Clock::time_point wakeAt = Clock::time_point::max();
+            if (m_sim && !m_failed) {
+                if (wantRun) {
+                    if (!m_running) beginRun(speed);
+                    else if (speed != m_speed) anchor(speed);
+                    wakeAt = runBatch(version);
+                } else {
+                    if (m_running) {
+                        // paused: say so with the state where it stopped
+                        m_running = false;
+                        publish();
+                    }
+                    bool stepped = false;
+                    for (int i = 0; i < steps && !m_failed; ++i) stepped = doStep(false);
+                    if (stepped && !m_failed) publish();
+                }
+            }
+
+            lock.lock();
+            auto changed = [&] {
+                return m_shared.stop || m_shared.controlVersion.load(std::memory_order_acquire) != version;
+            };
+            if (wakeAt == Clock::time_point::max()) {
+                m_shared.wake.wait(lock, changed);
+            } else {
+                m_shared.wake.wait_until(lock, wakeAt, changed);
+            }
+        }
+    }
+
+private:
+    struct StepSample {
+        double end = 0;       // wall time the step ended [s since m_epoch]
+        float compute = 0;    // its compute time [µs]
+        float period = -1;    // since the previous step's end [µs]; −1 for the first of a run
+    };
+    struct RateSample {
+        double wall = 0, sim = 0, cpu = -1;
+    };
+
+    SimulationRunner& m_runner;
+    Shared& m_shared;
+    const Clock::time_point m_epoch = Clock::now();
+
+    std::unique_ptr<solver::Simulation> m_sim, m_retired;
+    std::shared_ptr<const ModelBundle> m_bundle;
+    long m_generation = 0;
+    double m_h = kDefaultTimeStep;
+    long m_step = 0;
+    bool m_failed = false;
+    bool m_running = false;
+    bool m_pullCommands = true;
+    unsigned m_commandVersion = 0;
+
+    // pacing: τ = m_anchorSim + m_speed · (w − m_anchorWall)
+    double m_speed = 1;
+    double m_anchorWall = 0, m_anchorSim = 0;
+    double m_plannedWake = 0;  // when the current batch was due to start [s since m_epoch]
+    long m_overruns = 0;
+    double m_dropped = 0;
+
+    // events
+    std::vector<solver::SimulationEvent> m_events;  // since the last snapshot
+    std::shared_ptr<const std::vector<solver::SimulationEvent>> m_eventLog;
+    long m_eventCount = 0;
+    std::string m_error;
+
+    // statistics
+    std::vector<StepSample> m_stepSamples;  // ring
+    std::size_t m_stepHead = 0, m_stepCount = 0;
+    double m_lastStepEnd = -1;
+    std::vector<float> m_scratch;
+    std::deque<RateSample> m_rates;
+    double m_lastStats = -1e9;
+    double m_realTimeFactor = 0, m_stepMicros = 0, m_periodMicros = 0, m_periodMaxMicros = 0, m_cpuLoad = -1;
+
+    double now() const { return std::chrono::duration<double>(Clock::now() - m_epoch).count(); }
+    Clock::time_point toClock(double wall) const
+    {
+        return m_epoch + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(wall));
+    }
+    /// The wall time at which the end of step k is due [s since m_epoch].
+    double deadline(long k) const { return m_anchorWall + (double(k) * m_h - m_anchorSim) / m_speed; }
+
+    /// Takes over the simulation setBundle() or reset() built (control lock held).
+    void adopt()
+    {
+        m_retired = std::exchange(m_sim, std::move(m_shared.pendingSimulation));
+        m_bundle = std::move(m_shared.pendingBundle);
+        m_h = m_shared.pendingStep;
+        m_generation = m_shared.pendingGeneration;
+        m_shared.pending = false;
+        m_step = 0;
+        m_failed = false;
+        m_running = false;
+        m_pullCommands = true;
+        m_overruns = 0;
+        m_dropped = 0;
+        m_events.clear();
+        m_eventLog = std::make_shared<const std::vector<solver::SimulationEvent>>();
+        m_eventCount = 0;
+        m_error.clear();
+        clearStatistics();
+        m_realTimeFactor = m_stepMicros = m_periodMicros = m_periodMaxMicros = 0;
+        m_cpuLoad = -1;
+    }
+
+    void clearStatistics()
+    {
+        m_stepHead = m_stepCount = 0;
+        m_lastStepEnd = -1;
+        m_rates.clear();
+        m_lastStats = -1e9;
+    }
+
+    /// From paused to running: simulated time starts following the wall clock from here.
+    void beginRun(double speed)
+    {
+        m_running = true;
+        clearStatistics();
+        m_realTimeFactor = 0;
+        anchor(speed);
+        m_rates.push_back({now(), m_sim->state().t, threadCpuSeconds()});
+        m_lastStats = m_rates.back().wall;
+    }
+
+    void anchor(double speed)
+    {
+        m_speed = speed;
+        m_anchorWall = now();
+        m_anchorSim = double(m_step) * m_h;
+        m_plannedWake = m_anchorWall - kTick;
+    }
+
+    /// Runs the steps due now (or until the controls change), publishes, and returns
+    /// when the next batch is due.
+    Clock::time_point runBatch(unsigned version)
+    {
+        const double start = now();
+        // too far behind: carry on from here rather than race to catch up
+        const double lag = start - deadline(m_step + 1);
+        if (lag > kMaxLag) {
+            m_dropped += lag;
+            m_anchorWall = start;
+            m_anchorSim = double(m_step) * m_h;
+            m_plannedWake = start;
+        }
+        bool stepped = false;
+        while (m_shared.controlVersion.load(std::memory_order_acquire) == version) {
+            const double t = now();
+            if (deadline(m_step + 1) - kLead > t || t - start > kMaxBatch) break;
+            if (!doStep(true)) return Clock::time_point::max();
+            stepped = true;
+        }
+        if (stepped) publish();
+        // the next batch: when its first step is due, but at least a tick after this
+        // one was planned (not after it began: a late wake-up must not shift the grid)
+        m_plannedWake = std::max(deadline(m_step + 1) - kLead, m_plannedWake + kTick);
+        return toClock(m_plannedWake);
+    }
+
+    /// Reads the newest commands when they changed (never waits for the GUI).
+    void pullCommands()
+    {
+        if (!m_pullCommands && m_shared.commandVersion.load(std::memory_order_acquire) == m_commandVersion) return;
+        std::unique_lock lock(m_shared.commandMutex, std::try_to_lock);
+        if (!lock.owns_lock()) return;  // the GUI is writing: next step
+        m_commandVersion = m_shared.commandVersion.load(std::memory_order_relaxed);
+        m_pullCommands = false;
+        const int nb = m_sim->model().nb;
+        const auto& u = m_shared.commands;
+        for (int i = 0; i < nb; ++i) m_sim->setCommand(i, std::size_t(i) < u.size() ? u[std::size_t(i)] : 0.0);
+    }
+
+    /// One step; false (and the failure handled) when the simulation failed.
+    bool doStep(bool paced)
+    {
+        pullCommands();
+        const double t0 = now();
+        const bool ok = m_sim->advanceTo(double(m_step + 1) * m_h, m_events, m_error);
+        const double t1 = now();
+        if (!ok) {
+            fail();
+            return false;
+        }
+        ++m_step;
+        StepSample& s = m_stepSamples[m_stepHead];
+        s.end = t1;
+        s.compute = float((t1 - t0) * 1e6);
+        s.period = m_lastStepEnd >= 0 ? float((t1 - m_lastStepEnd) * 1e6) : -1.0f;
+        m_stepHead = (m_stepHead + 1) % kStepSamples;
+        m_stepCount = std::min(m_stepCount + 1, kStepSamples);
+        m_lastStepEnd = paced ? t1 : -1;
+        if (paced && t1 > deadline(m_step)) ++m_overruns;
+        return true;
+    }
+
+    /// Medians over the last second, refreshed every kStatsPeriod.
+    void refreshStatistics()
+    {
+        const double t = now();
+        if (t - m_lastStats < kStatsPeriod) return;
+        m_lastStats = t;
+        const double from = t - kStatsWindow;
+        m_scratch.clear();
+        float periodMax = 0;
+        for (std::size_t i = 0; i < m_stepCount; ++i) {
+            const StepSample& s = m_stepSamples[(m_stepHead + kStepSamples - 1 - i) % kStepSamples];
+            if (s.end < from) break;
+            m_scratch.push_back(s.compute);
+        }
+        if (!m_scratch.empty()) m_stepMicros = median(m_scratch);
+        m_scratch.clear();
+        for (std::size_t i = 0; i < m_stepCount; ++i) {
+            const StepSample& s = m_stepSamples[(m_stepHead + kStepSamples - 1 - i) % kStepSamples];
+            if (s.end < from) break;
+            if (s.period >= 0) {
+                m_scratch.push_back(s.period);
+                periodMax = std::max(periodMax, s.period);
+            }
+        }
+        if (!m_scratch.empty()) {
+            m_periodMicros = median(m_scratch);
+            m_periodMaxMicros = periodMax;
+        }
+        if (m_running) {
+            m_rates.push_back({t, m_sim->state().t, threadCpuSeconds()});
+            while (m_rates.size() > 2 && m_rates[1].wall <= from) m_rates.pop_front();
+            const RateSample& a = m_rates.front();
+            const RateSample& b = m_rates.back();
+            if (b.wall - a.wall > 0.05) {
+                m_realTimeFactor = (b.sim - a.sim) / (b.wall - a.wall);
+                m_cpuLoad = a.cpu >= 0 && b.cpu >= 0 ? (b.cpu - a.cpu) / (b.wall - a.wall) : -1;
+            }
+        }
+    }
+
+    std::shared_ptr<Snapshot> makeSnapshot()
+    {
+        auto snap = captureSnapshot(*m_sim, m_bundle);
+        snap->step = m_step;
+        snap->timeStep = m_h;
+        if (!m_events.empty()) {
+            auto log = std::make_shared<std::vector<solver::SimulationEvent>>();
+            const std::size_t keep = kSnapshotEventLog - std::min(kSnapshotEventLog, m_events.size());
+            const std::size_t old = m_eventLog->size();
+            log->reserve(std::min(kSnapshotEventLog, old + m_events.size()));
+            log->insert(log->end(), m_eventLog->begin() + std::ptrdiff_t(old - std::min(old, keep)), m_eventLog->end());
+            const std::size_t skip = m_events.size() - std::min(kSnapshotEventLog, m_events.size());
+            log->insert(log->end(), m_events.begin() + std::ptrdiff_t(skip), m_events.end());
+            m_eventCount += long(m_events.size());
+            m_eventLog = std::move(log);
+            snap->events = std::move(m_events);
+            m_events.clear();
+        }
+        snap->eventLog = m_eventLog;
+        snap->eventCount = m_eventCount;
+        refreshStatistics();
+        snap->running = m_running;
+        snap->speed = m_running ? m_speed : speedRequested();
+        snap->realTimeFactor = m_running ? m_realTimeFactor : 0;
+        snap->stepMicros = m_stepMicros;
+        snap->stepPeriodMicros = m_periodMicros;
+        snap->stepPeriodMaxMicros = m_periodMaxMicros;
+        snap->cpuLoad = m_cpuLoad;
+        snap->overruns = m_overruns;
+        snap->droppedSeconds = m_dropped;
+        return snap;
+    }
+
+    double speedRequested()
+    {
+        std::lock_guard lock(m_shared.control);
+        return m_shared.speed;
+    }
+
+    void publish() { m_shared.publish(makeSnapshot(), m_generation); }
+
+    /// The simulation failed: publish the last good state with the error, stop, tell the GUI.
+    void fail()
+    {
+        m_failed = true;
+        m_running = false;
+        m_sim->evaluate();  // data at the state the simulation kept (the last good one)
+        auto snap = makeSnapshot();
+        snap->error = m_error;
+        m_shared.publish(std::move(snap), m_generation);
+        {
+            std::lock_guard lock(m_shared.control);
+            if (!m_shared.pending) {  // (else the GUI replaced this simulation already)
+                m_shared.running = false;
+                m_shared.failed = true;
+                m_shared.bump();
+            }
+        }
+        const QString message =
+            SimulationRunner::tr("The simulation stopped: %1").arg(QString::fromStdString(m_error));
+        SimulationRunner* runner = &m_runner;
+        const long generation = m_generation;
+        QMetaObject::invokeMethod(
+            runner, [runner, generation, message] { runner->emitFromSolver(generation, true, message); },
+            Qt::QueuedConnection);
+    }
+};
+
+// ---- the GUI side ----------------------------------------------------------------
+
+SimulationRunner::SimulationRunner(QObject* parent) : QObject(parent), m_shared(std::make_unique<Shared>())
+{
+    m_thread = std::thread([this] {
+        Worker worker(*this);
+        worker.run();
+    });
+#if defined(__linux__)
+    pthread_setname_np(m_thread.native_handle(), "padrob-solver");
+#endif
+}
+
+SimulationRunner::~SimulationRunner()
+{
+    {
+        std::lock_guard lock(m_shared->control);
+        m_shared->stop = true;
+        m_shared->bump();
+    }
+    m_shared->wake.notify_all();
+    if (m_thread.joinable()) m_thread.join();
+}
+
+void SimulationRunner::setBundle(std::shared_ptr<const ModelBundle> bundle)
+{
+    const bool wasRunning = isRunning();
+    m_bundle = std::move(bundle);
+    install(false);
+    if (wasRunning) emit stateChanged(false);
+    emit bundleChanged();
+}
+
+void SimulationRunner::setTimeStep(double seconds)
+{
+    m_timeStep = std::isfinite(seconds) ? std::clamp(seconds, 1e-5, 0.05) : kDefaultTimeStep;
+}
+
+bool SimulationRunner::install(bool keepCommands)
+{
+    std::unique_ptr<solver::Simulation> sim;
+    std::shared_ptr<Snapshot> snap;
+    QString problem;
+    if (m_bundle) {
+        try {
+            solver::SimulationOptions options;
+            options.integrator.method = solver::IntegrationMethod::Rk4Fixed;
+            options.integrator.step = m_timeStep;
+            sim = std::make_unique<solver::Simulation>(m_bundle->model, options);
+            sim->evaluate();
+            snap = captureSnapshot(*sim, m_bundle);
+            snap->timeStep = m_timeStep;
+            snap->speed = speed();
+        } catch (const std::exception& e) {
+            sim.reset();
+            snap.reset();
+            problem = tr("The simulation cannot start: %1").arg(QString::fromStdString(e.what()));
+        }
+    }
+    const std::size_t nb = sim ? std::size_t(sim->model().nb) : 0;
+    {
+        std::lock_guard lock(m_shared->commandMutex);
+        if (!keepCommands) m_shared->commands.assign(nb, 0.0);
+        m_shared->commands.resize(nb, 0.0);
+        m_shared->commandVersion.fetch_add(1, std::memory_order_release);
+    }
+    // publish first, under the new generation: from here on nothing of the old
+    // simulation can replace it
+    long generation = 0;
+    {
+        std::lock_guard lock(m_shared->snapshotMutex);
+        generation = ++m_shared->publishGeneration;
+        m_shared->latest = snap;
+    }
+    {
+        std::lock_guard lock(m_shared->control);
+        m_shared->hasSimulation = sim != nullptr;
+        m_shared->running = false;
+        m_shared->failed = false;
+        m_shared->stepRequests = 0;
+        m_shared->pending = true;
+        m_shared->pendingSimulation = std::move(sim);
+        m_shared->pendingBundle = snap ? m_bundle : nullptr;
+        m_shared->pendingStep = m_timeStep;
+        m_shared->pendingGeneration = generation;
+        m_shared->bump();
+    }
+    m_shared->wake.notify_all();
+    if (!problem.isEmpty()) {
+        emit failed(problem);
+        return false;
+    }
+    return true;
+}
+
+void SimulationRunner::emitFromSolver(long generation, bool stopped, const QString& message)
+{
+    {
+        std::lock_guard lock(m_shared->snapshotMutex);
+        if (generation != m_shared->publishGeneration) return;  // replaced since: old news
+    }
+    if (stopped) emit stateChanged(false);
+    emit failed(message);
+}
+
+void SimulationRunner::start()
+{
+    {
+        std::lock_guard lock(m_shared->control);
+        if (!m_shared->hasSimulation || m_shared->failed || m_shared->running) return;
+        m_shared->running = true;
+        m_shared->bump();
+    }
+    m_shared->wake.notify_all();
+    emit stateChanged(true);
+}
+
+void SimulationRunner::pause()
+{
+    {
+        std::lock_guard lock(m_shared->control);
+        if (!m_shared->running) return;
+        m_shared->running = false;
+        m_shared->bump();
+    }
+    m_shared->wake.notify_all();
+    emit stateChanged(false);
+}
+
+void SimulationRunner::stepOnce()
+{
+    {
+        std::lock_guard lock(m_shared->control);
+        if (!m_shared->hasSimulation || m_shared->failed || m_shared->running) return;
+        ++m_shared->stepRequests;
+        m_shared->bump();
+    }
+    m_shared->wake.notify_all();
+}
+
+void SimulationRunner::reset()
+{
+    const bool wasRunning = isRunning();
+    install(true);
+    if (wasRunning) emit stateChanged(false);
+    emit restarted();
+}
+
+bool SimulationRunner::isRunning() const
+{
+    std::lock_guard lock(m_shared->control);
+    return m_shared->running;
+}
+
+void SimulationRunner::setSpeed(double speed)
+{
+    const double s = std::isfinite(speed) ? std::clamp(speed, kMinSpeed, kMaxSpeed) : 1.0;
+    {
+        std::lock_guard lock(m_shared->control);
+        if (m_shared->speed == s) return;
+        m_shared->speed = s;
+        m_shared->bump();
+    }
+    m_shared->wake.notify_all();
+}
+
+double SimulationRunner::speed() const
+{
+    std::lock_guard lock(m_shared->control);
+    return m_shared->speed;
+}
+
+void SimulationRunner::setCommand(int treeJoint, double u)
+{
+    u = std::isfinite(u) ? std::clamp(u, -1.0, 1.0) : 0.0;
+    std::lock_guard lock(m_shared->commandMutex);
+    if (treeJoint < 0 || std::size_t(treeJoint) >= m_shared->commands.size()) return;
+    if (m_shared->commands[std::size_t(treeJoint)] == u) return;
+    m_shared->commands[std::size_t(treeJoint)] = u;
+    m_shared->commandVersion.fetch_add(1, std::memory_order_release);
+}
+
+void SimulationRunner::setCommands(std::span<const double> u)
+{
+    std::lock_guard lock(m_shared->commandMutex);
+    std::vector<double>& c = m_shared->commands;
+    for (std::size_t i = 0; i < c.size(); ++i) {
+        const double v = i < u.size() ? u[i] : 0.0;
+        c[i] = std::isfinite(v) ? std::clamp(v, -1.0, 1.0) : 0.0;
+    }
+    m_shared->commandVersion.fetch_add(1, std::memory_order_release);
+}
+
+std::vector<double> SimulationRunner::commands() const
+{
+    std::lock_guard lock(m_shared->commandMutex);
+    return m_shared->commands;
+}
+
+std::shared_ptr<const Snapshot> SimulationRunner::latest() const
+{
+    std::lock_guard lock(m_shared->snapshotMutex);
+    return m_shared->latest;
+}
+
+}  // namespace studio

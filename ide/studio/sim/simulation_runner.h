@@ -1,0 +1,131 @@
+#pragma once
+// SimulationRunner: runs one solver::Simulation in its own thread at a fixed step
+// (classic RK4, 1 ms by default), paced to the wall clock, and publishes Snapshots.
+//
+// Threads (DESIGN "The application"; STYLE habit 9):
+//  - The runner is a QObject of the GUI thread: every method below is called there
+//    and every signal is emitted there (the solver thread posts them, queued).
+//  - The solver thread owns the Simulation. setBundle() and reset() build the new
+//    Simulation in the GUI thread, publish its initial snapshot at once and hand it
+//    over; from then on only the solver thread touches it.
+//  - Neither side waits for the other: control calls set a few fields under a mutex
+//    that the solver holds only to read them between batches (never during a step);
+//    commands are written into a small buffer that the solver copies at the start of
+//    each step when they changed (try_lock: if the GUI holds it at that instant the
+//    step uses the previous commands); latest() copies a shared_ptr under a mutex held
+//    for that copy only. (GCC 12's std::atomic<std::shared_ptr> is not lock-free
+//    either — a lock bit in the pointer — and its load() releases that bit with
+//    relaxed order, which ThreadSanitizer reports as a race.)
+//
+// Pacing: simulated time τ follows the wall clock w as τ = τ₀ + speed·(w − w₀). A
+// step's deadline is the wall time at which its end is due. The solver wakes when
+// the next step is due to start — 2 ms before its deadline, but at least 1 ms after
+// the previous wake-up was planned (so at speed > 1 the steps come in batches of a
+// millisecond's worth, and a late wake-up does not shift the schedule) — runs every
+// step due by then, publishes one snapshot, and sleeps on a condition variable
+// (steady clock) until the next wake-up or a control call: a paused runner uses no
+// CPU. A step that ends after its deadline is an overrun. When more than 50 ms
+// behind, the solver stops catching up (the lag is added to droppedSeconds and
+// (τ₀, w₀) move to now): a model too heavy for real time runs slower, publishing
+// every 10 ms, but simulated time never jumps.
+//
+// Determinism: step k (k = 1, 2, …) is advanceTo(k · timeStep) with the commands read
+// just before it, so a run is exactly the same as a plain Simulation advanced step by
+// step with the same commands, whatever the pacing.
+//
+// Failure: when advanceTo() fails (a non-finite state, chattering, a loop locking
+// up) the runner publishes a snapshot of the last good state with `error` set,
+// pauses, and emits failed(). It then stays stopped (start() and stepOnce() do
+// nothing) until reset() or setBundle().
+
+#include "ide/studio/model/model_bundle.h"
+#include "ide/studio/sim/snapshot.h"
+
+#include <QObject>
+#include <QString>
+
+#include <memory>
+#include <span>
+#include <thread>
+#include <vector>
+
+namespace studio {
+
+class SimulationRunner : public QObject {
+    Q_OBJECT
+public:
+    static constexpr double kMinSpeed = 0.1;
+    static constexpr double kMaxSpeed = 4.0;
+    static constexpr double kDefaultTimeStep = 1e-3;  ///< [s]
+
+    explicit SimulationRunner(QObject* parent = nullptr);
+    /// Stops the solver thread (after its current step) and joins it.
+    ~SimulationRunner() override;
+    SimulationRunner(const SimulationRunner&) = delete;
+    SimulationRunner& operator=(const SimulationRunner&) = delete;
+
+    /// A new Simulation of `bundle` at the model's initial state, paused; commands back
+    /// to 0. nullptr: no model (latest() then returns nullptr). Emits bundleChanged(),
+    /// and stateChanged(false) when it was running.
+    void setBundle(std::shared_ptr<const ModelBundle> bundle);
+    std::shared_ptr<const ModelBundle> bundle() const { return m_bundle; }
+
+    /// The fixed step [s] (clamped to 1e-5 … 0.05), used from the next setBundle() or
+    /// reset(). Default kDefaultTimeStep.
+    void setTimeStep(double seconds);
+    double timeStep() const { return m_timeStep; }
+
+    /// Runs, paced to the wall clock. Nothing without a model or after a failure.
+    void start();
+    /// Stops after the current step; the solver then publishes a snapshot with running false.
+    void pause();
+    /// While paused: one more step (queued: several calls give as many steps).
+    void stepOnce();
+    /// Back to the model's initial state (a new Simulation), paused; keeps the commands
+    /// and the speed. Emits restarted(), and stateChanged(false) when it was running.
+    void reset();
+    bool isRunning() const;
+
+    /// Simulated seconds per wall-clock second, clamped to kMinSpeed … kMaxSpeed.
+    void setSpeed(double speed);
+    double speed() const;
+
+    /// Command u in [−1, 1] (clamped; NaN → 0) of tree joint `treeJoint`, read by the
+    /// next step. Out-of-range joints are ignored.
+    void setCommand(int treeJoint, double u);
+    /// All commands at once (element i for tree joint i; missing ones 0): one input
+    /// snapshot, read whole by the next step.
+    void setCommands(std::span<const double> u);
+    /// The commands as last written (dim nb).
+    std::vector<double> commands() const;
+
+    /// The newest snapshot (never blocks on the solver); nullptr without a model.
+    std::shared_ptr<const Snapshot> latest() const;
+
+signals:
+    /// Started, paused (by pause(), reset(), setBundle() or a failure).
+    void stateChanged(bool running);
+    /// The simulation failed or a loop locked up; it is paused, the snapshot of the
+    /// last good state (with Snapshot::error) stays. The message says when and where.
+    void failed(const QString& message);
+    /// setBundle() installed a new model (or none).
+    void bundleChanged();
+    /// reset() went back to the initial state.
+    void restarted();
+
+private:
+    struct Shared;
+    class Worker;
+
+    /// Builds a Simulation of m_bundle, publishes its initial snapshot and hands it to
+    /// the solver thread. False (and failed() emitted) when the Simulation cannot be made.
+    bool install(bool keepCommands);
+    void emitFromSolver(long generation, bool stopped, const QString& message);
+
+    std::shared_ptr<const ModelBundle> m_bundle;
+    double m_timeStep = kDefaultTimeStep;
+    std::unique_ptr<Shared> m_shared;
+    std::thread m_thread;
+};
+
+}  // namespace studio

@@ -1,0 +1,90 @@
+#pragma once
+// MeshBuilder: triangle meshes for the 3D viewport, built on the CPU once per model
+// (no GL here). Every shape of the model language's G statement is tessellated in its
+// shape frame (docs/model-language.md "Graphics": BOX and CYL centred, CONE with its
+// base at the origin, PRISM extruded from 0 to H along z) and placed with the current
+// transform; vertices carry a position, a normal and a colour.
+//
+// Normals are per face (flat) for boxes, prisms, caps and meshes and per vertex
+// (smooth) on round surfaces. Triangle winding is not relied on: the shader lights
+// the side that faces the viewer.
+
+#include "solver/inertia/triangle_mesh.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cstdint>
+#include <vector>
+
+namespace studio {
+
+/// One vertex as the GPU reads it (location 0: position, 1: normal, 2: colour).
+struct MeshVertex {
+    float position[3];
+    float normal[3];
+    float color[3];
+};
+
+class MeshBuilder {
+public:
+    std::vector<MeshVertex> vertices;
+    std::vector<std::uint32_t> indices;  ///< triangles (or line pairs for lines())
+
+    /// Colour of the vertices added from now on (r, g, b in [0, 1]).
+    void setColor(const Eigen::Vector3d& rgb) { m_color = rgb.cast<float>(); }
+    /// Transform applied to the positions added from now on (normals get the inverse
+    /// transpose of its linear part).
+    void setTransform(const Eigen::Affine3d& transform);
+    void resetTransform() { setTransform(Eigen::Affine3d::Identity()); }
+
+    /// Adds a vertex (shape frame) and returns its index.
+    std::uint32_t vertex(const Eigen::Vector3d& p, const Eigen::Vector3d& n);
+    void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c);
+    /// A flat quad a-b-c-d (in order around it) with normal n.
+    void quad(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+              const Eigen::Vector3d& d, const Eigen::Vector3d& n);
+
+    /// Box with full edge lengths `size`, centred at the origin.
+    void box(const Eigen::Vector3d& size);
+    /// Box of square section `width` from `a` to `b` (a bar); nothing when a = b.
+    void bar(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double width);
+    /// Cylinder of radius r along z from z0 to z1, with caps.
+    void cylinder(double r, double z0, double z1, int segments = 32);
+    /// Tube (outer radius ro, inner ri) along z, centred, length l.
+    void tube(double ro, double ri, double l, int segments = 32);
+    /// Ellipsoid with semi-axes a, b, c (a sphere when equal), centred.
+    void ellipsoid(double a, double b, double c, int slices = 32, int stacks = 16);
+    /// Cone: base of radius r at z = 0, apex at z = l.
+    void cone(double r, double l, int segments = 32);
+    /// Prism: the polygon (x, y pairs, either winding, simple) extruded from z = 0 to h.
+    /// False (and nothing added) when it has fewer than 3 vertices or no area.
+    bool prism(double h, const std::vector<double>& xy);
+    /// Every triangle of `mesh` with its own face normal.
+    void triangles(const solver::TriangleMesh& mesh);
+    /// Axes triad: boxes of length 1 and thickness `thickness` along x (red), y (green), z (blue).
+    void triad(double thickness);
+    /// Line segment a-b (for GL_LINES ranges; the normal is unused).
+    void line(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+
+    /// Appends `other` (its indices shifted).
+    void append(const MeshBuilder& other);
+
+    /// Bounds of the vertices added so far (in the frame they were placed in).
+    Eigen::AlignedBox3d bounds() const;
+
+private:
+    Eigen::Vector3f m_color{0.6f, 0.6f, 0.6f};
+    Eigen::Affine3d m_transform = Eigen::Affine3d::Identity();
+    Eigen::Matrix3d m_normalMatrix = Eigen::Matrix3d::Identity();
+};
+
+/// Triangulates a simple polygon (x, y pairs) by ear clipping: index triples into it,
+/// counter-clockwise. Empty when it has fewer than 3 vertices or no area.
+std::vector<int> triangulatePolygon(const std::vector<Eigen::Vector2d>& polygon);
+
+/// The rigid frame whose z axis runs from `a` towards `b`, with its origin at `a`
+/// (x and y perpendicular, any turn about z).
+Eigen::Affine3d frameAlong(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+
+}  // namespace studio

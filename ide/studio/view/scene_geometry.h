@@ -1,0 +1,104 @@
+#pragma once
+// SceneGeometry: everything the viewport draws for one model, built once per
+// ModelBundle on the CPU (no GL) and shared read-only by every viewport showing that
+// bundle (the three screens of a ViewportLayout build it once).
+//
+// All meshes sit in one vertex and one index array; each body has ranges in it, in
+// its own body frame, so a frame draws every body with one model matrix (its pose
+// X_wb) and never rebuilds a buffer. "Slots" number the bodies for drawing: slot 0 is
+// the ground (world frame), slot b + 1 the body of tree index b.
+//
+//  - dressed:   the G statements' shapes in their COLOR (MESH files loaded relative to
+//               the model file's folder; one that fails is a magenta placeholder box
+//               and a message in `problems`).
+//  - schematic: as the thesis draws PADROB's generic mode (§2.3): each body a purple
+//               bar between its joint points (a minimum spanning tree over them; a body
+//               with one joint: a bar from it to the centre of mass), revolute joints
+//               (T 0, T 1) green cylinders along their axis A, prismatic joints (T 2) a
+//               grey rail along R on the parent over the joint's range and a grey
+//               slider on the child, ground joints dark grey anchors. T 1 actuators are
+//               drawn per frame between CL1 and CL2 (they join two bodies).
+
+#include "ide/studio/model/model_bundle.h"
+#include "ide/studio/view/mesh_builder.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <QStringList>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace studio {
+
+/// Indices [first, first + count) of SceneGeometry::mesh.indices.
+struct DrawRange {
+    std::uint32_t first = 0;
+    std::uint32_t count = 0;
+    bool empty() const { return count == 0; }
+};
+
+/// Part of a joint's schematic drawn on one body (to highlight the joint).
+struct JointPiece {
+    int body = -1;  ///< tree index, −1 = ground
+    DrawRange range;
+};
+
+/// A pivoted linear actuator (T 1): a cylinder between CL1 on body1 and CL2 on body2.
+struct ActuatorLine {
+    int joint = -1;  ///< tree index of the joint, −1 for a loop-closing (cut) joint
+    int body1 = -1, body2 = -1;  ///< tree indices, −1 = ground
+    Eigen::Vector3d cl1 = Eigen::Vector3d::Zero(), cl2 = Eigen::Vector3d::Zero();  ///< body-local [m]
+};
+
+struct SceneGeometry {
+    MeshBuilder mesh;  ///< every vertex and index (triangles, and the grid's line pairs)
+    int nb = 0;        ///< moving bodies; slots = nb + 1
+
+    // per slot (dim nb + 1), in the slot's body frame
+    std::vector<DrawRange> dressed;    ///< G shapes
+    std::vector<DrawRange> bars;       ///< schematic body bars (ground: anchors)
+    std::vector<DrawRange> schematic;  ///< bars + the joint marks on this body (contiguous)
+    std::vector<Eigen::AlignedBox3d> bounds;  ///< everything drawn on the slot (empty box: nothing)
+    std::vector<Eigen::AlignedBox3d> schematicBounds;  ///< the schematic drawn on the slot
+
+    std::vector<std::vector<JointPiece>> jointPieces;  ///< per tree joint (dim nb)
+    std::vector<ActuatorLine> actuators;
+
+    DrawRange unitCylinder;  ///< radius 1 along z from 0 to 1 (actuators)
+    DrawRange unitTriad;     ///< axes of length 1 (world axes, body frames)
+    DrawRange grid;          ///< GL_LINES: 1 m cells, every 10th line brighter, at z = gridZ
+
+    double schematicWidth = 0.05;  ///< bar width [m]; the schematic's other sizes follow it
+    double gridZ = 0;       ///< height of the ground grid [m]: 0, or the scene's lowest point
+    double gridExtent = 10; ///< the grid covers |x|, |y| ≤ gridExtent [m]
+
+    Eigen::AlignedBox3d initialBounds;  ///< the whole scene at the initial pose (world)
+    Eigen::Vector3d seatEye = Eigen::Vector3d(0, -5, 2);  ///< default operator seat [m]
+    double seatPitch = -0.3;  ///< its default pitch [rad] (it looks along +y)
+
+    QStringList problems;  ///< meshes that could not be drawn (translated, one line each)
+
+    int slotCount() const { return nb + 1; }
+};
+
+/// The geometry of `bundle` (an empty scene with the grid for nullptr). Built on the
+/// first call for a bundle and shared while any viewport holds it. GUI thread only.
+std::shared_ptr<const SceneGeometry> sceneGeometry(const std::shared_ptr<const ModelBundle>& bundle);
+
+/// Builds the geometry (no cache). `initial` = body poses at the initial state.
+std::shared_ptr<SceneGeometry> buildSceneGeometry(const ModelBundle* bundle,
+                                                  const std::vector<Eigen::Isometry3d>& initial);
+
+/// Body poses X_wb at the model's initial state (solver::makeState + forwardKinematics).
+std::vector<Eigen::Isometry3d> initialPoses(const solver::Model& model);
+
+/// World bounds of everything drawn (dressed and schematic; or the schematic only) with
+/// the bodies at `X_wb` (poses by tree index; the actuators' ends included). Empty box
+/// when nothing is drawn.
+Eigen::AlignedBox3d worldBounds(const SceneGeometry& geometry, const std::vector<Eigen::Isometry3d>& X_wb,
+                                bool schematicOnly = false);
+
+}  // namespace studio

@@ -1,0 +1,186 @@
+#pragma once
+// Viewport: the 3D view of a model (OpenGL 3.3 core profile; runs on Mesa llvmpipe).
+//
+// It draws the bundle's bodies at the poses it is given (by tree index; before any,
+// at the model's initial state), in one of three display modes:
+//  - Schematic: PADROB's generic mode (thesis §2.3): purple bars for bodies, green
+//    cylinders for revolute joints, grey rails and sliders for prismatic joints,
+//    T 1 actuators as a cylinder between CL1 and CL2 (see scene_geometry.h);
+//  - Dressed: the G graphics in their COLOR (bodies without any are drawn as bars);
+//  - Both: dressed, with the schematic drawn over it.
+// Plus a ground grid (1 m cells, every 10 m brighter), the world axes (x red, y green,
+// z blue), the bodies' frames on demand, and a highlighted body and joint.
+//
+// Geometry is built once per bundle (shared between viewports) and uploaded once per
+// GL context; a frame only sets one model matrix per body.
+//
+// Mouse: left drag orbits, middle drag or Shift + left drag pans, the wheel zooms
+// towards the cursor, a double click frames the whole model. Cameras: orbit views
+// "Iso", "Front" (from −y), "Side" (from +x), "Top", and "Operator seat" (a fixed
+// eye, see setOperatorSeat); dragging in the seat view turns it into an orbit view.
+
+#include "ide/studio/model/model_bundle.h"
+#include "ide/studio/sim/snapshot.h"
+#include "ide/studio/view/camera.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <QOpenGLFunctions_3_3_Core>
+#include <QOpenGLWidget>
+#include <QPoint>
+#include <QSurfaceFormat>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+class QOpenGLBuffer;
+class QOpenGLShaderProgram;
+class QOpenGLVertexArrayObject;
+
+namespace studio {
+
+struct SceneGeometry;
+struct DrawRange;
+
+enum class DisplayMode { Schematic, Dressed, Both };
+
+class Viewport : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
+    Q_OBJECT
+public:
+    explicit Viewport(QWidget* parent = nullptr);
+    ~Viewport() override;
+
+    /// The surface format every viewport asks for: OpenGL 3.3 core, depth 24, samples().
+    /// Best also set as the default format before QApplication exists
+    /// (QSurfaceFormat::setDefaultFormat), so all of a window's GL widgets agree.
+    static QSurfaceFormat surfaceFormat();
+    /// Multisampling (antialiasing) of the viewports created from now on: 0 (the
+    /// default) or 2, 4, 8. A software renderer (Mesa llvmpipe) draws a 4× multisampled
+    /// frame about three times slower, so turn it on only with a GPU.
+    static void setSamples(int samples);
+    static int samples();
+
+    /// The model to draw (nullptr: an empty scene). Builds its meshes (once per bundle)
+    /// and draws it at its initial pose until setPoses; frames the camera on a new
+    /// model. Meshes that cannot be drawn are reported through problem(), once.
+    void setBundle(std::shared_ptr<const ModelBundle> bundle);
+    std::shared_ptr<const ModelBundle> bundle() const { return m_bundle; }
+    /// Body poses X_wb by tree index (size Model::nb; other sizes are ignored).
+    void setPoses(const std::vector<Eigen::Isometry3d>& X_wb);
+    const std::vector<Eigen::Isometry3d>& poses() const { return m_poses; }
+    /// The snapshot's poses (and its bundle, when it is another one).
+    void setSnapshot(std::shared_ptr<const Snapshot> snapshot);
+
+    void setDisplayMode(DisplayMode mode);
+    DisplayMode displayMode() const { return m_mode; }
+
+    /// Frames the whole model (all of its bounding box at the current poses, which
+    /// holds its bounding sphere's content), keeping the view direction; the seat
+    /// camera becomes an orbit camera.
+    void fitAll();
+    /// Names accepted by setCamera: "Iso", "Front", "Side", "Top", "Operator seat".
+    static QStringList cameraNames();
+    /// The translated label of a camera name, for menus.
+    static QString cameraLabel(const QString& name);
+    /// Switches to a named camera (orbit views frame the whole model). False for an
+    /// unknown name.
+    bool setCamera(const QString& name);
+    /// The current named camera, or "" after the view was moved by hand.
+    QString camera() const { return m_cameraName; }
+    const Camera& cameraState() const { return m_camera; }
+
+    /// The operator seat: eye [m, world] and view direction (yaw: 0 = +y, positive turns
+    /// right; pitch: positive up) [rad]. Kept across models until resetOperatorSeat().
+    void setOperatorSeat(const Eigen::Vector3d& eye, double yawRad, double pitchRad);
+    /// Back to the default seat: behind and above the model's base, looking along +y.
+    void resetOperatorSeat();
+    /// Turns the seat camera's view by `radians` (positive right), for side screens.
+    void setYawOffset(double radians);
+    double yawOffset() const { return m_camera.yawOffset; }
+    /// Horizontal field of view of the seat camera [rad] (default 60°).
+    void setSeatFieldOfView(double radians);
+
+    void setShowFrames(bool show);
+    bool showFrames() const { return m_showFrames; }
+    void setShowGrid(bool show);
+    bool showGrid() const { return m_showGrid; }
+    /// Highlights a body and a joint (tree indices; −1 none), e.g. the model tree's selection.
+    void setHighlight(int body, int joint);
+    int highlightedBody() const { return m_highlightBody; }
+    int highlightedJoint() const { return m_highlightJoint; }
+
+    /// Median time to draw a frame over the last 31 frames [ms] (0 before the first).
+    double frameMillis() const;
+
+signals:
+    /// Something in the model cannot be drawn as written (a mesh file missing or
+    /// unreadable). Emitted once per bundle and message.
+    void problem(const QString& message);
+    /// After every frame: the time it took to draw [ms].
+    void frameTimed(double ms);
+
+protected:
+    void initializeGL() override;
+    void resizeGL(int w, int h) override;
+    void paintGL() override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void mouseDoubleClickEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+
+private:
+    void releaseGl();
+    void upload();
+    void drawRange(const DrawRange& range, const Eigen::Matrix4f& model, unsigned mode = 0x0004 /*GL_TRIANGLES*/);
+    void drawSlots(bool schematic, bool dressed);
+    void drawActuators(int onlyJoint);
+    void setTint(const Eigen::Vector3f& rgb, float amount);
+    void setAlpha(float alpha);
+    Eigen::Isometry3d bodyPose(int body) const;
+    void sceneSphere(Eigen::Vector3d& centre, double& radius) const;
+    Eigen::AlignedBox3d sceneBox() const;
+    void applyNamedCamera();
+    void leaveNamedCamera();
+    double aspect() const;
+
+    std::shared_ptr<const ModelBundle> m_bundle;
+    std::shared_ptr<const SceneGeometry> m_geometry;
+    std::vector<Eigen::Isometry3d> m_poses;
+    DisplayMode m_mode = DisplayMode::Dressed;
+    Camera m_camera;
+    QString m_cameraName = QStringLiteral("Iso");
+    bool m_seatSet = false;  ///< setOperatorSeat was called (else the model's default)
+    bool m_showFrames = false;
+    bool m_showGrid = true;
+    int m_highlightBody = -1;
+    int m_highlightJoint = -1;
+
+    // GL (per context)
+    bool m_glReady = false;
+    bool m_glFailed = false;
+    bool m_uploaded = false;
+    std::unique_ptr<QOpenGLShaderProgram> m_program;
+    std::unique_ptr<QOpenGLShaderProgram> m_background;
+    std::unique_ptr<QOpenGLVertexArrayObject> m_vao;
+    std::unique_ptr<QOpenGLBuffer> m_vertexBuffer;
+    std::unique_ptr<QOpenGLBuffer> m_indexBuffer;
+    struct Uniforms {
+        int model = -1, view = -1, projection = -1, normalMatrix = -1, lit = -1, tint = -1, alpha = -1,
+            upEye = -1, fadeCentre = -1, fadeRadius = -1;
+    } m_u;
+    Eigen::Matrix4f m_view = Eigen::Matrix4f::Identity();
+    std::vector<Eigen::Matrix4f> m_slotMatrices;  ///< per slot, this frame
+
+    // interaction
+    QPoint m_lastMouse;
+    bool m_dragging = false;
+
+    // timing
+    std::array<double, 31> m_frameTimes{};
+    int m_frameCount = 0;
+};
+
+}  // namespace studio

@@ -1,0 +1,279 @@
+// padrob-studio as a whole, as a user meets it (a real window under Xvfb): it opens
+// the liner manipulator by default and every bundled model, shows a typed error and
+// refuses to apply it, applies the fixed model, runs a second of simulation that
+// matches the solver library step for step, draws each display mode, reports a loop
+// that locks up without blocking, and takes the operator's keys.
+
+#include "ide/studio/app/main_window.h"
+#include "ide/studio/editor/code_editor.h"
+#include "ide/studio/editor/editor_panel.h"
+#include "ide/studio/sim/keyboard_input.h"
+#include "ide/studio/sim/simulation_runner.h"
+#include "ide/studio/tree/model_tree.h"
+#include "ide/studio/view/viewport.h"
+#include "ide/studio/view/viewport_layout.h"
+#include "solver/integrate/simulation.h"
+
+#include <QDir>
+#include <QFile>
+#include <QMessageBox>
+#include <QSet>
+#include <QStandardPaths>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QRegularExpression>
+#include <QSignalSpy>
+#include <QTextCursor>
+
+using namespace studio;
+
+namespace {
+
+QString modelPath(const QString& name) { return QStringLiteral(PADROB_SOURCE_DIR) + "/models/" + name; }
+
+QString screenshotPath(const QString& name)
+{
+    QDir().mkpath(QStringLiteral(PADROB_SCREENSHOT_DIR));
+    return QStringLiteral(PADROB_SCREENSHOT_DIR) + "/" + name;
+}
+
+/// Distinct colours in an image (a blank view has one or two).
+int colourCount(const QImage& image)
+{
+    QSet<QRgb> colours;
+    for (int y = 0; y < image.height(); y += 2) {
+        for (int x = 0; x < image.width(); x += 2) colours.insert(image.pixel(x, y));
+    }
+    return static_cast<int>(colours.size());
+}
+
+/// Fraction of pixels that differ between two images of one size.
+double difference(const QImage& a, const QImage& b)
+{
+    if (a.size() != b.size()) return 1;
+    long differ = 0;
+    for (int y = 0; y < a.height(); ++y) {
+        for (int x = 0; x < a.width(); ++x) differ += a.pixel(x, y) != b.pixel(x, y);
+    }
+    return static_cast<double>(differ) / (a.width() * a.height());
+}
+
+/// Opens a model and waits until it is applied (the editor checks it on a worker thread).
+bool openAndWait(MainWindow& w, const QString& path)
+{
+    const quint64 before = w.bundle() ? w.bundle()->serial : 0;
+    if (!w.openFile(path)) return false;
+    return QTest::qWaitFor([&] { return w.bundle() && w.bundle()->serial != before; }, 10000);
+}
+
+QString readText(const QString& path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : QString();
+}
+
+}  // namespace
+
+class AppTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);  // settings and recovery copies in a test location
+        QCoreApplication::setOrganizationName("PadrobTest");
+        QCoreApplication::setApplicationName("padrob-studio-test");
+    }
+
+    void opensTheLinerManipulatorWhenGivenNoModel()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.openInitial(QString());
+        QTRY_VERIFY_WITH_TIMEOUT(w.bundle(), 10000);
+        QCOMPARE(w.bundle()->model->nb, 9);
+        QVERIFY(w.editor()->filePath().endsWith("liner_manipulator.pad"));
+        QVERIFY(w.windowTitle().startsWith("liner_manipulator.pad"));
+        QCOMPARE(w.modelTree()->topLevelItemCount() > 0, true);
+        // the three workspaces are there; Model is the current one
+        QCOMPARE(w.workspace(), MainWindow::Workspace::Model);
+        w.setWorkspace(MainWindow::Workspace::Train);
+        QCOMPARE(w.workspace(), MainWindow::Workspace::Train);
+        w.setWorkspace(MainWindow::Workspace::Model);
+        QVERIFY(w.grab().save(screenshotPath("app_liner_manipulator.png")));
+    }
+
+    void opensEveryBundledModel()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const QFileInfoList models =
+            QDir(QStringLiteral(PADROB_SOURCE_DIR) + "/models").entryInfoList({"*.pad"}, QDir::Files, QDir::Name);
+        QVERIFY(models.size() >= 9);
+        for (const QFileInfo& f : models) {
+            QVERIFY2(openAndWait(w, f.absoluteFilePath()), qPrintable(f.fileName()));
+            QCOMPARE(w.editor()->errorCount(), 0);
+            // the view draws it
+            QApplication::processEvents();
+            const QImage image = w.viewports()->viewport(0)->grabFramebuffer();
+            QVERIFY2(colourCount(image) > 50, qPrintable(f.fileName()));
+        }
+    }
+
+    void aTypedErrorIsShownAndNotApplied()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(openAndWait(w, modelPath("pendulum.pad")));
+        const quint64 good = w.bundle()->serial;
+        // type "C 99" (a joint without its B1/B2 lines) at the end
+        CodeEditor* editor = w.editor()->editor();
+        editor->setFocus();
+        editor->moveCursor(QTextCursor::End);
+        QTest::keyClick(editor, Qt::Key_Return);
+        QTest::keyClicks(editor, "C 99");
+        QTRY_VERIFY_WITH_TIMEOUT(w.editor()->errorCount() > 0, 5000);
+        QVERIFY(w.isWindowModified() || w.windowTitle().contains('*'));
+        QVERIFY(w.editor()->diagnostics().size() > 0);
+        w.editor()->apply();
+        QCOMPARE(w.bundle()->serial, good);  // the last good model stays
+        QVERIFY(w.grab().save(screenshotPath("app_typed_error.png")));
+        // fixed: applied
+        w.editor()->undo();
+        QTRY_COMPARE_WITH_TIMEOUT(w.editor()->errorCount(), 0, 5000);
+        w.editor()->apply();
+        QTRY_VERIFY_WITH_TIMEOUT(w.bundle()->serial != good, 5000);
+        // (the text is the file's again: nothing to save)
+    }
+
+    void oneSecondOfSimulationMatchesTheSolver()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(openAndWait(w, modelPath("liner_manipulator.pad")));
+        const auto bundle = w.bundle();
+        const solver::Model& m = *bundle->model;
+        const int lift = m.jointIndex(2), slew = m.jointIndex(1);
+        w.runner()->setCommand(lift, 1.0);
+        w.runner()->setCommand(slew, 0.5);
+        w.run();
+        QTRY_VERIFY_WITH_TIMEOUT(w.runner()->latest() && w.runner()->latest()->t >= 1.0, 15000);
+        w.pause();
+        QTRY_VERIFY(!w.runner()->isRunning());
+        const auto snap = w.runner()->latest();
+        QVERIFY(snap->step >= 1000);
+        // the solver library, step for step: RK4 at 1 ms with the same commands
+        solver::SimulationOptions o;
+        o.integrator.method = solver::IntegrationMethod::Rk4Fixed;
+        o.integrator.step = 1e-3;
+        solver::Simulation sim(bundle->model, o);
+        sim.setCommand(lift, 1.0);
+        sim.setCommand(slew, 0.5);
+        std::vector<solver::SimulationEvent> ev;
+        std::string err;
+        for (long k = 1; k <= snap->step; ++k) QVERIFY(sim.advanceTo(k * 1e-3, ev, err));
+        QCOMPARE(snap->theta.size(), sim.state().q.size());
+        for (int j = 0; j < m.nb; ++j) QCOMPARE(snap->theta[j], sim.state().q[j]);
+        // and it moved: the boom rose, the turret turned
+        QVERIFY(snap->q[lift] > m.coordinate(lift, m.theta0[lift]) + 0.01);
+        QVERIFY(snap->q[slew] > 0.05);
+        // the view shows the moved machine
+        QTRY_VERIFY(w.viewports()->viewport(0)->poses().size() == static_cast<std::size_t>(m.nb) &&
+                    w.viewports()->viewport(0)->poses()[slew].isApprox(snap->bodyPoses[slew]));
+        QVERIFY(w.grab().save(screenshotPath("app_after_one_second.png")));
+    }
+
+    void eachDisplayModeDraws()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(openAndWait(w, modelPath("liner_manipulator.pad")));
+        QApplication::processEvents();
+        Viewport* v = w.viewports()->viewport(0);
+        QImage images[3];
+        const DisplayMode modes[3] = {DisplayMode::Schematic, DisplayMode::Dressed, DisplayMode::Both};
+        const char* names[3] = {"schematic", "dressed", "both"};
+        for (int i = 0; i < 3; ++i) {
+            w.viewports()->setDisplayMode(modes[i]);
+            QApplication::processEvents();
+            images[i] = v->grabFramebuffer();
+            QVERIFY(colourCount(images[i]) > 100);
+            QVERIFY(images[i].save(screenshotPath(QString("app_view_%1.png").arg(names[i]))));
+        }
+        QVERIFY(difference(images[0], images[1]) > 0.02);
+        QVERIFY(difference(images[2], images[0]) > 0.01);
+        QVERIFY(difference(images[2], images[1]) > 0.01);
+    }
+
+    void aLoopThatLocksUpStopsTheSimulationAndKeepsTheEditor()
+    {
+        // the slider-crank pushed by its piston into dead centre (t ≈ 0.6 s)
+        QString text = readText(modelPath("slider_crank.pad"));
+        QVERIFY(!text.isEmpty());
+        text.replace(QRegularExpression("\\nD 1 MOTOR[^\\n]*"), "\n");
+        text.replace("\nC 4 ", "\nC 4 LL 0.2 UL 0.46 ");
+        text += "\nD 4 HYD VMAX 0.1\n";
+        QTemporaryDir dir;
+        const QString path = dir.filePath("locking.pad");
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(text.toUtf8());
+        }
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(openAndWait(w, path));
+        QSignalSpy failed(w.runner(), &SimulationRunner::failed);
+        w.runner()->setCommand(w.bundle()->model->jointIndex(4), 1.0);
+        w.run();
+        QTRY_VERIFY_WITH_TIMEOUT(failed.count() == 1, 15000);
+        QVERIFY(failed.at(0).at(0).toString().contains("locked up"));
+        QTRY_VERIFY(!w.runner()->isRunning());
+        auto* box = w.findChild<QMessageBox*>("SimulationStoppedBox");
+        QVERIFY(box);
+        QVERIFY(!box->isModal());
+        QVERIFY(w.grab().save(screenshotPath("app_loop_locked.png")));
+        // the editor still takes text
+        CodeEditor* editor = w.editor()->editor();
+        editor->moveCursor(QTextCursor::End);
+        QTest::keyClicks(editor, "// still here");
+        QVERIFY(w.editor()->text().endsWith("// still here"));
+        box->close();
+        w.reset();
+        QTRY_VERIFY(w.runner()->latest() && w.runner()->latest()->t == 0.0);
+    }
+
+    void theOperatorsKeysOpenTheValves()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(openAndWait(w, modelPath("liner_manipulator.pad")));
+        const int lift = w.bundle()->model->jointIndex(2);
+        Viewport* v = w.viewports()->viewport(0);
+        v->setFocus();
+        QTest::keyPress(v, Qt::Key_W);
+        QTRY_COMPARE(w.runner()->commands()[static_cast<std::size_t>(lift)], 1.0);
+        QTest::keyRelease(v, Qt::Key_W);
+        QTRY_COMPARE(w.runner()->commands()[static_cast<std::size_t>(lift)], 0.0);
+        QTest::keyPress(v, Qt::Key_S);
+        QTRY_COMPARE(w.runner()->commands()[static_cast<std::size_t>(lift)], -1.0);
+        QTest::keyRelease(v, Qt::Key_S);
+    }
+};
+
+int main(int argc, char** argv)
+{
+    QSurfaceFormat::setDefaultFormat(Viewport::surfaceFormat());
+    QApplication app(argc, argv);
+    AppTest test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "app_test.moc"
