@@ -188,6 +188,11 @@ void MainWindow::buildWorkspaces()
     connect(m_tree, &ModelTree::bodySelected, this, [this](int body) { m_viewports->setHighlight(body, -1); });
     connect(m_tree, &ModelTree::jointSelected, this, [this](int joint) { m_viewports->setHighlight(-1, joint); });
     connect(m_tree, &ModelTree::sourceSelected, this, [this](int line) { m_editor->goToLine(line, 1); });
+    connect(m_viewports, &ViewportLayout::problem, this, [this](const QString& message) {
+        // e.g. a mesh that failed to load: drawn as a placeholder, and said why
+        statusBar()->showMessage(message, 15000);
+        m_viewports->setToolTip(message);
+    });
     connect(m_sliders, &JointSliders::posesChanged, this,
             [this](const std::vector<Eigen::Isometry3d>& poses) { m_viewports->setPoses(poses); });
 }
