@@ -24,7 +24,13 @@
 #include <QTest>
 #include <QRegularExpression>
 #include <QSignalSpy>
+#include <QTextBlock>
 #include <QTextCursor>
+#include <QTimer>
+#include <QMenu>
+#include <QSettings>
+#include <QAbstractButton>
+#include <QTreeWidgetItem>
 
 using namespace studio;
 
@@ -83,6 +89,9 @@ private slots:
         QStandardPaths::setTestModeEnabled(true);  // settings and recovery copies in a test location
         QCoreApplication::setOrganizationName("PadrobTest");
         QCoreApplication::setApplicationName("padrob-studio-test");
+        // start clean: no settings, no recovery copies from an earlier run
+        QSettings().clear();
+        QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/recovery").removeRecursively();
     }
 
     void opensTheLinerManipulatorWhenGivenNoModel()
@@ -247,6 +256,76 @@ private slots:
         box->close();
         w.reset();
         QTRY_VERIFY(w.runner()->latest() && w.runner()->latest()->t == 0.0);
+    }
+
+    void selectingInTheTreeHighlightsTheViewAndTheText()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(openAndWait(w, modelPath("liner_manipulator.pad")));
+        QTreeWidgetItem* item = w.modelTree()->jointItem(2);
+        QVERIFY(item);
+        w.modelTree()->setCurrentItem(item);
+        const int lift = w.bundle()->model->jointIndex(2);
+        QTRY_COMPARE(w.viewports()->viewport(0)->highlightedJoint(), lift);
+        // the editor is at the joint's C statement
+        const int line = w.bundle()->spec().joints[1].src.pos.line;
+        QCOMPARE(w.editor()->editor()->cursorLine(), line);
+        QVERIFY(w.editor()->editor()->textCursor().block().text().startsWith("C 2"));
+    }
+
+    void recentFilesAndLayoutPersist()
+    {
+        {
+            MainWindow w;
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QVERIFY(openAndWait(w, modelPath("four_bar.pad")));
+            w.resize(1300, 900);
+            w.close();
+        }
+        const QStringList recent = QSettings().value("recentFiles").toStringList();
+        QVERIFY(!recent.isEmpty());
+        QVERIFY(recent.front().endsWith("four_bar.pad"));
+        MainWindow again;
+        again.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&again));
+        QCOMPARE(again.size(), QSize(1300, 900));
+        const QMenu* recentMenu = again.findChild<QMenu*>("RecentFilesMenu");
+        QVERIFY(recentMenu);
+        QVERIFY(!recentMenu->actions().isEmpty());
+        QVERIFY(recentMenu->actions().front()->text().endsWith("four_bar.pad"));
+    }
+
+    void closingWithUnsavedChangesAsksAndCanBeCancelled()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(openAndWait(w, modelPath("pendulum.pad")));
+        CodeEditor* editor = w.editor()->editor();
+        editor->moveCursor(QTextCursor::End);
+        QTest::keyClicks(editor, "// edit");
+        QVERIFY(w.editor()->isModified());
+        bool asked = false;
+        QTimer::singleShot(200, [&] {
+            auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+            if (!box) return;
+            asked = true;
+            box->button(QMessageBox::Cancel)->click();
+        });
+        QVERIFY(!w.close());  // cancelled: still open, the text is still there
+        QVERIFY(asked);
+        QVERIFY(w.isVisible());
+        QVERIFY(w.editor()->text().endsWith("// edit"));
+        // discard: it closes
+        QTimer::singleShot(200, [&] {
+            if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+                box->button(QMessageBox::Discard)->click();
+            }
+        });
+        QVERIFY(w.close());
     }
 
     void theOperatorsKeysOpenTheValves()

@@ -218,6 +218,7 @@ void MainWindow::buildMenus()
     file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
     file->addAction(tr("Save &As…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
     m_recentMenu = file->addMenu(tr("&Recent Files"));
+    m_recentMenu->setObjectName("RecentFilesMenu");
     QMenu* examples = file->addMenu(tr("&Examples"));
     const QFileInfoList models = QDir(modelsDir()).entryInfoList({"*.pad"}, QDir::Files, QDir::Name);
     for (const QFileInfo& f : models) {
