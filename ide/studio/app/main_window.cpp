@@ -507,7 +507,7 @@ void MainWindow::poll()
 
 void MainWindow::onSimulationFailed(const QString& message)
 {
-    statusBar()->showMessage(tr("Simulation stopped: %1").arg(message));
+    statusBar()->showMessage(message);
     // not modal: the editor stays usable (and a test is not blocked)
     auto* box = new QMessageBox(QMessageBox::Warning, tr("Simulation Stopped"),
                                 tr("%1\n\nThe simulation is paused at the last good state; the editor stays usable. "
