@@ -3,7 +3,12 @@
 #   1. the default build (RelWithDebInfo) and all its tests, the GUI's as real windows
 #      on an X server (a virtual one, Xvfb, when there is no DISPLAY);
 #   2. the solver and its tests again under AddressSanitizer + UBSan (parser fuzzing,
-#      bad input), so memory errors and undefined behaviour fail the run.
+#      bad input), so memory errors and undefined behaviour fail the run;
+#   3. the solver thread's test (studio.sim_test: SimulationRunner and the GUI thread)
+#      under ThreadSanitizer, so a data race in studio:: or solver:: code fails the run.
+#      The `tsan` presets build only that test and what it links (solver, studio_model,
+#      studio_sim), run it on Qt's offscreen platform, and suppress only Qt's own
+#      reports (Qt is not instrumented; tests/studio/tsan.supp).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -32,4 +37,8 @@ cmake --preset asan >/dev/null
 cmake --build --preset asan -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --preset asan -j "$jobs"
+
+cmake --preset tsan >/dev/null
+cmake --build --preset tsan --target studio_sim_test -j "$jobs"
+ctest --preset tsan  # TSAN_OPTIONS (halt_on_error, suppressions) come with the preset
 echo "test.sh: all tests passed"
