@@ -2,6 +2,7 @@
 
 #include "solver/dynamics/constraints.h"
 #include "solver/dynamics/drives.h"
+#include "solver/dynamics/mass_matrix.h"
 #include "solver/kinematics/kinematics.h"
 
 #include <Eigen/Cholesky>
@@ -197,16 +198,7 @@ void constrainedDynamics(const Model& model, const State& state, Data& data)
 
     // mass matrix by composite rigid bodies (RBDA §6.2), the articulated inertias as scratch
     for (int i = 0; i < nb; ++i) data.Ib[i].toMatrix(data.IA[i]);
-    for (int i = nb - 1; i >= 0; --i) {
-        if (model.parent[i] >= 0) data.IA[model.parent[i]] += data.IA[i];
-    }
-    if (data.M.rows() != n) data.M.resize(n, n);
-    data.M.setZero();  // bodies on different branches do not couple
-    for (int i = 0; i < nb; ++i) {
-        const Vector6d f = data.IA[i] * data.S[i];
-        data.M(i, i) = data.S[i].dot(f);
-        for (int j = model.parent[i]; j >= 0; j = model.parent[j]) data.M(j, i) = data.M(i, j) = data.S[j].dot(f);
-    }
+    massMatrixFromInertias(model, data, data.IA, data.M);
 
     // bias: accelerations and generalized forces at θ̈ = 0 (RNEA)
     data.a0.resize(static_cast<std::size_t>(nb));

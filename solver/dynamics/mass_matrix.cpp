@@ -6,17 +6,12 @@
 
 namespace solver {
 
-void massMatrix(const Model& model, const Data& data, Eigen::MatrixXd& M)
+void massMatrixFromInertias(const Model& model, const Data& data, std::vector<Matrix6d>& composite,
+                            Eigen::MatrixXd& M)
 {
     const int nb = model.nb;
-    M.setZero(nb, nb);
+    M.setZero(nb, nb);  // bodies on different branches do not couple
     // composite inertias, leaves first (children have higher tree indices)
-    std::vector<Matrix6d> composite(static_cast<std::size_t>(nb));
-    for (int i = 0; i < nb; ++i) {
-        const Eigen::Matrix3d R = data.X_wb[i].linear();
-        const Eigen::Vector3d com = data.X_wb[i] * model.com[i];
-        rigidInertiaAt(model.mass[i], com, R * model.inertia[i] * R.transpose()).toMatrix(composite[i]);
-    }
     for (int i = nb - 1; i >= 0; --i) {
         if (model.parent[i] >= 0) composite[model.parent[i]] += composite[i];
     }
@@ -25,6 +20,17 @@ void massMatrix(const Model& model, const Data& data, Eigen::MatrixXd& M)
         M(i, i) = data.S[i].dot(f);
         for (int j = model.parent[i]; j >= 0; j = model.parent[j]) M(j, i) = M(i, j) = data.S[j].dot(f);
     }
+}
+
+void massMatrix(const Model& model, const Data& data, Eigen::MatrixXd& M)
+{
+    std::vector<Matrix6d> composite(static_cast<std::size_t>(model.nb));
+    for (int i = 0; i < model.nb; ++i) {
+        const Eigen::Matrix3d R = data.X_wb[i].linear();
+        const Eigen::Vector3d com = data.X_wb[i] * model.com[i];
+        rigidInertiaAt(model.mass[i], com, R * model.inertia[i] * R.transpose()).toMatrix(composite[i]);
+    }
+    massMatrixFromInertias(model, data, composite, M);
 }
 
 }  // namespace solver

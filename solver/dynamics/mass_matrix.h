@@ -11,9 +11,18 @@
 
 #include <Eigen/Core>
 
+#include <vector>
+
 namespace solver {
 
 /// Fills M (nb × nb) at the positions of the last forwardKinematics on `data`.
 void massMatrix(const Model& model, const Data& data, Eigen::MatrixXd& M);
+
+/// The same from each body's spatial inertia about the world origin, given in
+/// `composite` (dim nb), which it turns into the composite inertias of the subtrees
+/// (the step loop's constrained dynamics passes Data's scratch; no allocation when M
+/// has its size).
+void massMatrixFromInertias(const Model& model, const Data& data, std::vector<Matrix6d>& composite,
+                            Eigen::MatrixXd& M);
 
 }  // namespace solver

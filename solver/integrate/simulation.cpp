@@ -340,6 +340,17 @@ void Simulation::unpackState()
 
 namespace {
 
+/// M's rows and columns of the joints `free` (M_FF).
+Eigen::MatrixXd freeBlock(const Eigen::MatrixXd& M, const std::vector<int>& free)
+{
+    const auto nf = static_cast<Eigen::Index>(free.size());
+    Eigen::MatrixXd mff(nf, nf);
+    for (Eigen::Index a = 0; a < nf; ++a) {
+        for (Eigen::Index b = 0; b < nf; ++b) mff(a, b) = M(free[a], free[b]);
+    }
+    return mff;
+}
+
 /// Δ (dim nb) on the joints `free` (the others held) with Δ_F = M_FF⁻¹ G_Fᵀ μ and
 /// G_F Δ_F = target: the mass-weighted least change that moves the constraint rows
 /// G by `target` (minimum-norm μ when the rows are redundant or conflicting).
@@ -349,12 +360,9 @@ Eigen::VectorXd constraintCorrection(const Eigen::MatrixXd& M, const std::vector
     const auto nf = static_cast<Eigen::Index>(free.size());
     Eigen::VectorXd out = Eigen::VectorXd::Zero(M.rows());
     if (nf == 0 || G.rows() == 0) return out;
-    Eigen::MatrixXd mff(nf, nf), gf(G.rows(), nf);
-    for (Eigen::Index a = 0; a < nf; ++a) {
-        for (Eigen::Index b = 0; b < nf; ++b) mff(a, b) = M(free[a], free[b]);
-        gf.col(a) = G.col(free[a]);
-    }
-    const Eigen::LDLT<Eigen::MatrixXd> ldlt(mff);
+    Eigen::MatrixXd gf(G.rows(), nf);
+    for (Eigen::Index a = 0; a < nf; ++a) gf.col(a) = G.col(free[a]);
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(freeBlock(M, free));
     const Eigen::MatrixXd minvGt = ldlt.solve(gf.transpose());  // M_FF⁻¹ G_Fᵀ
     const Eigen::MatrixXd S = gf * minvGt;
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(S, Eigen::ComputeThinU | Eigen::ComputeThinV);
@@ -376,13 +384,9 @@ Eigen::VectorXd freeResponse(const Eigen::MatrixXd& M, const std::vector<int>& f
                              const Eigen::MatrixXd& G, const Eigen::VectorXd& rates)
 {
     const auto nf = static_cast<Eigen::Index>(free.size());
-    Eigen::MatrixXd mff(nf, nf);
     Eigen::VectorXd rhs(nf);
-    for (Eigen::Index a = 0; a < nf; ++a) {
-        for (Eigen::Index b = 0; b < nf; ++b) mff(a, b) = M(free[a], free[b]);
-        rhs[a] = impulse[free[a]];
-    }
-    const Eigen::VectorXd dq = mff.ldlt().solve(rhs);
+    for (Eigen::Index a = 0; a < nf; ++a) rhs[a] = impulse[free[a]];
+    const Eigen::VectorXd dq = freeBlock(M, free).ldlt().solve(rhs);
     Eigen::VectorXd out = Eigen::VectorXd::Zero(impulse.size());
     for (Eigen::Index a = 0; a < nf; ++a) {
         if (std::isfinite(dq[a])) out[free[a]] = dq[a];
