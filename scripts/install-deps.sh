@@ -26,6 +26,9 @@ packages=(
   # padrob-studio: OpenGL widgets (only recommended by qt6-base-dev), charts, the xcb
   # platform plugin, Mesa's software GL, fonts
   libqt6opengl6-dev qt6-charts-dev qt6-qpa-plugins libgl1-mesa-dri fonts-dejavu-core
+  # the station: joysticks and gamepads (SDL2), the serial DAQ box, Comedi DAQ cards
+  # (optional at build time; installed so CI builds and tests that back end too)
+  libsdl2-dev qt6-serialport-dev libcomedi-dev
   # GUI tests: a virtual X server (QOpenGLWidget needs xcb, not `offscreen`)
   xvfb xauth
   # tests

@@ -1,0 +1,20 @@
+#include "trainer/input/input_device.h"
+
+#include <QCoreApplication>
+
+namespace trainer {
+
+QString kindName(DeviceKind kind)
+{
+    switch (kind) {
+    case DeviceKind::Joystick: return QCoreApplication::translate("trainer::InputDevice", "Joystick");
+    case DeviceKind::Gamepad: return QCoreApplication::translate("trainer::InputDevice", "Gamepad");
+    case DeviceKind::SerialDaq: return QCoreApplication::translate("trainer::InputDevice", "Serial DAQ console");
+    case DeviceKind::Comedi: return QCoreApplication::translate("trainer::InputDevice", "Comedi DAQ card");
+    case DeviceKind::Keyboard: return QCoreApplication::translate("trainer::InputDevice", "Keyboard");
+    case DeviceKind::Replay: return QCoreApplication::translate("trainer::InputDevice", "Replay");
+    }
+    return {};
+}
+
+}  // namespace trainer
