@@ -17,4 +17,17 @@ QString kindName(DeviceKind kind)
     return {};
 }
 
+QString kindKey(DeviceKind kind)
+{
+    switch (kind) {
+    case DeviceKind::Joystick: return QStringLiteral("joystick");
+    case DeviceKind::Gamepad: return QStringLiteral("gamepad");
+    case DeviceKind::SerialDaq: return QStringLiteral("serial");
+    case DeviceKind::Comedi: return QStringLiteral("comedi");
+    case DeviceKind::Keyboard: return QStringLiteral("keyboard");
+    case DeviceKind::Replay: return QStringLiteral("replay");
+    }
+    return {};
+}
+
 }  // namespace trainer

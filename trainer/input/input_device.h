@@ -75,6 +75,9 @@ public:
     virtual QString statusText() const { return {}; }
     /// Number of readings dropped as corrupt (a serial line with a bad checksum…).
     virtual std::uint64_t droppedSamples() const { return 0; }
+    /// True for the replay of a recorded log: it takes the recorded device's id and
+    /// kind so the same profile applies, and the station can tell it apart.
+    virtual bool isReplay() const { return false; }
 };
 
 /// A back end that finds devices and follows hot-plug (SDL). Polled in the same
@@ -92,5 +95,7 @@ public:
 };
 
 QString kindName(DeviceKind kind);  ///< translated, e.g. "Gamepad"
+/// The kind as profiles name it: "gamepad", "joystick", "serial", "comedi", "keyboard", "replay".
+QString kindKey(DeviceKind kind);
 
 }  // namespace trainer

@@ -47,6 +47,21 @@ KeyboardInput::KeyboardInput(SimulationRunner* runner, QObject* parent) : QObjec
 
 KeyboardInput::~KeyboardInput() = default;
 
+QStringList KeyboardInput::pairNames()
+{
+    QStringList names;
+    for (const auto& [plus, minus] : kPairs)
+        names << QStringLiteral("%1 / %2").arg(QKeySequence(plus).toString(QKeySequence::NativeText),
+                                               QKeySequence(minus).toString(QKeySequence::NativeText));
+    return names;
+}
+
+void KeyboardInput::setDevice(std::shared_ptr<trainer::KeyboardDevice> device)
+{
+    releaseAll();
+    m_device = std::move(device);
+}
+
 void KeyboardInput::setBundle(std::shared_ptr<const ModelBundle> bundle)
 {
     releaseAll();
@@ -137,7 +152,13 @@ void KeyboardInput::update(int binding)
 {
     const KeyBinding& b = m_bindings[binding];
     const double u = command(b.treeJoint);
-    if (m_runner) m_runner->setCommand(b.treeJoint, u);
+    if (m_device) {
+        // pair k is the keyboard device's channel k; the station maps it
+        const Held& h = m_held[std::size_t(binding)];
+        m_device->setKeys(binding, h.plus, h.minus);
+    } else if (m_runner) {
+        m_runner->setCommand(b.treeJoint, u);
+    }
     emit commandChanged(b.treeJoint, u);
 }
 

@@ -14,9 +14,12 @@
 // letters are).
 //
 // It writes commands into a SimulationRunner (setCommand) and follows its model
-// (bundleChanged).
+// (bundleChanged) — or, once setDevice() gave it the station's keyboard device, it
+// only reports the keys there (pair k = the device's channel k) and the station maps
+// them like any other device.
 
 #include "ide/studio/model/model_bundle.h"
+#include "trainer/input/keyboard_device.h"
 
 #include <QList>
 #include <QObject>
@@ -50,6 +53,12 @@ public:
     /// Follows `runner`'s model (may be nullptr: then nothing is written).
     explicit KeyboardInput(SimulationRunner* runner, QObject* parent = nullptr);
     ~KeyboardInput() override;
+
+    /// The nine pairs as shown, "Q / A" … "O / L" (the keyboard device's channels).
+    static QStringList pairNames();
+    /// From now on the keys go to `device` (channel k = pair k), not to the runner;
+    /// nullptr: back to the runner. Every key is released.
+    void setDevice(std::shared_ptr<trainer::KeyboardDevice> device);
 
     /// Rebuilds the mapping for `bundle` (called on the runner's bundleChanged());
     /// every key is released.
@@ -89,6 +98,7 @@ private:
     void update(int binding);
 
     QPointer<SimulationRunner> m_runner;
+    std::shared_ptr<trainer::KeyboardDevice> m_device;
     QList<KeyBinding> m_bindings;
     std::vector<Held> m_held;
     bool m_enabled = true;

@@ -4,7 +4,9 @@
 //
 // Threads (DESIGN "The application"; STYLE habit 9):
 //  - The runner is a QObject of the GUI thread: every method below is called there
-//    and every signal is emitted there (the solver thread posts them, queued).
+//    (except setCommand/setCommands, safe from any thread: the station's input thread
+//    writes the operator's commands) and every signal is emitted there (the solver
+//    thread posts them, queued).
 //  - The solver thread owns the Simulation. setBundle() and reset() build the new
 //    Simulation in the GUI thread, publish its initial snapshot at once and hand it
 //    over; from then on only the solver thread touches it.
@@ -91,7 +93,8 @@ public:
     double speed() const;
 
     /// Command u in [−1, 1] (clamped; NaN → 0) of tree joint `treeJoint`, read by the
-    /// next step. Out-of-range joints are ignored.
+    /// next step. Out-of-range joints are ignored. setCommand() and setCommands() may
+    /// be called from any thread (the station's input thread calls setCommands).
     void setCommand(int treeJoint, double u);
     /// All commands at once (element i for tree joint i; missing ones 0): one input
     /// snapshot, read whole by the next step.
