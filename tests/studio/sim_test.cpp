@@ -9,7 +9,12 @@
 #include "ide/studio/sim/snapshot.h"
 
 #include "solver/integrate/simulation.h"
+#include "trainer/station/profile_store.h"
+#include "trainer/station/station.h"
 
+#include <SDL.h>
+
+#include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QKeyEvent>
@@ -115,6 +120,7 @@ private slots:
     void tooHeavyRunsBehindAndStaysResponsive();
     void keyboardMapsDrivesInJointIdOrder();
     void keyboardWritesCommands();
+    void virtualGamepadDrivesTheMachineThroughTheStation();
 
 private:
     std::shared_ptr<const studio::ModelBundle> m_pendulum, m_liner;
@@ -561,6 +567,91 @@ void SimTest::keyboardWritesCommands()
     QCOMPARE(r.commands()[std::size_t(lift)], 0.0);
     QTest::keyPress(&w, Qt::Key_S);
     QCOMPARE(r.commands()[std::size_t(lift)], 0.0);
+}
+
+// The whole path with SDL's virtual gamepad (no hardware): axis → calibration →
+// mapping → bank switch by button → u in the solver → the joint moves; a lever held
+// through a bank switch waits for the centre; unplugging closes the valves.
+void SimTest::virtualGamepadDrivesTheMachineThroughTheStation()
+{
+    // the test's own share of SDL (the station's SdlJoysticks counts on top of it)
+    QVERIFY2(SDL_InitSubSystem(SDL_INIT_JOYSTICK | SDL_INIT_GAMECONTROLLER) == 0, SDL_GetError());
+    SDL_VirtualJoystickDesc desc{};
+    desc.version = SDL_VIRTUAL_JOYSTICK_DESC_VERSION;
+    desc.type = SDL_JOYSTICK_TYPE_GAMECONTROLLER;
+    desc.naxes = SDL_CONTROLLER_AXIS_MAX;
+    desc.nbuttons = SDL_CONTROLLER_BUTTON_MAX;
+    desc.name = "Padrob test gamepad";
+    const int index = SDL_JoystickAttachVirtualEx(&desc);
+    QVERIFY2(index >= 0, SDL_GetError());
+    SDL_Joystick* pad = SDL_JoystickOpen(index);
+    QVERIFY(pad);
+
+    SimulationRunner r;
+    r.setBundle(m_liner);
+    const solver::Model& m = *m_liner->model;
+    const auto lift = std::size_t(m.jointIndex(2)), wristLift = std::size_t(m.jointIndex(5));
+    {
+        trainer::Station station([&r](std::span<const double> u) { r.setCommands(u); });
+        station.start(true);
+        trainer::ProfileStore store(QDir::temp().filePath("padrob-sim-test-profiles"));
+        trainer::StationProfile profile;
+        QList<trainer::ProfileIssue> issues;
+        QVERIFY(store.load(PADROB_SOURCE_DIR "/models/liner_manipulator.pad", "Gamepad", profile, issues));
+        const QList<trainer::DriveInfo> drives = trainer::drivesOf(m);
+        station.call([&](trainer::StationEngine& e) {
+            e.setDrives(m.nb, drives);
+            issues = e.setProfile(profile);
+        });
+        QVERIFY(issues.isEmpty());
+        auto connected = [&] {
+            auto st = station.latest();
+            if (!st) return false;
+            for (const trainer::DeviceState& d : st->devices)
+                if (d.info.kind == trainer::DeviceKind::Gamepad && d.status == trainer::DeviceStatus::Connected)
+                    return true;
+            return false;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(connected(), 3000);
+        QTRY_COMPARE_WITH_TIMEOUT(station.latest()->bankNames.value(station.latest()->activeBank), QString("Boom"), 2000);
+
+        // bank Boom: pull the left stick back → C 2 LEVANTE PLUMA lifts
+        SDL_JoystickSetVirtualAxis(pad, SDL_CONTROLLER_AXIS_LEFTY, 32767);
+        QTRY_COMPARE_WITH_TIMEOUT(r.commands()[lift], 1.0, 2000);
+        QCOMPARE(r.commands()[wristLift], 0.0);
+        const double lift0 = r.latest()->q[Eigen::Index(lift)];
+        r.start();
+        QTRY_VERIFY_WITH_TIMEOUT(r.latest()->t > 0.3, 3000);
+        QVERIFY2(r.latest()->q[Eigen::Index(lift)] > lift0 + 0.003, "the boom's cylinder did not extend (18 mm/s at full flow)");
+
+        // the right shoulder button selects bank Wrist; the stick still held back must
+        // neither keep lifting the boom nor jump the wrist
+        SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_RIGHTSHOULDER, 1);
+        QTRY_COMPARE_WITH_TIMEOUT(station.latest()->activeBank, 1, 2000);
+        SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_RIGHTSHOULDER, 0);
+        QTRY_COMPARE_WITH_TIMEOUT(r.commands()[lift], 0.0, 2000);
+        QTest::qWait(50);
+        QCOMPARE(r.commands()[wristLift], 0.0);
+        QVERIFY(station.latest()->warnings.join("\n").contains("LEVANTE MUÑECA"));
+        const double wrist0 = r.latest()->q[Eigen::Index(wristLift)];
+        SDL_JoystickSetVirtualAxis(pad, SDL_CONTROLLER_AXIS_LEFTY, 0);
+        QTRY_VERIFY_WITH_TIMEOUT(station.latest()->warnings.isEmpty(), 2000);
+        SDL_JoystickSetVirtualAxis(pad, SDL_CONTROLLER_AXIS_LEFTY, -32768);  // push: the wrist lowers
+        QTRY_COMPARE_WITH_TIMEOUT(r.commands()[wristLift], -1.0, 2000);
+        const double t1 = r.latest()->t;
+        QTRY_VERIFY_WITH_TIMEOUT(r.latest()->t > t1 + 0.3, 3000);
+        QVERIFY2(r.latest()->q[Eigen::Index(wristLift)] < wrist0 - 0.002, "the wrist's cylinder did not retract");
+        QCOMPARE(r.commands()[lift], 0.0);
+
+        // unplugged: valves closed, a warning that names the pad
+        SDL_JoystickClose(pad);
+        QCOMPARE(SDL_JoystickDetachVirtual(index), 0);
+        QTRY_COMPARE_WITH_TIMEOUT(r.commands()[wristLift], 0.0, 2000);
+        QTRY_VERIFY_WITH_TIMEOUT(station.latest()->warnings.join("\n").contains("Padrob test gamepad"), 2000);
+        r.pause();
+        station.stop();
+    }
+    SDL_QuitSubSystem(SDL_INIT_JOYSTICK | SDL_INIT_GAMECONTROLLER);
 }
 
 QTEST_MAIN(SimTest)
