@@ -185,7 +185,7 @@ TEST(StationEngine, MappingToAMissingDriveOrDeviceIsIgnoredWithAWarning)
     const auto& u = r.step();
     EXPECT_EQ(u[3], 0.0);
     EXPECT_EQ(u[0], 1.0);  // the rest works
-    EXPECT_TRUE(r.engine.state().warnings.join("\n").contains("joystick"));
+    EXPECT_TRUE(r.engine.state().setupWarnings.join("\n").contains("joystick"));
 }
 
 TEST(StationEngine, KeyboardPairsDriveOneToOne)
@@ -320,8 +320,9 @@ TEST(StationEngine, TheKeyboardDrivesInOrderUnlessTheProfileMapsIt)
     e.update(0.002);
     EXPECT_EQ(e.commands()[2], -1.0);  // second pair → second drive (C 3, tree joint 2)
     EXPECT_EQ(e.state().mappings.size(), 4);  // the profile's own only
-    EXPECT_TRUE(e.state().warnings.join("").contains("gamepad"));  // no gamepad here
-    EXPECT_FALSE(e.state().warnings.join("").contains("keyboard"));
+    EXPECT_TRUE(e.state().setupWarnings.join("").contains("gamepad"));  // no gamepad here
+    EXPECT_FALSE(e.state().setupWarnings.join("").contains("keyboard"));
+    EXPECT_TRUE(e.state().warnings.isEmpty());
     StationProfile p = twoBanks();
     p.always.append({"keyboard", 0, 5, 1.0, -1});
     e.setProfile(p);

@@ -253,6 +253,7 @@ bool StationEngine::update(double now)
             for (Channel& ch : dev.channels) ch.filter.reset();
         }
         dev.wasConnected = connected;
+        dev.everConnected = dev.everConnected || connected;
         const DeviceSample& s = d.sample();
         if (m_recorder && s.count != dev.lastCount) m_recorder->record(now, d, s);
         const double dt = dev.lastTime < 0.0 ? 0.0 : now - dev.lastTime;
@@ -380,7 +381,8 @@ StationState StationEngine::state() const
         if (held.isEmpty()) continue;
         held.removeDuplicates();
         const QString why = d.statusText().isEmpty() ? tre("not connected") : d.statusText();
-        st.warnings.append(tre("%1: %2 — valves closed, holding %3").arg(d.info().name, why, held.join(", ")));
+        (m_state[i].everConnected ? st.warnings : st.setupWarnings)
+            .append(tre("%1: %2 — valves closed, holding %3").arg(d.info().name, why, held.join(", ")));
     }
     // mappings whose device is not there at all
     QStringList missing;
@@ -389,7 +391,7 @@ StationState StationEngine::state() const
             (m_implicitKeyboard < 0 || &l - m_live.data() < m_implicitKeyboard))
             missing.append(l.mapping.device);
     missing.removeDuplicates();
-    for (const QString& m : missing) st.warnings.append(tre("No %1 found: its drives hold").arg(m));
+    for (const QString& m : missing) st.setupWarnings.append(tre("No %1 found: its drives hold").arg(m));
     waiting.removeDuplicates();
     if (!waiting.isEmpty())
         st.warnings.append(tre("Bring the lever to centre to take over: %1").arg(waiting.join(", ")));

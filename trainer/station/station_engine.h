@@ -77,9 +77,12 @@ struct StationState {
     std::vector<double> commands;   ///< one per tree joint
     QList<DriveInfo> drives;
     QList<ProfileIssue> profileIssues;
-    /// For the operator (translated): devices gone with the drives they hold, levers
-    /// waiting for the centre, providers that failed.
+    /// For the operator (translated; the HUD): devices lost since they were connected,
+    /// with the drives they hold, levers waiting for the centre, providers that failed.
     QStringList warnings;
+    /// For the trainer setting up (the Station workspace): devices the profile uses
+    /// that have not been connected yet (no gamepad, a port that cannot be opened).
+    QStringList setupWarnings;
 };
 
 class StationEngine {
@@ -143,6 +146,7 @@ private:
         std::uint64_t lastCount = 0;
         double lastTime = -1.0;
         bool wasConnected = false;
+        bool everConnected = false;
         bool fromProfile = false;
     };
     struct Live {

@@ -4,6 +4,9 @@
 #include "ide/studio/editor/editor_panel.h"
 #include "ide/studio/plots/plot_panel.h"
 #include "ide/studio/sim/keyboard_input.h"
+#include "trainer/input/keyboard_device.h"
+#include "trainer/station/profile_store.h"
+#include "trainer/station/station.h"
 #include "ide/studio/sim/simulation_runner.h"
 #include "ide/studio/tree/joint_sliders.h"
 #include "ide/studio/tree/model_tree.h"
@@ -87,9 +90,23 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_runner(std::mak
     statusBar()->addPermanentWidget(m_rtLabel);
     statusBar()->addPermanentWidget(m_frameLabel);
 
-    // the operator's keys drive the solver thread
+    // the operator's station: its input thread reads every device (the keyboard, SDL
+    // joysticks, serial consoles) and writes the mapped commands to the solver thread
+    m_station = std::make_unique<trainer::Station>(
+        [runner = m_runner.get()](std::span<const double> u) { runner->setCommands(u); });
+    m_station->start(qEnvironmentVariableIntValue("PADROB_NO_JOYSTICKS") == 0);
+    m_keyboardDevice = std::make_shared<trainer::KeyboardDevice>(KeyboardInput::pairNames());
+    m_station->post([device = m_keyboardDevice](trainer::StationEngine& e) { e.addDevice(device); });
     m_keyboard = new KeyboardInput(m_runner.get(), this);
+    m_keyboard->setDevice(m_keyboardDevice);
     m_keyboard->attachTo(m_viewports);
+    m_hud = new QLabel(m_viewports);
+    m_hud->setObjectName("Hud");
+    m_hud->setAttribute(Qt::WA_TransparentForMouseEvents);
+    m_hud->setStyleSheet("QLabel#Hud { background: rgba(20, 24, 28, 190); color: white; border-radius: 6px; "
+                         "padding: 8px 12px; font-size: 15pt; }");
+    m_hud->move(12, 12);
+    m_hud->hide();
     m_plots->setRunner(m_runner.get());
     connect(m_plots, &PlotPanel::exportFailed, this,
             [this](const QString& message) { QMessageBox::warning(this, tr("Export"), message); });
@@ -115,6 +132,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_runner(std::mak
 MainWindow::~MainWindow()
 {
     m_pollTimer->stop();
+    m_station->stop();  // no more commands to the runner
     m_runner->pause();
 }
 
@@ -466,6 +484,7 @@ void MainWindow::applyBundle(std::shared_ptr<const ModelBundle> bundle)
     m_viewports->setBundle(bundle);
     m_tree->setBundle(bundle);
     m_sliders->setBundle(bundle);
+    setStationModel(bundle);
     m_shownSerial = bundle->serial;
     m_shownStep = -1;
     statusBar()->showMessage(tr("Model applied: %n bodies", nullptr, bundle->model->nb), 4000);
@@ -503,6 +522,70 @@ void MainWindow::poll()
                                         : tr("paused"));
     }
     m_frameLabel->setText(tr("frame %1 ms").arg(QLocale().toString(m_viewports->frameMillis(), 'f', 1)));
+    updateHud();
+}
+
+void MainWindow::updateHud()
+{
+    const std::shared_ptr<const trainer::StationState> st = m_station->latest();
+    QStringList lines;
+    if (st) {
+        if (st->bankNames.size() > 1)
+            lines << tr("Bank: <b>%1</b> (%2 of %3)")
+                         .arg(st->bankNames.value(st->activeBank).toHtmlEscaped())
+                         .arg(st->activeBank + 1)
+                         .arg(st->bankNames.size());
+        for (const QString& w : st->warnings)
+            lines << QStringLiteral("<span style='color:#ffc04d'>⚠ %1</span>").arg(w.toHtmlEscaped());
+    }
+    const QString text = lines.join("<br>");
+    if (text == m_hudText) return;
+    m_hudText = text;
+    m_hud->setText(text);
+    m_hud->setVisible(!text.isEmpty());
+    // one line each when they fit, wrapped to the viewport's width when they do not
+    const int room = std::max(200, m_viewports->width() - 24);
+    m_hud->setWordWrap(false);
+    m_hud->setMinimumWidth(0);
+    m_hud->setMaximumWidth(QWIDGETSIZE_MAX);
+    m_hud->adjustSize();
+    if (m_hud->width() > room) {
+        m_hud->setWordWrap(true);
+        m_hud->setFixedWidth(room);
+        m_hud->adjustSize();
+    }
+    m_hud->raise();
+}
+
+void MainWindow::setStationModel(const std::shared_ptr<const ModelBundle>& bundle)
+{
+    const QList<trainer::DriveInfo> drives = trainer::drivesOf(*bundle->model);
+    const QString modelPath = bundle->filePath;
+    trainer::ProfileStore store;
+    trainer::StationProfile profile;
+    QList<trainer::ProfileIssue> issues;
+    const QString key = trainer::ProfileStore::modelKey(modelPath);
+    const QString remembered = QSettings().value("station/profile/" + key).toString();
+    bool found = !remembered.isEmpty() && store.load(modelPath, remembered, profile, issues);
+    if (!found && !modelPath.isEmpty()) {
+        // first start: a gamepad profile if there is one (the common case), else the first
+        QList<trainer::StoredProfile> stored = store.list(modelPath);
+        std::stable_partition(stored.begin(), stored.end(),
+                              [](const trainer::StoredProfile& s) { return s.name == QLatin1String("Gamepad"); });
+        for (const trainer::StoredProfile& s : stored) {
+            issues.clear();
+            if (s.readable && store.load(modelPath, s.name, profile, issues)) {
+                found = true;
+                break;
+            }
+        }
+    }
+    if (!found) profile = trainer::StationProfile::defaultFor(key, drives);
+    const int nb = bundle->model->nb;
+    m_station->post([nb, drives, profile](trainer::StationEngine& e) {
+        e.setDrives(nb, drives);
+        e.setProfile(profile);
+    });
 }
 
 void MainWindow::onSimulationFailed(const QString& message)

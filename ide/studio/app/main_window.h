@@ -28,6 +28,12 @@ class QMenu;
 class QStackedWidget;
 class QTimer;
 
+namespace trainer {
+class KeyboardDevice;
+class Station;
+struct StationProfile;
+}  // namespace trainer
+
 namespace studio {
 
 class EditorPanel;
@@ -58,6 +64,10 @@ public:
     JointSliders* sliders() const { return m_sliders; }
     PlotPanel* plots() const { return m_plots; }
     SimulationRunner* runner() const { return m_runner.get(); }
+    /// The operator's station (input thread): devices, calibration, mapping → commands.
+    trainer::Station* station() const { return m_station.get(); }
+    /// The heads-up display over the viewports (profile, active bank, device warnings).
+    QLabel* hud() const { return m_hud; }
     std::shared_ptr<const ModelBundle> bundle() const { return m_bundle; }
 
     enum class Workspace { Model, Station, Train };
@@ -79,6 +89,10 @@ private:
     void buildMenus();
     void applyBundle(std::shared_ptr<const ModelBundle> bundle);
     void poll();
+    void updateHud();
+    /// Gives the station the model's drives and the profile chosen for the model (the
+    /// one used last, else the first stored, else one made for it).
+    void setStationModel(const std::shared_ptr<const ModelBundle>& bundle);
     void updateTitle();
     void updateRecentMenu();
     void addRecent(const QString& path);
@@ -99,6 +113,10 @@ private:
     std::shared_ptr<const ModelBundle> m_bundle;
     std::unique_ptr<SimulationRunner> m_runner;
     KeyboardInput* m_keyboard = nullptr;
+    std::unique_ptr<trainer::Station> m_station;  ///< after m_runner: destroyed first
+    std::shared_ptr<trainer::KeyboardDevice> m_keyboardDevice;
+    QLabel* m_hud = nullptr;
+    QString m_hudText;
 
     QStackedWidget* m_workspaces = nullptr;
     QMainWindow* m_modelSpace = nullptr;
