@@ -38,6 +38,40 @@ using studio::Snapshot;
 
 namespace {
 
+/// A gamepad made with SDL's virtual joystick API: the test's own share of SDL (the
+/// station's SdlJoysticks counts on top of it), a device and the test's handle on it.
+struct VirtualPad {
+    SDL_Joystick* pad = nullptr;
+    int index = -1;
+    bool sdl = false;
+
+    VirtualPad()
+    {
+        sdl = SDL_InitSubSystem(SDL_INIT_JOYSTICK | SDL_INIT_GAMECONTROLLER) == 0;
+        if (!sdl) return;
+        SDL_VirtualJoystickDesc desc{};
+        desc.version = SDL_VIRTUAL_JOYSTICK_DESC_VERSION;
+        desc.type = SDL_JOYSTICK_TYPE_GAMECONTROLLER;
+        desc.naxes = SDL_CONTROLLER_AXIS_MAX;
+        desc.nbuttons = SDL_CONTROLLER_BUTTON_MAX;
+        desc.name = "Padrob test gamepad";
+        index = SDL_JoystickAttachVirtualEx(&desc);
+        if (index >= 0) pad = SDL_JoystickOpen(index);
+    }
+    void unplug()
+    {
+        if (pad) SDL_JoystickClose(pad);
+        if (index >= 0) SDL_JoystickDetachVirtual(index);
+        pad = nullptr;
+        index = -1;
+    }
+    ~VirtualPad()
+    {
+        unplug();
+        if (sdl) SDL_QuitSubSystem(SDL_INIT_JOYSTICK | SDL_INIT_GAMECONTROLLER);
+    }
+};
+
 QString modelText(const QString& name)
 {
     QFile f(QStringLiteral(PADROB_SOURCE_DIR "/models/") + name);
@@ -121,6 +155,7 @@ private slots:
     void keyboardMapsDrivesInJointIdOrder();
     void keyboardWritesCommands();
     void virtualGamepadDrivesTheMachineThroughTheStation();
+    void stationLatencyReport();
 
 private:
     std::shared_ptr<const studio::ModelBundle> m_pendulum, m_liner;
@@ -574,18 +609,9 @@ void SimTest::keyboardWritesCommands()
 // through a bank switch waits for the centre; unplugging closes the valves.
 void SimTest::virtualGamepadDrivesTheMachineThroughTheStation()
 {
-    // the test's own share of SDL (the station's SdlJoysticks counts on top of it)
-    QVERIFY2(SDL_InitSubSystem(SDL_INIT_JOYSTICK | SDL_INIT_GAMECONTROLLER) == 0, SDL_GetError());
-    SDL_VirtualJoystickDesc desc{};
-    desc.version = SDL_VIRTUAL_JOYSTICK_DESC_VERSION;
-    desc.type = SDL_JOYSTICK_TYPE_GAMECONTROLLER;
-    desc.naxes = SDL_CONTROLLER_AXIS_MAX;
-    desc.nbuttons = SDL_CONTROLLER_BUTTON_MAX;
-    desc.name = "Padrob test gamepad";
-    const int index = SDL_JoystickAttachVirtualEx(&desc);
-    QVERIFY2(index >= 0, SDL_GetError());
-    SDL_Joystick* pad = SDL_JoystickOpen(index);
-    QVERIFY(pad);
+    VirtualPad vp;
+    QVERIFY2(vp.pad, SDL_GetError());
+    SDL_Joystick* pad = vp.pad;
 
     SimulationRunner r;
     r.setBundle(m_liner);
@@ -644,14 +670,60 @@ void SimTest::virtualGamepadDrivesTheMachineThroughTheStation()
         QCOMPARE(r.commands()[lift], 0.0);
 
         // unplugged: valves closed, a warning that names the pad
-        SDL_JoystickClose(pad);
-        QCOMPARE(SDL_JoystickDetachVirtual(index), 0);
+        vp.unplug();
         QTRY_COMPARE_WITH_TIMEOUT(r.commands()[wristLift], 0.0, 2000);
         QTRY_VERIFY_WITH_TIMEOUT(station.latest()->warnings.join("\n").contains("Padrob test gamepad"), 2000);
         r.pause();
         station.stop();
     }
-    SDL_QuitSubSystem(SDL_INIT_JOYSTICK | SDL_INIT_GAMECONTROLLER);
+}
+
+// Input-to-solver latency (a report, not a timed test): from the moment SDL's virtual
+// pad's axis moves to the first solver step that uses the new command, through the
+// station's input thread and the runner. Target: under one station period (1 ms) plus
+// one solver step (1 ms) plus the runner's publishing (up to a batch, 1 ms).
+void SimTest::stationLatencyReport()
+{
+    VirtualPad vp;
+    QVERIFY2(vp.pad, SDL_GetError());
+    SimulationRunner r;
+    r.setBundle(m_liner);
+    const solver::Model& m = *m_liner->model;
+    const auto slew = Eigen::Index(m.jointIndex(1));
+    trainer::Station station([&r](std::span<const double> u) { r.setCommands(u); });
+    station.start(true);
+    trainer::StationProfile profile;
+    profile.name = "latency";
+    profile.always.append({"gamepad", SDL_CONTROLLER_AXIS_LEFTX, 1, 1.0, 1});
+    profile.banks.append({"-", {}, {}});
+    station.call([&](trainer::StationEngine& e) {
+        e.setDrives(m.nb, trainer::drivesOf(m));
+        e.setProfile(profile);
+    });
+    QTRY_VERIFY_WITH_TIMEOUT(station.latest() && !station.latest()->devices.isEmpty() &&
+                                 station.latest()->warnings.isEmpty() && station.latest()->setupWarnings.isEmpty(),
+                             3000);
+    r.start();
+    std::vector<double> micros;
+    for (int i = 0; i < 60; ++i) {
+        const double target = (i % 2) ? 0.0 : 0.5;
+        QTest::qWait(7);  // the machine runs a little between moves
+        const auto t0 = std::chrono::steady_clock::now();
+        SDL_JoystickSetVirtualAxis(vp.pad, SDL_CONTROLLER_AXIS_LEFTX, Sint16(target * 32767.0));
+        for (;;) {
+            const auto s = r.latest();
+            if (std::abs(s->u[slew] - target) < 1e-3) break;
+            QVERIFY2(std::chrono::steady_clock::now() - t0 < std::chrono::seconds(2), "the command never arrived");
+            std::this_thread::sleep_for(std::chrono::microseconds(50));
+        }
+        micros.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
+    }
+    r.pause();
+    station.stop();
+    std::sort(micros.begin(), micros.end());
+    qInfo("input-to-solver latency (virtual pad → station thread → runner → step using it), %zu moves: "
+          "median %.0f us, 90%% %.0f us, max %.0f us",
+          micros.size(), micros[micros.size() / 2], micros[micros.size() * 9 / 10], micros.back());
 }
 
 QTEST_MAIN(SimTest)
