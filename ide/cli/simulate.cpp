@@ -9,10 +9,15 @@
 #include "solver/integrate/simulation.h"
 #include "solver/io/csv_writer.h"
 #include "solver/io/input_table.h"
+#include "trainer/input/input_log.h"
+#include "trainer/station/profile_store.h"
+#include "trainer/station/station_engine.h"
 #include "solver/kinematics/kinematics.h"
 #include "solver/model/load.h"
 
 #include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
 
 #include <algorithm>
 #include <charconv>
@@ -31,6 +36,55 @@ constexpr int kOk = 0, kModelErrors = 1, kUsage = 2;
 std::string tr(const char* s) { return QCoreApplication::translate("padrob-simulate", s).toStdString(); }
 
 void printErr(const std::string& s) { std::fwrite(s.data(), 1, s.size(), stderr); }
+
+
+namespace {
+
+/// A station engine that replays `logPath` through the profile `profileArg` (a file,
+/// a name of the model's profiles, or "" for the one made for the model). nullptr and
+/// `problem` when the log or profile cannot be used.
+std::unique_ptr<trainer::StationEngine> replayStation(const solver::Model& m, const std::string& modelPath,
+                                                      const std::string& logPath, const std::string& profileArg,
+                                                      bool passive, std::string& problem)
+{
+    auto log = std::make_shared<trainer::InputLog>();
+    QString error;
+    if (!trainer::InputLog::load(QString::fromStdString(logPath), *log, &error)) {
+        problem = logPath + ": " + error.toStdString();
+        return nullptr;
+    }
+    const QString model = QString::fromStdString(modelPath);
+    const QList<trainer::DriveInfo> drives = passive ? QList<trainer::DriveInfo>{} : trainer::drivesOf(m);
+    trainer::StationProfile profile;
+    QList<trainer::ProfileIssue> issues;
+    if (profileArg.empty()) {
+        profile = trainer::StationProfile::defaultFor(trainer::ProfileStore::modelKey(model), drives);
+    } else if (QFileInfo(QString::fromStdString(profileArg)).isFile()) {
+        QFile f(QString::fromStdString(profileArg));
+        if (!f.open(QIODevice::ReadOnly) || !trainer::StationProfile::fromJson(f.readAll(), profile, issues)) {
+            problem = profileArg + ": " +
+                      (issues.isEmpty() ? f.errorString() : issues.first().text()).toStdString();
+            return nullptr;
+        }
+    } else if (!trainer::ProfileStore().load(model, QString::fromStdString(profileArg), profile, issues)) {
+        problem = issues.isEmpty() ? profileArg : issues.first().text().toStdString();
+        return nullptr;
+    }
+    auto engine = std::make_unique<trainer::StationEngine>();
+    engine->setDrives(m.nb, drives);
+    engine->setReplayOnly(true);
+    for (auto& d : trainer::replayDevices(log)) engine->addDevice(d);
+    for (const trainer::ProfileIssue& i : engine->setProfile(profile)) {
+        if (i.error) {
+            problem = "--profile: " + i.text().toStdString();
+            return nullptr;
+        }
+        printErr("padrob simulate: warning: " + i.text().toStdString() + "\n");
+    }
+    return engine;
+}
+
+}  // namespace
 
 int usage(const std::string& message)
 {
@@ -148,6 +202,12 @@ std::string simulateHelp()
               "  --rtol R              relative tolerance of the adaptive integrator (default 1e-8)\n"
               "  --input FILE.csv      operator commands: a column t and one column u<joint id> per\n"
               "                        drive, values in [-1, 1], held between rows\n"
+              "  --input-log LOG       replay a recorded input log (raw device readings, from\n"
+              "                        padrob-studio's Station workspace) through a station profile,\n"
+              "                        with its timing; instead of --input\n"
+              "  --profile P           the profile for --input-log: a .json file, or the name of one\n"
+              "                        of the model's profiles (default: the one made for the model:\n"
+              "                        keyboard pairs in order, gamepad in banks)\n"
               "  --set J=VALUE         initial coordinate of joint J (overrides QI; T 1: length)\n"
               "  --rate J=VALUE        initial rate of joint J (overrides VI)\n"
               "  --passive             ignore every drive (all joints passive)\n"
@@ -181,7 +241,7 @@ std::string simulateHelp()
 
 int runSimulate(const std::vector<std::string>& args)
 {
-    std::string modelPath, inputPath, outPath;
+    std::string modelPath, inputPath, outPath, inputLogPath, profileArg;
     std::optional<double> time;
     double dt = 1e-3, rtol = 1e-8;
     long every = 1;
@@ -202,6 +262,7 @@ int runSimulate(const std::vector<std::string>& args)
         if (a == "--passive") { passive = true; continue; }
         if (a == "--no-limits") { noLimits = true; continue; }
         const bool takesValue = a == "--time" || a == "--dt" || a == "--integrator" || a == "--rtol" || a == "--input" ||
+                                a == "--input-log" || a == "--profile" ||
                                 a == "--set" || a == "--rate" || a == "--every" || a == "--out" ||
                                 a == "--weld" || a == "--release";
         if (takesValue) {
@@ -228,6 +289,10 @@ int runSimulate(const std::vector<std::string>& args)
                 else return usage(tr("--integrator must be rk4 or adaptive, not '") + *v + "'");
             } else if (a == "--input") {
                 inputPath = *v;
+            } else if (a == "--input-log") {
+                inputLogPath = *v;
+            } else if (a == "--profile") {
+                profileArg = *v;
             } else if (a == "--out") {
                 outPath = *v;
             } else if (a == "--weld" || a == "--release") {
@@ -248,6 +313,8 @@ int runSimulate(const std::vector<std::string>& args)
     }
     if (modelPath.empty()) return usage(tr("no model given"));
     if (!time) return usage(tr("--time is required"));
+    if (!inputPath.empty() && !inputLogPath.empty()) return usage(tr("--input and --input-log cannot be combined"));
+    if (!profileArg.empty() && inputLogPath.empty()) return usage(tr("--profile goes with --input-log"));
     if (dt > *time) return usage(tr("--dt is longer than --time"));
     const double steps = std::ceil(*time / dt - 1e-9);
     if (steps > 1e9) return usage(tr("--time / --dt is more than 1e9 steps"));
@@ -325,6 +392,18 @@ int runSimulate(const std::vector<std::string>& args)
         for (const solver::Diagnostic& d : diags) printErr(d.format() + "\n");
         if (!inputs || diags.hasErrors()) return kUsage;
         for (std::size_t c = 0; c < inputs->columnCount(); ++c) inputJoint.push_back(m.jointIndex(inputs->jointId(c)));
+    }
+
+    // the input log, replayed through a station profile (trainer/): the station engine
+    // runs on the simulated clock, one update per step
+    std::unique_ptr<trainer::StationEngine> station;
+    if (!inputLogPath.empty()) {
+        std::string problem;
+        station = replayStation(m, modelPath, inputLogPath, profileArg, passive, problem);
+        if (!station) {
+            printErr("padrob simulate: " + problem + "\n");
+            return kUsage;
+        }
     }
 
     // the output
@@ -464,6 +543,11 @@ int runSimulate(const std::vector<std::string>& args)
         if (cursor) {
             cursor->seek(t);
             for (std::size_t c = 0; c < inputJoint.size(); ++c) sim.setCommand(inputJoint[c], cursor->value(c));
+        }
+        if (station) {
+            station->update(t);
+            const std::vector<double>& u = station->commands();
+            for (int j = 0; j < m.nb; ++j) sim.setCommand(j, u[std::size_t(j)]);
         }
         if (!applySwitches(t)) return kModelErrors;
         if (k % every == 0 || k == n) writeRow();

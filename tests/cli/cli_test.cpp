@@ -208,7 +208,7 @@ TEST(CliSimulate, HelpListsEveryOption)
     CliRun r = padrob("simulate --help");
     EXPECT_EQ(r.status, 0);
     for (const char* opt : {"--time", "--dt", "--integrator", "--rtol", "--input", "--set", "--rate", "--passive",
-                            "--no-limits", "--every", "--out", "--weld", "--release"}) {
+                            "--no-limits", "--every", "--out", "--weld", "--release", "--input-log", "--profile"}) {
         EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
     }
 }
@@ -639,4 +639,79 @@ TEST(CliInertia, ErrorsLeaveTheFileAlone)
     CliRun none = padrob("inertia models/pendulum.pad");
     EXPECT_EQ(none.status, 0);
     EXPECT_NE(none.out.find("nothing to compute"), std::string::npos) << none.out;
+}
+
+namespace {
+
+const char* kKeyboardLogHead =
+    "# padrob input log 1\n"
+    "#device 0 {\"id\":\"keyboard\",\"name\":\"Keyboard\",\"kind\":\"keyboard\",\"axes\":["
+    "{\"name\":\"Q / A\",\"min\":-1,\"rest\":0,\"max\":1},{\"name\":\"W / S\",\"min\":-1,\"rest\":0,\"max\":1},"
+    "{\"name\":\"E / D\",\"min\":-1,\"rest\":0,\"max\":1}],\"buttons\":[]}\n";
+
+}  // namespace
+
+TEST(CliSimulate, AnInputLogReplaysThroughTheProfileLikeTheSameCommands)
+{
+    // the keyboard's third pair (E / D) held from 0.1 s to 0.6 s: with the profile made
+    // for the model it is drive C 3, so the run equals --input with u3 = 1 then
+    const std::string log = writeTemp("keys.log", std::string(kKeyboardLogHead) +
+                                                      "0,0,0,0,0\n0.1,0,0,0,1\n0.6,0,0,0,0\n");
+    const std::string csv = writeTemp("keys.csv", "t,u1,u2,u3,u4,u5,u6,u7,u8,u9\n0,0,0,0,0,0,0,0,0,0\n"
+                                                   "0.1,0,0,1,0,0,0,0,0,0\n0.6,0,0,0,0,0,0,0,0,0\n");
+    CliRun replay = padrob("simulate models/liner_manipulator.pad --time 1 --every 50 --input-log '" + log + "'");
+    ASSERT_EQ(replay.status, 0) << replay.err;
+    CliRun table = padrob("simulate models/liner_manipulator.pad --time 1 --every 50 --input '" + csv + "'");
+    ASSERT_EQ(table.status, 0) << table.err;
+    EXPECT_EQ(replay.out, table.out);
+    EXPECT_EQ(replay.err, table.err);
+    const auto rows = lines(replay.out);
+    ASSERT_EQ(rows.size(), 22u);
+    EXPECT_NE(rows[1], rows[21]);  // it moved
+}
+
+TEST(CliSimulate, AGamepadLogDrivesTheShippedGamepadProfileByName)
+{
+    // left stick pulled back from 0.1 s to 0.5 s: bank Boom lifts C 2 (18 mm/s)
+    std::string head = "# padrob input log 1\n#device 0 {\"id\":\"sdl:0300abcd\",\"name\":\"Pad\",\"kind\":\"gamepad\","
+                       "\"axes\":[";
+    const char* axes[] = {"leftx", "lefty", "rightx", "righty", "lefttrigger", "righttrigger"};
+    for (int a = 0; a < 6; ++a)
+        head += std::string(a ? "," : "") + "{\"name\":\"" + axes[a] + "\",\"min\":" + (a < 4 ? "-32768" : "0") +
+                ",\"rest\":0,\"max\":32767}";
+    head += "],\"buttons\":[\"a\",\"b\",\"x\",\"y\"]}\n";
+    const std::string log =
+        writeTemp("pad.log", head + "0,0,0,0,0,0,0,0,0,0,0,0\n0.1,0,0,32767,0,0,0,0,0,0,0,0\n0.5,0,0,0,0,0,0,0,0,0,0,0\n");
+    CliRun r = padrob("simulate models/liner_manipulator.pad --time 0.6 --every 100 --input-log '" + log +
+                      "' --profile Gamepad");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto rows = lines(r.out);
+    ASSERT_EQ(rows.size(), 8u);
+    auto column = [](const std::string& row, int c) {
+        std::size_t p = 0;
+        for (int i = 0; i < c; ++i) p = row.find(',', p) + 1;
+        return std::stod(row.substr(p));
+    };
+    const double vmax = 45e-6 * 1480 / 60 / (3.14159265358979 / 4 * 0.28 * 0.28);
+    EXPECT_NEAR(column(rows[7], 2) - column(rows[1], 2), 0.4 * vmax, 0.05 * vmax);  // q2
+}
+
+TEST(CliSimulate, BadInputLogsAndProfilesExitTwo)
+{
+    const std::string bad = writeTemp("bad.log", std::string(kKeyboardLogHead) + "0,0,0,0,0\n0.5,0,1\n");
+    CliRun r = padrob("simulate models/liner_manipulator.pad --time 1 --input-log '" + bad + "'");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("line 4"), std::string::npos) << r.err;
+    const std::string good = writeTemp("good.log", std::string(kKeyboardLogHead) + "0,0,0,0,0\n");
+    r = padrob("simulate models/liner_manipulator.pad --time 1 --input-log '" + good + "' --profile Nonexistent");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("Nonexistent"), std::string::npos) << r.err;
+    const std::string future = writeTemp("future.json", "{\"format\":\"padrob-station-profile\",\"version\":5,\"name\":\"x\"}");
+    r = padrob("simulate models/liner_manipulator.pad --time 1 --input-log '" + good + "' --profile '" + future + "'");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("newer"), std::string::npos) << r.err;
+    r = padrob("simulate models/liner_manipulator.pad --time 1 --input-log '" + good + "' --input x.csv");
+    EXPECT_EQ(r.status, 2);
+    r = padrob("simulate models/liner_manipulator.pad --time 1 --profile Gamepad");
+    EXPECT_EQ(r.status, 2);
 }
