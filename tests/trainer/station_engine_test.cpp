@@ -332,3 +332,34 @@ TEST(StationEngine, TheKeyboardDrivesInOrderUnlessTheProfileMapsIt)
     EXPECT_EQ(e.commands()[2], 0.0);   // pair 2 no longer mapped
     EXPECT_EQ(e.commands()[4], -1.0);  // pair 1 as the profile says
 }
+
+TEST(StationEngine, DevicesTheProfileListsAreOpenedAndClosedWithIt)
+{
+    StationEngine e;
+    e.setDrives(5, drives());
+    StationProfile p = twoBanks();
+    p.devices.append({"serial:/dev/padrob-no-such-port", 57600});
+    p.devices.append({"comedi:/dev/padrob-no-such-card", 0});
+    p.always.append({"serial", 0, 1, 1.0, 1});
+    const QList<ProfileIssue> issues = e.setProfile(p);
+#ifdef PADROB_HAVE_COMEDI
+    EXPECT_TRUE(issues.isEmpty()) << issues.value(0).text().toStdString();
+    ASSERT_EQ(e.devices().size(), 2u);
+    EXPECT_EQ(e.devices()[1]->info().id, "comedi:/dev/padrob-no-such-card");
+#else
+    ASSERT_EQ(issues.size(), 1);  // this build has no Comedi: the card is ignored, said why
+    EXPECT_TRUE(issues[0].message.contains("Comedi"));
+    ASSERT_EQ(e.devices().size(), 1u);
+#endif
+    EXPECT_EQ(e.devices()[0]->info().id, "serial:/dev/padrob-no-such-port");
+    e.update(0.001);
+    e.update(0.002);
+    EXPECT_EQ(e.devices()[0]->status(), DeviceStatus::Failed);
+    EXPECT_TRUE(e.devices()[0]->statusText().contains("/dev/padrob-no-such-port"));
+    const StationState st = e.state();
+    EXPECT_TRUE(st.warnings.isEmpty());  // never connected: a set-up matter, not the operator's
+    EXPECT_TRUE(st.setupWarnings.join("\n").contains("C 1")) << st.setupWarnings.join("\n").toStdString();
+    // a profile without them closes them
+    e.setProfile(twoBanks());
+    EXPECT_TRUE(e.devices().empty());
+}
