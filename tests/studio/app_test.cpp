@@ -8,6 +8,9 @@
 #include "ide/studio/editor/code_editor.h"
 #include "ide/studio/editor/editor_panel.h"
 #include "ide/studio/sim/keyboard_input.h"
+#include "ide/studio/station/station_page.h"
+#include "trainer/station/profile_store.h"
+#include "trainer/station/station.h"
 #include "ide/studio/sim/simulation_runner.h"
 #include "ide/studio/tree/model_tree.h"
 #include "ide/studio/view/viewport.h"
@@ -18,6 +21,7 @@
 #include <QFile>
 #include <QMessageBox>
 #include <QSet>
+#include <QLabel>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
@@ -344,6 +348,51 @@ private slots:
         QTest::keyPress(v, Qt::Key_S);
         QTRY_COMPARE(w.runner()->commands()[static_cast<std::size_t>(lift)], -1.0);
         QTest::keyRelease(v, Qt::Key_S);
+    }
+
+    // The Station workspace: the liner's Gamepad profile is chosen at the first start,
+    // the HUD shows the active bank, a profile's unsaved edits survive re-applying the
+    // model, and the profile chosen is remembered for the next start.
+    void theStationWorkspaceAndTheHud()
+    {
+        QSettings().remove("station");
+        QDir(trainer::ProfileStore::defaultRoot()).removeRecursively();  // the test location's
+        {
+            MainWindow w;
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QVERIFY(openAndWait(w, modelPath("liner_manipulator.pad")));
+            StationPage* page = w.stationPage();
+            QVERIFY(page);
+            QCOMPARE(page->profile().name, QStringLiteral("Gamepad"));
+            QVERIFY(page->isShippedProfile());
+            QTRY_VERIFY(w.hud()->isVisible() && w.hud()->text().contains("Boom"));
+            w.station()->post([](trainer::StationEngine& e) { e.selectBank(1); });
+            QTRY_VERIFY(w.hud()->text().contains("Wrist"));
+            QVERIFY(w.grab().save(screenshotPath("app_hud_bank.png")));
+            w.setWorkspace(MainWindow::Workspace::Station);
+            QTest::qWait(100);
+            QVERIFY(w.grab().save(screenshotPath("app_station_workspace.png")));
+
+            // a new profile, not saved yet, survives the model being applied again
+            QVERIFY(page->newProfile("Trainer's"));
+            QVERIFY(page->isDirty());
+            w.editor()->apply();
+            QTest::qWait(50);
+            QCOMPARE(page->profile().name, QStringLiteral("Trainer's"));
+            QVERIFY(page->isDirty());
+            QVERIFY(page->save());
+            QTRY_VERIFY(w.station()->latest() && w.station()->latest()->profileName == "Trainer's");
+            w.setWorkspace(MainWindow::Workspace::Model);
+        }
+        // the next start picks the profile used last
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(openAndWait(w, modelPath("liner_manipulator.pad")));
+        QCOMPARE(w.stationPage()->profile().name, QStringLiteral("Trainer's"));
+        QVERIFY(trainer::ProfileStore().remove(modelPath("liner_manipulator.pad"), "Trainer's"));
+        QSettings().remove("station");
     }
 };
 

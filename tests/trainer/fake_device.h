@@ -1,5 +1,5 @@
 #pragma once
-// A device the test sets by hand: axes, buttons, status.
+// A device the test sets by hand: axes, buttons, status (trainer and studio tests).
 #include "trainer/input/input_device.h"
 
 namespace test {
@@ -7,10 +7,10 @@ namespace test {
 class FakeDevice : public trainer::InputDevice {
 public:
     FakeDevice(QString id, trainer::DeviceKind kind, int axes, int buttons, double min = -100, double rest = 0,
-               double max = 100)
+               double max = 100, QString name = {})
     {
         m_info.id = std::move(id);
-        m_info.name = "Fake " + m_info.id;
+        m_info.name = name.isEmpty() ? "Fake " + m_info.id : name;
         m_info.kind = kind;
         for (int a = 0; a < axes; ++a) m_info.axes.append({QString("Axis %1").arg(a + 1), min, rest, max});
         for (int b = 0; b < buttons; ++b) m_info.buttons.append(QString("Button %1").arg(b + 1));

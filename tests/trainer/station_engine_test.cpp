@@ -363,3 +363,21 @@ TEST(StationEngine, DevicesTheProfileListsAreOpenedAndClosedWithIt)
     e.setProfile(twoBanks());
     EXPECT_TRUE(e.devices().empty());
 }
+
+TEST(StationEngine, HoldingClosesEveryValveAndLeversAreCentredAfterwards)
+{
+    Rig r;
+    r.engine.setProfile(twoBanks());
+    r.step();
+    r.pad->setAxis(0, 70);
+    EXPECT_NEAR(r.step()[0], 0.7, 1e-12);
+    r.engine.setHolding(true);
+    EXPECT_EQ(r.step()[0], 0.0);
+    EXPECT_TRUE(r.engine.state().warnings.join("").contains("Calibrating"));
+    r.engine.setHolding(false);
+    EXPECT_EQ(r.step()[0], 0.0);  // still over: waits for the centre
+    r.pad->setAxis(0, 0);
+    r.step();
+    r.pad->setAxis(0, 70);
+    EXPECT_NEAR(r.step()[0], 0.7, 1e-12);
+}

@@ -29,16 +29,29 @@ void Station::start(bool withSdl)
     m_thread = new QThread;
     m_thread->setObjectName("padrob-input");
     moveToThread(m_thread);
+    // runs in the new thread as it starts (connected before it exists: no hand-over)
+    connect(m_thread, &QThread::started, this, [this, withSdl] { begin(withSdl); }, Qt::DirectConnection);
     m_thread->start();
-    post([this, withSdl](StationEngine& e) {
-        if (withSdl) e.addProvider(std::make_unique<SdlJoysticks>());
-        m_timer = new QTimer(this);
-        m_timer->setTimerType(Qt::PreciseTimer);
-        m_timer->setInterval(kPeriodMs);
-        connect(m_timer, &QTimer::timeout, this, &Station::tick);
-        m_timer->start();
-        tick();
-    });
+}
+
+void Station::begin(bool withSdl)
+{
+    if (withSdl) m_engine->addProvider(std::make_unique<SdlJoysticks>());
+    m_timer = new QTimer(this);
+    m_timer->setTimerType(Qt::PreciseTimer);
+    m_timer->setInterval(kPeriodMs);
+    connect(m_timer, &QTimer::timeout, this, &Station::tick);
+    m_timer->start();
+    tick();
+}
+
+void Station::finish()
+{
+    delete m_timer;
+    m_timer = nullptr;
+    m_engine.reset();  // the devices (QSerialPort, SDL) die in their own thread
+    moveToThread(nullptr);
+    QThread::currentThread()->quit();
 }
 
 void Station::stop()
@@ -47,20 +60,17 @@ void Station::stop()
         m_engine.reset();
         return;
     }
-    // the engine, its devices (QSerialPort, SDL) and the timer die in their own thread
-    QMetaObject::invokeMethod(
-        this,
-        [this] {
-            delete m_timer;
-            m_timer = nullptr;
-            m_engine.reset();
-            moveToThread(nullptr);
-            QThread::currentThread()->quit();
-        },
-        Qt::QueuedConnection);
-    m_thread->wait();
+    {
+        std::lock_guard lock(m_postMutex);
+        m_stopping = true;
+    }
+    m_thread->wait();  // the next tick finishes
     delete m_thread;
     m_thread = nullptr;
+    std::lock_guard lock(m_postMutex);
+    m_queue.clear();
+    m_doneCount = m_postCount;
+    m_posted.notify_all();
 }
 
 bool Station::isRunning() const
@@ -74,13 +84,10 @@ void Station::post(std::function<void(StationEngine&)> f)
         if (m_engine) f(*m_engine);
         return;
     }
-    QMetaObject::invokeMethod(
-        this,
-        [this, f = std::move(f)] {
-            if (m_engine) f(*m_engine);
-            m_lastPublish = -1.0;  // the change shows in the next state
-        },
-        Qt::QueuedConnection);
+    std::lock_guard lock(m_postMutex);
+    if (m_stopping) return;
+    m_queue.push_back(std::move(f));
+    ++m_postCount;
 }
 
 void Station::call(std::function<void(StationEngine&)> f)
@@ -89,13 +96,29 @@ void Station::call(std::function<void(StationEngine&)> f)
         if (m_engine) f(*m_engine);
         return;
     }
-    QMetaObject::invokeMethod(
-        this,
-        [this, &f] {
-            if (m_engine) f(*m_engine);
-            m_lastPublish = -1.0;
-        },
-        Qt::BlockingQueuedConnection);
+    std::unique_lock lock(m_postMutex);
+    if (m_stopping) return;
+    m_queue.push_back([&f](StationEngine& e) { f(e); });
+    const std::uint64_t mine = ++m_postCount;
+    m_posted.wait(lock, [&] { return m_doneCount >= mine; });
+}
+
+void Station::drain()
+{
+    for (;;) {
+        std::function<void(StationEngine&)> f;
+        {
+            std::lock_guard lock(m_postMutex);
+            if (m_queue.empty()) return;
+            f = std::move(m_queue.front());
+            m_queue.pop_front();
+        }
+        if (m_engine) f(*m_engine);
+        m_lastPublish = -1.0;  // the change shows in the next state
+        std::lock_guard lock(m_postMutex);
+        ++m_doneCount;
+        m_posted.notify_all();
+    }
 }
 
 std::shared_ptr<const StationState> Station::latest() const
@@ -106,6 +129,16 @@ std::shared_ptr<const StationState> Station::latest() const
 
 void Station::tick()
 {
+    bool stopping = false;
+    {
+        std::lock_guard lock(m_postMutex);
+        stopping = m_stopping;
+    }
+    if (stopping) {
+        finish();
+        return;
+    }
+    drain();
     if (!m_engine) return;
     const double t = now();
     if (m_engine->update(t) && m_sink) m_sink(m_engine->commands());

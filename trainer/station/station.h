@@ -5,8 +5,10 @@
 // Threads: the Station object lives in its input thread (start() creates the thread
 // and moves it there; the engine, its devices and SDL are created and polled only
 // there). Every other thread talks to it in two ways only:
-//  - post(f): f(engine) runs in the input thread (queued), for any change: a profile,
-//    a calibration, a device, a bank;
+//  - post(f): f(engine) runs in the input thread before its next update (a queue of
+//    our own under a mutex, drained every tick — not Qt's event queue, so
+//    ThreadSanitizer sees the hand-over), for any change: a profile, a calibration, a
+//    device, a bank;
 //  - latest(): the newest StationState (a shared_ptr copied under a mutex held for that
 //    copy), refreshed at kStateRate for displays.
 // Commands: after each update that changed them, the engine's commands go to the sink
@@ -21,6 +23,8 @@
 #include <chrono>
 #include <functional>
 #include <memory>
+#include <condition_variable>
+#include <deque>
 #include <mutex>
 #include <span>
 
@@ -59,6 +63,10 @@ public:
 
 private:
     void tick();
+    /// Runs the posted work (input thread).
+    void drain();
+    void begin(bool withSdl);
+    void finish();
 
     CommandSink m_sink;
     std::unique_ptr<StationEngine> m_engine;
@@ -66,6 +74,11 @@ private:
     QTimer* m_timer = nullptr;
     std::chrono::steady_clock::time_point m_epoch;
     double m_lastPublish = -1.0;
+    std::mutex m_postMutex;
+    std::condition_variable m_posted;
+    std::deque<std::function<void(StationEngine&)>> m_queue;
+    std::uint64_t m_postCount = 0, m_doneCount = 0;  ///< under m_postMutex
+    bool m_stopping = false;                         ///< under m_postMutex
     mutable std::mutex m_stateMutex;
     std::shared_ptr<const StationState> m_state;
 };

@@ -208,6 +208,13 @@ void StationEngine::rebuildLive()
     std::fill(m_commands.begin(), m_commands.end(), 0.0);
 }
 
+void StationEngine::setHolding(bool holding)
+{
+    if (holding == m_holding) return;
+    m_holding = holding;
+    for (Live& l : m_live) l.armed = false;
+}
+
 void StationEngine::disarmBank(int bank)
 {
     for (Live& l : m_live)
@@ -298,7 +305,7 @@ bool StationEngine::update(double now)
     for (double& u : m_commands) u = 0.0;
     for (Live& l : m_live) {
         l.contribution = 0.0;
-        if (l.treeJoint < 0 || l.device < 0) continue;
+        if (l.treeJoint < 0 || l.device < 0 || m_holding) continue;
         if (l.bank >= 0 && l.bank != m_activeBank) continue;
         const InputDevice& d = *m_devices[std::size_t(l.device)];
         const Device& dev = m_state[std::size_t(l.device)];
@@ -392,6 +399,7 @@ StationState StationEngine::state() const
             missing.append(l.mapping.device);
     missing.removeDuplicates();
     for (const QString& m : missing) st.setupWarnings.append(tre("No %1 found: its drives hold").arg(m));
+    if (m_holding) st.warnings.append(tre("Calibrating: every valve is held closed"));
     waiting.removeDuplicates();
     if (!waiting.isEmpty())
         st.warnings.append(tre("Bring the lever to centre to take over: %1").arg(waiting.join(", ")));

@@ -119,6 +119,11 @@ public:
     /// demonstration drives the machine, not the operator).
     void setReplayOnly(bool replayOnly);
 
+    /// While holding (a lever being calibrated), every command is 0 and the warnings
+    /// say so; afterwards every mapping waits for its lever at the centre again.
+    void setHolding(bool holding);
+    bool isHolding() const { return m_holding; }
+
     void selectBank(int bank);
     int activeBank() const { return m_activeBank; }
 
@@ -177,6 +182,7 @@ private:
     int m_implicitKeyboard = -1;  ///< index in m_live of the implicit keyboard mappings
     double m_now = 0.0;
     bool m_replayOnly = false;
+    bool m_holding = false;
     InputRecorder* m_recorder = nullptr;
 };
 

@@ -4,6 +4,7 @@
 #include "ide/studio/editor/editor_panel.h"
 #include "ide/studio/plots/plot_panel.h"
 #include "ide/studio/sim/keyboard_input.h"
+#include "ide/studio/station/station_page.h"
 #include "trainer/input/keyboard_device.h"
 #include "trainer/station/profile_store.h"
 #include "trainer/station/station.h"
@@ -77,6 +78,16 @@ QWidget* comingPage(const QString& title, const QString& text)
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_runner(std::make_unique<SimulationRunner>())
 {
     setObjectName("MainWindow");
+    // the operator's station: its input thread reads every device (the keyboard, SDL
+    // joysticks, serial consoles) and writes the mapped commands to the solver thread
+    m_station = std::make_unique<trainer::Station>(
+        [runner = m_runner.get()](std::span<const double> u) { runner->setCommands(u); });
+    m_station->start(qEnvironmentVariableIntValue("PADROB_NO_JOYSTICKS") == 0);
+    m_stationPage = new StationPage(m_station.get());
+    connect(m_stationPage, &StationPage::profileChanged, this, [this](const trainer::StationProfile& p) {
+        if (!p.name.isEmpty() && (m_stationPage->isUserProfile() || m_stationPage->isShippedProfile()))
+            QSettings().setValue("station/profile/" + trainer::ProfileStore::modelKey(m_stationPage->modelPath()), p.name);
+    });
     buildWorkspaces();
     buildMenus();
 
@@ -90,11 +101,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_runner(std::mak
     statusBar()->addPermanentWidget(m_rtLabel);
     statusBar()->addPermanentWidget(m_frameLabel);
 
-    // the operator's station: its input thread reads every device (the keyboard, SDL
-    // joysticks, serial consoles) and writes the mapped commands to the solver thread
-    m_station = std::make_unique<trainer::Station>(
-        [runner = m_runner.get()](std::span<const double> u) { runner->setCommands(u); });
-    m_station->start(qEnvironmentVariableIntValue("PADROB_NO_JOYSTICKS") == 0);
+    // the keyboard is a station device like any other
     m_keyboardDevice = std::make_shared<trainer::KeyboardDevice>(KeyboardInput::pairNames());
     m_station->post([device = m_keyboardDevice](trainer::StationEngine& e) { e.addDevice(device); });
     m_keyboard = new KeyboardInput(m_runner.get(), this);
@@ -132,6 +139,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_runner(std::mak
 MainWindow::~MainWindow()
 {
     m_pollTimer->stop();
+    delete m_stationPage;  // it talks to the station: before the station goes
+    m_stationPage = nullptr;
     m_station->stop();  // no more commands to the runner
     m_runner->pause();
 }
@@ -171,8 +180,7 @@ void MainWindow::buildWorkspaces()
     m_modelSpace->resizeDocks({plotsDock}, {240}, Qt::Vertical);
 
     m_workspaces->addWidget(m_modelSpace);
-    m_workspaces->addWidget(comingPage(tr("Station"), tr("Input devices, calibration and valve mapping for the "
-                                                         "operator's station will be set up here.")));
+    m_workspaces->addWidget(m_stationPage);
     m_workspaces->addWidget(comingPage(tr("Train"), tr("Tutorials, scoring and trainee records will be run "
                                                        "here.")));
     setCentralWidget(m_workspaces);
@@ -560,32 +568,16 @@ void MainWindow::updateHud()
 void MainWindow::setStationModel(const std::shared_ptr<const ModelBundle>& bundle)
 {
     const QList<trainer::DriveInfo> drives = trainer::drivesOf(*bundle->model);
-    const QString modelPath = bundle->filePath;
-    trainer::ProfileStore store;
-    trainer::StationProfile profile;
-    QList<trainer::ProfileIssue> issues;
-    const QString key = trainer::ProfileStore::modelKey(modelPath);
-    const QString remembered = QSettings().value("station/profile/" + key).toString();
-    bool found = !remembered.isEmpty() && store.load(modelPath, remembered, profile, issues);
-    if (!found && !modelPath.isEmpty()) {
-        // first start: a gamepad profile if there is one (the common case), else the first
-        QList<trainer::StoredProfile> stored = store.list(modelPath);
-        std::stable_partition(stored.begin(), stored.end(),
-                              [](const trainer::StoredProfile& s) { return s.name == QLatin1String("Gamepad"); });
-        for (const trainer::StoredProfile& s : stored) {
-            issues.clear();
-            if (s.readable && store.load(modelPath, s.name, profile, issues)) {
-                found = true;
-                break;
-            }
-        }
-    }
-    if (!found) profile = trainer::StationProfile::defaultFor(key, drives);
     const int nb = bundle->model->nb;
-    m_station->post([nb, drives, profile](trainer::StationEngine& e) {
-        e.setDrives(nb, drives);
-        e.setProfile(profile);
-    });
+    m_station->post([nb, drives](trainer::StationEngine& e) { e.setDrives(nb, drives); });
+    if (!bundle->filePath.isEmpty() && bundle->filePath == m_stationPage->modelPath()) {
+        m_stationPage->setDrives(drives);  // an edit re-applied: the profile and its edits stay
+        return;
+    }
+    const QString key = trainer::ProfileStore::modelKey(bundle->filePath);
+    QString preferred = QSettings().value("station/profile/" + key).toString();
+    if (preferred.isEmpty()) preferred = QStringLiteral("Gamepad");  // the common case on first start
+    m_stationPage->setModel(bundle->filePath, drives, preferred);
 }
 
 void MainWindow::onSimulationFailed(const QString& message)
@@ -665,7 +657,7 @@ void MainWindow::saveLayout()
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
-    if (!maybeSave()) {
+    if (!maybeSave() || !m_stationPage->maybeDiscard()) {
         event->ignore();
         return;
     }

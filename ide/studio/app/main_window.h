@@ -1,8 +1,8 @@
 #pragma once
 // MainWindow: padrob-studio's window (DESIGN.md "layout").
 //
-// A mode bar on the left switches the three workspaces: Model (now), Station and
-// Train (their issues: the pages say so). The Model workspace is an inner main
+// A mode bar on the left switches the three workspaces: Model, Station (devices,
+// calibration, valve mapping: StationPage) and Train (its issue: the page says so). The Model workspace is an inner main
 // window whose central widget is the 3D viewport layout, with docks for the model
 // tree, the joint sliders, the editor (with its problems list) and the plots; its
 // dock layout and the window geometry persist in QSettings, as do the recent files.
@@ -43,6 +43,7 @@ class KeyboardInput;
 class ModelTree;
 class PlotPanel;
 class SimulationRunner;
+class StationPage;
 class ViewportLayout;
 
 class MainWindow : public QMainWindow {
@@ -68,6 +69,7 @@ public:
     trainer::Station* station() const { return m_station.get(); }
     /// The heads-up display over the viewports (profile, active bank, device warnings).
     QLabel* hud() const { return m_hud; }
+    StationPage* stationPage() const { return m_stationPage; }
     std::shared_ptr<const ModelBundle> bundle() const { return m_bundle; }
 
     enum class Workspace { Model, Station, Train };
@@ -90,8 +92,9 @@ private:
     void applyBundle(std::shared_ptr<const ModelBundle> bundle);
     void poll();
     void updateHud();
-    /// Gives the station the model's drives and the profile chosen for the model (the
-    /// one used last, else the first stored, else one made for it).
+    /// Gives the station the model's drives, and the Station workspace the model: it
+    /// installs the profile used last with this model, else its Gamepad profile, else
+    /// the first stored, else one made for it.
     void setStationModel(const std::shared_ptr<const ModelBundle>& bundle);
     void updateTitle();
     void updateRecentMenu();
@@ -116,6 +119,7 @@ private:
     std::unique_ptr<trainer::Station> m_station;  ///< after m_runner: destroyed first
     std::shared_ptr<trainer::KeyboardDevice> m_keyboardDevice;
     QLabel* m_hud = nullptr;
+    StationPage* m_stationPage = nullptr;
     QString m_hudText;
 
     QStackedWidget* m_workspaces = nullptr;

@@ -1,0 +1,990 @@
+#include "ide/studio/station/station_page.h"
+
+#include "ide/studio/station/calibration_wizard.h"
+#include "ide/studio/station/channel_bars.h"
+#include "ide/studio/station/live_state.h"
+#include "ide/studio/station/mapping_table.h"
+#include "ide/studio/station/serial_console_dialog.h"
+#include "trainer/input/input_log.h"
+
+#include <QComboBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QPointer>
+#include <QFrame>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QInputDialog>
+#include <QLabel>
+#include <QListWidget>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSignalBlocker>
+#include <QSplitter>
+#include <QStandardItemModel>
+#include <QTimer>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace studio {
+
+namespace {
+
+constexpr int kNameRole = Qt::UserRole;
+constexpr int kStoredRole = Qt::UserRole + 1;  // false: the unsaved profile's item
+constexpr int kReplayRole = Qt::UserRole + 1;  // devices list: a replay
+
+QString issuesKey(const QList<trainer::ProfileIssue>& issues)
+{
+    QString key;
+    for (const trainer::ProfileIssue& i : issues) key += i.text() + QLatin1Char(i.error ? 'E' : 'W') + QLatin1Char('\n');
+    return key;
+}
+
+}  // namespace
+
+StationPage::StationPage(trainer::Station* station, QWidget* parent) : QWidget(parent), m_station(station)
+{
+    auto* layout = new QVBoxLayout(this);
+    buildProfileBar(layout);
+
+    // the banner: active bank and warnings
+    m_banner = new QFrame(this);
+    m_banner->setObjectName(QStringLiteral("stationBanner"));
+    auto* bannerLayout = new QHBoxLayout(m_banner);
+    bannerLayout->setContentsMargins(12, 6, 12, 6);
+    m_bank = new QLabel(m_banner);
+    QFont big = m_bank->font();
+    big.setPointSizeF(big.pointSizeF() * 1.45);
+    big.setBold(true);
+    m_bank->setFont(big);
+    m_bank->setToolTip(tr("The bank of mappings the operator's levers drive now"));
+    bannerLayout->addWidget(m_bank, 0, Qt::AlignTop);
+    bannerLayout->addSpacing(24);
+    m_warnings = new QLabel(m_banner);
+    m_warnings->setWordWrap(true);
+    m_warnings->setTextFormat(Qt::PlainText);
+    m_warnings->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    QFont warningFont = m_warnings->font();
+    warningFont.setBold(true);
+    m_warnings->setFont(warningFont);
+    bannerLayout->addWidget(m_warnings, 1);
+    layout->addWidget(m_banner);
+
+    auto* splitter = new QSplitter(Qt::Horizontal, this);
+    splitter->setChildrenCollapsible(false);
+    splitter->addWidget(buildDevices(splitter));
+    auto* mapping = new QGroupBox(tr("Valve mapping"), splitter);
+    auto* mappingLayout = new QVBoxLayout(mapping);
+    m_mappings = new MappingTable(mapping);
+    mappingLayout->addWidget(m_mappings);
+    splitter->addWidget(mapping);
+    splitter->setStretchFactor(0, 5);
+    splitter->setStretchFactor(1, 6);
+    splitter->setSizes({560, 940});
+    layout->addWidget(splitter, 1);
+
+    m_mappings->setConfirm([this](const QString& question) { return ask(tr("Remove bank"), question); });
+    connect(m_mappings, &MappingTable::edited, this, &StationPage::mappingEdited);
+    connect(m_channels, &ChannelPanel::calibrateRequested, this, [this](int axis) { calibrate(axis); });
+
+    m_timer = new QTimer(this);
+    m_timer->setInterval(1000 / kRefreshHz);
+    connect(m_timer, &QTimer::timeout, this, &StationPage::refresh);
+    showBanner(trainer::StationState{});
+    updateButtons();
+}
+
+StationPage::~StationPage()
+{
+    // the recorder is used in the input thread: detach it there before it goes
+    if (m_recorder && m_station) {
+        trainer::InputRecorder* r = m_recorder.get();
+        m_station->call([r](trainer::StationEngine& e) {
+            e.setRecorder(nullptr);
+            r->stop();
+        });
+    }
+    if (isReplaying() && m_station) {
+        auto devices = std::move(m_replays);
+        m_station->post([devices](trainer::StationEngine& e) {
+            for (const auto& d : devices) e.removeDevice(d.get());
+            e.setReplayOnly(false);
+        });
+    }
+}
+
+void StationPage::buildProfileBar(QVBoxLayout* layout)
+{
+    auto* bar = new QHBoxLayout;
+    auto* title = new QLabel(tr("Profile:"), this);
+    QFont bold = title->font();
+    bold.setBold(true);
+    title->setFont(bold);
+    bar->addWidget(title);
+    m_profiles = new QComboBox(this);
+    m_profiles->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_profiles->setMinimumContentsLength(30);
+    m_profiles->setToolTip(tr("The station profiles of this model: yours, and those shipped with it"));
+    connect(m_profiles, &QComboBox::activated, this, &StationPage::profileActivated);
+    bar->addWidget(m_profiles);
+    m_new = new QPushButton(tr("New"), this);
+    m_new->setToolTip(tr("An empty profile with one bank"));
+    m_save = new QPushButton(tr("Save"), this);
+    m_save->setToolTip(tr("Save the profile under its name (a shipped profile is saved as your own copy)"));
+    m_saveAs = new QPushButton(tr("Save As…"), this);
+    m_delete = new QPushButton(tr("Delete"), this);
+    m_delete->setToolTip(tr("Delete this profile of yours (shipped profiles cannot be deleted)"));
+    m_import = new QPushButton(tr("Import…"), this);
+    m_import->setToolTip(tr("Add a profile file (from another station) to this model's profiles"));
+    m_export = new QPushButton(tr("Export…"), this);
+    m_export->setToolTip(tr("Write this profile to a file"));
+    for (QPushButton* b : {m_new, m_save, m_saveAs, m_delete, m_import, m_export}) bar->addWidget(b);
+    bar->addStretch(1);
+    connect(m_new, &QPushButton::clicked, this, [this] { newProfile(); });
+    connect(m_save, &QPushButton::clicked, this, [this] { save(); });
+    connect(m_saveAs, &QPushButton::clicked, this, [this] { saveAs(); });
+    connect(m_delete, &QPushButton::clicked, this, [this] { deleteProfile(); });
+    connect(m_import, &QPushButton::clicked, this, [this] { importProfile(); });
+    connect(m_export, &QPushButton::clicked, this, [this] { exportProfile(); });
+    layout->addLayout(bar);
+
+    m_description = new QLabel(this);
+    m_description->setWordWrap(true);
+    m_description->setStyleSheet(QStringLiteral("color: palette(placeholder-text)"));
+    m_description->hide();
+    layout->addWidget(m_description);
+
+    m_error = new QLabel(this);
+    m_error->setWordWrap(true);
+    m_error->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_error->setStyleSheet(QStringLiteral("color: %1").arg(redColor().name()));
+    m_error->hide();
+    layout->addWidget(m_error);
+
+    m_issues = new QListWidget(this);
+    m_issues->setSelectionMode(QAbstractItemView::NoSelection);
+    m_issues->setFocusPolicy(Qt::NoFocus);
+    m_issues->setToolTip(tr("Problems of this profile with this model: a mapping with a warning is ignored"));
+    m_issues->hide();
+    layout->addWidget(m_issues);
+}
+
+QWidget* StationPage::buildDevices(QWidget* parent)
+{
+    auto* left = new QWidget(parent);
+    auto* layout = new QVBoxLayout(left);
+    layout->setContentsMargins(0, 0, 0, 0);
+
+    auto* devices = new QGroupBox(tr("Devices"), left);
+    auto* dl = new QVBoxLayout(devices);
+    m_devices = new QTreeWidget(devices);
+    m_devices->setColumnCount(DeviceColumnCount);
+    m_devices->setHeaderLabels({tr("Device"), tr("Status"), tr("Samples"), tr("Dropped")});
+    m_devices->headerItem()->setToolTip(DroppedColumn, tr("Readings dropped as corrupt (a serial line with a bad checksum…)"));
+    m_devices->setRootIsDecorated(false);
+    m_devices->setAllColumnsShowFocus(true);
+    m_devices->setTextElideMode(Qt::ElideMiddle);
+    QHeaderView* header = m_devices->header();
+    header->setStretchLastSection(false);
+    header->setSectionResizeMode(QHeaderView::Interactive);
+    header->setSectionResizeMode(StatusColumn, QHeaderView::Stretch);
+    m_devices->setColumnWidth(NameColumn, 210);
+    m_devices->setColumnWidth(SamplesColumn, 66);
+    m_devices->setColumnWidth(DroppedColumn, 64);
+    const int lineHeight = m_devices->fontMetrics().height();
+    m_devices->setMinimumHeight(5 * lineHeight);
+    m_devices->setMaximumHeight(10 * lineHeight);
+    dl->addWidget(m_devices);
+    m_deviceDetail = new QLabel(devices);
+    m_deviceDetail->setWordWrap(true);
+    m_deviceDetail->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_deviceDetail->hide();
+    dl->addWidget(m_deviceDetail);
+    connect(m_devices, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* item) {
+        if (!item) return;
+        selectDevice(item->data(NameColumn, kNameRole).toString(), item->data(NameColumn, kReplayRole).toBool());
+    });
+
+    auto* buttons = new QHBoxLayout;
+    m_addSerial = new QPushButton(tr("Add serial console…"), devices);
+    m_addSerial->setToolTip(tr("A replica console (DAQ box) on a serial port, kept in the profile"));
+    m_removeDevice = new QPushButton(tr("Remove"), devices);
+    m_removeDevice->setToolTip(tr("Remove the selected device from the profile (only devices the profile opens: "
+                                  "joysticks and gamepads are found by themselves)"));
+    m_record = new QPushButton(tr("Record input…"), devices);
+    m_record->setToolTip(tr("Write everything the devices read to an input log"));
+    m_replay = new QPushButton(tr("Replay a log…"), devices);
+    m_replay->setToolTip(tr("Play a recorded input log: it drives the machine instead of the operator"));
+    connect(m_addSerial, &QPushButton::clicked, this, [this] { addSerialConsole(); });
+    connect(m_removeDevice, &QPushButton::clicked, this, [this] { removeSelectedDevice(); });
+    connect(m_record, &QPushButton::clicked, this, [this] { isRecording() ? stopRecording() : startRecording(); });
+    connect(m_replay, &QPushButton::clicked, this, [this] {
+        if (isReplaying()) stopReplay();
+        else startReplay();
+    });
+    for (QPushButton* b : {m_addSerial, m_removeDevice, m_record, m_replay}) buttons->addWidget(b);
+    buttons->addStretch(1);
+    dl->addLayout(buttons);
+    m_activity = new QLabel(devices);
+    m_activity->setWordWrap(true);
+    m_activity->hide();
+    dl->addWidget(m_activity);
+    layout->addWidget(devices, 0);
+
+    auto* channels = new QGroupBox(tr("Channels"), left);
+    auto* cl = new QVBoxLayout(channels);
+    auto* scroll = new QScrollArea(channels);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    m_channels = new ChannelPanel(scroll);
+    scroll->setWidget(m_channels);
+    cl->addWidget(scroll);
+    layout->addWidget(channels, 1);
+    return left;
+}
+
+// ---- model and store -----------------------------------------------------------
+
+void StationPage::setProfileStore(const trainer::ProfileStore& store)
+{
+    m_store = store;
+    listProfiles();
+    fillCombo();
+}
+
+void StationPage::setDrives(const QList<trainer::DriveInfo>& drives)
+{
+    m_drives = drives;
+    m_mappings->setDrives(drives);
+    m_mappings->setProfile(m_profile);
+    install(true);
+}
+
+void StationPage::setModel(const QString& modelPath, const QList<trainer::DriveInfo>& drives, const QString& preferred)
+{
+    m_modelPath = modelPath;
+    m_drives = drives;
+    m_mappings->setDrives(drives);
+    listProfiles();
+    clearError();
+    // the preferred profile, the first readable one, or the model's default
+    QStringList order;
+    if (!preferred.isEmpty()) order << preferred;
+    for (const trainer::StoredProfile& s : m_stored)
+        if (s.readable) order << s.name;
+    for (const QString& name : order) {
+        if (std::none_of(m_stored.begin(), m_stored.end(),
+                         [&](const trainer::StoredProfile& s) { return s.name == name && s.readable; }))
+            continue;
+        trainer::StationProfile p;
+        QList<trainer::ProfileIssue> issues;
+        if (!m_store.load(m_modelPath, name, p, issues)) continue;
+        const auto s = std::find_if(m_stored.begin(), m_stored.end(),
+                                    [&](const trainer::StoredProfile& s) { return s.name == name; });
+        setCurrent(p, s->shipped ? Origin::Shipped : Origin::User, name, false);
+        return;
+    }
+    setCurrent(trainer::StationProfile::defaultFor(trainer::ProfileStore::modelKey(modelPath), drives), Origin::Unsaved,
+               {}, false);
+}
+
+void StationPage::listProfiles()
+{
+    m_stored = m_modelPath.isEmpty() ? QList<trainer::StoredProfile>{} : m_store.list(m_modelPath);
+}
+
+QString StationPage::userFile(const QString& name) const
+{
+    return m_store.root() + QLatin1Char('/') + trainer::ProfileStore::modelKey(m_modelPath) + QLatin1Char('/') +
+           trainer::ProfileStore::fileNameFor(name);
+}
+
+void StationPage::fillCombo()
+{
+    const QSignalBlocker block(m_profiles);
+    m_profiles->clear();
+    auto* model = qobject_cast<QStandardItemModel*>(m_profiles->model());
+    const QString star = m_dirty ? QStringLiteral(" *") : QString();
+    int current = -1;
+    if (m_origin == Origin::Unsaved) {
+        const QString name = m_profile.name.isEmpty() ? tr("(no name)") : m_profile.name;
+        m_profiles->addItem(tr("%1 (not saved)").arg(name) + star);
+        m_profiles->setItemData(0, m_profile.name, kNameRole);
+        m_profiles->setItemData(0, false, kStoredRole);
+        m_profiles->setItemData(0, tr("This profile is not saved yet"), Qt::ToolTipRole);
+        current = 0;
+    }
+    for (const trainer::StoredProfile& s : m_stored) {
+        QString text = s.name;
+        if (!s.readable) text = tr("%1 (unreadable)").arg(s.name);
+        else if (s.shipped) text = tr("%1 (shipped)").arg(s.name);
+        const bool isCurrent = m_origin != Origin::Unsaved && s.readable && s.name == m_storedName;
+        if (isCurrent) text += star;
+        const int i = m_profiles->count();
+        m_profiles->addItem(text);
+        m_profiles->setItemData(i, s.name, kNameRole);
+        m_profiles->setItemData(i, true, kStoredRole);
+        m_profiles->setItemData(i, s.readable ? s.path : s.problem, Qt::ToolTipRole);
+        if (!s.readable && model) {
+            model->item(i)->setEnabled(false);
+            model->item(i)->setForeground(redColor());
+        }
+        if (isCurrent) current = i;
+    }
+    m_profiles->setCurrentIndex(current);
+}
+
+void StationPage::profileActivated(int index)
+{
+    if (index < 0 || !m_profiles->itemData(index, kStoredRole).toBool()) return;
+    const QString name = m_profiles->itemData(index, kNameRole).toString();
+    if (m_origin != Origin::Unsaved && name == m_storedName && !m_dirty) return;
+    if (!loadProfile(name)) fillCombo();
+}
+
+// ---- the profile ---------------------------------------------------------------
+
+void StationPage::setCurrent(const trainer::StationProfile& profile, Origin origin, const QString& storedName,
+                             bool dirty)
+{
+    m_profile = profile;
+    m_origin = origin;
+    m_storedName = storedName;
+    m_storedTime = origin == Origin::User ? QFileInfo(userFile(storedName)).lastModified() : QDateTime();
+    m_mappings->setProfile(profile);
+    m_description->setText(profile.description);
+    m_description->setVisible(!profile.description.isEmpty());
+    const bool was = m_dirty;
+    m_dirty = dirty;
+    fillCombo();
+    if (was != dirty) emit dirtyChanged(dirty);
+    updateButtons();
+    install(false);
+}
+
+void StationPage::setDirty(bool dirty)
+{
+    if (m_dirty == dirty) return;
+    m_dirty = dirty;
+    fillCombo();
+    updateButtons();
+    emit dirtyChanged(dirty);
+}
+
+void StationPage::install(bool keepBank)
+{
+    const trainer::StationProfile p = m_profile;
+    const int bank = keepBank && m_state ? m_state->activeBank : 0;
+    if (m_station)
+        m_station->post([p, bank](trainer::StationEngine& e) {
+            e.setProfile(p);
+            if (bank > 0) e.selectBank(bank);
+        });
+    emit profileChanged(m_profile);
+    refresh();
+}
+
+bool StationPage::maybeDiscard()
+{
+    if (!m_dirty) return true;
+    return ask(tr("Unsaved changes"),
+               tr("The profile “%1” has changes that are not saved. Discard them?").arg(m_profile.name));
+}
+
+QString StationPage::lastError() const
+{
+    return m_error->text();
+}
+
+void StationPage::showError(const QString& text)
+{
+    m_error->setText(text);
+    m_error->setVisible(!text.isEmpty());
+}
+
+void StationPage::clearError()
+{
+    showError({});
+}
+
+bool StationPage::loadProfile(const QString& name)
+{
+    if (!maybeDiscard()) return false;
+    return loadStored(name);
+}
+
+bool StationPage::loadStored(const QString& name)
+{
+    trainer::StationProfile p;
+    QList<trainer::ProfileIssue> issues;
+    listProfiles();
+    if (!m_store.load(m_modelPath, name, p, issues)) {
+        QStringList lines;
+        for (const trainer::ProfileIssue& i : issues) lines << i.text();
+        showError(tr("Cannot open the profile “%1”: %2").arg(name, lines.join(QStringLiteral("; "))));
+        fillCombo();
+        return false;
+    }
+    const auto s = std::find_if(m_stored.begin(), m_stored.end(),
+                                [&](const trainer::StoredProfile& s) { return s.name == name; });
+    clearError();
+    setCurrent(p, s != m_stored.end() && s->shipped ? Origin::Shipped : Origin::User, name, false);
+    return true;
+}
+
+bool StationPage::newProfile(const QString& nameIn)
+{
+    if (!maybeDiscard()) return false;
+    QString name = nameIn.trimmed();
+    if (name.isEmpty()) name = askText(tr("New profile"), tr("Name of the new profile:"), tr("New profile")).trimmed();
+    if (name.isEmpty()) return false;
+    trainer::StationProfile p;
+    p.name = name;
+    p.model = trainer::ProfileStore::modelKey(m_modelPath);
+    p.banks.append(trainer::Bank{tr("Bank 1"), {}, {}});
+    clearError();
+    setCurrent(p, Origin::Unsaved, {}, true);
+    return true;
+}
+
+bool StationPage::save()
+{
+    if (m_origin == Origin::User && m_profile.name == m_storedName) {
+        // its own file, unless someone else changed it meanwhile
+        const QFileInfo file(userFile(m_storedName));
+        const bool untouched = file.exists() && file.lastModified() == m_storedTime;
+        return saveUnder(m_profile.name, !untouched);
+    }
+    return saveUnder(m_profile.name, true);
+}
+
+bool StationPage::saveAs(const QString& nameIn)
+{
+    QString name = nameIn.trimmed();
+    if (name.isEmpty()) name = askText(tr("Save profile as"), tr("Name of the profile:"), m_profile.name).trimmed();
+    if (name.isEmpty()) return false;
+    return saveUnder(name, true);
+}
+
+bool StationPage::saveUnder(const QString& nameIn, bool askBeforeReplacing)
+{
+    const QString name = nameIn.trimmed();
+    if (name.isEmpty()) {
+        showError(tr("A profile needs a name."));
+        return false;
+    }
+    trainer::StationProfile p = m_profile;
+    p.name = name;
+    p.model = trainer::ProfileStore::modelKey(m_modelPath);
+    const QString path = userFile(name);
+    auto mode = trainer::ProfileStore::SaveMode::CreateOnly;
+    if (QFileInfo::exists(path)) {
+        if (askBeforeReplacing &&
+            !ask(tr("Replace profile"),
+                 tr("A profile named “%1” exists already for this model. Replace it?").arg(name)))
+            return false;
+        mode = trainer::ProfileStore::SaveMode::Overwrite;
+    }
+    QString error;
+    if (!m_store.save(m_modelPath, p, mode, &error)) {
+        showError(tr("Cannot save the profile: %1").arg(error));
+        tell(tr("Save profile"), error);
+        return false;
+    }
+    listProfiles();
+    m_profile = p;
+    m_origin = Origin::User;
+    m_storedName = name;
+    m_storedTime = QFileInfo(path).lastModified();
+    clearError();
+    if (m_dirty) {
+        setDirty(false);
+    } else {
+        fillCombo();
+        updateButtons();
+    }
+    emit profileChanged(m_profile);
+    return true;
+}
+
+bool StationPage::deleteProfile()
+{
+    if (m_origin != Origin::User) return false;
+    const QString name = m_storedName;
+    if (!ask(tr("Delete profile"), tr("Delete the profile “%1”? This cannot be undone.").arg(name))) return false;
+    QString error;
+    if (!m_store.remove(m_modelPath, name, &error)) {
+        showError(tr("Cannot delete the profile: %1").arg(error));
+        tell(tr("Delete profile"), error);
+        return false;
+    }
+    // the shipped profile it replaced, else the first one, else the default
+    setModel(m_modelPath, m_drives, name);
+    return true;
+}
+
+bool StationPage::importProfile(const QString& fileIn)
+{
+    const QString file =
+        fileIn.isEmpty() ? askOpenFile(tr("Import station profile"), tr("Station profiles (*.json);;All files (*)"))
+                         : fileIn;
+    if (file.isEmpty()) return false;
+    QList<trainer::ProfileIssue> issues;
+    const QString name = m_store.importFile(file, m_modelPath, issues);
+    if (name.isEmpty()) {
+        QStringList lines;
+        for (const trainer::ProfileIssue& i : issues) lines << i.text();
+        const QString message =
+            tr("Cannot import %1: %2").arg(QFileInfo(file).fileName(), lines.join(QStringLiteral("; ")));
+        showError(message);
+        tell(tr("Import profile"), message);
+        return false;
+    }
+    listProfiles();
+    fillCombo();
+    if (!maybeDiscard()) return true;  // imported, the edits stay on screen
+    return loadStored(name);
+}
+
+bool StationPage::exportProfile(const QString& fileIn)
+{
+    const QString file =
+        fileIn.isEmpty() ? askSaveFile(tr("Export station profile"), tr("Station profiles (*.json)"),
+                                       trainer::ProfileStore::fileNameFor(m_profile.name))
+                         : fileIn;
+    if (file.isEmpty()) return false;
+    bool overwrite = false;
+    if (QFileInfo::exists(file)) {
+        if (!ask(tr("Export profile"), tr("%1 exists already. Replace it?").arg(file))) return false;
+        overwrite = true;
+    }
+    trainer::StationProfile p = m_profile;
+    p.model = trainer::ProfileStore::modelKey(m_modelPath);
+    QString error;
+    if (!trainer::ProfileStore::exportFile(p, file, overwrite, &error)) {
+        showError(tr("Cannot export the profile: %1").arg(error));
+        tell(tr("Export profile"), error);
+        return false;
+    }
+    return true;
+}
+
+void StationPage::mappingEdited()
+{
+    m_mappings->writeTo(m_profile);
+    setDirty(true);
+    install(true);
+}
+
+// ---- devices -------------------------------------------------------------------
+
+bool StationPage::addSerialConsole(const trainer::DeviceSetting& settingIn)
+{
+    trainer::DeviceSetting setting = settingIn;
+    if (setting.id.isEmpty()) {
+        const auto answer = askSerialConsole();
+        if (!answer) return false;
+        setting = *answer;
+    }
+    if (!setting.id.startsWith(QLatin1String("serial:")) || setting.id.size() <= 7) {
+        tell(tr("Add serial console"), tr("“%1” is not a serial port (serial:/dev/…)").arg(setting.id));
+        return false;
+    }
+    const auto same = std::find_if(m_profile.devices.begin(), m_profile.devices.end(),
+                                   [&](const trainer::DeviceSetting& d) { return d.id == setting.id; });
+    if (same != m_profile.devices.end()) {
+        if (*same == setting) return true;
+        // another baud rate: the device is opened again
+        m_profile.devices.erase(same);
+        const trainer::StationProfile p = m_profile;
+        if (m_station) m_station->post([p](trainer::StationEngine& e) { e.setProfile(p); });
+    }
+    m_profile.devices.append(setting);
+    setDirty(true);
+    install(true);
+    selectDevice(setting.id);
+    return true;
+}
+
+bool StationPage::removeSelectedDevice()
+{
+    if (m_selectedReplay) return false;
+    const auto it = std::find_if(m_profile.devices.begin(), m_profile.devices.end(),
+                                 [&](const trainer::DeviceSetting& d) { return d.id == m_selectedId; });
+    if (it == m_profile.devices.end()) return false;
+    m_profile.devices.erase(it);
+    setDirty(true);
+    install(true);
+    return true;
+}
+
+void StationPage::selectDevice(const QString& id, bool replay)
+{
+    m_selectedId = id;
+    m_selectedReplay = replay;
+    {
+        const QSignalBlocker block(m_devices);
+        for (int i = 0; i < m_devices->topLevelItemCount(); ++i) {
+            QTreeWidgetItem* item = m_devices->topLevelItem(i);
+            if (item->data(NameColumn, kNameRole).toString() == id &&
+                item->data(NameColumn, kReplayRole).toBool() == replay)
+                m_devices->setCurrentItem(item);
+        }
+    }
+    m_channels->setDevice(m_state ? findDevice(*m_state, id, replay) : nullptr, m_profile);
+    updateButtons();
+}
+
+bool StationPage::startRecording(const QString& fileIn)
+{
+    if (m_recorder || !m_station) return false;
+    const QString file = fileIn.isEmpty() ? askSaveFile(tr("Record input"), tr("Padrob input logs (*.log);;All files (*)"),
+                                                        QStringLiteral("input.log"))
+                                          : fileIn;
+    if (file.isEmpty()) return false;
+    if (QFileInfo::exists(file) && !ask(tr("Record input"), tr("%1 exists already. Replace it?").arg(file))) return false;
+    auto recorder = std::make_unique<trainer::InputRecorder>();
+    trainer::InputRecorder* r = recorder.get();
+    bool ok = false;
+    bool ran = false;
+    QString error;
+    m_station->call([&](trainer::StationEngine& e) {
+        ran = true;
+        ok = r->start(file, e.state().time, &error);
+        if (ok) e.setRecorder(r);
+    });
+    if (!ran) error = tr("the station is not running");
+    if (!ok) {
+        tell(tr("Record input"), tr("Cannot record to %1: %2").arg(file, error));
+        return false;
+    }
+    m_recorder = std::move(recorder);
+    m_recordFile = file;
+    m_recordClock.start();
+    updateButtons();
+    return true;
+}
+
+bool StationPage::stopRecording()
+{
+    if (!m_recorder) return false;
+    trainer::InputRecorder* r = m_recorder.get();
+    bool ok = true;
+    bool ran = false;
+    QString error;
+    if (m_station)
+        m_station->call([&](trainer::StationEngine& e) {
+            ran = true;
+            e.setRecorder(nullptr);
+            ok = r->stop(&error);
+        });
+    if (!ran) ok = r->stop(&error);  // no engine any more: nobody else uses it
+    m_recorder.reset();
+    updateButtons();
+    if (!ok) tell(tr("Record input"), tr("The log %1 may be incomplete: %2").arg(m_recordFile, error));
+    return ok;
+}
+
+bool StationPage::startReplay(const QString& fileIn)
+{
+    if (!m_station || isReplaying()) return false;
+    const QString file =
+        fileIn.isEmpty() ? askOpenFile(tr("Replay a log"), tr("Padrob input logs (*.log);;All files (*)")) : fileIn;
+    if (file.isEmpty()) return false;
+    auto log = std::make_shared<trainer::InputLog>();
+    QString error;
+    if (!trainer::InputLog::load(file, *log, &error)) {
+        tell(tr("Replay a log"), tr("Cannot replay %1: %2").arg(QFileInfo(file).fileName(), error));
+        return false;
+    }
+    if (log->devices.isEmpty()) {
+        tell(tr("Replay a log"), tr("%1 has no devices to replay").arg(QFileInfo(file).fileName()));
+        return false;
+    }
+    m_replays = trainer::replayDevices(log);
+    m_replayFile = file;
+    const auto devices = m_replays;
+    m_station->post([devices](trainer::StationEngine& e) {
+        for (const auto& d : devices) e.addDevice(d);
+        e.setReplayOnly(true);
+    });
+    updateButtons();
+    refresh();
+    return true;
+}
+
+void StationPage::stopReplay()
+{
+    if (!isReplaying()) return;
+    auto devices = std::move(m_replays);
+    m_replays.clear();
+    if (m_station)
+        m_station->post([devices](trainer::StationEngine& e) {
+            for (const auto& d : devices) e.removeDevice(d.get());
+            e.setReplayOnly(false);
+        });
+    if (m_selectedReplay) selectDevice({});
+    updateButtons();
+    refresh();
+}
+
+// ---- calibration ---------------------------------------------------------------
+
+CalibrationWizard* StationPage::calibrate(int axis)
+{
+    if (!m_state) refresh();
+    const trainer::DeviceState* d = m_state ? findDevice(*m_state, m_selectedId, m_selectedReplay) : nullptr;
+    if (!d || axis < 0 || axis >= d->info.axes.size()) return nullptr;
+    if (m_wizard) m_wizard->close();
+    auto* wizard = new CalibrationWizard(m_station, d->info, d->replay, axis, channelCalibration(m_profile, d->info, axis),
+                                         calibrationKey(m_profile, d->info, axis), this);
+    wizard->setAttribute(Qt::WA_DeleteOnClose);
+    const QString id = d->info.id;
+    connect(wizard, &CalibrationWizard::calibrationReady, this,
+            [this, id](const QString& match, int a, const trainer::ChannelCalibration& c) {
+                // kept for "any gamepad": this device's own entry would still win over it
+                if (match != id) {
+                    const auto before = m_profile.calibrations.size();
+                    m_profile.calibrations.removeIf(
+                        [&](const trainer::CalibrationEntry& entry) { return entry.device == id && entry.axis == a; });
+                    if (m_profile.calibrations.size() != before) {
+                        m_profile.setCalibration(match, a, c);
+                        setDirty(true);
+                        install(true);
+                        return;
+                    }
+                }
+                applyCalibration(match, a, c);
+            });
+    // the lever being calibrated must not move the machine: valves held while the wizard is open
+    if (m_station) m_station->post([](trainer::StationEngine& e) { e.setHolding(true); });
+    connect(wizard, &QObject::destroyed, this, [station = QPointer<trainer::Station>(m_station)] {
+        if (station) station->post([](trainer::StationEngine& e) { e.setHolding(false); });
+    });
+    m_wizard = wizard;
+    wizard->open();
+    return wizard;
+}
+
+void StationPage::applyCalibration(const QString& deviceMatch, int axis, const trainer::ChannelCalibration& calibration)
+{
+    m_profile.setCalibration(deviceMatch, axis, calibration);
+    setDirty(true);
+    if (m_station)
+        m_station->post([deviceMatch, axis, calibration](trainer::StationEngine& e) {
+            e.setCalibration(deviceMatch, axis, calibration);
+        });
+    emit profileChanged(m_profile);
+    refresh();
+}
+
+// ---- displays ------------------------------------------------------------------
+
+void StationPage::refresh()
+{
+    m_state = stationState(m_station);
+    if (m_state) {
+        showIssues(m_state->profileIssues);
+        showBanner(*m_state);
+        showDevices(*m_state);
+        m_mappings->showState(*m_state);
+    } else {
+        showIssues(m_profile.check(m_drives));
+        showBanner(trainer::StationState{});
+    }
+    QStringList activity;
+    if (isRecording())
+        activity << tr("● Recording to %1 (%2 s)").arg(QFileInfo(m_recordFile).fileName()).arg(m_recordClock.elapsed() / 1000);
+    if (isReplaying()) activity << tr("▶ Replaying %1").arg(QFileInfo(m_replayFile).fileName());
+    const QString text = activity.join(QLatin1Char('\n'));
+    if (m_activity->text() != text) m_activity->setText(text);
+    m_activity->setVisible(!text.isEmpty());
+}
+
+void StationPage::showIssues(const QList<trainer::ProfileIssue>& issues)
+{
+    const QString key = issuesKey(issues);
+    if (m_issues->property("key").toString() == key) return;
+    m_issues->setProperty("key", key);
+    m_issues->clear();
+    for (const trainer::ProfileIssue& issue : issues) {
+        auto* item = new QListWidgetItem(issue.error ? tr("Error — %1").arg(issue.text()) : tr("Warning — %1").arg(issue.text()));
+        item->setBackground(issue.error ? QColor(0xfd, 0xe2, 0xe2) : QColor(0xff, 0xf4, 0xc4));
+        item->setForeground(issue.error ? QColor(0x8b, 0x00, 0x00) : QColor(0x6b, 0x4a, 0x00));
+        item->setToolTip(issue.text());
+        m_issues->addItem(item);
+    }
+    // as high as its lines, up to four (then it scrolls)
+    const int rows = std::min<int>(int(issues.size()), 4);
+    const int rowHeight = m_issues->sizeHintForRow(0) > 0 ? m_issues->sizeHintForRow(0) : m_issues->fontMetrics().height() + 4;
+    m_issues->setFixedHeight(rows * rowHeight + 2 * m_issues->frameWidth() + 2);
+    m_issues->setVisible(!issues.isEmpty());
+}
+
+void StationPage::showBanner(const trainer::StationState& state)
+{
+    QString bank;
+    if (state.bankNames.isEmpty()) {
+        bank = tr("No banks");
+    } else {
+        const int b = std::clamp(state.activeBank, 0, int(state.bankNames.size()) - 1);
+        const QString name = state.bankNames[b].isEmpty() ? tr("Bank %1").arg(b + 1) : state.bankNames[b];
+        bank = state.bankNames.size() > 1 ? tr("Bank: %1 (%2 of %3)").arg(name).arg(b + 1).arg(state.bankNames.size())
+                                          : tr("Bank: %1").arg(name);
+    }
+    if (m_bank->text() != bank) m_bank->setText(bank);
+
+    QStringList warnings;
+    if (isReplaying())
+        warnings << tr("Replaying %1: the operator's devices are ignored").arg(QFileInfo(m_replayFile).fileName());
+    warnings += state.warnings;
+    warnings += state.setupWarnings;  // here, for the trainer setting up (not on the operator's HUD)
+    QString text;
+    for (const QString& w : warnings) text += (text.isEmpty() ? QString() : QStringLiteral("\n")) + QStringLiteral("⚠ ") + w;
+    if (m_warnings->text() != text) m_warnings->setText(text);
+    m_warnings->setVisible(!text.isEmpty());
+    const QString style =
+        text.isEmpty()
+            ? QStringLiteral("#stationBanner { background: #e3f2fd; border: 1px solid #90caf9; border-radius: 4px; }")
+            : QStringLiteral("#stationBanner { background: #fff3e0; border: 1px solid %1; border-radius: 4px; } "
+                             "#stationBanner QLabel { color: #5d4037; }")
+                  .arg(amberColor().name());
+    if (m_banner->styleSheet() != style) m_banner->setStyleSheet(style);
+}
+
+void StationPage::showDevices(const trainer::StationState& state)
+{
+    QString key;
+    for (const trainer::DeviceState& d : state.devices)
+        key += d.info.id + QLatin1Char('|') + d.info.name + QLatin1Char('|') + QString::number(d.replay) + QLatin1Char(';');
+    if (key != m_devicesKey) {
+        m_devicesKey = key;
+        const QSignalBlocker block(m_devices);
+        m_devices->clear();
+        for (const trainer::DeviceState& d : state.devices) {
+            auto* item = new QTreeWidgetItem(m_devices);
+            item->setData(NameColumn, kNameRole, d.info.id);
+            item->setData(NameColumn, kReplayRole, d.replay);
+            const QString kind = d.replay ? tr("%1 (replay)").arg(trainer::kindName(d.info.kind))
+                                          : trainer::kindName(d.info.kind);
+            item->setText(NameColumn, d.info.name + QLatin1Char('\n') + tr("%1 · %2").arg(kind, d.info.id));
+            item->setToolTip(NameColumn, tr("%1\nKind: %2\nId: %3").arg(d.info.name, kind, d.info.id));
+            item->setTextAlignment(SamplesColumn, Qt::AlignRight | Qt::AlignVCenter);
+            item->setTextAlignment(DroppedColumn, Qt::AlignRight | Qt::AlignVCenter);
+        }
+        if (!findDevice(state, m_selectedId, m_selectedReplay) && !state.devices.isEmpty()) {
+            m_selectedId = state.devices.first().info.id;
+            m_selectedReplay = state.devices.first().replay;
+        }
+        for (int i = 0; i < m_devices->topLevelItemCount(); ++i) {
+            QTreeWidgetItem* item = m_devices->topLevelItem(i);
+            if (item->data(NameColumn, kNameRole).toString() == m_selectedId &&
+                item->data(NameColumn, kReplayRole).toBool() == m_selectedReplay)
+                m_devices->setCurrentItem(item);
+        }
+    }
+    for (int i = 0; i < m_devices->topLevelItemCount() && i < state.devices.size(); ++i) {
+        const trainer::DeviceState& d = state.devices[i];
+        QTreeWidgetItem* item = m_devices->topLevelItem(i);
+        const QString status = d.statusText.isEmpty() ? statusName(d.status)
+                                                      : tr("%1: %2").arg(statusName(d.status), d.statusText);
+        if (item->text(StatusColumn) != status) {
+            item->setText(StatusColumn, status);
+            item->setToolTip(StatusColumn, status);
+            item->setForeground(StatusColumn, statusColor(d.status));
+        }
+        item->setText(SamplesColumn, QString::number(d.samples));
+        item->setText(DroppedColumn, QString::number(d.dropped));
+        if (d.dropped > 0) item->setForeground(DroppedColumn, amberColor());
+    }
+    const trainer::DeviceState* selected = findDevice(state, m_selectedId, m_selectedReplay);
+    QString detail;
+    if (selected && (selected->status != trainer::DeviceStatus::Connected || !selected->statusText.isEmpty()))
+        detail = tr("%1 — %2").arg(selected->info.name, selected->statusText.isEmpty()
+                                                            ? statusName(selected->status)
+                                                            : statusName(selected->status) + QStringLiteral(": ") +
+                                                                  selected->statusText);
+    if (m_deviceDetail->text() != detail) {
+        m_deviceDetail->setText(detail);
+        m_deviceDetail->setStyleSheet(selected ? QStringLiteral("color: %1").arg(statusColor(selected->status).name())
+                                               : QString());
+    }
+    m_deviceDetail->setVisible(!detail.isEmpty());
+    m_channels->setDevice(selected, m_profile);
+    updateButtons();
+}
+
+void StationPage::updateButtons()
+{
+    m_save->setEnabled(m_dirty || m_origin != Origin::User);
+    m_delete->setEnabled(m_origin == Origin::User);
+    const bool inProfile = !m_selectedReplay && std::any_of(m_profile.devices.begin(), m_profile.devices.end(),
+                                                            [&](const trainer::DeviceSetting& d) {
+                                                                return d.id == m_selectedId;
+                                                            });
+    m_removeDevice->setEnabled(inProfile);
+    m_record->setEnabled(m_station != nullptr);
+    m_replay->setEnabled(m_station != nullptr);
+    const QString record = isRecording() ? tr("Stop recording") : tr("Record input…");
+    if (m_record->text() != record) m_record->setText(record);
+    const QString replay = isReplaying() ? tr("Stop replay") : tr("Replay a log…");
+    if (m_replay->text() != replay) m_replay->setText(replay);
+}
+
+// ---- hooks ---------------------------------------------------------------------
+
+bool StationPage::ask(const QString& title, const QString& question)
+{
+    return QMessageBox::question(this, title, question, QMessageBox::Yes | QMessageBox::No, QMessageBox::No) ==
+           QMessageBox::Yes;
+}
+
+QString StationPage::askText(const QString& title, const QString& label, const QString& text)
+{
+    bool ok = false;
+    const QString answer = QInputDialog::getText(this, title, label, QLineEdit::Normal, text, &ok);
+    return ok ? answer : QString();
+}
+
+QString StationPage::askOpenFile(const QString& title, const QString& filter)
+{
+    return QFileDialog::getOpenFileName(this, title, QString(), filter);
+}
+
+QString StationPage::askSaveFile(const QString& title, const QString& filter, const QString& suggested)
+{
+    // the page asks itself before replacing (exportProfile), with the same words everywhere
+    return QFileDialog::getSaveFileName(this, title, suggested, filter, nullptr, QFileDialog::DontConfirmOverwrite);
+}
+
+std::optional<trainer::DeviceSetting> StationPage::askSerialConsole()
+{
+    SerialConsoleDialog dialog(this);
+    if (dialog.exec() != QDialog::Accepted) return std::nullopt;
+    return dialog.setting();
+}
+
+void StationPage::tell(const QString& title, const QString& message)
+{
+    QMessageBox::warning(this, title, message);
+}
+
+void StationPage::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    refresh();
+    m_timer->start();
+}
+
+void StationPage::hideEvent(QHideEvent* event)
+{
+    QWidget::hideEvent(event);
+    m_timer->stop();
+}
+
+}  // namespace studio
