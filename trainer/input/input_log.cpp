@@ -12,10 +12,10 @@ namespace trainer {
 
 namespace {
 
-QString trl(const char* text)
-{
-    return QCoreApplication::translate("trainer::InputLog", text);
-}
+/// The translation context of this file's messages (lupdate reads Tr::tr).
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(trainer::InputLog)
+};
 
 constexpr const char* kMagic = "# padrob input log 1";
 
@@ -50,7 +50,7 @@ bool InputLog::load(const QString& path, InputLog& out, QString* error)
 {
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) {
-        if (error) *error = trl("cannot read %1: %2").arg(path, f.errorString());
+        if (error) *error = Tr::tr("cannot read %1: %2").arg(path, f.errorString());
         return false;
     }
     return parse(f.readAll(), out, error);
@@ -61,11 +61,11 @@ bool InputLog::parse(const QByteArray& text, InputLog& out, QString* error)
     InputLog log;
     const QList<QByteArray> lines = text.split('\n');
     auto fail = [&](int line, const QString& what) {
-        if (error) *error = trl("line %1: %2").arg(line).arg(what);
+        if (error) *error = Tr::tr("line %1: %2").arg(line).arg(what);
         return false;
     };
     if (lines.isEmpty() || lines[0].trimmed() != kMagic)
-        return fail(1, trl("not a Padrob input log (the first line must be “%1”)").arg(kMagic));
+        return fail(1, Tr::tr("not a Padrob input log (the first line must be “%1”)").arg(kMagic));
     double lastTime = 0.0;
     for (int n = 1; n < lines.size(); ++n) {
         const QByteArray line = lines[n].trimmed();
@@ -76,17 +76,17 @@ bool InputLog::parse(const QByteArray& text, InputLog& out, QString* error)
             bool ok = false;
             const int index = line.mid(8, space - 8).toInt(&ok);
             if (!ok || index != log.devices.size())
-                return fail(lineNo, trl("devices must be numbered 0, 1, 2… in order"));
+                return fail(lineNo, Tr::tr("devices must be numbered 0, 1, 2… in order"));
             QJsonParseError perr;
             const QJsonDocument doc = QJsonDocument::fromJson(line.mid(space + 1), &perr);
             if (perr.error != QJsonParseError::NoError || !doc.isObject())
-                return fail(lineNo, trl("the device description is not valid JSON (%1)").arg(perr.errorString()));
+                return fail(lineNo, Tr::tr("the device description is not valid JSON (%1)").arg(perr.errorString()));
             const QJsonObject o = doc.object();
             DeviceInfo info;
             info.id = o.value("id").toString();
             info.name = o.value("name").toString();
             if (info.id.isEmpty() || !kindFromKey(o.value("kind").toString(), info.kind))
-                return fail(lineNo, trl("a device needs an “id” and a known “kind”"));
+                return fail(lineNo, Tr::tr("a device needs an “id” and a known “kind”"));
             for (const QJsonValue& a : o.value("axes").toArray()) {
                 const QJsonObject ao = a.toObject();
                 info.axes.append({ao.value("name").toString(), ao.value("min").toDouble(-1.0),
@@ -102,26 +102,26 @@ bool InputLog::parse(const QByteArray& text, InputLog& out, QString* error)
         LoggedSample s;
         s.time = fields.value(0).toDouble(&ok);
         if (!ok || !std::isfinite(s.time) || s.time < lastTime)
-            return fail(lineNo, trl("the time must be a number that never goes back"));
+            return fail(lineNo, Tr::tr("the time must be a number that never goes back"));
         s.device = fields.value(1).toInt(&ok);
         if (!ok || s.device < 0 || s.device >= log.devices.size())
-            return fail(lineNo, trl("device %1 is not described above this line").arg(QString(fields.value(1))));
+            return fail(lineNo, Tr::tr("device %1 is not described above this line").arg(QString(fields.value(1))));
         const DeviceInfo& info = log.devices[s.device];
         const int expected = 2 + int(info.axes.size()) + int(info.buttons.size());
         if (fields.size() != expected)
-            return fail(lineNo, trl("%1 values where device %2 has %3 axes and %4 buttons")
+            return fail(lineNo, Tr::tr("%1 values where device %2 has %3 axes and %4 buttons")
                                     .arg(fields.size() - 2)
                                     .arg(s.device)
                                     .arg(info.axes.size())
                                     .arg(info.buttons.size()));
         for (int a = 0; a < info.axes.size(); ++a) {
             const double v = fields[2 + a].toDouble(&ok);
-            if (!ok || !std::isfinite(v)) return fail(lineNo, trl("axis %1 is not a number").arg(a + 1));
+            if (!ok || !std::isfinite(v)) return fail(lineNo, Tr::tr("axis %1 is not a number").arg(a + 1));
             s.axes.push_back(v);
         }
         for (int b = 0; b < info.buttons.size(); ++b) {
             const QByteArray& f = fields[2 + int(info.axes.size()) + b];
-            if (f != "0" && f != "1") return fail(lineNo, trl("button %1 must be 0 or 1").arg(b + 1));
+            if (f != "0" && f != "1") return fail(lineNo, Tr::tr("button %1 must be 0 or 1").arg(b + 1));
             s.buttons.push_back(f == "1" ? 1 : 0);
         }
         lastTime = s.time;
@@ -141,7 +141,7 @@ bool InputRecorder::start(const QString& path, double now, QString* error)
     stop();
     m_file.setFileName(path);
     if (!m_file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text)) {
-        if (error) *error = trl("cannot write %1: %2").arg(path, m_file.errorString());
+        if (error) *error = Tr::tr("cannot write %1: %2").arg(path, m_file.errorString());
         return false;
     }
     m_file.write(kMagic);
@@ -184,7 +184,7 @@ bool InputRecorder::stop(QString* error)
 {
     if (!m_file.isOpen()) return true;
     const bool ok = m_file.flush() && m_file.error() == QFileDevice::NoError;
-    if (!ok && error) *error = trl("cannot write %1: %2").arg(m_file.fileName(), m_file.errorString());
+    if (!ok && error) *error = Tr::tr("cannot write %1: %2").arg(m_file.fileName(), m_file.errorString());
     m_file.close();
     return ok;
 }

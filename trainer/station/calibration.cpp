@@ -11,10 +11,10 @@ namespace trainer {
 
 namespace {
 
-QString trc(const char* text)
-{
-    return QCoreApplication::translate("trainer::ChannelCalibration", text);
-}
+/// The translation context of this file's messages (lupdate reads Tr::tr).
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(trainer::ChannelCalibration)
+};
 
 /// Step 2 on a normalised x ≥ 0 with dead band d.
 double outsideDeadBand(double x, double d)
@@ -33,14 +33,14 @@ bool ChannelCalibration::isValid() const
 QString ChannelCalibration::problem() const
 {
     for (double v : {rawMin, rawCentre, rawMax, deadBandLow, deadBandHigh, exponent, filterHz})
-        if (!std::isfinite(v)) return trc("a value is not a number");
-    if (!(rawMin < rawMax)) return trc("the raw minimum must be below the raw maximum");
-    if (rawCentre < rawMin || rawCentre > rawMax) return trc("the centre must lie between the minimum and the maximum");
+        if (!std::isfinite(v)) return Tr::tr("a value is not a number");
+    if (!(rawMin < rawMax)) return Tr::tr("the raw minimum must be below the raw maximum");
+    if (rawCentre < rawMin || rawCentre > rawMax) return Tr::tr("the centre must lie between the minimum and the maximum");
     if (deadBandLow < 0.0 || deadBandLow > kMaxDeadBand || deadBandHigh < 0.0 || deadBandHigh > kMaxDeadBand)
-        return trc("dead bands must be between 0 and 0.9 of the travel");
+        return Tr::tr("dead bands must be between 0 and 0.9 of the travel");
     if (curve == ResponseCurve::Exponential && (exponent < kMinExponent || exponent > kMaxExponent))
-        return trc("the exponential curve's parameter must be between 0.05 and 10");
-    if (filterHz < 0.0) return trc("the filter's cutoff cannot be negative");
+        return Tr::tr("the exponential curve's parameter must be between 0.05 and 10");
+    if (filterHz < 0.0) return Tr::tr("the filter's cutoff cannot be negative");
     return {};
 }
 
@@ -92,7 +92,7 @@ bool ChannelCalibration::fromJson(const QJsonObject& json, ChannelCalibration& o
         const QJsonValue j = json.value(key);
         if (j.isUndefined()) return true;
         if (!j.isDouble()) {
-            if (error) *error = trc("“%1” must be a number").arg(key);
+            if (error) *error = Tr::tr("“%1” must be a number").arg(key);
             return false;
         }
         v = j.toDouble();
@@ -102,7 +102,7 @@ bool ChannelCalibration::fromJson(const QJsonObject& json, ChannelCalibration& o
         const QJsonValue j = json.value(key);
         if (j.isUndefined()) return true;
         if (!j.isBool()) {
-            if (error) *error = trc("“%1” must be true or false").arg(key);
+            if (error) *error = Tr::tr("“%1” must be true or false").arg(key);
             return false;
         }
         v = j.toBool();
@@ -118,7 +118,7 @@ bool ChannelCalibration::fromJson(const QJsonObject& json, ChannelCalibration& o
         if (curve.toString() == "linear") c.curve = ResponseCurve::Linear;
         else if (curve.toString() == "exponential") c.curve = ResponseCurve::Exponential;
         else {
-            if (error) *error = trc("“curve” must be \"linear\" or \"exponential\"");
+            if (error) *error = Tr::tr("“curve” must be \"linear\" or \"exponential\"");
             return false;
         }
     }
@@ -177,15 +177,15 @@ void CalibrationCapture::add(double raw)
 
 bool CalibrationCapture::complete(double nominalSpan, QString* why) const
 {
-    auto say = [&](const char* text) {
-        if (why) *why = QCoreApplication::translate("trainer::CalibrationCapture", text);
+    auto say = [&](const QString& text) {
+        if (why) *why = text;
         return false;
     };
-    if (m_restCount == 0) return say("Leave the lever at rest to capture its centre.");
+    if (m_restCount == 0) return say(Tr::tr("Leave the lever at rest to capture its centre."));
     const double c = centre();
     const double travel = std::max(m_max - c, c - m_min);
     if (m_travelCount == 0 || !(travel >= kMinTravel * std::abs(nominalSpan)))
-        return say("Move the lever to its full travel, both ways.");
+        return say(Tr::tr("Move the lever to its full travel, both ways."));
     if (why) why->clear();
     return true;
 }

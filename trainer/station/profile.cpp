@@ -15,10 +15,10 @@ namespace trainer {
 
 namespace {
 
-QString trp(const char* text)
-{
-    return QCoreApplication::translate("trainer::StationProfile", text);
-}
+/// The translation context of this file's messages (lupdate reads Tr::tr).
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(trainer::StationProfile)
+};
 
 QJsonObject mappingJson(const Mapping& m)
 {
@@ -44,18 +44,18 @@ public:
     bool string(const QJsonObject& o, const QString& where, const char* key, QString& out, bool required)
     {
         const QJsonValue v = o.value(key);
-        if (v.isUndefined()) return required ? fail(where, trp("“%1” is missing").arg(key)) : true;
-        if (!v.isString()) return fail(where, trp("“%1” must be a text").arg(key));
+        if (v.isUndefined()) return required ? fail(where, Tr::tr("“%1” is missing").arg(key)) : true;
+        if (!v.isString()) return fail(where, Tr::tr("“%1” must be a text").arg(key));
         out = v.toString();
         return true;
     }
     bool integer(const QJsonObject& o, const QString& where, const char* key, int& out, bool required)
     {
         const QJsonValue v = o.value(key);
-        if (v.isUndefined()) return required ? fail(where, trp("“%1” is missing").arg(key)) : true;
+        if (v.isUndefined()) return required ? fail(where, Tr::tr("“%1” is missing").arg(key)) : true;
         const double d = v.toDouble(std::nan(""));
         if (!v.isDouble() || d != std::floor(d) || std::abs(d) > 1e9)
-            return fail(where, trp("“%1” must be a whole number").arg(key));
+            return fail(where, Tr::tr("“%1” must be a whole number").arg(key));
         out = int(d);
         return true;
     }
@@ -63,7 +63,7 @@ public:
     {
         const QJsonValue v = o.value(key);
         if (v.isUndefined()) return true;
-        if (!v.isDouble()) return fail(where, trp("“%1” must be a number").arg(key));
+        if (!v.isDouble()) return fail(where, Tr::tr("“%1” must be a number").arg(key));
         out = v.toDouble();
         return true;
     }
@@ -71,13 +71,13 @@ public:
     {
         const QJsonValue v = o.value(key);
         if (v.isUndefined()) return true;
-        if (!v.isArray()) return fail(where, trp("“%1” must be a list").arg(key));
+        if (!v.isArray()) return fail(where, Tr::tr("“%1” must be a list").arg(key));
         out = v.toArray();
         return true;
     }
     bool object(const QJsonValue& v, const QString& where, QJsonObject& out)
     {
-        if (!v.isObject()) return fail(where, trp("must be an object { … }"));
+        if (!v.isObject()) return fail(where, Tr::tr("must be an object { … }"));
         out = v.toObject();
         return true;
     }
@@ -111,7 +111,7 @@ QString position(const QByteArray& text, int offset)
             ++column;
         }
     }
-    return trp("line %1, column %2").arg(line).arg(column);
+    return Tr::tr("line %1, column %2").arg(line).arg(column);
 }
 
 }  // namespace
@@ -190,18 +190,18 @@ bool StationProfile::fromJson(const QByteArray& json, StationProfile& out, QList
     const QJsonDocument doc = QJsonDocument::fromJson(json, &perr);
     if (perr.error != QJsonParseError::NoError) {
         issues.append({position(json, perr.offset),
-                       trp("not a valid profile file (%1); fix the JSON or import the profile again")
+                       Tr::tr("not a valid profile file (%1); fix the JSON or import the profile again")
                            .arg(perr.errorString()),
                        true});
         return false;
     }
     if (!doc.isObject()) {
-        issues.append({{}, trp("not a station profile: the file must hold one JSON object"), true});
+        issues.append({{}, Tr::tr("not a station profile: the file must hold one JSON object"), true});
         return false;
     }
     const QJsonObject root = doc.object();
     if (root.value("format").toString() != kFormat) {
-        issues.append({"format", trp("not a station profile (“format” must be \"%1\")").arg(kFormat), true});
+        issues.append({"format", Tr::tr("not a station profile (“format” must be \"%1\")").arg(kFormat), true});
         return false;
     }
     Reader r(issues);
@@ -209,14 +209,14 @@ bool StationProfile::fromJson(const QByteArray& json, StationProfile& out, QList
     if (!r.integer(root, "version", "version", version, true)) return false;
     if (version > kVersion) {
         issues.append({"version",
-                       trp("made by a newer Padrob (profile version %1; this one reads up to %2). Update Padrob "
+                       Tr::tr("made by a newer Padrob (profile version %1; this one reads up to %2). Update Padrob "
                            "or use a profile saved by this version.")
                            .arg(version)
                            .arg(kVersion),
                        true});
         return false;
     }
-    if (version < 1) return r.fail("version", trp("the version must be 1 or more"));
+    if (version < 1) return r.fail("version", Tr::tr("the version must be 1 or more"));
 
     StationProfile p;
     if (!r.string(root, "name", "name", p.name, true) || !r.string(root, "model", "model", p.model, false) ||
@@ -282,14 +282,14 @@ QList<ProfileIssue> StationProfile::check(const QList<DriveInfo>& drives) const
     QSet<int> ids;
     for (const DriveInfo& d : drives) ids.insert(d.jointId);
     auto checkMapping = [&](const Mapping& m, const QString& where) {
-        if (m.device.isEmpty()) issues.append({where, trp("the mapping names no device"), true});
-        if (m.axis < 0) issues.append({where, trp("the axis must be 0 or more"), true});
-        if (m.sign != 1 && m.sign != -1) issues.append({where, trp("the sign must be 1 or -1"), true});
+        if (m.device.isEmpty()) issues.append({where, Tr::tr("the mapping names no device"), true});
+        if (m.axis < 0) issues.append({where, Tr::tr("the axis must be 0 or more"), true});
+        if (m.sign != 1 && m.sign != -1) issues.append({where, Tr::tr("the sign must be 1 or -1"), true});
         if (!std::isfinite(m.gain) || m.gain < 0.0 || m.gain > Mapping::kMaxGain)
-            issues.append({where, trp("the gain must be between 0 and %1").arg(Mapping::kMaxGain), true});
+            issues.append({where, Tr::tr("the gain must be between 0 and %1").arg(Mapping::kMaxGain), true});
         if (!ids.contains(m.drive))
             issues.append({where,
-                           trp("drive C %1 is not in this model (or has no D statement); this mapping is ignored")
+                           Tr::tr("drive C %1 is not in this model (or has no D statement); this mapping is ignored")
                                .arg(m.drive),
                            false});
     };
@@ -301,7 +301,7 @@ QList<ProfileIssue> StationProfile::check(const QList<DriveInfo>& drives) const
         for (int j = 0; j < b.select.size(); ++j)
             if (!b.select[j].isSet())
                 issues.append({QStringLiteral("banks[%1].select[%2]").arg(i).arg(j),
-                               trp("a bank button needs a device and a button number"), true});
+                               Tr::tr("a bank button needs a device and a button number"), true});
     }
     for (int i = 0; i < calibrations.size(); ++i)
         if (!calibrations[i].calibration.isValid())
@@ -310,11 +310,11 @@ QList<ProfileIssue> StationProfile::check(const QList<DriveInfo>& drives) const
         const DeviceSetting& d = devices[i];
         if (!d.id.startsWith("serial:") && !d.id.startsWith("comedi:"))
             issues.append({QStringLiteral("devices[%1]").arg(i),
-                           trp("“%1”: only serial DAQ ports (serial:…) and Comedi cards (comedi:…) are listed here")
+                           Tr::tr("“%1”: only serial DAQ ports (serial:…) and Comedi cards (comedi:…) are listed here")
                                .arg(d.id),
                            true});
         else if (d.id.startsWith("serial:") && d.baud <= 0)
-            issues.append({QStringLiteral("devices[%1]").arg(i), trp("the baud rate must be positive"), true});
+            issues.append({QStringLiteral("devices[%1]").arg(i), Tr::tr("the baud rate must be positive"), true});
     }
     return issues;
 }
@@ -322,21 +322,21 @@ QList<ProfileIssue> StationProfile::check(const QList<DriveInfo>& drives) const
 StationProfile StationProfile::defaultFor(const QString& model, const QList<DriveInfo>& drives)
 {
     StationProfile p;
-    p.name = trp("Keyboard and gamepad");
+    p.name = Tr::tr("Keyboard and gamepad");
     p.model = model;
-    p.description = trp("Made by Padrob for this model: key pairs Q/A, W/S, … on the drives in order, and a "
+    p.description = Tr::tr("Made by Padrob for this model: key pairs Q/A, W/S, … on the drives in order, and a "
                         "two-stick gamepad in banks of four drives, switched with the shoulder buttons.");
     for (int i = 0; i < drives.size() && i < 9; ++i) p.always.append({"keyboard", i, drives[i].jointId, 1.0, 1});
     const int sticks[4] = {gamepad::LeftX, gamepad::LeftY, gamepad::RightX, gamepad::RightY};
     for (int first = 0; first < drives.size(); first += 4) {
         Bank b;
-        b.name = trp("Bank %1").arg(first / 4 + 1);
+        b.name = Tr::tr("Bank %1").arg(first / 4 + 1);
         for (int k = 0; k < 4 && first + k < drives.size(); ++k)
             // stick forward is −y in SDL: pushing forward drives the valve positive
             b.mappings.append({"gamepad", sticks[k], drives[first + k].jointId, 1.0, (k % 2) ? -1 : 1});
         p.banks.append(b);
     }
-    if (p.banks.isEmpty()) p.banks.append(Bank{trp("Bank 1"), {}, {}});
+    if (p.banks.isEmpty()) p.banks.append(Bank{Tr::tr("Bank 1"), {}, {}});
     if (p.banks.size() > 1) p.nextBank = {"gamepad", gamepad::RightShoulder};
     for (int axis : sticks) {
         ChannelCalibration c{-32768, 0, 32767, 0.08, 0.08};

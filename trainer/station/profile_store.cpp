@@ -14,16 +14,16 @@ namespace trainer {
 
 namespace {
 
-QString trs(const char* text)
-{
-    return QCoreApplication::translate("trainer::ProfileStore", text);
-}
+/// The translation context of this file's messages (lupdate reads Tr::tr).
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(trainer::ProfileStore)
+};
 
 bool readProfile(const QString& path, StationProfile& out, QList<ProfileIssue>& issues)
 {
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) {
-        issues.append({path, trs("cannot read the file: %1").arg(f.errorString()), true});
+        issues.append({path, Tr::tr("cannot read the file: %1").arg(f.errorString()), true});
         return false;
     }
     QList<ProfileIssue> found;
@@ -40,7 +40,7 @@ bool writeFile(const QString& path, const QByteArray& data, QString* error)
     QDir().mkpath(QFileInfo(path).absolutePath());
     QSaveFile f(path);
     if (!f.open(QIODevice::WriteOnly) || f.write(data) != data.size() || !f.commit()) {
-        if (error) *error = trs("cannot write %1: %2").arg(path, f.errorString());
+        if (error) *error = Tr::tr("cannot write %1: %2").arg(path, f.errorString());
         return false;
     }
     return true;
@@ -116,20 +116,20 @@ bool ProfileStore::load(const QString& modelPath, const QString& name, StationPr
         if (s.name != name) continue;
         return readProfile(s.path, out, issues);
     }
-    issues.append({{}, trs("there is no profile “%1” for %2").arg(name, modelKey(modelPath)), true});
+    issues.append({{}, Tr::tr("there is no profile “%1” for %2").arg(name, modelKey(modelPath)), true});
     return false;
 }
 
 bool ProfileStore::save(const QString& modelPath, const StationProfile& profile, SaveMode mode, QString* error) const
 {
     if (profile.name.trimmed().isEmpty()) {
-        if (error) *error = trs("a profile needs a name");
+        if (error) *error = Tr::tr("a profile needs a name");
         return false;
     }
     const QString path = userFolder(modelPath) + "/" + fileNameFor(profile.name);
     if (QFileInfo::exists(path)) {
         if (mode == SaveMode::CreateOnly) {
-            if (error) *error = trs("a profile named “%1” exists already").arg(profile.name);
+            if (error) *error = Tr::tr("a profile named “%1” exists already").arg(profile.name);
             return false;
         }
         StationProfile old;
@@ -138,7 +138,7 @@ bool ProfileStore::save(const QString& modelPath, const StationProfile& profile,
             // unreadable (corrupt, newer): keep it aside, never lose it
             const QString aside = path + ".bak-" + QDateTime::currentDateTime().toString("yyyyMMdd-hhmmss");
             if (!QFile::rename(path, aside)) {
-                if (error) *error = trs("cannot keep the old %1 aside; nothing was saved").arg(path);
+                if (error) *error = Tr::tr("cannot keep the old %1 aside; nothing was saved").arg(path);
                 return false;
             }
         }
@@ -153,16 +153,16 @@ bool ProfileStore::remove(const QString& modelPath, const QString& name, QString
     for (const StoredProfile& s : list(modelPath)) {
         if (s.name != name) continue;
         if (s.shipped) {
-            if (error) *error = trs("“%1” ships with the model and cannot be deleted").arg(name);
+            if (error) *error = Tr::tr("“%1” ships with the model and cannot be deleted").arg(name);
             return false;
         }
         if (!QFile::remove(s.path)) {
-            if (error) *error = trs("cannot delete %1").arg(s.path);
+            if (error) *error = Tr::tr("cannot delete %1").arg(s.path);
             return false;
         }
         return true;
     }
-    if (error) *error = trs("there is no profile “%1”").arg(name);
+    if (error) *error = Tr::tr("there is no profile “%1”").arg(name);
     return false;
 }
 
@@ -188,7 +188,7 @@ QString ProfileStore::importFile(const QString& file, const QString& modelPath, 
 bool ProfileStore::exportFile(const StationProfile& profile, const QString& file, bool overwrite, QString* error)
 {
     if (!overwrite && QFileInfo::exists(file)) {
-        if (error) *error = trs("%1 exists already").arg(file);
+        if (error) *error = Tr::tr("%1 exists already").arg(file);
         return false;
     }
     return writeFile(file, profile.toJson(), error);

@@ -12,10 +12,10 @@ namespace trainer {
 
 namespace {
 
-QString tre(const char* text)
-{
-    return QCoreApplication::translate("trainer::StationEngine", text);
-}
+/// The translation context of this file's messages (lupdate reads Tr::tr).
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(trainer::StationEngine)
+};
 
 bool isConnected(const InputDevice& d)
 {
@@ -387,9 +387,9 @@ StationState StationEngine::state() const
                 held.append(driveLabel(l.treeJoint));
         if (held.isEmpty()) continue;
         held.removeDuplicates();
-        const QString why = d.statusText().isEmpty() ? tre("not connected") : d.statusText();
+        const QString why = d.statusText().isEmpty() ? Tr::tr("not connected") : d.statusText();
         (m_state[i].everConnected ? st.warnings : st.setupWarnings)
-            .append(tre("%1: %2 — valves closed, holding %3").arg(d.info().name, why, held.join(", ")));
+            .append(Tr::tr("%1: %2 — valves closed, holding %3").arg(d.info().name, why, held.join(", ")));
     }
     // mappings whose device is not there at all
     QStringList missing;
@@ -398,11 +398,11 @@ StationState StationEngine::state() const
             (m_implicitKeyboard < 0 || &l - m_live.data() < m_implicitKeyboard))
             missing.append(l.mapping.device);
     missing.removeDuplicates();
-    for (const QString& m : missing) st.setupWarnings.append(tre("No %1 found: its drives hold").arg(m));
-    if (m_holding) st.warnings.append(tre("Calibrating: every valve is held closed"));
+    for (const QString& m : missing) st.setupWarnings.append(Tr::tr("No %1 found: its drives hold").arg(m));
+    if (m_holding) st.warnings.append(Tr::tr("Calibrating: every valve is held closed"));
     waiting.removeDuplicates();
     if (!waiting.isEmpty())
-        st.warnings.append(tre("Bring the lever to centre to take over: %1").arg(waiting.join(", ")));
+        st.warnings.append(Tr::tr("Bring the lever to centre to take over: %1").arg(waiting.join(", ")));
     for (const auto& p : m_providers)
         if (!p->problem().isEmpty()) st.warnings.append(p->problem());
     return st;
