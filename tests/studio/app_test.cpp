@@ -339,6 +339,10 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QVERIFY(openAndWait(w, modelPath("liner_manipulator.pad")));
         const int lift = w.bundle()->model->jointIndex(2);
+        // the station has the model and its profile (a key held while a profile is
+        // installed acts only after it has been released)
+        QTRY_VERIFY(w.station()->latest() && w.station()->latest()->drives.size() == 9 &&
+                    w.station()->latest()->profileName == "Gamepad");
         Viewport* v = w.viewports()->viewport(0);
         v->setFocus();
         QTest::keyPress(v, Qt::Key_W);

@@ -55,6 +55,9 @@ TEST(Station, RunsTheEngineInItsOwnThreadAndFeedsTheSink)
         e.setProfile(p);
     });
     EXPECT_NE(engineThread.load(), QThread::currentThreadId());
+    // an update with the profile and the keys released (a key held while a profile is
+    // installed must be released before it acts)
+    ASSERT_TRUE(waitFor([&] { return station.latest() && station.latest()->profileName == "keys"; }));
     keys->setKeys(1, false, true);
     ASSERT_TRUE(waitFor([&] {
         std::lock_guard lock(m);

@@ -322,10 +322,29 @@ void MainWindow::buildMenus()
     }
     sim->addSeparator();
     sim->addAction(tr("&Keyboard Controls…"), this, [this] {
+        // what the station does with the keys: the profile's own keyboard mappings, or
+        // the pairs on the drives in order when the profile does not map the keyboard
         QString text = "<table>";
-        for (const KeyBinding& b : m_keyboard->bindings()) {
-            text += "<tr><td><b>" + b.keysText().toHtmlEscaped() + "</b></td><td>C " + QString::number(b.jointId) + " " +
-                    b.jointName.toHtmlEscaped() + "</td></tr>";
+        const QStringList pairs = KeyboardInput::pairNames();
+        bool mapped = false;
+        if (const auto st = m_station->latest()) {
+            for (const trainer::MappingState& ms : st->mappings) {
+                if (ms.mapping.device != QLatin1String("keyboard") || ms.mapping.axis >= pairs.size()) continue;
+                mapped = true;
+                QString drive = tr("C %1").arg(ms.mapping.drive);
+                for (const trainer::DriveInfo& d : st->drives)
+                    if (d.jointId == ms.mapping.drive) drive = d.label();
+                const QString bank = ms.bank < 0 ? QString() : " (" + st->bankNames.value(ms.bank) + ")";
+                text += "<tr><td><b>" + pairs[ms.mapping.axis].toHtmlEscaped() + "</b></td><td>" +
+                        (ms.mapping.sign < 0 ? tr("reversed") + " " : QString()) + drive.toHtmlEscaped() +
+                        bank.toHtmlEscaped() + "</td></tr>";
+            }
+        }
+        if (!mapped) {
+            for (const KeyBinding& b : m_keyboard->bindings()) {
+                text += "<tr><td><b>" + b.keysText().toHtmlEscaped() + "</b></td><td>C " + QString::number(b.jointId) +
+                        " " + b.jointName.toHtmlEscaped() + "</td></tr>";
+            }
         }
         text += "</table>";
         QMessageBox::information(this, tr("Keyboard Controls"),
