@@ -12,51 +12,9 @@
 #include <unistd.h>
 #include <vector>
 
-namespace {
+#include "cli_run.h"
 
-struct CliRun {
-    int status = -1;
-    std::string out;  // stdout
-    std::string err;  // stderr
-};
-
-std::string slurp(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-/// Runs `padrob ARGS` in the source tree; captures stdout, stderr and the exit status.
-CliRun padrob(const std::string& args)
-{
-    static int counter = 0;
-    const auto dir = std::filesystem::temp_directory_path() / ("padrob_cli_test_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
-    const std::string errFile = (dir / ("err" + std::to_string(counter++))).string();
-    const std::string cmd = std::string("cd '") + PADROB_SOURCE_DIR + "' && '" + PADROB_CLI + "' " + args + " 2>'" + errFile + "'";
-    CliRun r;
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return r;
-    std::array<char, 4096> buf;
-    std::size_t n;
-    while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-    int st = pclose(p);
-    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    r.err = slurp(errFile);
-    std::filesystem::remove(errFile);
-    return r;
-}
-
-std::string writeTemp(const std::string& name, const std::string& text)
-{
-    const auto dir = std::filesystem::temp_directory_path() / ("padrob_cli_test_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
-    const auto path = dir / name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path.string();
-}
-
-}  // namespace
+using namespace test;
 
 TEST(Cli, VersionAndHelp)
 {
@@ -186,22 +144,6 @@ TEST(Cli, InfoOnABrokenModelPrintsItsErrors)
 
 // ---- padrob simulate ---------------------------------------------------------
 
-namespace {
-
-std::vector<std::string> lines(const std::string& s)
-{
-    std::vector<std::string> out;
-    std::size_t start = 0;
-    while (start < s.size()) {
-        std::size_t nl = s.find('\n', start);
-        if (nl == std::string::npos) nl = s.size();
-        out.push_back(s.substr(start, nl - start));
-        start = nl + 1;
-    }
-    return out;
-}
-
-}  // namespace
 
 TEST(CliSimulate, HelpListsEveryOption)
 {

@@ -1,0 +1,313 @@
+#include "solver/collision/collision_world.h"
+
+#include "solver/inertia/solid_inertia.h"
+#include "solver/inertia/triangle_mesh.h"
+
+#include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
+#include <fcl/geometry/bvh/BVH_model.h>
+#include <fcl/geometry/shape/box.h>
+#include <fcl/geometry/shape/cone.h>
+#include <fcl/geometry/shape/cylinder.h>
+#include <fcl/geometry/shape/ellipsoid.h>
+#include <fcl/geometry/shape/sphere.h>
+#include <fcl/narrowphase/collision_object.h>
+#include <fcl/narrowphase/distance.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+namespace solver {
+
+namespace {
+
+using Geometry = std::shared_ptr<fcl::CollisionGeometryd>;
+using Mesh = fcl::BVHModel<fcl::OBBRSSd>;
+
+Geometry meshGeometry(const std::vector<Eigen::Vector3d>& vertices, const std::vector<std::array<int, 3>>& triangles)
+{
+    std::vector<fcl::Vector3d> points(vertices.begin(), vertices.end());
+    std::vector<fcl::Triangle> tris;
+    tris.reserve(triangles.size());
+    for (const auto& t : triangles) tris.emplace_back(std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2]));
+    auto mesh = std::make_shared<Mesh>();
+    mesh->beginModel(int(tris.size()), int(points.size()));
+    mesh->addSubModel(points, tris);
+    mesh->endModel();
+    mesh->computeLocalAABB();
+    return mesh;
+}
+
+/// A closed tube (outer and inner walls, two end rings), axis z, centred.
+Geometry tubeGeometry(double ro, double ri, double length, int segments = 64)
+{
+    std::vector<Eigen::Vector3d> v;
+    std::vector<std::array<int, 3>> t;
+    const double h = length / 2;
+    for (int k = 0; k < segments; ++k) {
+        const double a = 2 * std::numbers::pi * k / segments;
+        const double c = std::cos(a), s = std::sin(a);
+        v.emplace_back(ro * c, ro * s, -h);  // 4k: outer bottom
+        v.emplace_back(ro * c, ro * s, h);   // 4k+1: outer top
+        v.emplace_back(ri * c, ri * s, -h);  // 4k+2: inner bottom
+        v.emplace_back(ri * c, ri * s, h);   // 4k+3: inner top
+    }
+    for (int k = 0; k < segments; ++k) {
+        const int a = 4 * k, b = 4 * ((k + 1) % segments);
+        t.push_back({a, b, b + 1});  // outer wall
+        t.push_back({a, b + 1, a + 1});
+        t.push_back({a + 2, b + 3, b + 2});  // inner wall
+        t.push_back({a + 2, a + 3, b + 3});
+        t.push_back({a + 1, b + 1, b + 3});  // top ring
+        t.push_back({a + 1, b + 3, a + 3});
+        t.push_back({a, b + 2, b});  // bottom ring
+        t.push_back({a, a + 2, b + 2});
+    }
+    return meshGeometry(v, t);
+}
+
+double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c)
+{
+    return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+}
+
+/// Ear clipping of a simple polygon (either winding): triangles as index triples.
+std::vector<std::array<int, 3>> triangulate(const std::vector<Eigen::Vector2d>& p)
+{
+    std::vector<std::array<int, 3>> out;
+    const int n = int(p.size());
+    if (n < 3) return out;
+    double area = 0;
+    for (int i = 0; i < n; ++i) area += p[i].x() * p[(i + 1) % n].y() - p[(i + 1) % n].x() * p[i].y();
+    std::vector<int> idx(n);
+    for (int i = 0; i < n; ++i) idx[i] = area >= 0 ? i : n - 1 - i;  // counter-clockwise
+    int guard = 0;
+    while (idx.size() > 3 && guard++ < 10 * n) {
+        bool clipped = false;
+        for (std::size_t i = 0; i < idx.size(); ++i) {
+            const int a = idx[(i + idx.size() - 1) % idx.size()], b = idx[i], c = idx[(i + 1) % idx.size()];
+            if (cross2(p[a], p[b], p[c]) <= 0) continue;  // reflex
+            bool inside = false;
+            for (int q : idx) {
+                if (q == a || q == b || q == c) continue;
+                if (cross2(p[a], p[b], p[q]) >= 0 && cross2(p[b], p[c], p[q]) >= 0 && cross2(p[c], p[a], p[q]) >= 0) {
+                    inside = true;
+                    break;
+                }
+            }
+            if (inside) continue;
+            out.push_back({a, b, c});
+            idx.erase(idx.begin() + std::ptrdiff_t(i));
+            clipped = true;
+            break;
+        }
+        if (!clipped) break;  // not simple: what is left is fanned
+    }
+    for (std::size_t i = 1; i + 1 < idx.size(); ++i) out.push_back({idx[0], idx[i], idx[i + 1]});
+    return out;
+}
+
+/// PRISM H x1 y1 …: the outline extruded over z = 0 … H.
+Geometry prismGeometry(const std::vector<double>& dims)
+{
+    const double h = dims[0];
+    std::vector<Eigen::Vector2d> outline;
+    for (std::size_t i = 1; i + 1 < dims.size(); i += 2) outline.emplace_back(dims[i], dims[i + 1]);
+    const int n = int(outline.size());
+    std::vector<Eigen::Vector3d> v;
+    for (const auto& q : outline) v.emplace_back(q.x(), q.y(), 0.0);
+    for (const auto& q : outline) v.emplace_back(q.x(), q.y(), h);
+    std::vector<std::array<int, 3>> t;
+    for (const auto& tri : triangulate(outline)) {
+        t.push_back({tri[0], tri[2], tri[1]});
+        t.push_back({n + tri[0], n + tri[1], n + tri[2]});
+    }
+    for (int i = 0; i < n; ++i) {
+        const int j = (i + 1) % n;
+        t.push_back({i, j, n + j});
+        t.push_back({i, n + j, n + i});
+    }
+    return meshGeometry(v, t);
+}
+
+}  // namespace
+
+std::string CollisionShape::describe() const
+{
+    std::string s = (scene ? "scene G " : "G ") + std::to_string(graphicId);
+    if (body >= 0) s += " (body " + std::to_string(body) + ")";
+    return s;
+}
+
+struct CollisionWorld::Impl {
+    std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects;  // parallel to shapes
+    std::vector<Eigen::Isometry3d> local;                         // shape in its body's frame
+    std::vector<int> moving;                                      // shapes on machine bodies
+    std::vector<int> parent;                                      // the model's
+    fcl::DynamicAABBTreeCollisionManagerd still;                  // scene and machine ground
+    const std::vector<CollisionShape>* shapes = nullptr;
+};
+
+namespace {
+
+struct Query {
+    const std::vector<CollisionShape>* shapes;
+    const std::vector<int>* parent;
+    int shape = -1;  // the moving one
+    Clearance best;
+};
+
+bool distanceCallback(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data, double& dist)
+{
+    auto* q = static_cast<Query*>(data);
+    // o1 is the queried (moving) object; o2 one of the manager's
+    fcl::CollisionObjectd* other = o2;
+    fcl::CollisionObjectd* mine = o1;
+    auto otherIndex = int(reinterpret_cast<std::intptr_t>(other->getUserData()));
+    if (otherIndex == q->shape) {
+        std::swap(other, mine);
+        otherIndex = int(reinterpret_cast<std::intptr_t>(other->getUserData()));
+    }
+    const CollisionShape& s = (*q->shapes)[std::size_t(otherIndex)];
+    const CollisionShape& m = (*q->shapes)[std::size_t(q->shape)];
+    // the machine's ground graphics do not count against a body joined to the ground
+    if (!s.scene && s.body < 0 && m.body >= 0 && (*q->parent)[std::size_t(m.body)] < 0) {
+        dist = q->best.distance;
+        return false;
+    }
+    fcl::DistanceRequestd request;
+    request.enable_nearest_points = true;
+    fcl::DistanceResultd result;
+    fcl::distance(mine, other, request, result);
+    if (result.min_distance < q->best.distance) {
+        q->best.distance = result.min_distance;
+        q->best.shapeA = q->shape;
+        q->best.shapeB = otherIndex;
+        // distance(mine, other): point 0 is on mine (world frame, for shapes and meshes)
+        q->best.pointA = result.nearest_points[0];
+        q->best.pointB = result.nearest_points[1];
+    }
+    dist = q->best.distance;
+    return dist <= 0;
+}
+
+}  // namespace
+
+CollisionWorld::CollisionWorld(const ModelSpec& machineSpec, const Model& model, const ModelSpec* scene,
+                               Diagnostics& diags)
+    : m_impl(std::make_unique<Impl>())
+{
+    m_impl->parent = model.parent;
+    m_impl->shapes = &m_shapes;
+    auto add = [&](const GraphicSpec& g, const ModelSpec& spec, bool isScene) {
+        int body = -1;
+        if (g.body != 0) {
+            if (isScene) return;  // a scene is ground graphics only
+            body = model.bodyIndex(g.body);
+            if (body < 0) return;
+        }
+        Geometry geom;
+        Eigen::Isometry3d shapeFrame = Eigen::Isometry3d::Identity();
+        const auto& d = g.dims;
+        switch (g.shape) {
+        case ShapeKind::Box: geom = std::make_shared<fcl::Boxd>(d[0], d[1], d[2]); break;
+        case ShapeKind::Sphere: geom = std::make_shared<fcl::Sphered>(d[0]); break;
+        case ShapeKind::Ellipsoid: geom = std::make_shared<fcl::Ellipsoidd>(d[0], d[1], d[2]); break;
+        case ShapeKind::Cylinder: geom = std::make_shared<fcl::Cylinderd>(d[0], d[1]); break;
+        case ShapeKind::Cone:
+            geom = std::make_shared<fcl::Coned>(d[0], d[1]);
+            shapeFrame.translation() = Eigen::Vector3d(0, 0, d[1] / 2);  // FCL's cone is centred
+            break;
+        case ShapeKind::Tube: geom = tubeGeometry(d[0], d[1], d[2]); break;
+        case ShapeKind::Prism: geom = prismGeometry(d); break;
+        case ShapeKind::Mesh: {
+            const std::filesystem::path dir = std::filesystem::path(spec.file).parent_path();
+            const MeshLoad load = loadTriangleMesh((dir / g.meshFile).string(), g.hasScale ? g.scale : 1.0);
+            if (!load.mesh) {
+                diags.add(Severity::Warning, "collision-shape", g.src.pos,
+                          "G " + std::to_string(g.id) + " is left out of the clearance checks: " + load.error);
+                return;
+            }
+            geom = meshGeometry(load.mesh->vertices, load.mesh->triangles);
+            break;
+        }
+        }
+        if (!geom) return;
+        Eigen::Isometry3d local = Eigen::Isometry3d::Identity();
+        local.linear() = shapeRotation(g);
+        local.translation() = g.position;
+        local = local * shapeFrame;
+        const int index = int(m_shapes.size());
+        m_shapes.push_back({g.id, body, isScene});
+        auto object = std::make_unique<fcl::CollisionObjectd>(geom, local);
+        object->setUserData(reinterpret_cast<void*>(std::intptr_t(index)));
+        object->computeAABB();
+        m_impl->local.push_back(local);
+        if (body >= 0) m_impl->moving.push_back(index);
+        else m_impl->still.registerObject(object.get());
+        m_impl->objects.push_back(std::move(object));
+    };
+    for (const GraphicSpec& g : machineSpec.graphics) add(g, machineSpec, false);
+    if (scene)
+        for (const GraphicSpec& g : scene->graphics) add(g, *scene, true);
+    m_impl->still.setup();
+}
+
+CollisionWorld::~CollisionWorld() = default;
+
+void CollisionWorld::update(const Data& data)
+{
+    for (int i : m_impl->moving) {
+        const std::size_t k = std::size_t(i);
+        const int body = m_shapes[k].body;
+        if (std::size_t(body) >= data.X_wb.size()) continue;
+        m_impl->objects[k]->setTransform(data.X_wb[std::size_t(body)] * m_impl->local[k]);
+        m_impl->objects[k]->computeAABB();
+    }
+}
+
+Clearance CollisionWorld::bodyToScene(int body)
+{
+    Query q{&m_shapes, &m_impl->parent, -1, {}};
+    for (int i : m_impl->moving) {
+        if (body >= 0 && m_shapes[std::size_t(i)].body != body) continue;
+        q.shape = i;
+        Query one = q;
+        one.best = {};
+        m_impl->still.distance(m_impl->objects[std::size_t(i)].get(), &one, distanceCallback);
+        if (one.best.distance < q.best.distance) q.best = one.best;
+        if (q.best.distance <= 0) break;
+    }
+    return q.best;
+}
+
+Clearance CollisionWorld::machineToScene()
+{
+    return bodyToScene(-1);
+}
+
+Clearance CollisionWorld::between(int bodyA, int bodyB)
+{
+    Clearance best;
+    for (std::size_t a = 0; a < m_shapes.size(); ++a) {
+        if (m_shapes[a].scene || m_shapes[a].body != bodyA) continue;
+        for (std::size_t b = 0; b < m_shapes.size(); ++b) {
+            if (m_shapes[b].scene || m_shapes[b].body != bodyB || a == b) continue;
+            fcl::DistanceRequestd request;
+            request.enable_nearest_points = true;
+            fcl::DistanceResultd result;
+            fcl::distance(m_impl->objects[a].get(), m_impl->objects[b].get(), request, result);
+            if (result.min_distance < best.distance) {
+                best.distance = result.min_distance;
+                best.shapeA = int(a);
+                best.shapeB = int(b);
+                best.pointA = result.nearest_points[0];
+                best.pointB = result.nearest_points[1];
+            }
+        }
+    }
+    return best;
+}
+
+}  // namespace solver
