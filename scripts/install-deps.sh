@@ -21,6 +21,8 @@ packages=(
   libsundials-dev
   # assimp 5.2 (mesh files for graphics and the inertia calculator)
   libassimp-dev
+  # FCL 0.7 (clearances between the machine and the scene)
+  libfcl-dev
   # Qt (the CLI's QtCore now; widgets, Linguist tools and translations for the apps)
   qt6-base-dev qt6-base-dev-tools qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
   # padrob-studio: OpenGL widgets (only recommended by qt6-base-dev), charts, the xcb
@@ -29,6 +31,9 @@ packages=(
   # the station: joysticks and gamepads (SDL2), the serial DAQ box, Comedi DAQ cards
   # (optional at build time; installed so CI builds and tests that back end too)
   libsdl2-dev qt6-serialport-dev libcomedi-dev
+  # padrob bench's side-by-side comparison with MuJoCo (optional at build time;
+  # installed so CI builds and runs it; its CMake config needs qhull's headers)
+  libmujoco-dev libqhull-dev
   # GUI tests: a virtual X server (QOpenGLWidget needs xcb, not `offscreen`)
   xvfb xauth
   # tests
