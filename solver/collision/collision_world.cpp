@@ -39,30 +39,41 @@ Geometry meshGeometry(const std::vector<Eigen::Vector3d>& vertices, const std::v
     return mesh;
 }
 
-/// A closed tube (outer and inner walls, two end rings), axis z, centred.
+/// A closed tube (outer and inner walls, two end rings), axis z, centred. The walls are
+/// cut along the axis into rings about as long as a segment is wide: long thin triangles
+/// make poor bounding volumes (a query inside the mill's shell would visit most of them).
 Geometry tubeGeometry(double ro, double ri, double length, int segments = 64)
 {
     std::vector<Eigen::Vector3d> v;
     std::vector<std::array<int, 3>> t;
     const double h = length / 2;
-    for (int k = 0; k < segments; ++k) {
-        const double a = 2 * std::numbers::pi * k / segments;
-        const double c = std::cos(a), s = std::sin(a);
-        v.emplace_back(ro * c, ro * s, -h);  // 4k: outer bottom
-        v.emplace_back(ro * c, ro * s, h);   // 4k+1: outer top
-        v.emplace_back(ri * c, ri * s, -h);  // 4k+2: inner bottom
-        v.emplace_back(ri * c, ri * s, h);   // 4k+3: inner top
+    const double arc = 2 * std::numbers::pi * ro / segments;
+    const int rings = std::clamp(int(std::ceil(length / arc)), 1, 64);
+    const int perRing = 2 * segments;  // outer then inner
+    for (int r = 0; r <= rings; ++r) {
+        const double z = -h + length * r / rings;
+        for (int wall = 0; wall < 2; ++wall) {
+            const double radius = wall == 0 ? ro : ri;
+            for (int k = 0; k < segments; ++k) {
+                const double a = 2 * std::numbers::pi * k / segments;
+                v.emplace_back(radius * std::cos(a), radius * std::sin(a), z);
+            }
+        }
+    }
+    auto at = [&](int ring, int wall, int k) { return ring * perRing + wall * segments + (k % segments); };
+    for (int r = 0; r < rings; ++r) {
+        for (int k = 0; k < segments; ++k) {
+            t.push_back({at(r, 0, k), at(r, 0, k + 1), at(r + 1, 0, k + 1)});  // outer wall
+            t.push_back({at(r, 0, k), at(r + 1, 0, k + 1), at(r + 1, 0, k)});
+            t.push_back({at(r, 1, k), at(r + 1, 1, k + 1), at(r, 1, k + 1)});  // inner wall
+            t.push_back({at(r, 1, k), at(r + 1, 1, k), at(r + 1, 1, k + 1)});
+        }
     }
     for (int k = 0; k < segments; ++k) {
-        const int a = 4 * k, b = 4 * ((k + 1) % segments);
-        t.push_back({a, b, b + 1});  // outer wall
-        t.push_back({a, b + 1, a + 1});
-        t.push_back({a + 2, b + 3, b + 2});  // inner wall
-        t.push_back({a + 2, a + 3, b + 3});
-        t.push_back({a + 1, b + 1, b + 3});  // top ring
-        t.push_back({a + 1, b + 3, a + 3});
-        t.push_back({a, b + 2, b});  // bottom ring
-        t.push_back({a, a + 2, b + 2});
+        t.push_back({at(rings, 0, k), at(rings, 0, k + 1), at(rings, 1, k + 1)});  // top ring
+        t.push_back({at(rings, 0, k), at(rings, 1, k + 1), at(rings, 1, k)});
+        t.push_back({at(0, 0, k), at(0, 1, k + 1), at(0, 0, k + 1)});  // bottom ring
+        t.push_back({at(0, 0, k), at(0, 1, k), at(0, 1, k + 1)});
     }
     return meshGeometry(v, t);
 }
@@ -178,7 +189,10 @@ bool distanceCallback(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void
     }
     fcl::DistanceRequestd request;
     request.enable_nearest_points = true;
+    // starting from the best so far, the pair's own traversal (a mesh's bounding volumes)
+    // stops at once where it cannot do better: the mill's shell surrounds every query
     fcl::DistanceResultd result;
+    result.min_distance = q->best.distance;
     fcl::distance(mine, other, request, result);
     if (result.min_distance < q->best.distance) {
         q->best.distance = result.min_distance;
@@ -269,14 +283,13 @@ void CollisionWorld::update(const Data& data)
 
 Clearance CollisionWorld::bodyToScene(int body)
 {
+    // one running minimum over every shape's query: each broad-phase traversal prunes the
+    // scene's boxes farther than the best found so far
     Query q{&m_shapes, &m_impl->parent, -1, {}};
     for (int i : m_impl->moving) {
         if (body >= 0 && m_shapes[std::size_t(i)].body != body) continue;
         q.shape = i;
-        Query one = q;
-        one.best = {};
-        m_impl->still.distance(m_impl->objects[std::size_t(i)].get(), &one, distanceCallback);
-        if (one.best.distance < q.best.distance) q.best = one.best;
+        m_impl->still.distance(m_impl->objects[std::size_t(i)].get(), &q, distanceCallback);
         if (q.best.distance <= 0) break;
     }
     return q.best;

@@ -8,7 +8,8 @@
 // Shapes (docs/model-language.md "Graphics"), placed in the body frame by POS/AXIS/ROT as
 // the inertia calculator places them (shapeRotation):
 //   BOX, SPHERE, ELLIPSOID, CYL, CONE → FCL's primitives (CONE shifted: FCL's is centred);
-//   TUBE → a closed triangle mesh (64 segments: the bore is hollow, as drawn);
+//   TUBE → a closed triangle mesh (64 segments round, rings about as long as they are
+//          wide: the bore is hollow, as drawn);
 //   PRISM → its outline (ear-clipped) extruded to a triangle mesh;
 //   MESH  → the file's triangles (assimp, SCALE applied).
 // Meshes go into OBBRSS bounding-volume hierarchies; the scene's shapes into a dynamic
