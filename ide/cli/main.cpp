@@ -1,7 +1,9 @@
-// padrob — the headless front end: check, describe, simulate models and compute
-// their inertias (later: bench, export, tutorial). Exit codes: 0 success, 1 the
+// padrob — the headless front end: check, describe, simulate models, compute their
+// inertias, time the solver (bench) and export to MJCF (later: tutorial). Exit codes: 0 success, 1 the
 // model has errors (or a simulation failed), 2 usage error or unreadable file.
 
+#include "ide/cli/bench.h"
+#include "ide/cli/export.h"
 #include "ide/cli/inertia.h"
 #include "ide/cli/info_report.h"
 #include "ide/cli/simulate.h"
@@ -34,6 +36,9 @@ std::string mainHelp()
               "                        simulate a model and write its trajectory as CSV\n"
               "  inertia MODEL [--body I] [--write]\n"
               "                        compute bodies' mass and inertia from their solids\n"
+              "  bench MODEL [OPTIONS]  time the solver on a model (and MuJoCo, when built in)\n"
+              "  export --mjcf MODEL [--out FILE]\n"
+              "                        write a tree model as MuJoCo's MJCF\n"
               "\n"
               "Options:\n"
               "  -h, --help            show this help (or a command's: padrob COMMAND --help)\n"
@@ -178,6 +183,8 @@ int main(int argc, char** argv)
     if (cmd == "info") return runInfo(rest);
     if (cmd == "simulate") return ide::cli::runSimulate(rest);
     if (cmd == "inertia") return ide::cli::runInertia(rest);
+    if (cmd == "bench") return ide::cli::runBench(rest);
+    if (cmd == "export") return ide::cli::runExport(rest);
     print(stderr, tr("padrob: unknown command '") + cmd + "'\n" + tr("Try 'padrob --help'.") + "\n");
     return kUsage;
 }

@@ -1,0 +1,254 @@
+// MuJoCo side by side with Padrob (mujoco_bench.h): export, load from memory, put the
+// true mass properties in, check agreement step by step, then time mj_step and
+// mj_forward. Built only with MuJoCo (PADROB_HAVE_MUJOCO).
+
+#include "ide/cli/mujoco_bench.h"
+
+#include "solver/integrate/simulation.h"
+#include "solver/io/mjcf.h"
+#include "solver/kinematics/kinematics.h"
+
+#include <mujoco/mujoco.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+namespace ide::cli {
+
+namespace {
+
+struct ModelDeleter {
+    void operator()(mjModel* m) const { mj_deleteModel(m); }
+};
+struct DataDeleter {
+    void operator()(mjData* d) const { mj_deleteData(d); }
+};
+struct VfsDeleter {
+    void operator()(mjVFS* v) const
+    {
+        mj_deleteVFS(v);
+        delete v;
+    }
+};
+using ModelPtr = std::unique_ptr<mjModel, ModelDeleter>;
+using DataPtr = std::unique_ptr<mjData, DataDeleter>;
+
+/// MuJoCo's warnings (a global handler) collected instead of printed to standard
+/// output and MUJOCO_LOG.TXT, for the life of this object.
+class WarningCatcher {
+public:
+    WarningCatcher() : m_previous(mju_user_warning)
+    {
+        s_messages.clear();
+        mju_user_warning = &collect;
+    }
+    ~WarningCatcher() { mju_user_warning = m_previous; }
+    WarningCatcher(const WarningCatcher&) = delete;
+    WarningCatcher& operator=(const WarningCatcher&) = delete;
+    const std::vector<std::string>& messages() const { return s_messages; }
+
+private:
+    static void collect(const char* message) { s_messages.emplace_back(message); }
+    static inline std::vector<std::string> s_messages;
+    void (*m_previous)(const char*);
+};
+
+std::string fmt(const char* format, double v)
+{
+    char buf[48];
+    std::snprintf(buf, sizeof buf, format, v);
+    return buf;
+}
+
+std::string quoted(const std::string& name) { return name.empty() ? std::string() : " \"" + name + "\""; }
+
+std::string vec3(const double* v) { return fmt("%.6g", v[0]) + " " + fmt("%.6g", v[1]) + " " + fmt("%.6g", v[2]); }
+
+/// Loads MJCF text from memory (a one-file VFS). nullptr with `error` set on failure.
+ModelPtr loadFromMemory(const std::string& xml, std::string& error)
+{
+    static const char* const kName = "padrob_export.xml";
+    std::unique_ptr<mjVFS, VfsDeleter> vfs(new mjVFS);
+    mj_defaultVFS(vfs.get());
+    if (mj_makeEmptyFileVFS(vfs.get(), kName, static_cast<int>(xml.size())) != 0) {
+        error = "MuJoCo's virtual file system refused the MJCF";
+        return nullptr;
+    }
+    const int file = mj_findFileVFS(vfs.get(), kName);
+    std::memcpy(vfs->filedata[file], xml.data(), xml.size());
+    char message[1024] = "";
+    ModelPtr m(mj_loadXML(kName, vfs.get(), message, sizeof message));
+    if (!m) error = std::string("MuJoCo refused the exported MJCF: ") + message;
+    return m;
+}
+
+}  // namespace
+
+bool runMujoco(const solver::Model& model, double dt, int steps, int runs, double agreementSeconds, double tolerance,
+               MujocoRun& out, std::string& error)
+{
+    out = MujocoRun{};
+    error.clear();
+    if (!(dt > 0) || !std::isfinite(dt) || steps < 0 || runs < 0 || !(agreementSeconds >= 0) ||
+        !std::isfinite(agreementSeconds) || !(tolerance >= 0)) {
+        error = "runMujoco: bad arguments";
+        return false;
+    }
+    WarningCatcher warnings;
+
+    // export and load
+    solver::MjcfOptions options;
+    options.timestep = dt;
+    const std::string xml = solver::toMjcf(model, options, error);
+    if (xml.empty()) return false;
+    ModelPtr mp = loadFromMemory(xml, error);
+    if (!mp) return false;
+    mjModel* m = mp.get();
+    DataPtr dp(mj_makeData(m));
+    if (!dp) {
+        error = "MuJoCo could not allocate its data";
+        return false;
+    }
+    mjData* d = dp.get();
+
+    // the names of the export → MuJoCo's ids
+    const solver::MjcfNames names = solver::mjcfNames(model);
+    std::vector<int> mjBody(static_cast<std::size_t>(model.nb));
+    for (int i = 0; i < model.nb; ++i) {
+        mjBody[i] = mj_name2id(m, mjOBJ_BODY, names.body[i].c_str());
+        const int joint = mj_name2id(m, mjOBJ_JOINT, names.joint[i].c_str());
+        if (mjBody[i] < 0 || joint < 0) {
+            error = "MuJoCo's model has no body '" + names.body[i] + "' or joint '" + names.joint[i] + "'";
+            return false;
+        }
+    }
+
+    // the true mass properties where the export wrote placeholders (in body id order)
+    std::vector<int> byId(static_cast<std::size_t>(model.nb));
+    for (int i = 0; i < model.nb; ++i) byId[i] = i;
+    std::sort(byId.begin(), byId.end(), [&](int a, int b) { return model.bodyId[a] < model.bodyId[b]; });
+    for (int i : byId) {
+        const solver::MjcfInertial p = solver::mjcfInertial(model, i);
+        if (!p.placeholder()) continue;
+        const int b = mjBody[i];
+        std::string change = "body " + std::to_string(model.bodyId[i]) + quoted(model.bodyName[i]) + " (MJCF " +
+                             names.body[i] + "):";
+        if (p.placeholderMass) {
+            change += " mass " + fmt("%.6g", m->body_mass[b]) + " -> " + fmt("%.6g", p.mass) + " kg;";
+        }
+        if (p.placeholderInertia) {
+            change += " principal moments " + vec3(m->body_inertia + 3 * b) + " -> " + vec3(p.principal.data()) +
+                      " kg m^2" + (p.diagonal ? " (body axes)" : " (about the principal axes, body_iquat)");
+        } else {
+            change.pop_back();
+        }
+        if (p.placeholderMass) m->body_mass[b] = p.mass;
+        if (p.placeholderInertia) {
+            // the export wrote these about the same axes (identity when diagonal), so
+            // MuJoCo's body_sameframe and body_simple still hold
+            for (int k = 0; k < 3; ++k) m->body_inertia[3 * b + k] = p.principal[k];
+            const Eigen::Quaterniond& q = p.principalAxes;
+            const double iquat[4] = {q.w(), q.x(), q.y(), q.z()};
+            std::memcpy(m->body_iquat + 4 * b, iquat, sizeof iquat);
+        }
+        out.adjustments.push_back(change);
+    }
+    // the constants derived from them (subtree masses, inverse weights, mean inertia)
+    if (!out.adjustments.empty()) mj_setConst(m, d);
+    m->opt.disableflags |= mjDSBL_LIMIT;
+
+    // what Padrob's side leaves out so that both integrate the same equations
+    auto padrobModel = std::make_shared<solver::Model>(model);
+    int driven = 0, limited = 0;
+    for (int i = 0; i < model.nb; ++i) {
+        driven += model.drive[i].type != solver::DriveType::None;
+        limited += std::isfinite(model.lower[i]) || std::isfinite(model.upper[i]);
+    }
+    if (driven > 0) {
+        out.notes.push_back("every joint passive in both: the model's " + std::to_string(driven) +
+                            " drive(s) are not exported");
+    }
+    if (limited > 0) {
+        out.notes.push_back("joint limits off in both (" + std::to_string(limited) + " joint(s) have them)");
+    }
+    if (!model.forces.empty()) {
+        out.notes.push_back("Padrob runs without the model's " + std::to_string(model.forces.size()) +
+                            " applied force(s) (F): they are not exported");
+        padrobModel->forces.clear();
+    }
+    solver::SimulationOptions simOptions;
+    simOptions.integrator.method = solver::IntegrationMethod::Rk4Fixed;
+    simOptions.integrator.step = dt;
+    simOptions.drives = false;
+    simOptions.limits = false;
+    solver::Simulation sim(padrobModel, simOptions);
+    sim.evaluate();
+
+    const int key = mj_name2id(m, mjOBJ_KEY, "initial");
+    auto reset = [&] {
+        if (key >= 0) mj_resetDataKeyframe(m, d, key);
+        else mj_resetData(m, d);
+    };
+    reset();
+    mj_forward(m, d);
+
+    // agreement, step by step
+    const long n = std::lround(agreementSeconds / dt);
+    std::vector<solver::SimulationEvent> events;
+    for (long k = 0; k <= n; ++k) {
+        if (k > 0) {
+            if (!sim.advanceTo(static_cast<double>(k) * dt, events, error)) {
+                error = "Padrob failed: " + error;
+                return false;
+            }
+            mj_step(m, d);
+            mj_kinematics(m, d);  // mj_step leaves the positions of the step's start
+        }
+        for (int i = 0; i < model.nb; ++i) {
+            const Eigen::Vector3d p = solver::comPosition(*padrobModel, sim.data(), i);
+            const Eigen::Map<const Eigen::Vector3d> q(d->xipos + 3 * mjBody[i]);
+            const double distance = (p - q).norm();
+            if (distance > out.maxPositionError || !std::isfinite(distance)) out.maxPositionError = distance;
+            if (!(distance <= tolerance)) {
+                out.agreementSeconds = static_cast<double>(k) * dt;
+                error = "MuJoCo and Padrob disagree: the centre of mass of body " + std::to_string(model.bodyId[i]) +
+                        quoted(model.bodyName[i]) + " is " + fmt("%.3g", distance) + " m apart at t = " +
+                        fmt("%g", static_cast<double>(k) * dt) + " s (tolerance " + fmt("%g", tolerance) +
+                        " m; Padrob " + vec3(p.data()) + ", MuJoCo " + vec3(q.data()) + ")";
+                return false;
+            }
+        }
+    }
+    out.agreementSeconds = static_cast<double>(n) * dt;
+
+    // timing: a warm-up run (r = −1), then `runs` runs from the initial state
+    using Clock = std::chrono::steady_clock;
+    auto timeRuns = [&](void (*call)(const mjModel*, mjData*), std::vector<double>& micros) {
+        if (steps == 0) return;
+        for (int r = -1; r < runs; ++r) {
+            reset();
+            const Clock::time_point t0 = Clock::now();
+            for (int s = 0; s < steps; ++s) call(m, d);
+            const Clock::time_point t1 = Clock::now();
+            if (r >= 0) micros.push_back(std::chrono::duration<double, std::micro>(t1 - t0).count() / steps);
+        }
+    };
+    if (runs > 0) {
+        timeRuns(&mj_step, out.stepMicros);
+        timeRuns(&mj_forward, out.forwardMicros);
+    }
+    for (int w = 0; w < mjNWARNING; ++w) {
+        if (d->warning[w].number > 0) {
+            out.notes.push_back("MuJoCo warned " + std::to_string(d->warning[w].number) + " time(s): " +
+                                (warnings.messages().empty() ? std::string("warning ") + std::to_string(w)
+                                                             : warnings.messages().front()));
+        }
+    }
+    return true;
+}
+
+}  // namespace ide::cli

@@ -1,0 +1,242 @@
+// `padrob export --mjcf` through the real binary: the MJCF on standard output or in a
+// file (atomically), loops and bad arguments refused, and --check (MuJoCo against
+// Padrob) on every bundled tree model when the binary has MuJoCo.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli_run.h"
+
+using namespace test;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A fresh empty folder for output files.
+fs::path outDir(const std::string& name)
+{
+    const fs::path dir = fs::temp_directory_path() / ("padrob_export_test_" + std::to_string(::getpid())) / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+std::vector<std::string> listing(const fs::path& dir)
+{
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+    return names;
+}
+
+/// Whether the build that made the binary found MuJoCo: its CMakeCache.txt (next to
+/// bin/padrob's folder) has PADROB_WITH_MUJOCO on and a mujoco_DIR that was found.
+/// Used so that --check is required, not skipped, in a build with MuJoCo.
+bool buildHasMujoco()
+{
+    const fs::path cache = fs::path(PADROB_CLI).parent_path().parent_path() / "CMakeCache.txt";
+    const std::string text = slurp(cache.string());
+    if (text.find("PADROB_WITH_MUJOCO:BOOL=OFF") != std::string::npos) return false;
+    const std::size_t at = text.find("mujoco_DIR:PATH=");
+    if (at == std::string::npos) return false;
+    const std::string value = text.substr(at + 16, text.find('\n', at) - at - 16);
+    return value.find("NOTFOUND") == std::string::npos && !value.empty();
+}
+
+/// A tree that exercises what the bundled models do not: joints written child →
+/// parent, products of inertia, centres of mass off the frame origin, a massless
+/// body, an inertia breaking the triangle inequality off the body axes, tilted
+/// gravity, T 1 and T 2 joints, an initial rate, a drive and an applied force.
+const char* const kTreeZoo = R"(GRAVITY 0.4 -0.3 -9.81
+B 1 5.0 0.20 0.30 0.25 0.010 -0.020 0.015 CG 0.10 -0.05 0.20 NAME "column"
+B 2 NAME "massless yoke"
+B 3 3.0 0.10 0.12 0.08 0.005 0.000 -0.010 CG 0.00 0.30 0.05 NAME "arm"
+B 4 2.0 0.1 0.1 0.5 0.02 0 0 CG 0.02 0.01 -0.10 NAME "flat, rotated"
+B 5 1.5 0.02 0.03 0.025 0.001 0.002 0.003 NAME "slide"
+C 1 VI 0.4 NAME "slew"
+B1 0 P1 0.1 0.2 0.5 A1 0 0.2 1 R1 1 0 0
+B2 1 P2 0 0 -0.3 A2 0 0 1 R2 1 0 0
+C 2 NAME "yoke, written child to parent"
+B1 2 P1 0 -0.2 0 A1 1 0 0 R1 0 1 0
+B2 1 P2 0.2 0.1 0.3 A2 1 0 0 R2 0 0 1
+C 3 T 1 LL 0.91 UL 0.96 VI 0.01 NAME "cylinder"
+B1 2 P1 0 0.6 0 A1 0 1 0 R1 1 0 0
+B2 3 P2 0 -0.3 0 A2 0 1 0 R2 1 0 0
+CL1 0.2 0 -0.1 CL2 -0.1 0 -0.08
+C 4 QI 0.3 NAME "wrist"
+B1 3 P1 0.1 0.2 0 A1 0 0 1 R1 1 0 0
+B2 4 P2 -0.1 0 0 A2 0 0 1 R2 0 1 0
+C 5 T 2 LL -0.2 UL 0.4 QI 0.1 NAME "slide, written child to parent"
+B1 5 P1 0 0 0 A1 0 0 1 R1 1 0 0
+B2 1 P2 0.3 0 0.1 A2 0 0 1 R2 1 1 0
+D 5 PNEU F 30
+F 1 POINT B 3 P 0 0 0 DIR 0 0 1 MAG 10
+)";
+
+}  // namespace
+
+TEST(CliExport, Help)
+{
+    CliRun h = padrob("export --help");
+    EXPECT_EQ(h.status, 0);
+    EXPECT_EQ(h.out.rfind("Usage: padrob export --mjcf MODEL", 0), 0u) << h.out;
+    for (const char* option : {"--out FILE", "--dt H", "--check", "Exit status"}) {
+        EXPECT_NE(h.out.find(option), std::string::npos) << option;
+    }
+    EXPECT_EQ(h.err, "");
+}
+
+TEST(CliExport, PendulumToStandardOutput)
+{
+    CliRun r = padrob("export --mjcf models/pendulum.pad");
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    EXPECT_EQ(r.out.rfind("<!--", 0), 0u);
+    EXPECT_NE(r.out.find("model models/pendulum.pad as MuJoCo MJCF"), std::string::npos);
+    EXPECT_NE(r.out.find("<mujoco model=\"pendulum\">"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("<option timestep=\"0.001\" gravity=\"0 0 -9.81\" integrator=\"RK4\">"), std::string::npos);
+    EXPECT_NE(r.out.find("<body name=\"bob\" pos=\"0 0 -1\">"), std::string::npos);
+    EXPECT_NE(r.out.find("<joint name=\"pivot\" type=\"hinge\" pos=\"0 0 1\" axis=\"1 0 0\"/>"), std::string::npos);
+    EXPECT_NE(r.out.find("<key name=\"initial\" qpos=\"0.1\" qvel=\"0\"/>"), std::string::npos);
+    const std::string end = "</mujoco>\n";
+    ASSERT_GE(r.out.size(), end.size());
+    EXPECT_EQ(r.out.substr(r.out.size() - end.size()), end);
+
+    CliRun dt = padrob("export models/pendulum.pad --dt 0.0005 --mjcf");
+    EXPECT_EQ(dt.status, 0) << dt.err;
+    EXPECT_NE(dt.out.find("timestep=\"5e-04\""), std::string::npos) << dt.out;
+}
+
+TEST(CliExport, OutWritesTheFileWhole)
+{
+    const fs::path dir = outDir("out");
+    const fs::path file = dir / "liner.xml";
+    CliRun r = padrob("export --mjcf models/liner_manipulator.pad --out '" + file.string() + "'");
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(r.err, "");
+    CliRun stdoutRun = padrob("export --mjcf models/liner_manipulator.pad");
+    EXPECT_EQ(slurp(file.string()), stdoutRun.out);
+    EXPECT_NE(stdoutRun.out.find("placeholder mass 1e-09 kg"), std::string::npos);
+    EXPECT_EQ(listing(dir), std::vector<std::string>{"liner.xml"}) << "no temporary file left";
+
+    // an existing file is replaced
+    CliRun again = padrob("export --mjcf models/pendulum.pad --out '" + file.string() + "'");
+    EXPECT_EQ(again.status, 0) << again.err;
+    EXPECT_EQ(slurp(file.string()), padrob("export --mjcf models/pendulum.pad").out);
+    EXPECT_EQ(listing(dir), std::vector<std::string>{"liner.xml"});
+}
+
+TEST(CliExport, LoopsAreRefusedWithoutOutput)
+{
+    const fs::path dir = outDir("loops");
+    const fs::path file = dir / "loop.xml";
+    for (const char* model : {"models/four_bar.pad", "models/slider_crank.pad", "models/excavator.pad"}) {
+        CliRun r = padrob(std::string("export --mjcf ") + model + " --out '" + file.string() + "'");
+        EXPECT_EQ(r.status, 1) << model;
+        EXPECT_NE(r.err.find(std::string("padrob export: ") + model +
+                             ": MJCF export needs a tree: the model closes 1 loop through joint "),
+                  std::string::npos)
+            << r.err;
+        EXPECT_EQ(r.out, "");
+        EXPECT_FALSE(fs::exists(file)) << model;
+    }
+    CliRun fourBar = padrob("export --mjcf models/four_bar.pad");
+    EXPECT_EQ(fourBar.status, 1);
+    EXPECT_EQ(fourBar.out, "");
+}
+
+TEST(CliExport, ModelErrorsExitOne)
+{
+    const std::string bad = writeTemp("export_bad.pad", "B 1 1.0 0.1 0.1 0.1\nC 1\nB1 0 P1 0 0 0 A1 1 0 0 R1 1 0 0\n");
+    CliRun r = padrob("export --mjcf '" + bad + "'");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find("error"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out, "");
+}
+
+TEST(CliExport, BadArgumentsExitTwoAndWriteNothing)
+{
+    const fs::path dir = outDir("bad");
+    const std::string out = (dir / "never.xml").string();
+    struct Case {
+        std::string args;
+        std::string message;
+    };
+    const std::vector<Case> cases = {
+        {"models/pendulum.pad", "give the format: --mjcf"},
+        {"--mjcf", "no model given"},
+        {"--mjcf models/pendulum.pad models/double_pendulum.pad", "give one model"},
+        {"--mjcf models/pendulum.pad --bogus", "unknown option '--bogus'"},
+        {"--mjcf models/pendulum.pad --dt 0", "--dt must be a positive number of seconds, not '0'"},
+        {"--mjcf models/pendulum.pad --dt abc", "--dt must be a positive number of seconds, not 'abc'"},
+        {"--mjcf /nonexistent/model.pad", "/nonexistent/model.pad"},
+        {"--mjcf models", "models"},
+    };
+    for (const Case& c : cases) {
+        CliRun r = padrob("export " + c.args + " --out '" + out + "'");
+        EXPECT_EQ(r.status, 2) << c.args << "\n" << r.err;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
+        EXPECT_EQ(r.out, "") << c.args;
+        EXPECT_FALSE(fs::exists(out)) << c.args;
+    }
+    CliRun noValue = padrob("export --mjcf models/pendulum.pad --out");
+    EXPECT_EQ(noValue.status, 2);
+    EXPECT_NE(noValue.err.find("--out needs a value"), std::string::npos) << noValue.err;
+    // a folder that does not exist
+    CliRun noFolder = padrob("export --mjcf models/pendulum.pad --out '" + (dir / "no" / "such.xml").string() + "'");
+    EXPECT_EQ(noFolder.status, 2);
+    EXPECT_NE(noFolder.err.find("cannot create"), std::string::npos) << noFolder.err;
+    CliRun folder = padrob("export --mjcf models/pendulum.pad --out '" + dir.string() + "'");
+    EXPECT_EQ(folder.status, 2);
+    EXPECT_NE(folder.err.find("it is a folder"), std::string::npos) << folder.err;
+    EXPECT_TRUE(listing(dir).empty());
+}
+
+// --check runs MuJoCo in the padrob process: the binary has it exactly when the build
+// found it (buildHasMujoco); without it --check is a usage error, which the test
+// accepts only for a build without MuJoCo.
+TEST(CliExport, CheckAgreesWithMujocoOnEveryTreeModel)
+{
+    const bool mujoco = buildHasMujoco();
+    const std::string zoo = writeTemp("export_zoo.pad", kTreeZoo);
+    const std::vector<std::string> models = {"models/pendulum.pad",        "models/double_pendulum.pad",
+                                             "models/incline_slider.pad",  "models/knuckle_boom_crane.pad",
+                                             "models/liner_manipulator.pad", "models/liner_station.pad",
+                                             "'" + zoo + "'"};
+    for (const std::string& model : models) {
+        CliRun r = padrob("export --mjcf " + model + " --check");
+        if (!mujoco) {
+            EXPECT_EQ(r.status, 2) << model;
+            EXPECT_NE(r.err.find("--check needs MuJoCo, and this padrob was built without it"), std::string::npos)
+                << r.err;
+            EXPECT_EQ(r.out, "");
+            continue;
+        }
+        EXPECT_EQ(r.status, 0) << model << "\n" << r.err;
+        EXPECT_NE(r.err.find("MuJoCo agrees with Padrob over 0.2 s"), std::string::npos) << model << "\n" << r.err;
+        EXPECT_EQ(r.out, padrob("export --mjcf " + model).out) << model;
+    }
+    if (!mujoco) GTEST_SKIP() << "padrob was built without MuJoCo: --check refused as documented";
+
+    // the liner manipulator's placeholders are replaced by the true values
+    CliRun liner = padrob("export --mjcf models/liner_manipulator.pad --check");
+    for (const char* body :
+         {"body 1 \"torreta\"", "body 3 \"extensión\"", "body 5 \"balancín\"", "body 6 \"cabezal\""}) {
+        EXPECT_NE(liner.err.find(std::string("set in MuJoCo after loading: ") + body), std::string::npos)
+            << body << "\n" << liner.err;
+    }
+    EXPECT_NE(liner.err.find("note: every joint passive in both: the model's 9 drive(s) are not exported"),
+              std::string::npos)
+        << liner.err;
+    CliRun zooRun = padrob("export --mjcf '" + zoo + "' --check");
+    EXPECT_NE(zooRun.err.find("without the model's 1 applied force(s) (F)"), std::string::npos) << zooRun.err;
+
+    // a loop is refused before MuJoCo is asked
+    CliRun loop = padrob("export --mjcf models/four_bar.pad --check");
+    EXPECT_EQ(loop.status, 1);
+    EXPECT_NE(loop.err.find("MJCF export needs a tree"), std::string::npos);
+}
