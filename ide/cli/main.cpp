@@ -1,6 +1,7 @@
 // padrob — the headless front end: check, describe, simulate models, compute their
-// inertias, time the solver (bench) and export to MJCF (later: tutorial). Exit codes: 0 success, 1 the
-// model has errors (or a simulation failed), 2 usage error or unreadable file.
+// inertias, time the solver (bench) and export to MJCF (later: tutorial). Exit codes:
+// 0 success, 1 the model has errors (or a simulation failed), 2 usage error or
+// unreadable file.
 
 #include "ide/cli/bench.h"
 #include "ide/cli/export.h"
