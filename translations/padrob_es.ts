@@ -43,13 +43,15 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location filename="../ide/cli/bench.cpp" line="+739"/>
+        <location filename="../ide/cli/export.cpp" line="+140"/>
+        <location filename="../ide/cli/inertia.cpp" line="+4"/>
         <location filename="../ide/cli/simulate.cpp" line="+310"/>
         <source>unknown option &apos;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location filename="../ide/cli/inertia.cpp" line="+16"/>
         <source>--body: the model has no body </source>
         <translation type="unfinished"></translation>
     </message>
@@ -181,22 +183,96 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location filename="../ide/cli/bench.cpp" line="-23"/>
+        <location filename="../ide/cli/export.cpp" line="-12"/>
+        <location filename="../ide/cli/simulate.cpp" line="+89"/>
         <source> needs a value</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location filename="../ide/cli/simulate.cpp" line="+3"/>
         <source>--time must be a positive number of seconds, not &apos;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>--dt must be a positive number of seconds, not &apos;</source>
+        <location filename="../ide/cli/export.cpp" line="-93"/>
+        <source>Try &apos;padrob export --help&apos;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <location line="+10"/>
+        <source>cannot write </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <source>: it is a folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>cannot create </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+58"/>
+        <source>--out needs a file name</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+4"/>
+        <location filename="../ide/cli/simulate.cpp" line="+3"/>
+        <source>--dt must be a positive number of seconds, not &apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>give the format: --mjcf (the only one)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>--check needs MuJoCo, and this padrob was built without it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>note: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>set in MuJoCo after loading: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MuJoCo agrees with Padrob over </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source> s (RK4, dt </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> s): the centres of mass are at most </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> m apart</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>cannot write to standard output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ide/cli/simulate.cpp" line="+4"/>
         <source>--rtol must be a number between 0 and 1, not &apos;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -206,28 +282,78 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location filename="../ide/cli/bench.cpp" line="+19"/>
+        <location filename="../ide/cli/simulate.cpp" line="+5"/>
         <source>--integrator must be rk4 or adaptive, not &apos;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location filename="../ide/cli/simulate.cpp" line="+16"/>
         <location line="+44"/>
         <source> takes J=VALUE (a joint id and a number), not &apos;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-38"/>
+        <location filename="../ide/cli/bench.cpp" line="-664"/>
+        <source>Try &apos;padrob bench --help&apos;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+160"/>
+        <source>the simulation failed: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+112"/>
+        <source>not compared with --integrator adaptive (MuJoCo is timed with RK4 at dt)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+379"/>
+        <source> must be a whole number from 1 to </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>, not &apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>--dt must be a number of seconds above 0 and at most 1, not &apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location filename="../ide/cli/export.cpp" line="-51"/>
+        <location filename="../ide/cli/simulate.cpp" line="-38"/>
         <source>give one model</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+3"/>
+        <location filename="../ide/cli/export.cpp" line="+4"/>
+        <location filename="../ide/cli/simulate.cpp" line="+3"/>
         <source>no model given</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+18"/>
+        <source>: the model has no moving body: nothing to time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>MuJoCo: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>scaling: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ide/cli/simulate.cpp" line="+1"/>
         <source>--time is required</source>
         <translation type="unfinished"></translation>
     </message>
@@ -458,7 +584,7 @@ Exit status 2 on a usage error or a file that cannot be read or written.
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ide/cli/main.cpp" line="+26"/>
+        <location filename="../ide/cli/main.cpp" line="+29"/>
         <source>Usage: padrob COMMAND [OPTIONS] [ARGS]
 
 Padrob builds real-time training simulators of machines from model files (.pad).
@@ -470,6 +596,9 @@ Commands:
                         simulate a model and write its trajectory as CSV
   inertia MODEL [--body I] [--write]
                         compute bodies&apos; mass and inertia from their solids
+  bench MODEL [OPTIONS]  time the solver on a model (and MuJoCo, when built in)
+  export --mjcf MODEL [--out FILE]
+                        write a tree model as MuJoCo&apos;s MJCF
 
 Options:
   -h, --help            show this help (or a command&apos;s: padrob COMMAND --help)
@@ -480,7 +609,7 @@ Exit status: 0 success, 1 the model has errors, 2 usage error or unreadable file
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+24"/>
         <source>Usage: padrob check MODEL...
 
 Reads each model file and prints every problem found, one per line, as
@@ -558,6 +687,326 @@ at T (else the run fails, exit status 1).
 
 Exit status: 0 success; 1 the model has errors or the simulation failed;
 2 usage error or unreadable input. On failure no output file is left behind.
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ide/cli/bench.cpp" line="-192"/>
+        <source>machine: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source> cores</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>each figure: the median of </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> runs after a warm-up run, and the fastest – slowest run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>model: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source> (bodies: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>, drives: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, loop closures: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>steps: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source> of dt = </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>adaptive integrator (Dormand–Prince 5(4), rtol 1e-8)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>RK4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>[µs]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>median</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>min – max</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>forward dynamics, per evaluation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> evaluations/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>realtime factor </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>adaptive, per simulated ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>RK4 step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source> steps/s, </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RK4 step, commands held</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>no restart after a new command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RK4 step, passive, no limits</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>no drives, no events</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>reference N–E system, per solve</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> Padrob&apos;s forward dynamics</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>reference RK4 step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> Padrob&apos;s RK4 step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>MuJoCo RK4 step (passive, no limits)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+3"/>
+        <source>Padrob / MuJoCo </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source> (passive </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>MuJoCo forward (mj_forward)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Steps: every drive commanded by a sine (amplitude 0.8, 0.5 Hz, phases spread) set before every
+step (held: set once), limits and relief valves watched as events, the joint reactions computed
+in every evaluation. Events in one run: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Reference: the thesis&apos;s Newton–Euler system A·X = B (eq. 2.8–2.11), dense LU, </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> solves
+and </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> RK4 steps per run, modes and commands held, no events; its θ̈ differs from Padrob&apos;s
+by </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> (relative).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>MuJoCo: the same trajectory within </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source> m over </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>; adjusted for MuJoCo:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Allocations in the step loop: not counted here (tests/alloc counts them).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>scaling: µs per RK4 step (median) of generated models: drives on every 3rd joint,
+limits on all; commands held, or set every step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>bodies</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>chain, held</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>chain, commanded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>tree, held</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>tree, commanded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>p</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>  p: time ∝ n^p by least squares on log–log (p ≈ 1 is linear)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Usage: padrob bench MODEL [OPTIONS]
+       padrob bench --scaling [OPTIONS]
+
+Times the solver on a model: forward dynamics, RK4 steps with drives, limits and
+joint reactions, the real-time factor, and the thesis&apos;s reference Newton–Euler
+system A·X = B; with MuJoCo built in, MuJoCo on the same tree side by side.
+Each figure is the median of R runs after one warm-up run, with the fastest and
+slowest run (the machine is noisy); times in µs per evaluation or per step.
+
+  --steps N             steps per timed run (default 5000); the forward dynamics
+                        are timed over N evaluations, the reference over
+                        min(N, 1000) solves and min(N, 250) steps
+  --runs R              timed runs per figure (default 5)
+  --dt H                step [s] (default 0.001)
+  --integrator M        rk4 (default) or adaptive (Dormand–Prince 5(4), rtol 1e-8:
+                        time per simulated millisecond)
+  --json                print one JSON object (format &quot;padrob-bench&quot;, version 1)
+  --scaling             also time generated chains and binary trees of 10, 30, 100,
+                        300 and 1000 bodies and fit time ∝ n^p (MODEL may then be
+                        left out)
+  --no-mujoco           skip the comparison with MuJoCo
+
+The RK4 steps command every drive with a slow sine, set before every step (so
+valves open and close and every step restarts the integrator, as at the station),
+watch limits and relief valves, and compute the joint reactions in every
+evaluation; they are also timed with the commands held, and passive without
+limits. The real-time factor is dt / step time.
+
+Exit status: 0 success; 1 the model has errors or a simulation failed;
+2 usage error or unreadable model.
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ide/cli/export.cpp" line="-57"/>
+        <source>Usage: padrob export --mjcf MODEL [--out FILE] [--dt H] [--check]
+
+Writes a model without closed loops as MuJoCo&apos;s MJCF (XML). The bodies are posed
+with every joint at 0, so MuJoCo&apos;s qpos of each joint is Padrob&apos;s coordinate
+(the angle for T 0 and T 1 joints: a T 1 joint&apos;s length is not a coordinate in
+MuJoCo; the displacement for T 2); the keyframe &quot;initial&quot; holds the model&apos;s
+initial state. MuJoCo gets a passive model: drives, relief valves, limit
+impulses, applied forces and graphics are not exported (the file&apos;s header says
+so). Bodies MuJoCo would refuse (massless, or an inertia breaking I1 + I2 &gt;= I3)
+get the nearest values it accepts, with the true ones in a comment there.
+
+  --mjcf        the format (required; the only one)
+  --out FILE    write the MJCF there (default: standard output); the file is
+                replaced whole or not at all
+  --dt H        the time step written in &lt;option&gt; [s] (default 0.001)
+  --check       load the MJCF into MuJoCo (when padrob was built with it), put
+                the true masses and inertias in, and check that MuJoCo and Padrob
+                follow the same trajectory for 0.2 s (RK4 at --dt, every joint
+                passive, no limits, the centres of mass within 1e-6 m); the
+                result goes to standard error
+
+Exit status: 0 success; 1 the model has errors, has closed loops, or MuJoCo
+disagrees (--check); 2 usage error, unreadable model, or --check in a padrob
+built without MuJoCo. On failure nothing is written.
 </source>
         <translation type="unfinished"></translation>
     </message>
@@ -940,6 +1389,32 @@ Exit status: 0 success; 1 the model has errors or the simulation failed;
     </message>
 </context>
 <context>
+    <name>studio::FrameBench</name>
+    <message>
+        <location filename="../ide/studio/app/frame_bench.cpp" line="+193"/>
+        <source>Cannot read the model %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>The model %1 was not drawn (does it have errors?).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>The simulation does not run.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+21"/>
+        <source>The %n view(s) do not draw.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>studio::InertiaDialog</name>
     <message>
         <location filename="../ide/studio/dialogs/inertia_dialog.cpp" line="+50"/>
@@ -1247,7 +1722,7 @@ Exit status: 0 success; 1 the model has errors or the simulation failed;
 <context>
     <name>studio::MainWindow</name>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+119"/>
+        <location filename="../ide/studio/app/main_window.cpp" line="+127"/>
         <source>Export</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1412,6 +1887,27 @@ Exit status: 0 success; 1 the model has errors or the simulation failed;
     </message>
     <message>
         <location line="+1"/>
+        <source>S&amp;cene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Load…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+110"/>
+        <source>Load Scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-106"/>
+        <source>&amp;None</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Body &amp;Frames</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1469,7 +1965,17 @@ Exit status: 0 success; 1 the model has errors or the simulation failed;
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
+        <source>C %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>reversed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Keyboard Controls</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1495,23 +2001,46 @@ Exit status: 0 success; 1 the model has errors or the simulation failed;
     </message>
     <message>
         <location line="+17"/>
-        <location line="+21"/>
+        <location line="+68"/>
         <source>Open Model</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-21"/>
+        <location line="-68"/>
         <source>Cannot open %1:
 %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="-93"/>
+        <location line="+161"/>
         <source>Padrob models (*.pad);;All files (*)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-51"/>
+        <source>%1
+
+The 3D view goes on without this scene.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Scene: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Scene: %1. %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>The scene used last is not drawn: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <location line="+14"/>
         <source>Save Model</source>
         <translation type="unfinished"></translation>
@@ -2315,6 +2844,43 @@ moved by joint C %1</source>
     </message>
 </context>
 <context>
+    <name>studio::SceneFile</name>
+    <message>
+        <location filename="../ide/studio/view/scene_file.cpp" line="+27"/>
+        <source>no such file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cannot read the scene %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The scene %1 is too large (over %2 MB).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>The scene %1 has errors:
+%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The scene %1 has no ground graphics (G … B 0) to draw.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>%n graphic(s) on moving bodies of the scene are not drawn.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>studio::SerialConsoleDialog</name>
     <message>
         <location filename="../ide/studio/station/serial_console_dialog.cpp" line="+21"/>
@@ -2365,7 +2931,7 @@ moved by joint C %1</source>
 <context>
     <name>studio::SimulationRunner</name>
     <message>
-        <location filename="../ide/studio/sim/simulation_runner.cpp" line="+419"/>
+        <location filename="../ide/studio/sim/simulation_runner.cpp" line="+450"/>
         <source>The simulation stopped: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2879,7 +3445,7 @@ Id: %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../ide/studio/view/viewport.cpp" line="+180"/>
+        <location filename="../ide/studio/view/viewport.cpp" line="+199"/>
         <source>Iso</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2904,7 +3470,7 @@ Id: %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+110"/>
         <source>The 3D view needs OpenGL 3.3, which this system does not provide.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2922,7 +3488,7 @@ Id: %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+83"/>
         <source>Operator screen %1 of %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3080,6 +3646,49 @@ Id: %3</source>
     <message>
         <location line="+1"/>
         <source>%1 kg</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>studio::main</name>
+    <message>
+        <location filename="../ide/studio/main.cpp" line="+36"/>
+        <source>Padrob Studio: write a machine&apos;s model, simulate it in real time and drive it from the operator&apos;s devices.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The model file to open (default: the liner manipulator).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Draw the ground graphics of FILE around the model (a scene such as resources/scenes/sag_mill.pad). Without it, the scene used last.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>FILE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Measure instead of working, then quit: the start-up time, N frames of a 1920x1080 window paced at 60 Hz and N back to back, with one view and with three, the solver&apos;s step periods meanwhile, and the latency of 60 key presses to the solver.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>With --bench-frames: only one view (1) or only three (3).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>With --bench-frames: print the results as one JSON object.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>--bench-frames needs a number of frames (1 or more) and --views 1 or 3.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

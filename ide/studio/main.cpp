@@ -1,15 +1,24 @@
-// padrob-studio [MODEL]: the application (see app/main_window.h).
+// padrob-studio [--scene FILE] [MODEL]: the application (see app/main_window.h).
+// padrob-studio --bench-frames N [--scene FILE] [--views 1|3] [--json] [MODEL]: how
+// fast it starts and draws and how steady its real-time loop is (app/frame_bench.h).
+#include "ide/studio/app/frame_bench.h"
 #include "ide/studio/app/main_window.h"
 #include "ide/studio/view/viewport.h"
 
 #include <QApplication>
+#include <QCommandLineParser>
+#include <QElapsedTimer>
 #include <QLibraryInfo>
 #include <QLocale>
 #include <QSurfaceFormat>
 #include <QTranslator>
 
+#include <cstdio>
+
 int main(int argc, char** argv)
 {
+    QElapsedTimer sinceMain;  // the bench's start-up time is measured from here too
+    sinceMain.start();
     QSurfaceFormat::setDefaultFormat(studio::Viewport::surfaceFormat());  // OpenGL 3.3 core, before the app
     QApplication app(argc, argv);
     QApplication::setOrganizationName("Padrob");
@@ -21,9 +30,68 @@ int main(int argc, char** argv)
         QApplication::installTranslator(&qtTranslator);
     }
     if (translator.load(QLocale(), "padrob", "_", ":/i18n")) QApplication::installTranslator(&translator);
+
+    // the command line (after the translators: --help is translated)
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QCoreApplication::translate(
+        "studio::main", "Padrob Studio: write a machine's model, simulate it in real time and drive it from the "
+                        "operator's devices."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument(
+        QStringLiteral("model"),
+        QCoreApplication::translate("studio::main", "The model file to open (default: the liner manipulator)."),
+        QStringLiteral("[MODEL]"));
+    const QCommandLineOption scene(
+        QStringLiteral("scene"),
+        QCoreApplication::translate("studio::main",
+                                    "Draw the ground graphics of FILE around the model (a scene such as "
+                                    "resources/scenes/sag_mill.pad). Without it, the scene used last."),
+        QCoreApplication::translate("studio::main", "FILE"));
+    const QCommandLineOption bench(
+        QStringLiteral("bench-frames"),
+        QCoreApplication::translate("studio::main",
+                                    "Measure instead of working, then quit: the start-up time, N frames of a "
+                                    "1920x1080 window paced at 60 Hz and N back to back, with one view and with "
+                                    "three, the solver's step periods meanwhile, and the latency of 60 key presses "
+                                    "to the solver."),
+        QStringLiteral("N"));
+    const QCommandLineOption views(
+        QStringLiteral("views"),
+        QCoreApplication::translate("studio::main", "With --bench-frames: only one view (1) or only three (3)."),
+        QStringLiteral("1|3"));
+    const QCommandLineOption json(
+        QStringLiteral("json"),
+        QCoreApplication::translate("studio::main", "With --bench-frames: print the results as one JSON object."));
+    parser.addOptions({scene, bench, views, json});
+    parser.process(app);
+    const QString model = parser.positionalArguments().value(0);
+
+    if (parser.isSet(bench)) {
+        studio::FrameBenchOptions options;
+        bool ok = false;
+        options.frames = parser.value(bench).toInt(&ok);
+        const QString viewCount = parser.value(views);
+        if (!ok || options.frames < 1 || (parser.isSet(views) && viewCount != "1" && viewCount != "3")) {
+            std::fputs(qPrintable(QCoreApplication::translate("studio::main",
+                                                              "--bench-frames needs a number of frames (1 or more) "
+                                                              "and --views 1 or 3.") +
+                                  QLatin1Char('\n')),
+                       stderr);
+            return 2;
+        }
+        options.views = parser.isSet(views) ? viewCount.toInt() : 0;
+        options.json = parser.isSet(json);
+        options.modelPath = model;
+        options.scenePath = parser.value(scene);
+        options.sinceMain = sinceMain;
+        return studio::runFrameBench(options);
+    }
+
     studio::MainWindow window;
-    const QStringList args = QApplication::arguments();
-    window.openInitial(args.size() > 1 ? args.at(1) : QString());
+    window.openInitial(model);
+    if (parser.isSet(scene)) window.loadScene(parser.value(scene));
+    else window.restoreScene();
     window.show();
     return QApplication::exec();
 }

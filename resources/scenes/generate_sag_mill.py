@@ -67,7 +67,7 @@ header = f"""// ================================================================
 //     discharge-end grate.
 //   - floor: the charge left in the mill, levelled at z = {FLOOR_Z} m (the
 //     liner cart of models/liner_station.pad stands on it); the manipulator's
-//     beam on it.
+//     base flange is bedded 0.1 m into it.
 //   - two workers (1.75 m, hard hats) and two work lights on tripods.
 // =============================================================================
 
@@ -77,7 +77,7 @@ GRAVITY 0 0 -9.81
 print(header)
 
 # shell and ends
-G(f"TUBE {fmt(R + SHELL_T, R, L)} POS {fmt(AX, 0.0, AZ)} AXIS 0 1 0 COLOR 0.32 0.30 0.28", "shell")
+G(f"TUBE {fmt(R + SHELL_T, R, L)} POS {fmt(AX, (Y0 + Y1) / 2, AZ)} AXIS 0 1 0 COLOR 0.32 0.30 0.28", "shell")
 G(f"TUBE {fmt(R + SHELL_T, 2.2, 0.12)} POS {fmt(AX, Y0 - 0.06, AZ)} AXIS 0 1 0 COLOR 0.36 0.34 0.30",
   "feed-end head, its opening 2.2 m radius")
 G(f"CYL {fmt(R + SHELL_T, 0.12)} POS {fmt(AX, Y1 + 0.06, AZ)} AXIS 0 1 0 COLOR 0.30 0.28 0.26",
@@ -115,18 +115,16 @@ for dy in (-0.85, 0.85):
 half = math.sqrt(R * R - (AZ - FLOOR_Z) ** 2)
 G(f"BOX {fmt(2 * half - 0.2, L - 0.1, 0.40)} POS {fmt(AX, (Y0 + Y1) / 2, FLOOR_Z - 0.20)} COLOR 0.25 0.22 0.20",
   "the charge left in the mill, levelled")
-G(f"BOX 0.9 {fmt(0.6 - (Y0 - 2.0))} 0.10 POS {fmt(0.0, (0.6 + Y0 - 2.0) / 2, -1.03)} COLOR 0.55 0.50 0.10",
-  "the manipulator's beam, in through the feed end")
 
 # workers: legs, body, head, hard hat
-for name, (x, y) in (("worker 1", (-2.3, 1.7)), ("worker 2", (2.6, -1.9))):
+for name, (x, y) in (("worker 1", (-2.3, 1.7)), ("worker 2", (2.6, -1.0))):
     G(f"CYL 0.16 0.85 POS {fmt(x, y, FLOOR_Z + 0.425)} COLOR 0.15 0.20 0.45", name + ": legs")
     G(f"CYL 0.21 0.65 POS {fmt(x, y, FLOOR_Z + 1.175)} COLOR 0.95 0.45 0.05", name + ": reflective vest")
     G(f"SPHERE 0.11 POS {fmt(x, y, FLOOR_Z + 1.62)} COLOR 0.80 0.62 0.50", name + ": head")
     G(f"CYL 0.15 0.06 POS {fmt(x, y, FLOOR_Z + 1.72)} COLOR 0.95 0.90 0.10", name + ": hard hat")
 
 # work lights on tripods
-for name, (x, y) in (("work light 1", (-1.5, -2.0)), ("work light 2", (3.5, 2.0))):
+for name, (x, y) in (("work light 1", (-1.5, -1.1)), ("work light 2", (3.5, 2.0))):
     G(f"CYL 0.025 1.8 POS {fmt(x, y, FLOOR_Z + 0.9)} COLOR 0.2 0.2 0.2", name + ": mast")
     G(f"BOX 0.35 0.12 0.25 POS {fmt(x, y, FLOOR_Z + 1.9)} COLOR 1.0 0.95 0.75", name + ": lamp")
 

@@ -19,6 +19,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QMessageBox>
 #include <QSet>
 #include <QLabel>
@@ -221,6 +222,62 @@ private slots:
         QVERIFY(difference(images[0], images[1]) > 0.02);
         QVERIFY(difference(images[2], images[0]) > 0.01);
         QVERIFY(difference(images[2], images[1]) > 0.01);
+    }
+
+    void aSceneIsDrawnAndABadOneKeepsTheAppUsable()
+    {
+        const QString mill = QStringLiteral(PADROB_SOURCE_DIR) + "/resources/scenes/sag_mill.pad";
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString broken = dir.filePath("broken_scene.pad");
+        {
+            QFile f(broken);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("G 1 B 0 BOX 1 1\n");  // a box needs three sizes
+        }
+        {
+            MainWindow w;
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QVERIFY(openAndWait(w, modelPath("liner_manipulator.pad")));
+            QVERIFY(w.scenePath().isEmpty());
+            QVERIFY(w.loadScene(mill));
+            QCOMPARE(w.scenePath(), QFileInfo(mill).absoluteFilePath());
+            QVERIFY(w.viewports()->viewport(0)->scene());
+            QCOMPARE(QSettings().value("scene/last").toString(), w.scenePath());
+            QApplication::processEvents();
+            QVERIFY(w.grab().save(screenshotPath("app_scene_mill.png")));
+            // a scene that cannot be used: said in a box that does not block, the scene
+            // drawn before stays, the simulation runs
+            QVERIFY(!w.loadScene(broken));
+            QMessageBox* box = nullptr;
+            QTRY_VERIFY((box = w.findChild<QMessageBox*>("SceneProblemBox")) && box->isVisible());
+            QVERIFY2(box->text().contains("broken_scene.pad:1:"), qPrintable(box->text()));
+            QCOMPARE(w.scenePath(), QFileInfo(mill).absoluteFilePath());
+            w.run();
+            QTRY_VERIFY_WITH_TIMEOUT(w.runner()->latest()->step > 50, 5000);
+            w.pause();
+            box->close();
+            // View ▸ Scene ▸ None
+            w.clearScene();
+            QVERIFY(!w.viewports()->viewport(0)->scene());
+            QVERIFY(!QSettings().contains("scene/last"));
+            QVERIFY(w.loadScene(mill));
+        }
+        // the next start draws the scene used last; a scene gone since is forgotten
+        {
+            MainWindow w;
+            QVERIFY(w.restoreScene());
+            QCOMPARE(w.scenePath(), QFileInfo(mill).absoluteFilePath());
+            QVERIFY(w.viewports()->viewport(0)->scene());
+        }
+        QSettings().setValue("scene/last", dir.filePath("gone.pad"));
+        {
+            MainWindow w;
+            QVERIFY(!w.restoreScene());
+            QVERIFY(w.scenePath().isEmpty());
+            QVERIFY(!QSettings().contains("scene/last"));
+        }
     }
 
     void aLoopThatLocksUpStopsTheSimulationAndKeepsTheEditor()

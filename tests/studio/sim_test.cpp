@@ -150,6 +150,7 @@ private slots:
     void newBundleReplacesRunningSimulation();
     void destructionStopsTheThread();
     void commandsAreOneSnapshot();
+    void stepPeriodHistogram();
     void pacingReport();
     void tooHeavyRunsBehindAndStaysResponsive();
     void keyboardMapsDrivesInJointIdOrder();
@@ -442,6 +443,40 @@ void SimTest::commandsAreOneSnapshot()
     QCOMPARE(r.latest()->u[1], 0.0);
 }
 
+void SimTest::stepPeriodHistogram()
+{
+    studio::StepPeriodHistogram h;
+    QCOMPARE(h.median(), 0.0);
+    QCOMPARE(h.maxJitter(1000), 0.0);
+    for (int i = 0; i < 1000; ++i) h.add(1000.0 + (i % 10));  // 100 each of 1000 … 1009 µs
+    h.add(2500.4);
+    h.add(12345.0);   // a coarse bin: [12300, 12400)
+    h.add(250000.0);  // beyond 100 ms
+    QCOMPARE(h.count, 1003L);
+    QCOMPARE(h.minMicros, 1000.0);
+    QCOMPARE(h.maxMicros, 250000.0);
+    QCOMPARE(h.median(), 1005.5);            // rank 502
+    QCOMPARE(h.percentile(0.99), 1009.5);    // rank 993
+    QCOMPARE(h.percentile(0.9985), 12350.0); // rank 1002
+    QCOMPARE(h.percentile(1.0), 250000.0);
+    QCOMPARE(h.percentile(0.0), 1000.5);
+    QCOMPARE(h.maxJitter(1000), 249000.0);
+    QCOMPARE(studio::StepPeriodHistogram::bin(-3), 0);
+    QCOMPARE(studio::StepPeriodHistogram::bin(4999.9), 4999);
+    QCOMPARE(studio::StepPeriodHistogram::bin(5000), studio::StepPeriodHistogram::kFineBins);
+    QCOMPARE(studio::StepPeriodHistogram::bin(1e9), studio::StepPeriodHistogram::kBins - 1);
+    studio::StepPeriodHistogram other;
+    other.add(990);
+    h.merge(other);
+    QCOMPARE(h.count, 1004L);
+    QCOMPARE(h.minMicros, 990.0);
+    QCOMPARE(h.maxJitter(1000), 249000.0);
+    studio::StepPeriodHistogram empty;
+    empty.merge(other);
+    QCOMPARE(empty.count, 1L);
+    QCOMPARE(empty.maxMicros, 990.0);
+}
+
 void SimTest::pacingReport()
 {
     // the liner slewing (joint 1) for 10 s at speed 1, polled like the GUI does (60 Hz)
@@ -451,6 +486,7 @@ void SimTest::pacingReport()
     r.setCommand(slew, 1.0);
     const double cpu0 = processCpuSeconds();
     QElapsedTimer wall;
+    r.resetStepPeriods();
     r.start();
     wall.start();
     double worstLatestMicros = 0;
@@ -483,10 +519,26 @@ void SimTest::pacingReport()
     qInfo("  overruns %ld, dropped %.3f s; process CPU %.1f%% of a core (GUI thread polling included); "
           "latest() worst %.1f us over %d polls",
           s->overruns, s->droppedSeconds, 100 * cpu / seconds, worstLatestMicros, polls);
+    // every paced step's period, in the runner's histogram
+    const studio::StepPeriodHistogram h = r.stepPeriods();
+    qInfo("  step period over the run (%ld steps): median %.1f us, 99%% %.1f us, 99.9%% %.1f us, max %.0f us, "
+          "max jitter %.0f us",
+          h.count, h.median(), h.percentile(0.99), h.percentile(0.999), h.maxMicros, h.maxJitter(1000));
     QVERIFY(s->error.empty());
     QVERIFY2(last->realTimeFactor > 0.5 && last->realTimeFactor < 1.5, qPrintable(QString::number(last->realTimeFactor)));
     QVERIFY(s->t / seconds > 0.5 && s->t / seconds < 1.5);
     QVERIFY(last->stepPeriodMicros > 0);
+    QVERIFY2(h.count > s->step / 2 && h.count <= s->step, qPrintable(QString::number(h.count)));
+    QVERIFY(h.median() > 0);
+    QVERIFY(h.percentile(0.99) >= h.median());
+    QVERIFY(h.percentile(0.999) >= h.percentile(0.99));
+    QVERIFY(h.maxMicros >= h.percentile(0.999));
+    // a reset while paused: nothing counted until the next paced step
+    r.resetStepPeriods();
+    QCOMPARE(r.stepPeriods().count, 0L);
+    r.start();
+    QTRY_VERIFY(r.stepPeriods().count > 10);
+    r.pause();
 }
 
 void SimTest::tooHeavyRunsBehindAndStaysResponsive()

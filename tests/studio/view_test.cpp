@@ -4,6 +4,7 @@
 #include "ide/studio/sim/snapshot.h"
 #include "ide/studio/view/camera.h"
 #include "ide/studio/view/mesh_builder.h"
+#include "ide/studio/view/scene_file.h"
 #include "ide/studio/view/scene_geometry.h"
 #include "ide/studio/view/viewport.h"
 #include "ide/studio/view/viewport_layout.h"
@@ -27,6 +28,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numbers>
 
 using studio::DisplayMode;
@@ -56,6 +58,11 @@ std::shared_ptr<const studio::ModelBundle> bundleFromFile(const QString& path)
 std::shared_ptr<const studio::ModelBundle> modelBundle(const QString& name)
 {
     return bundleFromFile(QStringLiteral(PADROB_SOURCE_DIR "/models/") + name);
+}
+
+QString millScenePath()
+{
+    return QStringLiteral(PADROB_SOURCE_DIR "/resources/scenes/sag_mill.pad");
 }
 
 int channelDiff(QRgb a, QRgb b)
@@ -125,6 +132,11 @@ bool green(int r, int g, int b) { return g > r + 40 && g > b + 30; }
 bool yellow(int r, int g, int b) { return r > 170 && g > 140 && b < 80 && r - g < 60; }
 bool magenta(int r, int g, int b) { return r > 140 && b > 120 && g < 90; }
 bool cyan(int r, int g, int b) { return g > 120 && b > 120 && r < 70; }
+// the mill scene's colours, lit: the lamps (drawn glowing), the workers' orange vests
+// and yellow hard hats, the yellow bolt pads of the empty liner position
+bool lampWhite(int r, int g, int b) { return r > 235 && g > 220 && b > 170 && b < 215; }
+bool vestOrange(int r, int g, int b) { return r > 110 && g > 0.3 * r && g < 0.62 * r && b < 0.2 * r; }
+bool hatYellow(int r, int g, int b) { return r > 90 && g > 0.8 * r && b < 0.35 * r; }
 
 QImage render(Viewport& view)
 {
@@ -712,6 +724,197 @@ private slots:
         QVERIFY(v.frameMillis() > 0);
         v.setBundle(nullptr);  // back to nothing
         QVERIFY(stats(render(v)).content > 0.005);
+    }
+
+    // ---- a scene around the model ---------------------------------------------------------
+
+    void sceneFilesAndTheMillsDressing()
+    {
+        const studio::SceneFile mill = studio::loadSceneFile(millScenePath());
+        QVERIFY2(mill.bundle, qPrintable(mill.error));
+        QVERIFY(mill.note.isEmpty());
+        QCOMPARE(mill.bundle->model->nb, 0);
+        auto d = studio::sceneDressing(mill.bundle);
+        QVERIFY(d);
+        QCOMPARE(studio::sceneDressing(mill.bundle).get(), d.get());  // built once, shared
+        QVERIFY(!studio::sceneDressing(nullptr));
+        QVERIFY(d->problems.isEmpty());
+        QCOMPARE(d->skippedGraphics, 0);
+        QVERIFY(!d->solids.empty());
+        QVERIFY(!d->lamps.empty());
+        QVERIFY(!d->lights.empty());  // the work lights
+        // at true size: the 36 ft shell (inner radius 5.4864 m, 75 mm plate) around its
+        // axis along y through x = 1.3 m, z = 0.21 m
+        // (the ends, the floor and the beam may move as the scene is refined: only the
+        // shell's section is checked)
+        const Eigen::Vector3d hi = d->bounds.max(), lo = d->bounds.min();
+        QVERIFY(std::abs(hi.x() - (1.3 + 5.5614)) < 0.01 && std::abs(lo.x() - (1.3 - 5.5614)) < 0.01);
+        QVERIFY(std::abs(hi.z() - (0.21 + 5.5614)) < 0.01 && std::abs(lo.z() - (0.21 - 5.5614)) < 0.01);
+        QVERIFY(hi.y() - lo.y() > 5.1);  // 16 ft 9 in long at least
+
+        // files that cannot be used say why
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const studio::SceneFile missing = studio::loadSceneFile(dir.filePath(QStringLiteral("nowhere.pad")));
+        QVERIFY(!missing.bundle);
+        QVERIFY2(missing.error.contains(QStringLiteral("nowhere.pad")), qPrintable(missing.error));
+        const QString broken = dir.filePath(QStringLiteral("broken.pad"));
+        QVERIFY(writeFile(broken, "G 1 B 0 BOX 1 1\n"));
+        const studio::SceneFile bad = studio::loadSceneFile(broken);
+        QVERIFY(!bad.bundle);
+        QVERIFY2(bad.error.contains(QStringLiteral("broken.pad:1:")), qPrintable(bad.error));  // file:line:col
+        // a model used as a scene: only its ground graphics are drawn
+        const QString withBodies = dir.filePath(QStringLiteral("bodies.pad"));
+        QVERIFY(writeFile(withBodies, meshModel(QStringLiteral("G 2 B 1 BOX 0.1 0.1 0.1")).toUtf8()));
+        const studio::SceneFile partly = studio::loadSceneFile(withBodies);
+        QVERIFY2(partly.bundle, qPrintable(partly.error));
+        QVERIFY(!partly.note.isEmpty());
+        QCOMPARE(studio::sceneDressing(partly.bundle)->skippedGraphics, 1);
+        const QString groundless = dir.filePath(QStringLiteral("groundless.pad"));
+        QVERIFY(writeFile(groundless, meshModel(QString()).replace("G 1 B 0", "G 1 B 1").toUtf8()));
+        const studio::SceneFile nothing = studio::loadSceneFile(groundless);
+        QVERIFY(!nothing.bundle);
+        QVERIFY2(nothing.error.contains(QStringLiteral("ground")), qPrintable(nothing.error));
+    }
+
+    void theMillAroundTheLinerManipulator()
+    {
+        auto bundle = modelBundle(QStringLiteral("liner_manipulator.pad"));
+        QVERIFY(bundle);
+        const studio::SceneFile mill = studio::loadSceneFile(millScenePath());
+        QVERIFY2(mill.bundle, qPrintable(mill.error));
+        Viewport view;
+        view.resize(1280, 720);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        view.setBundle(bundle);
+        const QImage plain = render(view);
+        const double distance = view.cameraState().distance;
+        QSignalSpy problems(&view, &Viewport::problem);
+        view.setScene(mill.bundle);
+        QCOMPARE(view.scene(), mill.bundle);
+        QCOMPARE(problems.count(), 0);
+
+        // the default camera: the model framed (not the mill), looking into the mill
+        const QImage iso = render(view);
+        save(iso, QStringLiteral("scene_mill_iso"));
+        QCOMPARE(view.camera(), QStringLiteral("Iso"));
+        QCOMPARE(view.cameraState().distance, distance);
+        view.fitAll();
+        QCOMPARE(view.cameraState().distance, distance);
+        // the operator's seat
+        QVERIFY(view.setCamera(QStringLiteral("Operator seat")));
+        const QImage seat = render(view);
+        save(seat, QStringLiteral("scene_mill_seat"));
+        // the other cameras, and every display mode: the scene is always dressed
+        for (const QString& name : {QStringLiteral("Front"), QStringLiteral("Side"), QStringLiteral("Top")}) {
+            QVERIFY(view.setCamera(name));
+            save(render(view), QStringLiteral("scene_mill_") + name.toLower());
+        }
+        view.setCamera(QStringLiteral("Iso"));
+        view.setDisplayMode(DisplayMode::Schematic);
+        const QImage schematic = render(view);
+        save(schematic, QStringLiteral("scene_mill_schematic"));
+        view.setDisplayMode(DisplayMode::Dressed);
+        for (const auto& [name, image] : {std::pair{"iso", &iso}, std::pair{"seat", &seat},
+                                          std::pair{"schematic", &schematic}}) {
+            qInfo("mill, %s: %d lamp, %d vest, %d hat pixels", name, countPixels(*image, lampWhite),
+                  countPixels(*image, vestOrange), countPixels(*image, hatYellow));
+        }
+
+        // the mill all around the machine, a worker in view (vest and hard hat)
+        QVERIFY(difference(plain, iso) > 0.3);
+        QVERIFY2(countPixels(iso, vestOrange) > 500, qPrintable(QString::number(countPixels(iso, vestOrange))));
+        QVERIFY(stats(seat).distinct > 100);
+        QVERIFY(difference(plain, seat) > 0.3);
+        QVERIFY(countPixels(schematic, vestOrange) > 500);  // the scene dressed in the schematic mode too
+        QVERIFY(countPixels(schematic, purple) > 150);      // and the model's bars
+
+        // never highlighted: a highlighted body tints the model only
+        view.setHighlight(1, -1);
+        const QImage lit = render(view);
+        QVERIFY(countPixels(lit, vestOrange) > 100);
+        view.setHighlight(-1, -1);
+
+        // no scene: as before
+        view.setScene(nullptr);
+        QCOMPARE(difference(render(view), plain), 0.0);
+    }
+
+    void sceneLampsGlowAndLightTheirSurroundings()
+    {
+        // a floor and a box 6 m ahead of a pendulum: a lamp (near white), or a grey box
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        auto sceneWith = [&](const QString& name, const char* color) {
+            const QString path = dir.filePath(name);
+            const QString text = QStringLiteral("G 1 B 0 BOX 30 30 0.2 POS 0 0 -1.1 COLOR 0.5 0.5 0.5\n"
+                                                "G 2 B 0 BOX 0.4 0.4 0.3 POS 0 6 -0.3 COLOR %1\n")
+                                     .arg(QLatin1String(color));
+            return writeFile(path, text.toUtf8()) ? studio::loadSceneFile(path).bundle : nullptr;
+        };
+        const auto lit = sceneWith(QStringLiteral("lamp.pad"), "1 0.95 0.75");
+        const auto grey = sceneWith(QStringLiteral("box.pad"), "0.5 0.5 0.5");
+        QVERIFY(lit && grey);
+        QCOMPARE(studio::sceneDressing(lit)->lights.size(), std::size_t(1));
+        QVERIFY(studio::sceneDressing(grey)->lights.empty());
+        Shown shown;
+        Viewport& v = shown.view;
+        v.setBundle(modelBundle(QStringLiteral("pendulum.pad")));
+        QVERIFY(shown.exposed());
+        // from 3 m before the box, looking at it (the pendulum behind: nothing cut away)
+        v.setOperatorSeat(Eigen::Vector3d(0, 3, 0.3), 0, -0.25);
+        v.setCamera(QStringLiteral("Operator seat"));
+        // the floor's brightness under the box (the middle column) and 2 m to its side
+        auto floorLight = [](const QImage& image, int x) {
+            const QImage im = image.convertToFormat(QImage::Format_RGB32);
+            double sum = 0;
+            for (int y = im.height() * 3 / 4; y < im.height(); ++y) sum += qGray(im.pixel(x, y));
+            return sum / (im.height() - im.height() * 3 / 4);
+        };
+        QImage image[2];
+        double pool[2];
+        for (int k = 0; k < 2; ++k) {
+            v.setScene(k == 0 ? lit : grey);
+            image[k] = render(v);
+            save(image[k], k == 0 ? QStringLiteral("scene_lamp") : QStringLiteral("scene_no_lamp"));
+            pool[k] = floorLight(image[k], image[k].width() / 2) - floorLight(image[k], 10);
+        }
+        const int lampPixels = countPixels(image[0], lampWhite);
+        QVERIFY2(lampPixels > 1000, qPrintable(QString::number(lampPixels)));
+        QCOMPARE(countPixels(image[1], lampWhite), 0);
+        qInfo("floor under the box minus beside it: %.1f with a lamp, %.1f without", pool[0], pool[1]);
+        QVERIFY(pool[0] > 15);
+        QVERIFY(pool[0] > pool[1] + 10);
+    }
+
+    void theMillOnThreeScreens()
+    {
+        auto bundle = modelBundle(QStringLiteral("liner_manipulator.pad"));
+        const studio::SceneFile mill = studio::loadSceneFile(millScenePath());
+        QVERIFY(bundle && mill.bundle);
+        studio::ViewportLayout layout;
+        layout.setBundle(bundle);
+        layout.setScene(mill.bundle);
+        layout.resize(1920, 400);
+        layout.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&layout));
+        layout.setScreens(3);
+        QVERIFY(QTest::qWaitForWindowExposed(&layout));
+        QImage images[3];
+        for (int i = 0; i < 3; ++i) {
+            QCOMPARE(layout.viewport(i)->scene(), mill.bundle);  // new screens get the scene
+            images[i] = layout.viewport(i)->grabFramebuffer();
+            save(images[i], QStringLiteral("scene_mill_screens3_%1").arg(i));
+            QVERIFY(stats(images[i]).distinct > 100);
+        }
+        // the left screen looks at the shell at 9 o'clock: the liners and the empty
+        // position's yellow bolt pads, past the wall behind the machine (cut away)
+        const int pads = countPixels(images[0], hatYellow);
+        QVERIFY2(pads > 20, qPrintable(QString::number(pads)));
+        QVERIFY(countPixels(images[1], vestOrange) > 200);  // a worker beside the machine
+        layout.setScene(nullptr);
+        QVERIFY(!layout.viewport(2)->scene());
     }
 
     // ---- the operator's screens -----------------------------------------------------------

@@ -11,6 +11,7 @@
 #include "ide/studio/sim/simulation_runner.h"
 #include "ide/studio/tree/joint_sliders.h"
 #include "ide/studio/tree/model_tree.h"
+#include "ide/studio/view/scene_file.h"
 #include "ide/studio/view/viewport.h"
 #include "ide/studio/view/viewport_layout.h"
 
@@ -49,6 +50,13 @@ QString modelsDir()
     const QString installed = QCoreApplication::applicationDirPath() + "/../share/padrob/models";
     if (QDir(installed).exists()) return QDir(installed).canonicalPath();
     return QStringLiteral(PADROB_MODELS_DIR);
+}
+
+QString scenesDir()
+{
+    const QString installed = QCoreApplication::applicationDirPath() + "/../share/padrob/scenes";
+    if (QDir(installed).exists()) return QDir(installed).canonicalPath();
+    return QDir(QStringLiteral(PADROB_MODELS_DIR "/../resources/scenes")).canonicalPath();
 }
 
 QString docsDir()
@@ -282,6 +290,15 @@ void MainWindow::buildMenus()
         cameras->addAction(Viewport::cameraLabel(name), this, [this, name] { m_viewports->setCamera(name); });
     }
     view->addAction(tr("&Fit All"), QKeySequence(Qt::Key_F), this, [this] { m_viewports->fitAll(); });
+    QMenu* scene = view->addMenu(tr("S&cene"));
+    scene->setObjectName("SceneMenu");
+    scene->addAction(tr("&Load…"), this, [this] {
+        const QString start = m_scenePath.isEmpty() ? scenesDir() : QFileInfo(m_scenePath).absolutePath();
+        const QString path = QFileDialog::getOpenFileName(this, tr("Load Scene"), start,
+                                                          tr("Padrob models (*.pad);;All files (*)"));
+        if (!path.isEmpty()) loadScene(path);
+    });
+    scene->addAction(tr("&None"), this, &MainWindow::clearScene);
     QAction* frames = view->addAction(tr("Body &Frames"));
     frames->setCheckable(true);
     connect(frames, &QAction::toggled, this, [this](bool on) { m_viewports->setShowFrames(on); });
@@ -378,6 +395,53 @@ bool MainWindow::openFile(const QString& path)
     m_editor->apply();  // a model with errors is not applied (the problems list shows them)
     updateTitle();
     QTimer::singleShot(0, this, [this] { m_viewports->fitAll(); });
+    return true;
+}
+
+bool MainWindow::loadScene(const QString& path)
+{
+    const SceneFile scene = loadSceneFile(path);
+    if (!scene.bundle) {
+        statusBar()->showMessage(scene.error.section(QLatin1Char('\n'), 0, 0), 15000);
+        // not modal: the app carries on without the scene (and a test is not blocked)
+        auto* box = new QMessageBox(QMessageBox::Warning, tr("Load Scene"),
+                                    tr("%1\n\nThe 3D view goes on without this scene.").arg(scene.error),
+                                    QMessageBox::Ok, this);
+        box->setObjectName("SceneProblemBox");
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->setWindowModality(Qt::NonModal);
+        box->show();
+        return false;
+    }
+    m_scenePath = QFileInfo(path).absoluteFilePath();
+    m_viewports->setScene(scene.bundle);
+    QSettings().setValue("scene/last", m_scenePath);
+    statusBar()->showMessage(scene.note.isEmpty() ? tr("Scene: %1").arg(QFileInfo(path).fileName())
+                                                  : tr("Scene: %1. %2").arg(QFileInfo(path).fileName(), scene.note),
+                             6000);
+    return true;
+}
+
+void MainWindow::clearScene()
+{
+    m_scenePath.clear();
+    m_viewports->setScene(nullptr);
+    QSettings().remove("scene/last");
+}
+
+bool MainWindow::restoreScene()
+{
+    const QString path = QSettings().value("scene/last").toString();
+    if (path.isEmpty()) return false;
+    const SceneFile scene = loadSceneFile(path);
+    if (!scene.bundle) {
+        QSettings().remove("scene/last");
+        const QString why = scene.error.section(QLatin1Char('\n'), 0, 0);
+        statusBar()->showMessage(tr("The scene used last is not drawn: %1").arg(why), 15000);
+        return false;
+    }
+    m_scenePath = QFileInfo(path).absoluteFilePath();
+    m_viewports->setScene(scene.bundle);
     return true;
 }
 

@@ -58,6 +58,18 @@ public:
     /// Opens a model file into the editor and applies it when it has no errors.
     bool openFile(const QString& path);
 
+    /// Draws the scene file `path` around the model (View ▸ Scene; view/scene_file.h)
+    /// and remembers it as the scene used last. When it cannot be used, says why (a
+    /// message box that does not block, and the status bar) and keeps the scene it had.
+    bool loadScene(const QString& path);
+    /// No scene, now and at the next start.
+    void clearScene();
+    /// Loads the scene used last again (QSettings "scene/last"); false when there was
+    /// none or it cannot be used any more (then said in the status bar and forgotten).
+    bool restoreScene();
+    /// The scene's file ("" for none).
+    QString scenePath() const { return m_scenePath; }
+
     // parts, for tests and wiring
     EditorPanel* editor() const { return m_editor; }
     ViewportLayout* viewports() const { return m_viewports; }
@@ -67,6 +79,8 @@ public:
     SimulationRunner* runner() const { return m_runner.get(); }
     /// The operator's station (input thread): devices, calibration, mapping → commands.
     trainer::Station* station() const { return m_station.get(); }
+    /// The keyboard as a station device (the 3D view's keys go there, channel k = pair k).
+    trainer::KeyboardDevice* keyboardDevice() const { return m_keyboardDevice.get(); }
     /// The heads-up display over the viewports (profile, active bank, device warnings).
     QLabel* hud() const { return m_hud; }
     StationPage* stationPage() const { return m_stationPage; }
@@ -121,6 +135,7 @@ private:
     QLabel* m_hud = nullptr;
     StationPage* m_stationPage = nullptr;
     QString m_hudText;
+    QString m_scenePath;
 
     QStackedWidget* m_workspaces = nullptr;
     QMainWindow* m_modelSpace = nullptr;

@@ -84,6 +84,15 @@ struct SimulationRunner::Shared {
     std::shared_ptr<const Snapshot> latest;
     long publishGeneration = 0;
 
+    // step periods: written by the solver thread only (relaxed atomics, no lock, no
+    // allocation), read by the GUI; a reset is requested by the GUI and done by the
+    // solver (done == requested: the histogram holds only periods counted since)
+    std::array<std::atomic<std::uint32_t>, StepPeriodHistogram::kBins> periodCounts{};
+    std::atomic<double> periodMin{std::numeric_limits<double>::infinity()};
+    std::atomic<double> periodMax{0.0};
+    std::atomic<unsigned> periodResetRequested{0};
+    std::atomic<unsigned> periodResetDone{0};
+
     void bump() { controlVersion.fetch_add(1, std::memory_order_release); }
 
     void publish(std::shared_ptr<const Snapshot> snapshot, long generation)
@@ -192,6 +201,7 @@ private:
     std::size_t m_stepHead = 0, m_stepCount = 0;
     double m_lastStepEnd = -1;
     std::vector<float> m_scratch;
+    unsigned m_periodReset = 0;  // the last reset of the shared period histogram done
     std::deque<RateSample> m_rates;
     double m_lastStats = -1e9;
     double m_realTimeFactor = 0, m_stepMicros = 0, m_periodMicros = 0, m_periodMaxMicros = 0, m_cpuLoad = -1;
@@ -313,8 +323,29 @@ private:
         m_stepHead = (m_stepHead + 1) % kStepSamples;
         m_stepCount = std::min(m_stepCount + 1, kStepSamples);
         m_lastStepEnd = paced ? t1 : -1;
+        if (s.period >= 0) countPeriod(double(s.period));
         if (paced && t1 > deadline(m_step)) ++m_overruns;
         return true;
+    }
+
+    /// Counts a step period in the shared histogram (clearing it first when the GUI
+    /// asked). Only this thread writes it: plain loads and stores of relaxed atomics.
+    void countPeriod(double micros)
+    {
+        const unsigned reset = m_shared.periodResetRequested.load(std::memory_order_acquire);
+        if (reset != m_periodReset) {
+            for (auto& c : m_shared.periodCounts) c.store(0, std::memory_order_relaxed);
+            m_shared.periodMin.store(std::numeric_limits<double>::infinity(), std::memory_order_relaxed);
+            m_shared.periodMax.store(0.0, std::memory_order_relaxed);
+            m_periodReset = reset;
+            m_shared.periodResetDone.store(reset, std::memory_order_release);
+        }
+        auto& c = m_shared.periodCounts[std::size_t(StepPeriodHistogram::bin(micros))];
+        c.store(c.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
+        if (micros < m_shared.periodMin.load(std::memory_order_relaxed))
+            m_shared.periodMin.store(micros, std::memory_order_relaxed);
+        if (micros > m_shared.periodMax.load(std::memory_order_relaxed))
+            m_shared.periodMax.store(micros, std::memory_order_relaxed);
     }
 
     /// Medians over the last second, refreshed every kStatsPeriod.
@@ -628,6 +659,89 @@ std::shared_ptr<const Snapshot> SimulationRunner::latest() const
 {
     std::lock_guard lock(m_shared->snapshotMutex);
     return m_shared->latest;
+}
+
+StepPeriodHistogram SimulationRunner::stepPeriods() const
+{
+    StepPeriodHistogram h;
+    const unsigned reset = m_shared->periodResetRequested.load(std::memory_order_acquire);
+    if (m_shared->periodResetDone.load(std::memory_order_acquire) != reset) return h;  // nothing since
+    for (int b = 0; b < StepPeriodHistogram::kBins; ++b) {
+        const auto k = std::size_t(b);
+        h.counts[k] = m_shared->periodCounts[k].load(std::memory_order_relaxed);
+        h.count += long(h.counts[k]);
+    }
+    if (h.count > 0) {
+        h.minMicros = m_shared->periodMin.load(std::memory_order_relaxed);
+        h.maxMicros = m_shared->periodMax.load(std::memory_order_relaxed);
+        if (!std::isfinite(h.minMicros)) h.minMicros = h.maxMicros;  // read between a count and its min
+    }
+    return h;
+}
+
+void SimulationRunner::resetStepPeriods()
+{
+    m_shared->periodResetRequested.fetch_add(1, std::memory_order_release);
+}
+
+// ---- StepPeriodHistogram -----------------------------------------------------------
+
+int StepPeriodHistogram::bin(double micros)
+{
+    if (!(micros > 0)) return 0;
+    if (micros < kFineBins) return int(micros);
+    const double coarse = (micros - kFineBins) / 100.0;
+    if (coarse < kCoarseBins) return kFineBins + int(coarse);
+    return kBins - 1;
+}
+
+double StepPeriodHistogram::binLow(int b)
+{
+    if (b < kFineBins) return double(b);
+    return kFineBins + 100.0 * double(b - kFineBins);
+}
+
+double StepPeriodHistogram::binWidth(int b)
+{
+    if (b < kFineBins) return 1.0;
+    return b < kBins - 1 ? 100.0 : 0.0;
+}
+
+void StepPeriodHistogram::add(double micros)
+{
+    ++counts[std::size_t(bin(micros))];
+    minMicros = count == 0 ? micros : std::min(minMicros, micros);
+    maxMicros = count == 0 ? micros : std::max(maxMicros, micros);
+    ++count;
+}
+
+void StepPeriodHistogram::merge(const StepPeriodHistogram& other)
+{
+    if (other.count == 0) return;
+    for (std::size_t b = 0; b < counts.size(); ++b) counts[b] += other.counts[b];
+    minMicros = count == 0 ? other.minMicros : std::min(minMicros, other.minMicros);
+    maxMicros = count == 0 ? other.maxMicros : std::max(maxMicros, other.maxMicros);
+    count += other.count;
+}
+
+double StepPeriodHistogram::percentile(double p) const
+{
+    if (count == 0) return 0;
+    // the rank of the period asked for (1-based), then the bin holding it
+    const double rank = std::max(1.0, std::ceil(std::clamp(p, 0.0, 1.0) * double(count)));
+    if (rank >= double(count)) return maxMicros;
+    double seen = 0;
+    for (int b = 0; b < kBins; ++b) {
+        seen += counts[std::size_t(b)];
+        if (seen >= rank) return std::clamp(binLow(b) + 0.5 * binWidth(b), minMicros, maxMicros);
+    }
+    return maxMicros;
+}
+
+double StepPeriodHistogram::maxJitter(double nominalMicros) const
+{
+    if (count == 0) return 0;
+    return std::max(maxMicros - nominalMicros, nominalMicros - minMicros);
 }
 
 }  // namespace studio

@@ -35,6 +35,12 @@
 // just before it, so a run is exactly the same as a plain Simulation advanced step by
 // step with the same commands, whatever the pacing.
 //
+// Step periods: besides the Snapshot's figures over the last second, the solver
+// counts every paced step's period (the wall-clock interval between the ends of
+// consecutive steps: 1 ms at speed 1) in a fixed-size histogram (StepPeriodHistogram)
+// of relaxed atomics that only it writes: no lock and no allocation in the loop.
+// stepPeriods() reads it (percentiles, max jitter), resetStepPeriods() starts again.
+//
 // Failure: when advanceTo() fails (a non-finite state, chattering, a loop locking
 // up) the runner publishes a snapshot of the last good state with `error` set,
 // pauses, and emits failed(). It then stays stopped (start() and stepOnce() do
@@ -46,12 +52,44 @@
 #include <QObject>
 #include <QString>
 
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <thread>
 #include <vector>
 
 namespace studio {
+
+/// Step periods [µs] as a histogram of fixed size: 1 µs bins below 5 ms, 100 µs bins
+/// below 100 ms and one bin for longer periods; the shortest and the longest exactly.
+/// A plain value (about 24 kB): SimulationRunner::stepPeriods() returns a copy.
+struct StepPeriodHistogram {
+    static constexpr int kFineBins = 5000;   ///< [0, 5 ms) by 1 µs
+    static constexpr int kCoarseBins = 950;  ///< [5 ms, 100 ms) by 100 µs
+    static constexpr int kBins = kFineBins + kCoarseBins + 1;  ///< and [100 ms, ∞)
+
+    std::array<std::uint32_t, kBins> counts{};
+    long count = 0;          ///< periods counted (the sum of counts)
+    double minMicros = 0;    ///< the shortest period [µs] (0 when none)
+    double maxMicros = 0;    ///< the longest period [µs] (0 when none)
+
+    /// The bin of a period [µs] (negative and NaN periods go to bin 0).
+    static int bin(double micros);
+    /// A bin's lower edge and width [µs] (the last bin: from 100 ms, width 0).
+    static double binLow(int bin);
+    static double binWidth(int bin);
+
+    void add(double micros);
+    /// Adds `other`'s periods (counts, shortest, longest).
+    void merge(const StepPeriodHistogram& other);
+    /// The period that a fraction `p` (0 … 1) of the periods do not exceed [µs]: the
+    /// middle of its bin, within [minMicros, maxMicros]; 0 when empty.
+    double percentile(double p) const;
+    double median() const { return percentile(0.5); }
+    /// The largest deviation of any period from `nominalMicros` [µs]; 0 when empty.
+    double maxJitter(double nominalMicros) const;
+};
 
 class SimulationRunner : public QObject {
     Q_OBJECT
@@ -104,6 +142,15 @@ public:
 
     /// The newest snapshot (never blocks on the solver); nullptr without a model.
     std::shared_ptr<const Snapshot> latest() const;
+
+    /// The periods of the paced steps since resetStepPeriods() (or since the runner
+    /// was made), of every model and run; the first step of a run has none. A step
+    /// being counted while this reads may be missed. At speed 1 the nominal period is
+    /// timeStep(); at speed s the steps come in batches (see "Pacing").
+    StepPeriodHistogram stepPeriods() const;
+    /// Counts from zero again: the solver clears the histogram before its next step is
+    /// counted; until then stepPeriods() is empty.
+    void resetStepPeriods();
 
 signals:
     /// Started, paused (by pause(), reset(), setBundle() or a failure).

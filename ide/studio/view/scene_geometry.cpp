@@ -482,6 +482,60 @@ std::shared_ptr<const SceneGeometry> sceneGeometry(const std::shared_ptr<const M
     return g;
 }
 
+bool isLamp(const solver::GraphicSpec& graphic)
+{
+    const Vector3d& c = graphic.color;
+    return graphic.hasColor && c.minCoeff() >= 0.7 && c.sum() >= 2.6;
+}
+
+std::shared_ptr<const SceneDressing> sceneDressing(const std::shared_ptr<const ModelBundle>& scene)
+{
+    static std::map<quint64, std::weak_ptr<const SceneDressing>> cache;
+    if (!scene || !scene->loaded) return nullptr;
+    auto it = cache.find(scene->serial);
+    if (it != cache.end()) {
+        if (auto d = it->second.lock()) return d;
+    }
+    auto out = std::make_shared<SceneDressing>();
+    const QString dir = scene->filePath.isEmpty() ? QDir::currentPath() : QFileInfo(scene->filePath).absolutePath();
+    // each graphic on its own, then drawn smallest first: small things mostly stand in
+    // front of large ones (walls, floors), whose hidden parts the depth test then skips
+    std::vector<std::pair<double, MeshBuilder>> solids;
+    MeshBuilder lamps;
+    for (const solver::GraphicSpec& g : scene->spec().graphics) {
+        if (g.body != 0) {
+            ++out->skippedGraphics;
+            continue;
+        }
+        if (isLamp(g)) {
+            addGraphic(lamps, g, dir, 0.2, out->problems);
+            out->lights.push_back(g.position);
+            continue;
+        }
+        MeshBuilder m;
+        addGraphic(m, g, dir, 0.2, out->problems);
+        const Eigen::AlignedBox3d box = m.bounds();
+        solids.emplace_back(box.isEmpty() ? 0.0 : box.diagonal().norm(), std::move(m));
+    }
+    std::stable_sort(solids.begin(), solids.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    auto put = [&](const MeshBuilder& part) {
+        DrawRange r;
+        r.first = static_cast<std::uint32_t>(out->mesh.indices.size());
+        out->mesh.append(part);
+        r.count = static_cast<std::uint32_t>(out->mesh.indices.size()) - r.first;
+        return r;
+    };
+    out->lamps = put(lamps);
+    out->solids.first = static_cast<std::uint32_t>(out->mesh.indices.size());
+    for (const auto& part : solids) out->mesh.append(part.second);
+    out->solids.count = static_cast<std::uint32_t>(out->mesh.indices.size()) - out->solids.first;
+    out->bounds = out->mesh.bounds();
+    for (auto e = cache.begin(); e != cache.end();) e = e->second.expired() ? cache.erase(e) : std::next(e);
+    cache[scene->serial] = out;
+    return out;
+}
+
 Eigen::AlignedBox3d worldBounds(const SceneGeometry& geometry, const std::vector<Isometry3d>& X_wb,
                                 bool schematicOnly)
 {

@@ -84,6 +84,30 @@ struct SceneGeometry {
     int slotCount() const { return nb + 1; }
 };
 
+/// A scene's drawing: the ground graphics (G … B 0) of a model file drawn around the
+/// model (e.g. resources/scenes/sag_mill.pad, the mill the liner manipulator works
+/// in), in world coordinates, dressed in every display mode. Its lamps — G statements
+/// whose COLOR is near white (isLamp) — are drawn glowing and light the model and the
+/// scene (a few point lights), the rest is lit dimly (an interior). Graphics on moving
+/// bodies are not drawn (`skippedGraphics`).
+struct SceneDressing {
+    MeshBuilder mesh;
+    DrawRange solids;  ///< every ground graphic but the lamps
+    DrawRange lamps;   ///< the lamps
+    std::vector<Eigen::Vector3d> lights;  ///< the lamps' centres [m, world]
+    Eigen::AlignedBox3d bounds;           ///< of everything drawn [m, world]
+    int skippedGraphics = 0;              ///< G statements on moving bodies
+    QStringList problems;                 ///< meshes that could not be drawn (as SceneGeometry)
+};
+
+/// True for a scene graphic drawn as a lamp: a COLOR with every channel ≥ 0.7 and a
+/// sum ≥ 2.6 (white or warm white; a yellow hard hat is not one).
+bool isLamp(const solver::GraphicSpec& graphic);
+
+/// The drawing of `scene` (nullptr for nullptr). Built on the first call for a bundle
+/// and shared while any viewport holds it. GUI thread only.
+std::shared_ptr<const SceneDressing> sceneDressing(const std::shared_ptr<const ModelBundle>& scene);
+
 /// The geometry of `bundle` (an empty scene with the grid for nullptr). Built on the
 /// first call for a bundle and shared while any viewport holds it. GUI thread only.
 std::shared_ptr<const SceneGeometry> sceneGeometry(const std::shared_ptr<const ModelBundle>& bundle);

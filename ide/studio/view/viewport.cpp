@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <numbers>
 
 // the shaders are in studio.qrc, compiled into this static library: register them
@@ -35,6 +36,12 @@ constexpr double kDeg = std::numbers::pi / 180;
 const Vector3f kHighlight(1.0f, 0.86f, 0.10f);
 const Vector3f kRodSilver(0.82f, 0.83f, 0.86f);
 constexpr float kOverlayAlpha = 0.6f;
+
+// lighting inside a scene (an interior): the daylight dimmed, the scene's lamps lit
+constexpr float kInteriorDaylight = 0.45f;
+constexpr int kMaxLights = 4;               // as viewport.frag's uLightEye
+const Vector3f kLampLight(1.0f, 0.90f, 0.72f);  // warm white
+constexpr float kLampRange = 4.0f;          // [m]: a lamp lights half as much this far away
 
 struct NamedView {
     const char* name;
@@ -108,7 +115,7 @@ void Viewport::setBundle(std::shared_ptr<const ModelBundle> bundle)
     m_geometry = sceneGeometry(m_bundle);
     m_poses = m_bundle && m_bundle->model ? initialPoses(*m_bundle->model) : std::vector<Isometry3d>{};
     m_slotMatrices.assign(static_cast<std::size_t>(m_geometry->slotCount()), Matrix4f::Identity());
-    m_uploaded = false;
+    m_modelMesh.uploaded = false;
     if (m_highlightBody >= m_geometry->nb) m_highlightBody = -1;
     if (m_highlightJoint >= m_geometry->nb) m_highlightJoint = -1;
     if (!m_seatSet) {
@@ -121,6 +128,18 @@ void Viewport::setBundle(std::shared_ptr<const ModelBundle> bundle)
         else applyNamedCamera();
     }
     for (const QString& message : m_geometry->problems) emit problem(message);
+    update();
+}
+
+void Viewport::setScene(std::shared_ptr<const ModelBundle> scene)
+{
+    if (scene == m_scene) return;
+    m_scene = std::move(scene);
+    m_dressing = sceneDressing(m_scene);
+    m_sceneMesh.uploaded = false;
+    if (m_dressing) {
+        for (const QString& message : m_dressing->problems) emit problem(message);
+    }
     update();
 }
 
@@ -288,7 +307,8 @@ void Viewport::sceneSphere(Vector3d& centre, double& radius) const
 void Viewport::initializeGL()
 {
     m_glReady = false;
-    m_uploaded = false;
+    m_modelMesh.uploaded = false;
+    m_sceneMesh.uploaded = false;
     if (!initializeOpenGLFunctions()) {
         if (!m_glFailed) emit problem(tr("The 3D view needs OpenGL 3.3, which this system does not provide."));
         m_glFailed = true;
@@ -321,37 +341,51 @@ void Viewport::initializeGL()
     m_u.upEye = m_program->uniformLocation("uUpEye");
     m_u.fadeCentre = m_program->uniformLocation("uFadeCentre");
     m_u.fadeRadius = m_program->uniformLocation("uFadeRadius");
-    m_vao = std::make_unique<QOpenGLVertexArrayObject>();
-    m_vao->create();
-    m_vertexBuffer = std::make_unique<QOpenGLBuffer>(QOpenGLBuffer::VertexBuffer);
-    m_vertexBuffer->create();
-    m_indexBuffer = std::make_unique<QOpenGLBuffer>(QOpenGLBuffer::IndexBuffer);
-    m_indexBuffer->create();
+    m_u.clipPlane = m_program->uniformLocation("uClipPlane");
+    m_u.daylight = m_program->uniformLocation("uDaylight");
+    m_u.lightCount = m_program->uniformLocation("uLightCount");
+    m_u.lightEye = m_program->uniformLocation("uLightEye");
+    m_u.lightColor = m_program->uniformLocation("uLightColor");
+    m_u.lightRange = m_program->uniformLocation("uLightRange");
+    createMesh(m_modelMesh);
+    createMesh(m_sceneMesh);
     m_glReady = true;
+}
+
+void Viewport::createMesh(GlMesh& mesh)
+{
+    mesh.vao = std::make_unique<QOpenGLVertexArrayObject>();
+    mesh.vao->create();
+    mesh.vertices = std::make_unique<QOpenGLBuffer>(QOpenGLBuffer::VertexBuffer);
+    mesh.vertices->create();
+    mesh.indices = std::make_unique<QOpenGLBuffer>(QOpenGLBuffer::IndexBuffer);
+    mesh.indices->create();
+    mesh.uploaded = false;
 }
 
 void Viewport::releaseGl()
 {
-    if (!m_program && !m_vao) return;
+    if (!m_program && !m_modelMesh.vao) return;
     makeCurrent();
-    m_indexBuffer.reset();
-    m_vertexBuffer.reset();
-    m_vao.reset();
+    for (GlMesh* mesh : {&m_modelMesh, &m_sceneMesh}) {
+        mesh->indices.reset();
+        mesh->vertices.reset();
+        mesh->vao.reset();
+        mesh->uploaded = false;
+    }
     m_program.reset();
     m_background.reset();
     m_glReady = false;
-    m_uploaded = false;
     doneCurrent();
 }
 
-void Viewport::upload()
+void Viewport::upload(GlMesh& gl, const MeshBuilder& mesh)
 {
-    const MeshBuilder& mesh = m_geometry->mesh;
-    m_vao->bind();
-    m_vertexBuffer->bind();
-    m_vertexBuffer->allocate(mesh.vertices.data(), static_cast<int>(mesh.vertices.size() * sizeof(MeshVertex)));
-    m_indexBuffer->bind();  // part of the VAO's state
-    m_indexBuffer->allocate(mesh.indices.data(), static_cast<int>(mesh.indices.size() * sizeof(std::uint32_t)));
+    gl.vao->bind();
+    gl.vertices->bind();
+    gl.vertices->allocate(mesh.vertices.data(), static_cast<int>(mesh.vertices.size() * sizeof(MeshVertex)));
+    gl.indices->bind();  // part of the VAO's state
+    gl.indices->allocate(mesh.indices.data(), static_cast<int>(mesh.indices.size() * sizeof(std::uint32_t)));
     const auto stride = static_cast<GLsizei>(sizeof(MeshVertex));
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(MeshVertex, position)));
@@ -359,8 +393,8 @@ void Viewport::upload()
     glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(MeshVertex, normal)));
     glEnableVertexAttribArray(2);
     glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(MeshVertex, color)));
-    m_vao->release();
-    m_uploaded = true;
+    gl.vao->release();
+    gl.uploaded = true;
 }
 
 void Viewport::resizeGL(int, int)
@@ -429,20 +463,15 @@ void Viewport::paintGL()
     glClearColor(0.2f, 0.21f, 0.23f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (!m_glReady) return;
-    if (!m_uploaded) upload();
+    if (!m_modelMesh.uploaded) upload(m_modelMesh, m_geometry->mesh);
+    const bool scene = m_dressing && !m_dressing->mesh.indices.empty();
+    if (scene && !m_sceneMesh.uploaded) upload(m_sceneMesh, m_dressing->mesh);
     const SceneGeometry& g = *m_geometry;
 
-    m_vao->bind();
+    m_modelMesh.vao->bind();
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
 
-    // background: a vertical gradient
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    m_background->bind();
-    m_background->setUniformValue("uBottom", QVector3D(0.12f, 0.13f, 0.15f));
-    m_background->setUniformValue("uTop", QVector3D(0.31f, 0.33f, 0.37f));
-    glDrawArrays(GL_TRIANGLES, 0, 3);
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LEQUAL);
@@ -452,7 +481,15 @@ void Viewport::paintGL()
     double radius = 0;
     sceneSphere(centre, radius);
     m_view = m_camera.viewMatrix().cast<float>();
-    const Matrix4f projection = m_camera.projectionMatrix(aspect(), centre, radius, 1.5 * g.gridExtent).cast<float>();
+    // far enough for the grid, and for all of the scene
+    double farthest = 1.5 * g.gridExtent;
+    if (scene) {
+        for (int c = 0; c < 8; ++c) {
+            const Vector3d corner = m_dressing->bounds.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c));
+            farthest = std::max(farthest, (corner - centre).norm());
+        }
+    }
+    const Matrix4f projection = m_camera.projectionMatrix(aspect(), centre, radius, farthest).cast<float>();
     const Vector3f upEye = m_view.topLeftCorner<3, 3>() * Vector3f::UnitZ();
     m_program->bind();
     glUniformMatrix4fv(m_u.view, 1, GL_FALSE, m_view.data());
@@ -461,6 +498,8 @@ void Viewport::paintGL()
     glUniform1i(m_u.lit, 1);
     glUniform1f(m_u.fadeRadius, 0.0f);
     glUniform2f(m_u.fadeCentre, 0.0f, 0.0f);
+    glUniform4f(m_u.clipPlane, 0.0f, 0.0f, 0.0f, 1.0f);
+    setLights();
     setTint(Vector3f::Zero(), 0.0f);
     setAlpha(1.0f);
 
@@ -473,13 +512,26 @@ void Viewport::paintGL()
     drawSlots(schematic, !schematic);
     if (schematic) drawActuators(-1);
 
+    // the scene around it
+    if (scene) drawScene();
+
     // world axes at the origin
     const double initialRadius =
         g.initialBounds.isEmpty() ? 1.0 : std::max(0.5 * g.initialBounds.diagonal().norm(), 0.05);
     drawRange(g.unitTriad, scaled(Isometry3d::Identity(), Vector3d::Constant(0.25 * initialRadius)));
 
-    // ground grid: transparent lines fading out, after the solids
-    if (m_showGrid) {
+    // background, a vertical gradient, after the solids: only where none was drawn
+    // (it lies on the far plane; a scene that fills the view then costs no more)
+    glDepthMask(GL_FALSE);
+    m_background->bind();
+    m_background->setUniformValue("uBottom", QVector3D(0.12f, 0.13f, 0.15f));
+    m_background->setUniformValue("uTop", QVector3D(0.31f, 0.33f, 0.37f));
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDepthMask(GL_TRUE);
+    m_program->bind();
+
+    // ground grid: transparent lines fading out, after the solids (a scene has its floor)
+    if (m_showGrid && !scene) {
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(GL_FALSE);
@@ -526,7 +578,7 @@ void Viewport::paintGL()
     }
 
     m_program->release();
-    m_vao->release();
+    m_modelMesh.vao->release();
 
     // frame time: until the frame is drawn (software renderers draw at the finish)
     glFinish();
@@ -534,6 +586,66 @@ void Viewport::paintGL()
     m_frameTimes[static_cast<std::size_t>(m_frameCount % static_cast<int>(m_frameTimes.size()))] = ms;
     ++m_frameCount;
     emit frameTimed(ms);
+}
+
+void Viewport::setLights()
+{
+    // an interior when the scene has lamps: the daylight dimmed, the lamps lit
+    const bool interior = m_dressing && !m_dressing->lights.empty();
+    glUniform1f(m_u.daylight, interior ? kInteriorDaylight : 1.0f);
+    int n = 0;
+    if (interior) {
+        std::array<GLfloat, 3 * kMaxLights> eye{};
+        for (const Vector3d& p : m_dressing->lights) {
+            if (n == kMaxLights) break;
+            const Vector3f e = (m_view * p.cast<float>().homogeneous()).head<3>();
+            for (int k = 0; k < 3; ++k) eye[static_cast<std::size_t>(3 * n + k)] = e[k];
+            ++n;
+        }
+        glUniform3fv(m_u.lightEye, n, eye.data());
+        glUniform3f(m_u.lightColor, kLampLight.x(), kLampLight.y(), kLampLight.z());
+        glUniform1f(m_u.lightRange, kLampRange);
+    }
+    glUniform1i(m_u.lightCount, n);
+}
+
+void Viewport::drawScene()
+{
+    const SceneDressing& d = *m_dressing;
+    // cut away the scene between the eye and the model: everything before a plane
+    // through the model's box corner nearest the eye, across the view (an orbit camera
+    // outside the mill looks into it) or across the seat's heading (one plane for
+    // every screen of the seat, so that they join)
+    Vector3d normal = m_camera.forward();
+    if (m_camera.mode == Camera::Mode::Seat) {
+        normal = Vector3d(std::sin(m_camera.seatHeading), std::cos(m_camera.seatHeading), 0);
+    }
+    const Vector3d eye = m_camera.eye();
+    const Eigen::AlignedBox3d box = sceneBox();
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int c = 0; c < 8; ++c) {
+        nearest = std::min(nearest, (box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)) - eye).dot(normal));
+    }
+    if (nearest > 0) {
+        // kept where n·x ≥ n·eye + nearest (world), as a plane in eye space
+        const Eigen::Vector4d world(normal.x(), normal.y(), normal.z(), -(normal.dot(eye) + nearest));
+        const Eigen::Vector4f plane = (m_view.cast<double>().inverse().transpose() * world).cast<float>();
+        glUniform4f(m_u.clipPlane, plane.x(), plane.y(), plane.z(), plane.w());
+        glEnable(GL_CLIP_DISTANCE0);
+    }
+    // pushed back a little: where the model touches the scene (on its floor) the model wins
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 2.0f);
+    m_sceneMesh.vao->bind();
+    setTint(Vector3f::Zero(), 0.0f);
+    glUniform1i(m_u.lit, 0);  // the lamps glow
+    drawRange(d.lamps, Matrix4f::Identity());
+    glUniform1i(m_u.lit, 1);
+    drawRange(d.solids, Matrix4f::Identity());
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_CLIP_DISTANCE0);
+    glUniform4f(m_u.clipPlane, 0.0f, 0.0f, 0.0f, 1.0f);
+    m_modelMesh.vao->bind();
 }
 
 double Viewport::frameMillis() const

@@ -11,6 +11,15 @@
 // Plus a ground grid (1 m cells, every 10 m brighter), the world axes (x red, y green,
 // z blue), the bodies' frames on demand, and a highlighted body and joint.
 //
+// A scene (setScene: the ground graphics of another model file, e.g. the SAG mill the
+// liner manipulator works in) is drawn around the model, dressed in every display mode,
+// never highlighted and never framed by Fit All. With a scene the ground grid is not
+// drawn (the scene has its floor), the daylight is dimmed to an interior's and the
+// scene's lamps light the model and the scene; the scene is cut away between the eye
+// and the model (a plane across the view through the model's box corner nearest the
+// eye; for the seat, across its heading), so an orbit camera outside the mill's shell
+// looks into it and the seat's screens see past the wall behind the machine.
+//
 // Geometry is built once per bundle (shared between viewports) and uploaded once per
 // GL context; a frame only sets one model matrix per body.
 //
@@ -41,7 +50,9 @@ class QOpenGLVertexArrayObject;
 
 namespace studio {
 
+class MeshBuilder;
 struct SceneGeometry;
+struct SceneDressing;
 struct DrawRange;
 
 enum class DisplayMode { Schematic, Dressed, Both };
@@ -67,6 +78,11 @@ public:
     /// model. Meshes that cannot be drawn are reported through problem(), once.
     void setBundle(std::shared_ptr<const ModelBundle> bundle);
     std::shared_ptr<const ModelBundle> bundle() const { return m_bundle; }
+    /// The scene drawn around the model (scene_file.h; its ground graphics only), or
+    /// nullptr for none. Its meshes that cannot be drawn are reported through problem().
+    void setScene(std::shared_ptr<const ModelBundle> scene);
+    std::shared_ptr<const ModelBundle> scene() const { return m_scene; }
+
     /// Body poses X_wb by tree index (size Model::nb; other sizes are ignored).
     void setPoses(const std::vector<Eigen::Isometry3d>& X_wb);
     const std::vector<Eigen::Isometry3d>& poses() const { return m_poses; }
@@ -132,8 +148,18 @@ protected:
     void wheelEvent(QWheelEvent* event) override;
 
 private:
+    /// One mesh's GL objects (the model's, the scene's).
+    struct GlMesh {
+        std::unique_ptr<QOpenGLVertexArrayObject> vao;
+        std::unique_ptr<QOpenGLBuffer> vertices;
+        std::unique_ptr<QOpenGLBuffer> indices;
+        bool uploaded = false;
+    };
     void releaseGl();
-    void upload();
+    void createMesh(GlMesh& mesh);
+    void upload(GlMesh& gl, const MeshBuilder& mesh);
+    void drawScene();
+    void setLights();
     void drawRange(const DrawRange& range, const Eigen::Matrix4f& model, unsigned mode = 0x0004 /*GL_TRIANGLES*/);
     void drawSlots(bool schematic, bool dressed);
     void drawActuators(int onlyJoint);
@@ -148,6 +174,8 @@ private:
 
     std::shared_ptr<const ModelBundle> m_bundle;
     std::shared_ptr<const SceneGeometry> m_geometry;
+    std::shared_ptr<const ModelBundle> m_scene;
+    std::shared_ptr<const SceneDressing> m_dressing;
     std::vector<Eigen::Isometry3d> m_poses;
     DisplayMode m_mode = DisplayMode::Dressed;
     Camera m_camera;
@@ -161,15 +189,14 @@ private:
     // GL (per context)
     bool m_glReady = false;
     bool m_glFailed = false;
-    bool m_uploaded = false;
     std::unique_ptr<QOpenGLShaderProgram> m_program;
     std::unique_ptr<QOpenGLShaderProgram> m_background;
-    std::unique_ptr<QOpenGLVertexArrayObject> m_vao;
-    std::unique_ptr<QOpenGLBuffer> m_vertexBuffer;
-    std::unique_ptr<QOpenGLBuffer> m_indexBuffer;
+    GlMesh m_modelMesh;
+    GlMesh m_sceneMesh;
     struct Uniforms {
         int model = -1, view = -1, projection = -1, normalMatrix = -1, lit = -1, tint = -1, alpha = -1,
-            upEye = -1, fadeCentre = -1, fadeRadius = -1;
+            upEye = -1, fadeCentre = -1, fadeRadius = -1, clipPlane = -1, daylight = -1, lightCount = -1,
+            lightEye = -1, lightColor = -1, lightRange = -1;
     } m_u;
     Eigen::Matrix4f m_view = Eigen::Matrix4f::Identity();
     std::vector<Eigen::Matrix4f> m_slotMatrices;  ///< per slot, this frame

@@ -49,6 +49,7 @@ Viewport* ViewportLayout::makeViewport(int index, int count)
     auto* v = new Viewport(this);
     v->setDisplayMode(m_mode);
     v->setBundle(m_bundle);
+    v->setScene(m_scene);
     if (!m_poses.empty()) v->setPoses(m_poses);
     if (m_seat) v->setOperatorSeat(m_seat->eye, m_seat->yaw, m_seat->pitch);
     v->setSeatFieldOfView(kScreenAngle);
@@ -125,6 +126,12 @@ void ViewportLayout::setBundle(std::shared_ptr<const ModelBundle> bundle)
     m_bundle = std::move(bundle);
     m_poses.clear();
     for (Viewport* v : m_views) v->setBundle(m_bundle);
+}
+
+void ViewportLayout::setScene(std::shared_ptr<const ModelBundle> scene)
+{
+    m_scene = std::move(scene);
+    for (Viewport* v : m_views) v->setScene(m_scene);
 }
 
 void ViewportLayout::setPoses(const std::vector<Eigen::Isometry3d>& X_wb)

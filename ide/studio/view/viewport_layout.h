@@ -46,6 +46,10 @@ public:
 
     // forwarded to every screen
     void setBundle(std::shared_ptr<const ModelBundle> bundle);
+    /// The scene drawn around the model on every screen (Viewport::setScene; a bundle
+    /// from loadSceneFile), nullptr for none. Kept when the model changes.
+    void setScene(std::shared_ptr<const ModelBundle> scene);
+    std::shared_ptr<const ModelBundle> scene() const { return m_scene; }
     void setPoses(const std::vector<Eigen::Isometry3d>& X_wb);
     void setSnapshot(std::shared_ptr<const Snapshot> snapshot);
     void setDisplayMode(DisplayMode mode);
@@ -76,6 +80,7 @@ private:
 
     // what every new screen gets
     std::shared_ptr<const ModelBundle> m_bundle;
+    std::shared_ptr<const ModelBundle> m_scene;
     std::vector<Eigen::Isometry3d> m_poses;
     DisplayMode m_mode = DisplayMode::Dressed;
     struct Seat {

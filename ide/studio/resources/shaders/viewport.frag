@@ -1,6 +1,7 @@
 #version 330 core
 // Key light from the upper left, a cool fill from the right, and a hemisphere
-// ambient (brighter from the sky) so that faces turned differently read differently.
+// ambient (brighter from the sky) so that faces turned differently read differently:
+// the daylight, dimmed inside a scene with lamps, whose point lights then add up.
 // The side facing the viewer is lit, whatever the triangles' winding.
 in vec3 vNormal;
 in vec3 vColor;
@@ -13,6 +14,11 @@ uniform float uAlpha;
 uniform vec3 uUpEye;         // world up (z) in eye space
 uniform vec2 uFadeCentre;    // grid fade: centre (world x, y)
 uniform float uFadeRadius;   // 0: no fade
+uniform float uDaylight;     // 1 outdoors; less inside a scene with lamps
+uniform int uLightCount;     // point lights (lamps), 0 … 4
+uniform vec3 uLightEye[4];   // their positions, eye space
+uniform vec3 uLightColor;
+uniform float uLightRange;   // a lamp lights half as much this far away [m]
 
 out vec4 fragColor;
 
@@ -32,7 +38,17 @@ void main()
         vec3 fillLight = vec3(0.22, 0.24, 0.28) * max(dot(n, fill), 0.0);
         vec3 h = normalize(key + v);
         float specular = 0.20 * pow(max(dot(n, h), 0.0), 40.0);
-        color = base * (ambient + vec3(diffuse) + fillLight) + vec3(specular);
+        vec3 light = uDaylight * (ambient + vec3(diffuse) + fillLight);
+        vec3 shine = vec3(uDaylight * specular);
+        // the lamps: diffuse only, fading with the square of the distance
+        float range2 = uLightRange * uLightRange;
+        for (int i = 0; i < uLightCount; ++i) {
+            vec3 d = uLightEye[i] - vEye;
+            float r2 = dot(d, d);
+            float lit = max(dot(n, d), 0.0) * inversesqrt(max(r2, 1e-8));
+            light += uLightColor * (lit * range2 / (range2 + r2));
+        }
+        color = base * light + shine;
     }
     float alpha = uAlpha;
     if (uFadeRadius > 0.0) {

@@ -9,6 +9,7 @@ uniform mat4 uModel;       // body frame -> world
 uniform mat4 uView;        // world -> eye
 uniform mat4 uProjection;  // eye -> clip
 uniform mat3 uNormalMatrix;  // inverse transpose of (view * model), upper 3x3
+uniform vec4 uClipPlane;   // eye space: drawn where dot(uClipPlane, eye) >= 0 (when enabled)
 
 out vec3 vNormal;  // eye space
 out vec3 vColor;
@@ -23,5 +24,6 @@ void main()
     vEye = eye.xyz;
     vNormal = uNormalMatrix * aNormal;
     vColor = aColor;
+    gl_ClipDistance[0] = dot(uClipPlane, eye);
     gl_Position = uProjection * eye;
 }
