@@ -26,6 +26,7 @@
 // new replaced): tests/alloc/step_allocation_test.cpp checks them.
 
 #include "ide/cli/bench.h"
+#include "ide/cli/cli_io.h"
 
 #include "ide/cli/json_writer.h"
 #include "solver/compile/compile.h"
@@ -63,24 +64,10 @@ constexpr int kOk = 0, kModelErrors = 1, kUsage = 2;
 
 std::string tr(const char* s) { return QCoreApplication::translate("padrob-bench", s).toStdString(); }
 
-void printErr(const std::string& s) { std::fwrite(s.data(), 1, s.size(), stderr); }
-void printOut(const std::string& s) { std::fwrite(s.data(), 1, s.size(), stdout); }
 
 int usage(const std::string& message)
 {
-    printErr("padrob bench: " + message + "\n" + tr("Try 'padrob bench --help'.") + "\n");
-    return kUsage;
-}
-
-/// A finite number, the whole of `s`.
-std::optional<double> toNumber(const std::string& s)
-{
-    double v = 0;
-    const char* b = s.data();
-    if (!s.empty() && s[0] == '+') ++b;
-    auto [p, ec] = std::from_chars(b, s.data() + s.size(), v);
-    if (ec != std::errc() || p != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
-    return v;
+    return usageError("bench", message, tr("Try 'padrob bench --help'."));
 }
 
 std::optional<long> toInteger(const std::string& s)

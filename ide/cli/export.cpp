@@ -3,6 +3,7 @@
 // checks it follows Padrob's trajectory (builds with MuJoCo only).
 
 #include "ide/cli/export.h"
+#include "ide/cli/cli_io.h"
 
 #ifdef PADROB_HAVE_MUJOCO
 #include "ide/cli/mujoco_bench.h"
@@ -28,23 +29,10 @@ constexpr int kOk = 0, kModelErrors = 1, kUsage = 2;
 
 std::string tr(const char* s) { return QCoreApplication::translate("padrob-export", s).toStdString(); }
 
-void printErr(const std::string& s) { std::fwrite(s.data(), 1, s.size(), stderr); }
 
 int usage(const std::string& message)
 {
-    printErr("padrob export: " + message + "\n" + tr("Try 'padrob export --help'.") + "\n");
-    return kUsage;
-}
-
-/// A finite number, the whole of `s`.
-std::optional<double> toNumber(const std::string& s)
-{
-    double v = 0;
-    const char* b = s.data();
-    if (!s.empty() && s[0] == '+') ++b;
-    auto [p, ec] = std::from_chars(b, s.data() + s.size(), v);
-    if (ec != std::errc() || p != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
-    return v;
+    return usageError("export", message, tr("Try 'padrob export --help'."));
 }
 
 #ifdef PADROB_HAVE_MUJOCO

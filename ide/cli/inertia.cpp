@@ -2,6 +2,7 @@
 // the model's B statements.
 
 #include "ide/cli/inertia.h"
+#include "ide/cli/cli_io.h"
 
 #include "solver/inertia/solid_inertia.h"
 #include "solver/model/load.h"
@@ -28,8 +29,7 @@ void print(std::FILE* f, const std::string& s) { std::fwrite(s.data(), 1, s.size
 
 int usage(const std::string& message)
 {
-    print(stderr, "padrob inertia: " + message + "\n" + tr("Try 'padrob inertia --help'.") + "\n");
-    return kUsage;
+    return usageError("inertia", message, tr("Try 'padrob inertia --help'."));
 }
 
 /// `v` with 6 significant digits, shortest form ("0" for zero).

@@ -3,6 +3,7 @@
 // initial values, and welds made and released at given times (--weld, --release).
 
 #include "ide/cli/simulate.h"
+#include "ide/cli/cli_io.h"
 
 #include "solver/compile/compile.h"
 #include "solver/dynamics/constraints.h"
@@ -35,7 +36,6 @@ constexpr int kOk = 0, kModelErrors = 1, kUsage = 2;
 
 std::string tr(const char* s) { return QCoreApplication::translate("padrob-simulate", s).toStdString(); }
 
-void printErr(const std::string& s) { std::fwrite(s.data(), 1, s.size(), stderr); }
 
 
 namespace {
@@ -88,19 +88,7 @@ std::unique_ptr<trainer::StationEngine> replayStation(const solver::Model& m, co
 
 int usage(const std::string& message)
 {
-    printErr("padrob simulate: " + message + "\n" + tr("Try 'padrob simulate --help'.") + "\n");
-    return kUsage;
-}
-
-/// A finite number, the whole of `s`.
-std::optional<double> toNumber(const std::string& s)
-{
-    double v = 0;
-    const char* b = s.data();
-    if (!s.empty() && s[0] == '+') ++b;
-    auto [p, ec] = std::from_chars(b, s.data() + s.size(), v);
-    if (ec != std::errc() || p != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
-    return v;
+    return usageError("simulate", message, tr("Try 'padrob simulate --help'."));
 }
 
 /// A number as the user would write it back: 6 significant digits.
