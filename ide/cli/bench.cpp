@@ -732,18 +732,9 @@ int runBench(const std::vector<std::string>& args)
     // the model
     std::shared_ptr<const solver::Model> model;
     if (!o.model.empty()) {
-        solver::LoadedModel loaded = solver::loadModelFile(o.model);
-        bool io = false;
-        for (const solver::Diagnostic& d : loaded.diagnostics) {
-            if (d.severity == solver::Severity::Error || d.code == "io-error") printErr(d.format() + "\n");
-            if (d.code == "io-error") io = true;
-        }
-        if (io) return kUsage;
-        if (!loaded.ok()) return kModelErrors;
-        solver::Diagnostics compileDiags(o.model);
-        model = solver::compileLoaded(loaded, compileDiags);
-        for (const solver::Diagnostic& d : compileDiags) printErr(d.format() + "\n");
-        if (!model) return kModelErrors;
+        int status = kExitOk;
+        model = loadAndCompile(o.model, status);
+        if (!model) return status;
         if (model->nb == 0) {
             printErr("padrob bench: " + o.model + tr(": the model has no moving body: nothing to time") + "\n");
             return kModelErrors;

@@ -1,6 +1,9 @@
 #pragma once
 // What the `padrob` commands share: output, the usage error, reading numbers.
 
+#include "solver/core/model.h"
+
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -16,5 +19,10 @@ int usageError(const std::string& command, const std::string& message, const std
 /// A finite number that is the whole of `s` ('.' as the decimal point, whatever the
 /// locale; a leading '+' allowed), else nullopt.
 std::optional<double> toNumber(const std::string& s);
+
+/// Loads and compiles the model file `path`, printing its errors (and an unreadable
+/// file's io-error) on standard error. nullptr with `status` kExitUsage (unreadable) or
+/// kExitModelErrors (errors in the model) when it cannot.
+std::shared_ptr<const solver::Model> loadAndCompile(const std::string& path, int& status);
 
 }  // namespace ide::cli

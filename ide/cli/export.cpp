@@ -136,18 +136,9 @@ int runExport(const std::vector<std::string>& args)
 #endif
 
     // the model
-    solver::LoadedModel loaded = solver::loadModelFile(modelPath);
-    bool io = false;
-    for (const solver::Diagnostic& d : loaded.diagnostics) {
-        if (d.severity == solver::Severity::Error || d.code == "io-error") printErr(d.format() + "\n");
-        if (d.code == "io-error") io = true;
-    }
-    if (io) return kUsage;
-    if (!loaded.ok()) return kModelErrors;
-    solver::Diagnostics compileDiags(modelPath);
-    std::shared_ptr<const solver::Model> model = solver::compileLoaded(loaded, compileDiags);
-    for (const solver::Diagnostic& d : compileDiags) printErr(d.format() + "\n");
-    if (!model) return kModelErrors;
+    int status = kExitOk;
+    std::shared_ptr<const solver::Model> model = loadAndCompile(modelPath, status);
+    if (!model) return status;
 
     // the MJCF
     solver::MjcfOptions options;
