@@ -27,7 +27,7 @@ packages=(
   qt6-base-dev qt6-base-dev-tools qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
   # padrob-studio: OpenGL widgets (only recommended by qt6-base-dev), charts, the xcb
   # platform plugin, Mesa's software GL, fonts
-  libqt6opengl6-dev qt6-charts-dev qt6-qpa-plugins libgl1-mesa-dri fonts-dejavu-core
+  libqt6opengl6-dev qt6-charts-dev libqt6sql6-sqlite qt6-qpa-plugins libgl1-mesa-dri fonts-dejavu-core
   # the station: joysticks and gamepads (SDL2), the serial DAQ box, Comedi DAQ cards
   # (optional at build time; installed so CI builds and tests that back end too)
   libsdl2-dev qt6-serialport-dev libcomedi-dev

@@ -1,5 +1,5 @@
 // padrob — the headless front end: check, describe, simulate models, compute their
-// inertias, time the solver (bench) and export to MJCF (later: tutorial). Exit codes:
+// inertias, time the solver (bench) and export to MJCF, and run tutorials. Exit codes:
 // 0 success, 1 the model has errors (or a simulation failed), 2 usage error or
 // unreadable file.
 
@@ -8,6 +8,7 @@
 #include "ide/cli/inertia.h"
 #include "ide/cli/info_report.h"
 #include "ide/cli/simulate.h"
+#include "ide/cli/tutorial.h"
 #include "solver/model/load.h"
 
 #include <QCoreApplication>
@@ -40,6 +41,8 @@ std::string mainHelp()
               "  bench MODEL [OPTIONS]  time the solver on a model (and MuJoCo, when built in)\n"
               "  export --mjcf MODEL [--out FILE]\n"
               "                        write a tree model as MuJoCo's MJCF\n"
+              "  tutorial FILE [--input LOG | --demo] [--json]\n"
+              "                        check a tutorial, or run it against an input log and score it\n"
               "\n"
               "Options:\n"
               "  -h, --help            show this help (or a command's: padrob COMMAND --help)\n"
@@ -186,6 +189,7 @@ int main(int argc, char** argv)
     if (cmd == "inertia") return ide::cli::runInertia(rest);
     if (cmd == "bench") return ide::cli::runBench(rest);
     if (cmd == "export") return ide::cli::runExport(rest);
+    if (cmd == "tutorial") return ide::cli::runTutorial(rest);
     print(stderr, tr("padrob: unknown command '") + cmd + "'\n" + tr("Try 'padrob --help'.") + "\n");
     return kUsage;
 }

@@ -157,6 +157,7 @@ struct CollisionWorld::Impl {
     std::vector<int> moving;                                      // shapes on machine bodies
     std::vector<int> parent;                                      // the model's
     fcl::DynamicAABBTreeCollisionManagerd still;                  // scene and machine ground
+    std::vector<char> excluded;                                   // per shape: out of `still`
     const std::vector<CollisionShape>* shapes = nullptr;
 };
 
@@ -300,6 +301,25 @@ Clearance CollisionWorld::machineToScene()
     return bodyToScene(-1);
 }
 
+namespace {
+
+void closer(Clearance& best, fcl::CollisionObjectd* a, fcl::CollisionObjectd* b, int ia, int ib)
+{
+    fcl::DistanceRequestd request;
+    request.enable_nearest_points = true;
+    fcl::DistanceResultd result;
+    fcl::distance(a, b, request, result);
+    if (result.min_distance < best.distance) {
+        best.distance = result.min_distance;
+        best.shapeA = ia;
+        best.shapeB = ib;
+        best.pointA = result.nearest_points[0];
+        best.pointB = result.nearest_points[1];
+    }
+}
+
+}  // namespace
+
 Clearance CollisionWorld::between(int bodyA, int bodyB)
 {
     Clearance best;
@@ -307,17 +327,46 @@ Clearance CollisionWorld::between(int bodyA, int bodyB)
         if (m_shapes[a].scene || m_shapes[a].body != bodyA) continue;
         for (std::size_t b = 0; b < m_shapes.size(); ++b) {
             if (m_shapes[b].scene || m_shapes[b].body != bodyB || a == b) continue;
-            fcl::DistanceRequestd request;
-            request.enable_nearest_points = true;
-            fcl::DistanceResultd result;
-            fcl::distance(m_impl->objects[a].get(), m_impl->objects[b].get(), request, result);
-            if (result.min_distance < best.distance) {
-                best.distance = result.min_distance;
-                best.shapeA = int(a);
-                best.shapeB = int(b);
-                best.pointA = result.nearest_points[0];
-                best.pointB = result.nearest_points[1];
-            }
+            closer(best, m_impl->objects[a].get(), m_impl->objects[b].get(), int(a), int(b));
+        }
+    }
+    return best;
+}
+
+std::vector<int> CollisionWorld::sceneShapes(const std::vector<int>& graphicIds) const
+{
+    std::vector<int> out;
+    for (std::size_t i = 0; i < m_shapes.size(); ++i) {
+        if (!m_shapes[i].scene) continue;
+        for (int id : graphicIds) {
+            if (m_shapes[i].graphicId == id) out.push_back(int(i));
+        }
+    }
+    return out;
+}
+
+void CollisionWorld::excludeFromScene(const std::vector<int>& shapeIndices)
+{
+    m_impl->excluded.resize(m_shapes.size(), 0);
+    bool changed = false;
+    for (int i : shapeIndices) {
+        const std::size_t k = std::size_t(i);
+        if (k >= m_shapes.size() || m_shapes[k].body >= 0 || m_impl->excluded[k]) continue;
+        m_impl->still.unregisterObject(m_impl->objects[k].get());
+        m_impl->excluded[k] = 1;
+        changed = true;
+    }
+    if (changed) m_impl->still.setup();
+}
+
+Clearance CollisionWorld::bodyToShapes(int body, const std::vector<int>& shapeIndices)
+{
+    Clearance best;
+    for (int i : m_impl->moving) {
+        if (m_shapes[std::size_t(i)].body != body) continue;
+        for (int j : shapeIndices) {
+            if (std::size_t(j) >= m_shapes.size() || j == i) continue;
+            closer(best, m_impl->objects[std::size_t(i)].get(), m_impl->objects[std::size_t(j)].get(), i, j);
         }
     }
     return best;

@@ -77,6 +77,15 @@ public:
     /// machine's ground graphics), whatever joins them.
     Clearance between(int bodyA, int bodyB);
 
+    /// Indices into shapes() of the scene's graphics with these G ids (those that exist).
+    std::vector<int> sceneShapes(const std::vector<int>& graphicIds) const;
+    /// Takes scene shapes out of bodyToScene() and machineToScene() (a tutorial checks
+    /// the people in the mill on their own); bodyToShapes() still sees them.
+    void excludeFromScene(const std::vector<int>& shapeIndices);
+    /// The smallest distance between one body's shapes (tree index) and the given shapes
+    /// (indices into shapes()), pair by pair.
+    Clearance bodyToShapes(int body, const std::vector<int>& shapeIndices);
+
 private:
     struct Impl;
     std::unique_ptr<Impl> m_impl;

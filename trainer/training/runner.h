@@ -1,0 +1,61 @@
+#pragma once
+// Running a tutorial without a window (`padrob tutorial`, the tests, the debrief's
+// expert comparison): an input log replayed through a station profile, or the
+// autopilot, drive a TutorialSession to its end.
+//
+// The autopilot records expert demonstrations for tutorial authors: it reads a path
+// of joint targets (docs/training.md "Recording a demonstration with the autopilot")
+// and moves the levers of a virtual valve console as a careful operator would —
+// proportionally to the remaining way, ramped, one waypoint after another — through
+// the same station profile, calibration and mapping as a person, while a recorder
+// writes the lever readings as an input log. Replaying that log is the demonstration.
+
+#include "trainer/input/input_log.h"
+#include "trainer/station/profile.h"
+#include "trainer/training/session.h"
+
+#include <QString>
+
+#include <memory>
+#include <vector>
+
+namespace trainer {
+
+/// The station profile a tutorial runs with: `override` (a .json file or a name of the
+/// model's profiles) when given, else the tutorial's PROFILE, else the one Padrob makes
+/// for the model. False with `error`.
+bool tutorialProfile(const Tutorial& tutorial, const QString& override, StationProfile& out, QString* error);
+
+struct RunOutput {
+    TutorialResult result;
+    std::vector<SessionSample> samples;
+};
+
+/// Replays `log` through `profile` into a session of `tutorial` until it ends; a log
+/// that runs out leaves `grace` seconds for the machine to settle, then ends the attempt
+/// (InputEnded). False with `error` when the profile cannot drive the model.
+bool runTutorialWithLog(std::shared_ptr<const Tutorial> tutorial, std::shared_ptr<const InputLog> log,
+                        const StationProfile& profile, RunOutput& out, QString* error, double grace = 3.0);
+
+/// One waypoint of an autopilot path: joint targets (modeler coordinates) reached
+/// together, or a pause with the levers centred.
+struct AutopilotWaypoint {
+    std::vector<std::pair<int, double>> targets;  ///< joint id → value
+    double tolerance = 0.0;  ///< 0: per joint (1 mm, 0.2°)
+    double wait = 0.0;       ///< [s] levers centred
+    int line = 0;
+};
+
+/// Reads an autopilot path: one waypoint per line, `id=value` pairs (values may end
+/// in `deg`), `tol=value`, or `wait=seconds`; `#` starts a comment. False with `error`
+/// ("line 3: …").
+bool parseAutopilotPath(const QString& text, std::vector<AutopilotWaypoint>& out, QString* error);
+
+/// Drives a session of `tutorial` along `path` with the levers of a virtual console that
+/// `profile` maps (an axis per drive), recording them to `logPath`. False with `error`
+/// when a target's drive has no lever in the profile, or the log cannot be written. The
+/// run's result (as the autopilot flew it) is in `out`.
+bool recordWithAutopilot(std::shared_ptr<const Tutorial> tutorial, const std::vector<AutopilotWaypoint>& path,
+                         const StationProfile& profile, const QString& logPath, RunOutput& out, QString* error);
+
+}  // namespace trainer

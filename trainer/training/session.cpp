@@ -1,0 +1,602 @@
+#include "trainer/training/session.h"
+
+#include "solver/kinematics/kinematics.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace trainer {
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(TutorialSession)
+};
+
+double angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+    return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+/// The largest angle of the rotation between two attitudes [rad].
+double rotationAngle(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b)
+{
+    return Eigen::AngleAxisd(a.transpose() * b).angle();
+}
+
+}  // namespace
+
+const char* TutorialEvent::key(Kind k)
+{
+    switch (k) {
+    case Kind::GoalDone: return "goal";
+    case Kind::Grasp: return "grasp";
+    case Kind::MissedGrasp: return "missed-grasp";
+    case Kind::Release: return "release";
+    case Kind::Drop: return "drop";
+    case Kind::Hit: return "hit";
+    case Kind::HardHit: return "hard-hit";
+    case Kind::NearMiss: return "near-miss";
+    case Kind::WorkerZone: return "worker-zone";
+    case Kind::WorkerHit: return "worker-hit";
+    case Kind::Overload: return "overload";
+    case Kind::LimitBang: return "limit-bang";
+    case Kind::TimeUp: return "time-up";
+    case Kind::InputEnded: return "input-ended";
+    case Kind::SolverError: return "solver-error";
+    case Kind::Aborted: return "aborted";
+    }
+    return "?";
+}
+
+QString TutorialEvent::label(Kind k)
+{
+    switch (k) {
+    case Kind::GoalDone: return Tr::tr("Goal done");
+    case Kind::Grasp: return Tr::tr("Grasp");
+    case Kind::MissedGrasp: return Tr::tr("Missed grasp");
+    case Kind::Release: return Tr::tr("Release");
+    case Kind::Drop: return Tr::tr("Load dropped");
+    case Kind::Hit: return Tr::tr("Hit");
+    case Kind::HardHit: return Tr::tr("Hard hit");
+    case Kind::NearMiss: return Tr::tr("Near miss");
+    case Kind::WorkerZone: return Tr::tr("Worker's safety zone");
+    case Kind::WorkerHit: return Tr::tr("Worker hit");
+    case Kind::Overload: return Tr::tr("Overload");
+    case Kind::LimitBang: return Tr::tr("Limit bang");
+    case Kind::TimeUp: return Tr::tr("Time up");
+    case Kind::InputEnded: return Tr::tr("Input ended");
+    case Kind::SolverError: return Tr::tr("Simulation stopped");
+    case Kind::Aborted: return Tr::tr("Stopped");
+    }
+    return {};
+}
+
+QString TutorialEvent::text() const
+{
+    const QString d = QString::fromStdString(detail);
+    const QString v = QString::number(value, 'f', 2);
+    switch (kind) {
+    case Kind::GoalDone: return Tr::tr("Goal \"%1\" done").arg(d);
+    case Kind::Grasp: return Tr::tr("The load is in the claws");
+    case Kind::MissedGrasp: return Tr::tr("The claws closed %1 m away from the grip").arg(v);
+    case Kind::Release: return Tr::tr("The load was released");
+    case Kind::Drop: return Tr::tr("The load was released out of place and fell");
+    case Kind::Hit: return Tr::tr("Touched %1 at %2 m/s").arg(d, v);
+    case Kind::HardHit: return Tr::tr("Hit %1 hard, at %2 m/s: the attempt ends").arg(d, v);
+    case Kind::NearMiss: return Tr::tr("Passed %1 m from %2").arg(v, d);
+    case Kind::WorkerZone: return Tr::tr("Entered the safety zone of %1 (%2 m)").arg(d, v);
+    case Kind::WorkerHit: return Tr::tr("Touched %1: the attempt ends").arg(d);
+    case Kind::Overload: return Tr::tr("Relief valve of %1 opened (%2 kN)").arg(d, QString::number(value / 1000.0, 'f', 1));
+    case Kind::LimitBang: return Tr::tr("%1 hit its end stop at full speed").arg(d);
+    case Kind::TimeUp: return Tr::tr("The time limit was reached");
+    case Kind::InputEnded: return Tr::tr("The recorded input ended before the goals were done");
+    case Kind::SolverError: return Tr::tr("The simulation stopped: %1").arg(d);
+    case Kind::Aborted: return Tr::tr("The attempt was stopped");
+    }
+    return {};
+}
+
+QString ScoreItem::label() const
+{
+    if (key == "time") return Tr::tr("Time");
+    if (key == "path") return Tr::tr("Path");
+    if (key == "smooth") return Tr::tr("Smoothness");
+    if (key == "safety") return Tr::tr("Safety");
+    return QString::fromStdString(key);
+}
+
+QString ScoreItem::advice() const
+{
+    if (max <= 0 || points >= max - 1e-9) return {};
+    if (key == "time") return Tr::tr("Work faster: move several valves together once you are sure of the way.");
+    if (key == "path") return Tr::tr("Take a straighter way: plan the movement before you start, and avoid going back and forth.");
+    if (key == "smooth") return Tr::tr("Move the levers gently: open and close the valves gradually so the load does not jerk.");
+    if (key == "safety") return Tr::tr("Keep clear of the mill, the cart and the people, do not force the cylinders against their relief valves and do not run into the end stops.");
+    return {};
+}
+
+int TutorialResult::count(TutorialEvent::Kind k) const
+{
+    return int(std::count_if(events.begin(), events.end(), [k](const TutorialEvent& e) { return e.kind == k; }));
+}
+
+QStringList TutorialResult::improvements() const
+{
+    std::vector<const ScoreItem*> items;
+    for (const ScoreItem& i : breakdown) items.push_back(&i);
+    std::sort(items.begin(), items.end(),
+              [](const ScoreItem* a, const ScoreItem* b) { return a->max - a->points > b->max - b->points; });
+    QStringList out;
+    if (!completed) out << Tr::tr("Complete every goal: the stage is passed only when all are done.");
+    for (const ScoreItem* i : items) {
+        if (!i->advice().isEmpty()) out << i->advice();
+    }
+    return out;
+}
+
+TutorialSession::TutorialSession(std::shared_ptr<const Tutorial> tutorial, const SessionOptions& options)
+    : m_tutorial(std::move(tutorial)), m_options(options)
+{
+    const Tutorial& t = *m_tutorial;
+    const solver::Model& m = *t.model;
+    solver::SimulationOptions so;
+    so.integrator.method = solver::IntegrationMethod::Rk4Fixed;
+    so.integrator.step = options.dt;
+    m_sim = std::make_unique<solver::Simulation>(t.model, so);
+    for (const auto& [j, theta] : t.initialTheta) m_sim->setInitial(j, theta, 0.0);
+    m_sim->evaluate();
+    m_commands.assign(std::size_t(m.nb), 0.0);
+    m_reliefOpen.assign(std::size_t(m.nb), 0);
+    if (t.spec.scoring.avoidScene || !t.spec.workers.empty()) {
+        solver::Diagnostics diags;
+        m_world = std::make_unique<solver::CollisionWorld>(*t.modelSpec, m, t.sceneSpec.get(), diags);
+        std::vector<int> all;
+        for (const std::vector<int>& ids : t.workerShapes) {
+            m_workerShapes.push_back(m_world->sceneShapes(ids));
+            all.insert(all.end(), m_workerShapes.back().begin(), m_workerShapes.back().end());
+        }
+        m_world->excludeFromScene(all);
+        m_inZone.assign(m_workerShapes.size(), 0);
+    }
+    m_lastTrack = m_lastGoalPoint = trackPoint();
+    m_progress.goal = 0;
+    sample();
+}
+
+TutorialSession::~TutorialSession() = default;
+
+double TutorialSession::time() const
+{
+    return m_sim->state().t;
+}
+
+void TutorialSession::setCommands(std::span<const double> u)
+{
+    const std::size_t n = std::min(u.size(), m_commands.size());
+    for (std::size_t j = 0; j < n; ++j) m_commands[j] = m_tutorial->enabled[j] ? u[j] : 0.0;
+}
+
+bool TutorialSession::advanceTo(double t)
+{
+    while (!ended() && time() < t - 0.5 * m_options.dt) step();
+    return !ended();
+}
+
+void TutorialSession::stop(TutorialEvent::Kind why)
+{
+    if (ended()) return;
+    addEvent(why, 0.0, 0.0, {});
+    end(why == TutorialEvent::Kind::InputEnded ? "input-ended" : "aborted", false);
+}
+
+bool TutorialSession::step()
+{
+    if (ended()) return false;
+    const solver::Model& m = *m_tutorial->model;
+    for (int j = 0; j < m.nb; ++j) m_sim->setCommand(j, m_commands[std::size_t(j)]);
+    m_qdBefore.assign(m_sim->state().qd.data(), m_sim->state().qd.data() + m.nb);
+    m_simEvents.clear();
+    std::string error;
+    ++m_step;
+    const double next = double(m_step) * m_options.dt;
+    if (!m_sim->advanceTo(next, m_simEvents, error)) {
+        addEvent(TutorialEvent::Kind::SolverError, 0.0, 0.0, error);
+        end("solver-error", false);
+        return false;
+    }
+    handleSolverEvents(m_simEvents, m_qdBefore);
+    m_progress.t = time();
+    checkGrip();
+    if (!ended()) checkGoal();
+    if (!ended() && m_world && time() - m_lastCheck >= m_options.checkPeriod - 1e-9) checkClearances();
+    track();
+    sample();
+    if (!ended() && time() >= m_tutorial->scoring().timeLimit - 1e-9) {
+        addEvent(TutorialEvent::Kind::TimeUp, time(), 0.0, {});
+        end("time-up", false);
+    }
+    // hints that apply now
+    m_progress.hints.clear();
+    const std::vector<Hint>& hints = m_tutorial->spec.hints;
+    const std::vector<Goal>& goals = m_tutorial->spec.goals;
+    for (std::size_t k = 0; k < hints.size(); ++k) {
+        const bool goalMatches = hints[k].goal.empty() ||
+                                 (m_progress.goal < int(goals.size()) && goals[std::size_t(m_progress.goal)].id == hints[k].goal);
+        if (goalMatches && time() - m_goalStart >= hints[k].after) m_progress.hints.push_back(int(k));
+    }
+    return !ended();
+}
+
+void TutorialSession::handleSolverEvents(const std::vector<solver::SimulationEvent>& events,
+                                         const std::vector<double>& qdBefore)
+{
+    const solver::Model& m = *m_tutorial->model;
+    const Scoring& sc = m_tutorial->scoring();
+    using K = solver::SimulationEvent::Kind;
+    for (const solver::SimulationEvent& e : events) {
+        const int j = e.joint;
+        if (j < 0 || j >= m.nb) continue;
+        const bool driven = m.drive[j].type != solver::DriveType::None;
+        if (e.kind == K::ReliefOpen) {
+            m_reliefOpen[std::size_t(j)] = 1;
+            addEvent(TutorialEvent::Kind::Overload, std::abs(e.value), sc.overloadPenalty, driveName(j));
+        } else if (e.kind == K::ReliefClose) {
+            m_reliefOpen[std::size_t(j)] = 0;
+        } else if (e.kind == K::LimitHit && driven) {
+            const solver::CompiledDrive& d = m.drive[j];
+            const double signedRate = qdBefore[std::size_t(j)] * m.coordinateRate(j, m_sim->state().q[j]);
+            const double rate = std::abs(signedRate);
+            // the speed of that direction (a cylinder retracts faster than it extends)
+            const double top = d.type == solver::DriveType::Motor ? d.w0
+                               : signedRate >= 0 ? d.vmax : (d.vmin > 0 ? d.vmin : d.vmax);
+            if (top > 0 && rate > sc.limitSpeedFraction * top) {
+                addEvent(TutorialEvent::Kind::LimitBang, rate, sc.limitPenalty, driveName(j));
+            }
+        }
+    }
+    m_progress.overload = std::any_of(m_reliefOpen.begin(), m_reliefOpen.end(), [](char c) { return c != 0; });
+}
+
+void TutorialSession::checkGrip()
+{
+    const Tutorial& t = *m_tutorial;
+    if (!t.spec.grip.present || t.loadBody < 0 || t.toolBody < 0) return;
+    const solver::Model& m = *t.model;
+    const solver::State& s = m_sim->state();
+    auto past = [&](const Tutorial::Target& target, const Tutorial::Target& other) {
+        // past `target` going away from `other`
+        const double q = m.coordinate(target.joint, s.q[target.joint]);
+        return (q - target.value) * (target.value - other.value) >= 0;
+    };
+    bool closed = true, open = true;
+    for (std::size_t k = 0; k < t.gripClose.size(); ++k) {
+        closed = closed && past(t.gripClose[k], t.gripOpen[k]);
+        open = open && past(t.gripOpen[k], t.gripClose[k]);
+    }
+    const solver::Data& d = m_sim->data();
+    if (closed && !m_wasClosed && !m_grasped && !m_fixed) {
+        const Eigen::Vector3d pt = solver::bodyPointPosition(d, t.toolBody, t.spec.grip.toolPoint);
+        const Eigen::Vector3d pl = solver::bodyPointPosition(d, t.loadBody, t.spec.grip.loadPoint);
+        const Eigen::Matrix3d wanted = d.X_wb[std::size_t(t.toolBody)].linear() * t.spec.grip.relative;
+        const double dist = (pt - pl).norm();
+        const double ang = rotationAngle(wanted, d.X_wb[std::size_t(t.loadBody)].linear());
+        if (dist <= t.spec.grip.tolerance && ang <= t.spec.grip.angleTolerance) {
+            std::string error;
+            if (m_sim->weld(t.toolBody, t.loadBody, m_simEvents, error)) {
+                m_grasped = true;
+                addEvent(TutorialEvent::Kind::Grasp, dist, 0.0, {});
+            }
+        } else {
+            addEvent(TutorialEvent::Kind::MissedGrasp, dist, 0.0, {});
+        }
+    } else if (open && !m_wasOpen && m_grasped) {
+        std::string error;
+        m_sim->release(t.toolBody, t.loadBody, m_simEvents, error);
+        m_grasped = false;
+        addEvent(TutorialEvent::Kind::Release, 0.0, 0.0, {});
+        const std::vector<Goal>& goals = t.spec.goals;
+        const bool placing = m_progress.goal < int(goals.size()) && goals[std::size_t(m_progress.goal)].kind == Goal::Kind::Place;
+        if (placing && m_progress.withinTolerance) {
+            const Goal& g = goals[std::size_t(m_progress.goal)];
+            if (g.fix && m_sim->weld(-1, t.loadBody, m_simEvents, error)) m_fixed = true;
+            goalDone();
+        } else {
+            addEvent(TutorialEvent::Kind::Drop, 0.0, t.scoring().dropPenalty, {});
+        }
+    }
+    m_wasClosed = closed;
+    m_wasOpen = open;
+    m_progress.grasped = m_grasped;
+}
+
+void TutorialSession::checkGoal()
+{
+    const Tutorial& t = *m_tutorial;
+    const std::vector<Goal>& goals = t.spec.goals;
+    if (m_progress.goal >= int(goals.size())) return;
+    const std::size_t k = std::size_t(m_progress.goal);
+    const Goal& g = goals[k];
+    const solver::Model& m = *t.model;
+    const solver::Data& d = m_sim->data();
+    const solver::State& s = m_sim->state();
+    bool within = false;
+    m_progress.distance = -1.0;
+    auto aligned = [&](int body) {
+        for (const Alignment& a : g.align) {
+            const Eigen::Vector3d w = d.X_wb[std::size_t(body)].linear() * a.local;
+            if (angleBetween(w, a.world) > a.tolerance) return false;
+        }
+        return true;
+    };
+    switch (g.kind) {
+    case Goal::Kind::Reach: {
+        const int b = t.goalBody[k];
+        const double dist = (solver::bodyPointPosition(d, b, g.point) - g.target).norm();
+        m_progress.distance = dist;
+        within = dist <= g.tolerance && aligned(b);
+        if (m_enteredGoal) m_result.overshoot = std::max(m_result.overshoot, dist - g.tolerance);
+        break;
+    }
+    case Goal::Kind::Joint:
+        within = true;
+        for (const Tutorial::Target& jt : t.goalJoints[k]) {
+            within = within && std::abs(m.coordinate(jt.joint, s.q[jt.joint]) - jt.value) <= jt.tolerance;
+        }
+        break;
+    case Goal::Kind::Grasp:
+        if (m_grasped) {
+            goalDone();
+            return;
+        }
+        break;
+    case Goal::Kind::Place: {
+        const double dist = (solver::comPosition(m, d, t.loadBody) - g.target).norm();
+        m_progress.distance = dist;
+        within = m_grasped && dist <= g.tolerance && aligned(t.loadBody);
+        if (m_enteredGoal) m_result.overshoot = std::max(m_result.overshoot, dist - g.tolerance);
+        break;  // done when released within tolerance (checkGrip)
+    }
+    }
+    m_progress.withinTolerance = within;
+    if (within) m_enteredGoal = true;
+    if (g.kind == Goal::Kind::Reach || g.kind == Goal::Kind::Joint) {
+        m_progress.dwell = within ? m_progress.dwell + m_options.dt : 0.0;
+        if (within && m_progress.dwell >= g.dwell - 1e-9) goalDone();
+    }
+}
+
+void TutorialSession::goalDone()
+{
+    const std::vector<Goal>& goals = m_tutorial->spec.goals;
+    const Goal& g = goals[std::size_t(m_progress.goal)];
+    addEvent(TutorialEvent::Kind::GoalDone, 0.0, 0.0, g.id);
+    const Eigen::Vector3d p = trackPoint();
+    m_result.idealLength += (p - m_lastGoalPoint).norm();
+    m_lastGoalPoint = p;
+    ++m_progress.goal;
+    m_result.goalsDone = m_progress.goal;
+    m_progress.dwell = 0.0;
+    m_progress.withinTolerance = false;
+    m_enteredGoal = false;
+    m_goalStart = time();
+    if (m_progress.goal >= int(goals.size())) end("completed", true);
+}
+
+void TutorialSession::checkClearances()
+{
+    const Tutorial& t = *m_tutorial;
+    const solver::Model& m = *t.model;
+    const solver::Data& d = m_sim->data();
+    const Scoring& sc = t.scoring();
+    m_lastCheck = time();
+    m_world->update(d);
+    // the load counts while carried, except near the place it is being set down on
+    bool loadCounts = m_grasped;
+    const std::vector<Goal>& goals = t.spec.goals;
+    if (loadCounts && m_progress.goal < int(goals.size())) {
+        const Goal& g = goals[std::size_t(m_progress.goal)];
+        if (g.kind == Goal::Kind::Place && m_progress.distance >= 0 && m_progress.distance < 3 * g.tolerance) loadCounts = false;
+    }
+    auto pointSpeed = [&](int body, const Eigen::Vector3d& world) {
+        const std::size_t b = std::size_t(body);
+        return (d.vel[b] + d.omega[b].cross(world - d.X_wb[b].translation())).norm();
+    };
+    if (sc.avoidScene) {
+        solver::Clearance best;
+        int bestBody = -1;
+        for (int b = 0; b < m.nb; ++b) {
+            if (b == t.loadBody && !loadCounts) continue;
+            const solver::Clearance c = m_world->bodyToScene(b);
+            if (c.distance < best.distance) {
+                best = c;
+                bestBody = b;
+            }
+        }
+        // the arm against the load lying there (the fingers may touch it)
+        if (t.loadBody >= 0 && !m_grasped && !m_fixed) {
+            for (int b = 0; b < m.nb; ++b) {
+                if (b == t.loadBody || std::find(t.fingerBodies.begin(), t.fingerBodies.end(), b) != t.fingerBodies.end()) continue;
+                if (m.parent[std::size_t(b)] >= 0 && b > t.loadBody) continue;
+                const solver::Clearance c = m_world->between(b, t.loadBody);
+                if (c.distance < best.distance) {
+                    best = c;
+                    bestBody = b;
+                }
+            }
+        }
+        m_progress.clearance = best.valid() ? best.distance : -1.0;
+        if (best.valid()) {
+            if (best.distance <= 0.0 && !m_touching) {
+                m_touching = true;
+                const double v = pointSpeed(bestBody, best.pointA);
+                const std::string what = shapeName(best.shapeB);
+                if (v > sc.hardSpeed) {
+                    addEvent(TutorialEvent::Kind::HardHit, v, sc.hitPenalty, what);
+                    end("hard-hit", false);
+                    return;
+                }
+                addEvent(TutorialEvent::Kind::Hit, v, sc.hitPenalty, what);
+            } else if (best.distance > 0.01) {
+                m_touching = false;
+            }
+            if (best.distance > 0.0 && best.distance < sc.nearDistance && !m_near && !m_touching) {
+                m_near = true;
+                addEvent(TutorialEvent::Kind::NearMiss, best.distance, 0.0, shapeName(best.shapeB));
+            } else if (best.distance > 2 * sc.nearDistance) {
+                m_near = false;
+            }
+        }
+    }
+    // the people
+    m_progress.workerDistance = -1.0;
+    m_progress.nearWorker = false;
+    for (std::size_t w = 0; w < m_workerShapes.size(); ++w) {
+        const Worker& worker = t.spec.workers[w];
+        solver::Clearance best;
+        for (int b = 0; b < m.nb; ++b) {
+            if (b == t.loadBody && !m_grasped) continue;
+            const solver::Clearance c = m_world->bodyToShapes(b, m_workerShapes[w]);
+            if (c.distance < best.distance) best = c;
+        }
+        if (!best.valid()) continue;
+        if (m_progress.workerDistance < 0 || best.distance < m_progress.workerDistance) m_progress.workerDistance = best.distance;
+        const std::string who = worker.name.empty() ? "G " + std::to_string(worker.graphicIds.front()) : worker.name.in("en");
+        if (best.distance <= 0.0) {
+            addEvent(TutorialEvent::Kind::WorkerHit, 0.0, worker.penalty, who);
+            end("worker-hit", false);
+            return;
+        }
+        if (best.distance < worker.zone) {
+            m_progress.nearWorker = true;
+            if (!m_inZone[w]) {
+                m_inZone[w] = 1;
+                addEvent(TutorialEvent::Kind::WorkerZone, best.distance, worker.penalty, who);
+            }
+        } else if (best.distance > worker.zone + 0.2) {
+            m_inZone[w] = 0;
+        }
+    }
+}
+
+Eigen::Vector3d TutorialSession::trackPoint() const
+{
+    const Tutorial& t = *m_tutorial;
+    if (t.trackBody < 0) return Eigen::Vector3d::Zero();
+    return solver::bodyPointPosition(m_sim->data(), t.trackBody, t.trackPoint);
+}
+
+void TutorialSession::track()
+{
+    const Eigen::Vector3d p = trackPoint();
+    m_result.pathLength += (p - m_lastTrack).norm();
+    m_lastTrack = p;
+    const double h = m_options.jerkInterval;
+    if (m_lastJerkSample < 0 || time() - m_lastJerkSample >= h - 1e-9) {
+        m_lastJerkSample = time();
+        m_jerkWindow.push_back(p);
+        if (m_jerkWindow.size() > 4) m_jerkWindow.erase(m_jerkWindow.begin());
+        if (m_jerkWindow.size() == 4) {
+            const Eigen::Vector3d j =
+                (m_jerkWindow[3] - 3 * m_jerkWindow[2] + 3 * m_jerkWindow[1] - m_jerkWindow[0]) / (h * h * h);
+            m_jerkSquares += j.squaredNorm();
+            ++m_jerkCount;
+        }
+    }
+}
+
+void TutorialSession::sample()
+{
+    if (m_lastSample >= 0 && time() - m_lastSample < m_options.sampleEvery - 1e-9 && !ended()) return;
+    m_lastSample = time();
+    const solver::Model& m = *m_tutorial->model;
+    const solver::State& s = m_sim->state();
+    const solver::Data& d = m_sim->data();
+    SessionSample x;
+    x.t = s.t;
+    x.q.assign(s.q.data(), s.q.data() + m.nb);
+    x.driveForce.resize(std::size_t(m.nb));
+    for (int j = 0; j < m.nb; ++j) x.driveForce[std::size_t(j)] = float(d.driveForce[j]);
+    x.relief.assign(m_reliefOpen.begin(), m_reliefOpen.end());
+    x.track = trackPoint();
+    x.clearance = m_progress.clearance < 0 ? std::numeric_limits<float>::infinity() : float(m_progress.clearance);
+    x.grasped = m_grasped;
+    m_samples.push_back(std::move(x));
+}
+
+void TutorialSession::addEvent(TutorialEvent::Kind kind, double value, double penalty, std::string detail)
+{
+    TutorialEvent e;
+    e.kind = kind;
+    e.t = time();
+    e.value = value;
+    e.penalty = penalty;
+    e.detail = std::move(detail);
+    m_result.penalties += penalty;
+    m_progress.penalties = m_result.penalties;
+    m_result.events.push_back(std::move(e));
+}
+
+void TutorialSession::end(const std::string& reason, bool completed)
+{
+    if (m_result.ended) return;
+    m_result.ended = true;
+    m_result.endReason = reason;
+    m_result.completed = completed;
+    m_result.time = time();
+    sample();
+}
+
+TutorialResult TutorialSession::result() const
+{
+    TutorialResult r = m_result;
+    const Scoring& sc = m_tutorial->scoring();
+    r.time = time();
+    r.finalPoint = trackPoint();
+    r.rmsJerk = m_jerkCount > 0 ? std::sqrt(m_jerkSquares / double(m_jerkCount)) : 0.0;
+    const bool completed = r.completed;
+    ScoreItem time{"time", r.time, 0.0, sc.wTime};
+    if (completed) {
+        const double span = std::max(sc.timeLimit - sc.parTime, 1e-9);
+        time.points = sc.wTime * std::clamp((sc.timeLimit - r.time) / span, 0.0, 1.0);
+    }
+    const double efficiency = r.pathLength > 1e-6 ? std::min(1.0, r.idealLength / r.pathLength) : 1.0;
+    ScoreItem path{"path", 100.0 * efficiency, completed ? sc.wPath * efficiency : 0.0, sc.wPath};
+    ScoreItem smooth{"smooth", r.rmsJerk, sc.wSmooth * std::clamp(1.0 - r.rmsJerk / sc.jerkReference, 0.0, 1.0), sc.wSmooth};
+    ScoreItem safety{"safety", r.penalties, std::max(0.0, sc.wSafety - r.penalties), sc.wSafety};
+    const double overflow = std::max(0.0, r.penalties - sc.wSafety);
+    r.breakdown = {time, path, smooth, safety};
+    r.score = std::clamp(time.points + path.points + smooth.points + safety.points - overflow, 0.0, 100.0);
+    const bool hard = r.endReason == "hard-hit" || r.endReason == "worker-hit";
+    r.passed = completed && !hard && r.score >= sc.pass - 1e-9;
+    r.stars = 0;
+    if (r.passed) {
+        const double third = (100.0 - sc.pass) / 3.0;
+        r.stars = r.score >= sc.pass + 2 * third ? 3 : r.score >= sc.pass + third ? 2 : 1;
+    }
+    return r;
+}
+
+std::string TutorialSession::shapeName(int shape) const
+{
+    if (!m_world || shape < 0 || std::size_t(shape) >= m_world->shapes().size()) return "?";
+    const solver::CollisionShape& s = m_world->shapes()[std::size_t(shape)];
+    const solver::Model& m = *m_tutorial->model;
+    if (s.body >= 0) {
+        const std::string name = m.bodyName.size() > std::size_t(s.body) ? m.bodyName[std::size_t(s.body)] : std::string();
+        return name.empty() ? "body " + std::to_string(m.bodyId[std::size_t(s.body)]) : name;
+    }
+    return s.describe();
+}
+
+std::string TutorialSession::driveName(int joint) const
+{
+    const solver::Model& m = *m_tutorial->model;
+    const std::string name = m.jointName.size() > std::size_t(joint) ? m.jointName[std::size_t(joint)] : std::string();
+    return name.empty() ? "C " + std::to_string(m.jointId[std::size_t(joint)]) : name;
+}
+
+}  // namespace trainer

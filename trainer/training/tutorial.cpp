@@ -1,0 +1,346 @@
+// Resolving a tutorial against its model and scene (docs/training.md "Checks").
+
+#include "trainer/training/tutorial.h"
+
+#include "solver/compile/compile.h"
+#include "solver/core/text_file.h"
+#include "solver/model/load.h"
+#include "solver/parse/lexer.h"
+#include "trainer/input/input_log.h"
+#include "trainer/station/profile.h"
+#include "trainer/station/profile_store.h"
+#include "trainer/training/reach.h"
+
+#include <QFile>
+#include <QFileInfo>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+namespace trainer {
+
+namespace {
+
+namespace fs = std::filesystem;
+using solver::Diagnostics;
+using solver::SourcePos;
+
+constexpr std::uintmax_t kMaxTutorialBytes = 1u << 20;
+
+std::string num(double v)
+{
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
+
+std::string resolvePath(const std::string& dir, const std::string& p)
+{
+    if (p.empty()) return {};
+    fs::path path(p);
+    if (path.is_relative()) path = fs::path(dir) / path;
+    return path.lexically_normal().string();
+}
+
+void checkText(const LocalText& t, const std::string& what, Diagnostics& d)
+{
+    for (const std::string& lang : kTutorialLanguages) {
+        if (!t.byLanguage.count(lang)) {
+            d.error("missing-language", t.pos, what + " has no " + solver::parse::upper(lang) + " text",
+                    "add " + solver::parse::upper(lang) + " \"…\": every text is in Spanish and English");
+        }
+    }
+}
+
+/// θ of a modeler coordinate value (T 1: a length), or nullopt when unreachable.
+std::optional<double> thetaOf(const solver::Model& m, int j, double value)
+{
+    if (m.jointType[j] == solver::JointType::Actuator) return m.lengthLaw[j].angle(value);
+    return value;
+}
+
+}  // namespace
+
+std::shared_ptr<const Tutorial> loadTutorial(const std::string& path, Diagnostics& diags)
+{
+    diags.setFile(path);
+    std::optional<std::string> text = solver::readTextFile(
+        path, kMaxTutorialBytes, "a tutorial", ".tut", "a tutorial is a short text file; check that this is one", diags);
+    if (!text) return nullptr;
+    return loadTutorialText(*text, path, diags);
+}
+
+std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const std::string& file, Diagnostics& diags)
+{
+    if (diags.file().empty()) diags.setFile(file);
+    auto tut = std::make_shared<Tutorial>();
+    tut->spec = parseTutorial(text, file, diags);
+    const TutorialSpec& s = tut->spec;
+    if (diags.hasErrors()) return nullptr;
+    tut->directory = fs::absolute(fs::path(file)).parent_path().string();
+
+    // texts: every one in every language
+    checkText(s.title, "the TITLE", diags);
+    if (s.title.empty()) diags.error("missing-statement", {1, 1}, "the tutorial has no TITLE", "add TITLE ES \"…\" EN \"…\"");
+    for (const LocalText& p : s.intro) checkText(p, "this INTRO", diags);
+    for (const Goal& g : s.goals) {
+        if (g.name.empty()) {
+            diags.error("missing-name", g.pos, "goal '" + g.id + "' has no NAME",
+                        "add a NAME ES \"…\" EN \"…\" line after it: the HUD shows it");
+        } else {
+            checkText(g.name, "goal '" + g.id + "''s NAME", diags);
+        }
+    }
+    for (const Hint& h : s.hints) checkText(h.text, "this HINT", diags);
+    for (const Worker& w : s.workers) {
+        if (!w.name.empty()) checkText(w.name, "this WORKER's NAME", diags);
+    }
+
+    // the model
+    tut->modelFile = resolvePath(tut->directory, s.modelPath);
+    solver::LoadedModel loaded = solver::loadModelFile(tut->modelFile);
+    if (!loaded.ok()) {
+        for (const solver::Diagnostic& d : loaded.diagnostics) {
+            if (d.severity == solver::Severity::Error) {
+                solver::Diagnostic& c = diags.error(d.code, d.pos, d.message, d.hint);
+                c.file = d.file.empty() ? tut->modelFile : d.file;
+            }
+        }
+        diags.error("model-errors", s.modelPos, "the model '" + s.modelPath + "' cannot be used (errors above)",
+                    "fix the model, or check the path: it is relative to the tutorial's folder");
+        return nullptr;
+    }
+    Diagnostics compileDiags(tut->modelFile);
+    tut->model = solver::compileLoaded(loaded, compileDiags);
+    if (!tut->model) {
+        diags.append(compileDiags);
+        diags.error("model-errors", s.modelPos, "the model '" + s.modelPath + "' does not compile", "fix the model");
+        return nullptr;
+    }
+    tut->modelSpec = std::make_shared<solver::ModelSpec>(std::move(loaded.spec));
+    const solver::Model& m = *tut->model;
+
+    // the scene
+    if (!s.scenePath.empty()) {
+        tut->sceneFile = resolvePath(tut->directory, s.scenePath);
+        solver::LoadedModel scene = solver::loadModelFile(tut->sceneFile);
+        if (!scene.ok()) {
+            for (const solver::Diagnostic& d : scene.diagnostics) {
+                if (d.severity == solver::Severity::Error) {
+                    solver::Diagnostic& c = diags.error(d.code, d.pos, d.message, d.hint);
+                    c.file = d.file.empty() ? tut->sceneFile : d.file;
+                }
+            }
+            diags.error("scene-errors", s.scenePos, "the scene '" + s.scenePath + "' cannot be used (errors above)",
+                        "fix the scene, or check the path: it is relative to the tutorial's folder");
+        } else {
+            tut->sceneSpec = std::make_shared<solver::ModelSpec>(std::move(scene.spec));
+        }
+    }
+
+    auto body = [&](int id, SourcePos pos, const std::string& what) {
+        const int b = id == 0 ? -1 : m.bodyIndex(id);
+        if (b < 0) {
+            diags.error("unknown-body", pos, what + ": the model has no moving body " + std::to_string(id),
+                        "use a body id of '" + s.modelPath + "' (not the ground, 0)");
+        }
+        return b;
+    };
+    auto joint = [&](int id, SourcePos pos, const std::string& what) {
+        const int j = m.jointIndex(id);
+        if (j < 0) {
+            diags.error("unknown-joint", pos, what + ": the model has no joint " + std::to_string(id) + " in its tree",
+                        "use a joint id (C) of '" + s.modelPath + "'");
+        }
+        return j;
+    };
+
+    // drives
+    tut->enabled.assign(static_cast<std::size_t>(m.nb), s.drives.empty() ? 1 : 0);
+    for (int id : s.drives) {
+        const int j = joint(id, s.drivesPos, "DRIVES");
+        if (j < 0) continue;
+        if (m.drive[j].type == solver::DriveType::None) {
+            diags.error("not-a-drive", s.drivesPos, "joint " + std::to_string(id) + " has no drive",
+                        "DRIVES lists joints with a D statement in the model");
+            continue;
+        }
+        tut->enabled[static_cast<std::size_t>(j)] = 1;
+    }
+    // the initial state
+    for (const TutorialSpec::Set& set : s.initial) {
+        const int j = joint(set.jointId, set.pos, "SET");
+        if (j < 0) continue;
+        const std::optional<double> th = thetaOf(m, j, set.value);
+        if (!th) {
+            diags.error("out-of-range", set.pos, "joint " + std::to_string(set.jointId) + "'s actuator cannot reach " + num(set.value),
+                        "give a length the joint's geometry allows");
+            continue;
+        }
+        if (*th < m.lower[j] - 1e-9 || *th > m.upper[j] + 1e-9) {
+            diags.error("out-of-range", set.pos, "joint " + std::to_string(set.jointId) + "'s initial value " + num(set.value) + " is beyond its limits",
+                        "give a value between its LL and UL");
+            continue;
+        }
+        tut->initialTheta.emplace_back(j, *th);
+    }
+    // the grip
+    const Grip& g = s.grip;
+    if (g.present) {
+        tut->loadBody = body(g.loadBodyId, g.pos, "GRIP LOAD");
+        tut->toolBody = body(g.toolBodyId, g.pos, "GRIP TOOL");
+        if (tut->loadBody >= 0 && tut->loadBody == tut->toolBody) {
+            diags.error("grip-self", g.pos, "the load and the tool are the same body", "the tool grips another body");
+        }
+        if (g.close.empty()) {
+            diags.error("missing-statement", g.pos, "GRIP has no CLAW", "add CLAW joint CLOSE value OPEN value lines after it");
+        }
+        auto claws = [&](const std::vector<JointTarget>& list, std::vector<Tutorial::Target>& out) {
+            for (const JointTarget& c : list) {
+                const int j = joint(c.jointId, c.pos, "CLAW");
+                if (j >= 0) out.push_back({j, c.value, 0.0});
+            }
+        };
+        claws(g.close, tut->gripClose);
+        claws(g.open, tut->gripOpen);
+        for (int id : g.fingerBodyIds) {
+            const int b = body(id, g.pos, "FINGERS");
+            if (b >= 0) tut->fingerBodies.push_back(b);
+        }
+        if (tut->toolBody >= 0) tut->fingerBodies.push_back(tut->toolBody);
+    }
+    // goals
+    bool grasped = false;
+    for (const Goal& goal : s.goals) {
+        tut->goalBody.push_back(-1);
+        tut->goalJoints.emplace_back();
+        switch (goal.kind) {
+        case Goal::Kind::Reach:
+            tut->goalBody.back() = body(goal.bodyId, goal.pos, "REACH");
+            break;
+        case Goal::Kind::Joint:
+            if (goal.joints.empty()) {
+                diags.error("missing-statement", goal.pos, "goal '" + goal.id + "' has no JOINT line",
+                            "add JOINT id AT value TOL d lines after it");
+            }
+            for (const JointTarget& jt : goal.joints) {
+                const int j = joint(jt.jointId, jt.pos, "JOINT");
+                if (j < 0) continue;
+                const std::optional<double> th = thetaOf(m, j, jt.value);
+                if (!th || *th < m.lower[j] - 1e-9 || *th > m.upper[j] + 1e-9) {
+                    diags.error("unreachable-goal", jt.pos, "joint " + std::to_string(jt.jointId) + " cannot reach " + num(jt.value) + ": beyond its limits",
+                                "give a target between the joint's LL and UL");
+                    continue;
+                }
+                tut->goalJoints.back().push_back({j, jt.value, jt.tolerance});
+            }
+            break;
+        case Goal::Kind::Grasp:
+            if (!g.present) diags.error("missing-grip", goal.pos, "a GRASP goal needs a GRIP statement", "add GRIP LOAD … TOOL … (docs/training.md)");
+            grasped = true;
+            break;
+        case Goal::Kind::Place:
+            if (!g.present) diags.error("missing-grip", goal.pos, "a PLACE goal needs a GRIP statement", "add GRIP LOAD … TOOL … (docs/training.md)");
+            if (!grasped) diags.error("place-before-grasp", goal.pos, "goal '" + goal.id + "' places the load before any GRASP goal",
+                                      "put a GRASP goal before it");
+            grasped = false;
+            break;
+        }
+    }
+    // hints name goals that exist
+    for (const Hint& h : s.hints) {
+        if (h.goal.empty()) continue;
+        bool found = false;
+        for (const Goal& goal : s.goals) found = found || goal.id == h.goal;
+        if (!found) diags.error("unknown-goal", h.text.pos, "HINT names goal '" + h.goal + "', which the tutorial does not have", "use a GOAL's id");
+    }
+    // tracked point
+    if (s.track) {
+        tut->trackBody = body(s.trackBodyId, {1, 1}, "TRACK");
+        tut->trackPoint = s.trackPoint;
+    } else if (tut->toolBody >= 0) {
+        tut->trackBody = tut->toolBody;
+        tut->trackPoint = g.toolPoint;
+    } else {
+        for (std::size_t k = 0; k < s.goals.size(); ++k) {
+            if (tut->goalBody[k] >= 0) {
+                tut->trackBody = tut->goalBody[k];
+                tut->trackPoint = s.goals[k].point;
+                break;
+            }
+        }
+    }
+    // workers: their graphics exist in the scene
+    for (const Worker& w : s.workers) {
+        tut->workerShapes.emplace_back();
+        if (!tut->sceneSpec) {
+            diags.error("missing-scene", w.pos, "WORKER needs a SCENE with the person's graphics", "add SCENE \"…\"");
+            continue;
+        }
+        for (int id : w.graphicIds) {
+            bool found = false;
+            for (const solver::GraphicSpec& gr : tut->sceneSpec->graphics) found = found || gr.id == id;
+            if (!found) {
+                diags.error("unknown-graphic", w.pos, "the scene has no graphic G " + std::to_string(id), "use the G ids of the person in the scene file");
+            } else {
+                tut->workerShapes.back().push_back(id);
+            }
+        }
+    }
+    // the station profile: a file (relative to the tutorial) or a name of the model's profiles
+    if (!s.profile.empty()) {
+        const std::string asFile = resolvePath(tut->directory, s.profile);
+        if (QFileInfo(QString::fromStdString(asFile)).isFile()) {
+            tut->profileFile = asFile;
+            QFile f(QString::fromStdString(asFile));
+            StationProfile p;
+            QList<ProfileIssue> issues;
+            if (!f.open(QIODevice::ReadOnly) || !StationProfile::fromJson(f.readAll(), p, issues)) {
+                diags.error("bad-profile", s.profilePos,
+                            "the station profile '" + s.profile + "' cannot be read: " +
+                                (issues.isEmpty() ? f.errorString() : issues.first().text()).toStdString(),
+                            "fix the file or name another profile");
+            }
+        } else {
+            StationProfile p;
+            QList<ProfileIssue> issues;
+            if (!ProfileStore().load(QString::fromStdString(tut->modelFile), QString::fromStdString(s.profile), p, issues)) {
+                diags.error("bad-profile", s.profilePos, "the model has no station profile '" + s.profile + "'",
+                            "name one of the model's profiles or give a .json file relative to the tutorial");
+            }
+        }
+    }
+    if (diags.hasErrors()) return nullptr;
+
+    // reachability of the REACH goals (after the ids are known to be good)
+    for (std::size_t k = 0; k < s.goals.size(); ++k) {
+        const Goal& goal = s.goals[k];
+        if (goal.kind != Goal::Kind::Reach) continue;
+        const ReachCheck r = checkReach(m, tut->enabled, tut->initialTheta, tut->goalBody[k], goal.point, goal.target,
+                                        goal.tolerance, goal.align);
+        if (!r.reachable) {
+            diags.error("unreachable-goal", goal.pos,
+                        "goal '" + goal.id + "' cannot be reached with the enabled drives: the nearest pose misses it by " +
+                            num(r.positionError) + " m and " + num(r.angleError * 180.0 / std::numbers::pi) + "°",
+                        "move the target within reach, enable more DRIVES or widen TOL/ANGTOL");
+        }
+    }
+    if (diags.hasErrors()) return nullptr;
+
+    // the demonstration: a problem there is a warning (training goes on without it)
+    if (!s.demoPath.empty()) {
+        tut->demoFile = resolvePath(tut->directory, s.demoPath);
+        InputLog log;
+        QString error;
+        if (!InputLog::load(QString::fromStdString(tut->demoFile), log, &error)) {
+            diags.warning("bad-demonstration", s.demoPos, "the demonstration cannot be used: " + error.toStdString(),
+                          "record it again (Train ▸ Record demonstration) or fix the path");
+            tut->demoFile.clear();
+        }
+        if (!s.cameraPath.empty()) tut->cameraFile = resolvePath(tut->directory, s.cameraPath);
+    }
+    return tut;
+}
+
+}  // namespace trainer

@@ -1,0 +1,550 @@
+// Parsing a tutorial file (docs/training.md "The file"): statements one per line,
+// tokenized by the model language's lexer, read as written into a TutorialSpec.
+
+#include "trainer/training/tutorial.h"
+
+#include "solver/parse/lexer.h"
+
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <set>
+#include <string_view>
+
+namespace trainer {
+
+std::string LocalText::in(const std::string& language) const
+{
+    if (auto it = byLanguage.find(language); it != byLanguage.end()) return it->second;
+    if (auto it = byLanguage.find("en"); it != byLanguage.end()) return it->second;
+    return byLanguage.empty() ? std::string() : byLanguage.begin()->second;
+}
+
+namespace {
+
+using solver::Diagnostics;
+using solver::SourcePos;
+using solver::parse::Token;
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+/// The statements, for messages and "unknown statement" hints.
+constexpr std::string_view kStatements =
+    "TUTORIAL, TITLE, INTRO, MODEL, SCENE, PROFILE, DEMO, DRIVES, SET, TIME, PASS, WEIGHTS, JERK, "
+    "TRACK, GRIP, CLAW, FINGERS, GOAL (with ALIGN, JOINT, DWELL, NAME), HINT, WORKER, AVOID, OVERLOAD, "
+    "LIMITS, DROP";
+
+/// Reads one statement's tokens left to right, reporting what is missing or wrong at
+/// the token (or after the last one).
+class Line {
+public:
+    Line(const std::vector<Token>& t, Diagnostics& d, int lineNo) : m_t(t), m_d(d), m_line(lineNo) {}
+
+    bool atEnd() const { return m_i >= m_t.size(); }
+    const Token& peek() const { return m_t[m_i]; }
+    bool failed() const { return m_failed; }
+    SourcePos pos() const { return atEnd() ? endPos() : m_t[m_i].pos; }
+    SourcePos endPos() const
+    {
+        if (m_t.empty()) return {m_line, 1};
+        const Token& last = m_t.back();
+        return {m_line, last.pos.column + static_cast<int>(last.text.size()) + (last.isString() ? 2 : 0)};
+    }
+
+    void error(const std::string& code, SourcePos p, const std::string& message, const std::string& hint = {})
+    {
+        if (m_failed) return;  // one error per statement: the rest follows from it
+        m_d.error(code, p, message, hint);
+        m_failed = true;
+    }
+
+    /// The next token if it is the keyword `kw` (consumed).
+    bool accept(std::string_view kw)
+    {
+        if (!atEnd() && peek().isWord() && peek().is(kw)) {
+            ++m_i;
+            return true;
+        }
+        return false;
+    }
+    bool expect(std::string_view kw, const std::string& where)
+    {
+        if (accept(kw)) return true;
+        error("expected-keyword", pos(), "expected " + std::string(kw) + " " + where,
+              "write " + std::string(kw) + " followed by its value");
+        return false;
+    }
+    double number(const std::string& what)
+    {
+        if (m_failed) return 0.0;
+        if (atEnd() || !peek().isNumber()) {
+            const std::string got = atEnd() ? "the end of the line" : "'" + peek().text + "'";
+            std::string hint = "write a number such as 0.5";
+            if (!atEnd() && !solver::parse::numberProblem(peek().text).empty()) {
+                hint = "decimals take a point, not a comma: " + peek().text;
+                for (char& c : hint) {
+                    if (c == ',') c = '.';
+                }
+            }
+            error("expected-number", pos(), "expected " + what + ", found " + got, hint);
+            return 0.0;
+        }
+        return m_t[m_i++].number;
+    }
+    double angle(const std::string& what)
+    {
+        const double v = number(what);
+        return accept("DEG") ? v * kDeg : v;
+    }
+    int integer(const std::string& what)
+    {
+        const SourcePos p = pos();
+        const double v = number(what);
+        if (m_failed) return 0;
+        if (v != std::floor(v) || std::abs(v) > 1e9) {
+            error("expected-integer", p, what + " must be a whole number", "write it without decimals");
+            return 0;
+        }
+        return static_cast<int>(v);
+    }
+    Eigen::Vector3d vec3(const std::string& what)
+    {
+        Eigen::Vector3d v;
+        for (int k = 0; k < 3; ++k) v[k] = number(what + " (three numbers: x y z)");
+        return v;
+    }
+    Eigen::Vector3d unit(const std::string& what)
+    {
+        const SourcePos p = pos();
+        Eigen::Vector3d v = vec3(what);
+        if (m_failed) return Eigen::Vector3d::UnitX();
+        if (v.norm() < 1e-9) {
+            error("zero-direction", p, what + " is the zero vector", "give a direction, e.g. 0 0 1");
+            return Eigen::Vector3d::UnitX();
+        }
+        return v.normalized();
+    }
+    std::string string(const std::string& what)
+    {
+        if (m_failed) return {};
+        if (atEnd() || !peek().isString()) {
+            error("expected-string", pos(), "expected " + what + " in double quotes",
+                  "write it as \"…\"");
+            return {};
+        }
+        return m_t[m_i++].text;
+    }
+    /// An id: a word or a string.
+    std::string name(const std::string& what)
+    {
+        if (m_failed) return {};
+        if (atEnd() || peek().isNumber()) return string(what);
+        return m_t[m_i++].text;
+    }
+    /// ES "…" EN "…" (each language once; at least one).
+    void texts(LocalText& out)
+    {
+        out.pos = pos();
+        while (!atEnd() && !m_failed && peek().isWord()) {
+            const Token& k = peek();
+            std::string lang;
+            for (const std::string& l : kTutorialLanguages) {
+                if (k.is(solver::parse::upper(l))) lang = l;
+            }
+            if (lang.empty()) return;
+            ++m_i;
+            if (out.byLanguage.count(lang)) {
+                error("duplicate-language", k.pos, "the text is given twice in " + solver::parse::upper(lang),
+                      "keep one");
+                return;
+            }
+            out.byLanguage[lang] = string("the " + solver::parse::upper(lang) + " text");
+        }
+        if (out.byLanguage.empty()) {
+            error("expected-text", pos(), "expected the text in each language: ES \"…\" EN \"…\"",
+                  "every text a person reads is written in Spanish and English");
+        }
+    }
+    void end()
+    {
+        if (!atEnd() && !m_failed) {
+            error("unexpected-token", pos(), "unexpected '" + peek().text + "' here",
+                  "remove it, or check the statement's keywords in docs/training.md");
+        }
+    }
+
+private:
+    const std::vector<Token>& m_t;
+    Diagnostics& m_d;
+    int m_line;
+    std::size_t m_i = 1;  // after the statement keyword
+    bool m_failed = false;
+};
+
+void positive(Line& l, double v, SourcePos p, const std::string& what, bool orZero = false)
+{
+    if (l.failed()) return;
+    if (!std::isfinite(v) || v < 0 || (!orZero && v == 0)) {
+        l.error("out-of-range", p, what + (orZero ? " must not be negative" : " must be greater than 0"),
+                "give a positive value");
+    }
+}
+
+}  // namespace
+
+TutorialSpec parseTutorial(const std::string& text, const std::string& file, Diagnostics& diags)
+{
+    TutorialSpec t;
+    t.file = file;
+    std::set<std::string> seen;  // statements allowed once
+    enum class Last { None, Goal, Worker, Grip } last = Last::None;
+    bool sawTutorial = false;
+    bool sawWeights = false;
+    SourcePos weightsPos;
+
+    std::size_t start = 0;
+    int lineNo = 0;
+    while (start <= text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        std::string_view lineText(text.data() + start, end - start);
+        if (!lineText.empty() && lineText.back() == '\r') lineText.remove_suffix(1);
+        ++lineNo;
+        start = end + 1;
+        const std::vector<Token> tokens = solver::parse::tokenizeLine(lineText, lineNo, diags);
+        if (tokens.empty()) {
+            if (end == text.size()) break;
+            continue;
+        }
+        const Token& kw = tokens.front();
+        Line l(tokens, diags, lineNo);
+        const std::string key = kw.isWord() ? solver::parse::upper(kw.text) : std::string();
+        auto once = [&] {
+            if (!seen.insert(key).second) {
+                l.error("duplicate-statement", kw.pos, key + " is given twice", "keep one " + key + " statement");
+            }
+        };
+        auto needGoal = [&]() -> Goal* {
+            if (last != Last::Goal || t.goals.empty()) {
+                l.error("misplaced-statement", kw.pos, key + " belongs to a GOAL and must follow it",
+                        "put it on the lines after its GOAL statement");
+                return nullptr;
+            }
+            return &t.goals.back();
+        };
+
+        if (key == "TUTORIAL") {
+            once();
+            sawTutorial = true;
+            t.id = l.name("the tutorial's id, e.g. T0");
+            if (l.accept("LEVEL")) t.level = l.integer("the level");
+            last = Last::None;
+        } else if (key == "TITLE") {
+            once();
+            l.texts(t.title);
+        } else if (key == "INTRO") {
+            t.intro.emplace_back();
+            l.texts(t.intro.back());
+        } else if (key == "MODEL" || key == "SCENE" || key == "PROFILE") {
+            once();
+            const SourcePos p = l.pos();
+            const std::string v = l.string(key == "PROFILE" ? "the station profile's name or file" : "the file's path");
+            if (key == "MODEL") t.modelPath = v, t.modelPos = p;
+            if (key == "SCENE") t.scenePath = v, t.scenePos = p;
+            if (key == "PROFILE") t.profile = v, t.profilePos = p;
+        } else if (key == "DEMO") {
+            once();
+            t.demoPos = l.pos();
+            t.demoPath = l.string("the demonstration's input log");
+            if (l.accept("CAMERA")) t.cameraPath = l.string("the demonstration's camera path");
+        } else if (key == "DRIVES") {
+            once();
+            t.drivesPos = l.pos();
+            while (!l.atEnd() && !l.failed()) t.drives.push_back(l.integer("a drive's joint id"));
+            if (t.drives.empty()) l.error("expected-number", l.pos(), "DRIVES lists no drive", "write the joint ids of the drives the operator may use");
+        } else if (key == "SET") {
+            TutorialSpec::Set s;
+            s.pos = l.pos();
+            s.jointId = l.integer("the joint id");
+            s.value = l.angle("the joint's initial value");
+            t.initial.push_back(s);
+        } else if (key == "TIME") {
+            once();
+            const SourcePos p = l.pos();
+            l.expect("LIMIT", "(TIME LIMIT seconds PAR seconds)");
+            t.scoring.timeLimit = l.number("the time limit [s]");
+            positive(l, t.scoring.timeLimit, p, "the time limit");
+            const SourcePos pp = l.pos();
+            if (l.expect("PAR", "(the time that earns every time point)")) {
+                t.scoring.parTime = l.number("the par time [s]");
+                positive(l, t.scoring.parTime, pp, "the par time");
+                if (!l.failed() && t.scoring.parTime > t.scoring.timeLimit) {
+                    l.error("out-of-range", pp, "the par time is longer than the time limit",
+                            "make PAR at most LIMIT");
+                }
+            }
+        } else if (key == "PASS") {
+            once();
+            const SourcePos p = l.pos();
+            t.scoring.pass = l.number("the pass mark (0–100)");
+            if (!l.failed() && (t.scoring.pass < 0 || t.scoring.pass > 100)) {
+                l.error("out-of-range", p, "the pass mark must be between 0 and 100", "e.g. PASS 60");
+            }
+        } else if (key == "WEIGHTS") {
+            once();
+            sawWeights = true;
+            weightsPos = kw.pos;
+            l.expect("TIME", "(WEIGHTS TIME a PATH b SMOOTH c SAFETY d)");
+            t.scoring.wTime = l.number("the time weight");
+            l.expect("PATH", "");
+            t.scoring.wPath = l.number("the path weight");
+            l.expect("SMOOTH", "");
+            t.scoring.wSmooth = l.number("the smoothness weight");
+            l.expect("SAFETY", "");
+            t.scoring.wSafety = l.number("the safety weight");
+            for (double w : {t.scoring.wTime, t.scoring.wPath, t.scoring.wSmooth, t.scoring.wSafety}) {
+                if (!l.failed() && w < 0) l.error("out-of-range", kw.pos, "a weight is negative", "weights are points, 0 or more");
+            }
+        } else if (key == "JERK") {
+            once();
+            const SourcePos p = l.pos();
+            t.scoring.jerkReference = l.number("the reference RMS jerk [m/s³]");
+            positive(l, t.scoring.jerkReference, p, "the reference jerk");
+        } else if (key == "TRACK") {
+            once();
+            l.expect("BODY", "(TRACK BODY id POINT x y z)");
+            t.trackBodyId = l.integer("the body id");
+            l.expect("POINT", "");
+            t.trackPoint = l.vec3("the point on the body");
+            t.track = true;
+        } else if (key == "GRIP") {
+            once();
+            Grip& g = t.grip;
+            g.present = true;
+            g.pos = kw.pos;
+            l.expect("LOAD", "(GRIP LOAD body AT x y z TOOL body AT x y z TOL d ANGTOL a)");
+            g.loadBodyId = l.integer("the load's body id");
+            l.expect("AT", "(the grip point on the load, in its frame)");
+            g.loadPoint = l.vec3("the grip point on the load");
+            l.expect("TOOL", "(the body that grips)");
+            g.toolBodyId = l.integer("the tool's body id");
+            l.expect("AT", "(the grip point on the tool, in its frame)");
+            g.toolPoint = l.vec3("the grip point on the tool");
+            SourcePos p = l.pos();
+            l.expect("TOL", "(how close the two grip points must be [m])");
+            g.tolerance = l.number("the grip's position tolerance [m]");
+            positive(l, g.tolerance, p, "the grip's tolerance");
+            p = l.pos();
+            l.expect("ANGTOL", "(how far the load's attitude may be from the tool's)");
+            g.angleTolerance = l.angle("the grip's angle tolerance");
+            positive(l, g.angleTolerance, p, "the grip's angle tolerance");
+            if (l.accept("ROT")) {
+                const Eigen::Vector3d axis = l.unit("the load's rotation axis in the tool frame");
+                const double a = l.angle("the rotation angle");
+                g.relative = Eigen::AngleAxisd(a, axis).toRotationMatrix();
+            }
+            last = Last::Grip;
+        } else if (key == "CLAW") {
+            if (last != Last::Grip) {
+                l.error("misplaced-statement", kw.pos, "CLAW belongs to GRIP and must follow it",
+                        "put the CLAW lines after the GRIP statement");
+            } else {
+                JointTarget c, o;
+                c.pos = o.pos = l.pos();
+                c.jointId = o.jointId = l.integer("the claw's joint id");
+                l.expect("CLOSE", "(CLAW joint CLOSE value OPEN value)");
+                c.value = l.number("the value past which the claw is closed");
+                l.expect("OPEN", "");
+                o.value = l.number("the value past which the claw is open");
+                if (!l.failed() && c.value == o.value) {
+                    l.error("out-of-range", c.pos, "CLOSE and OPEN are the same value",
+                            "OPEN is nearer the claw's open end than CLOSE");
+                }
+                t.grip.close.push_back(c);
+                t.grip.open.push_back(o);
+            }
+        } else if (key == "FINGERS") {
+            if (last != Last::Grip) {
+                l.error("misplaced-statement", kw.pos, "FINGERS belongs to GRIP and must follow it",
+                        "put it after the GRIP statement");
+            }
+            while (!l.atEnd() && !l.failed()) t.grip.fingerBodyIds.push_back(l.integer("a body id"));
+        } else if (key == "GOAL") {
+            Goal g;
+            g.pos = kw.pos;
+            g.id = l.name("the goal's id");
+            for (const Goal& o : t.goals) {
+                if (!l.failed() && o.id == g.id) {
+                    l.error("duplicate-id", g.pos, "goal '" + g.id + "' is defined twice", "give every goal its own id");
+                }
+            }
+            if (l.accept("REACH")) {
+                g.kind = Goal::Kind::Reach;
+                l.expect("BODY", "(GOAL id REACH BODY b POINT x y z AT x y z TOL d)");
+                g.bodyId = l.integer("the body id");
+                l.expect("POINT", "(the point on the body, in its frame)");
+                g.point = l.vec3("the point on the body");
+                l.expect("AT", "(the target in the world)");
+                g.target = l.vec3("the target");
+                const SourcePos p = l.pos();
+                l.expect("TOL", "(how near [m])");
+                g.tolerance = l.number("the tolerance [m]");
+                positive(l, g.tolerance, p, "the tolerance");
+            } else if (l.accept("JOINT")) {
+                g.kind = Goal::Kind::Joint;
+            } else if (l.accept("GRASP")) {
+                g.kind = Goal::Kind::Grasp;
+            } else if (l.accept("PLACE")) {
+                g.kind = Goal::Kind::Place;
+                l.expect("AT", "(GOAL id PLACE AT x y z TOL d: the load's centre of mass)");
+                g.target = l.vec3("the load's target position");
+                const SourcePos p = l.pos();
+                l.expect("TOL", "(how near [m])");
+                g.tolerance = l.number("the tolerance [m]");
+                positive(l, g.tolerance, p, "the tolerance");
+                if (l.accept("FIX")) g.fix = true;
+            } else {
+                l.error("unknown-goal", l.pos(), "expected the kind of goal: REACH, JOINT, GRASP or PLACE",
+                        "e.g. GOAL g1 REACH BODY 6 POINT 0 0 0 AT 1 2 0.5 TOL 0.1");
+            }
+            t.goals.push_back(g);
+            last = Last::Goal;
+        } else if (key == "ALIGN") {
+            if (Goal* g = needGoal()) {
+                Alignment a;
+                a.pos = l.pos();
+                a.local = l.unit("the direction on the body");
+                l.expect("WITH", "(ALIGN x y z WITH x y z ANGTOL a)");
+                a.world = l.unit("the direction in the world");
+                const SourcePos p = l.pos();
+                l.expect("ANGTOL", "(the angle tolerance)");
+                a.tolerance = l.angle("the angle tolerance");
+                positive(l, a.tolerance, p, "the angle tolerance");
+                if (g->kind != Goal::Kind::Reach && g->kind != Goal::Kind::Place) {
+                    l.error("misplaced-statement", a.pos, "ALIGN applies to REACH and PLACE goals", "remove it");
+                }
+                g->align.push_back(a);
+            }
+        } else if (key == "JOINT") {
+            if (Goal* g = needGoal()) {
+                JointTarget j;
+                j.pos = l.pos();
+                j.jointId = l.integer("the joint id");
+                l.expect("AT", "(JOINT id AT value TOL d)");
+                j.value = l.angle("the joint's target");
+                const SourcePos p = l.pos();
+                l.expect("TOL", "");
+                j.tolerance = l.angle("the tolerance");
+                positive(l, j.tolerance, p, "the tolerance");
+                if (g->kind != Goal::Kind::Joint) {
+                    l.error("misplaced-statement", j.pos, "JOINT lines belong to a JOINT goal",
+                            "write GOAL id JOINT, then the JOINT lines");
+                }
+                g->joints.push_back(j);
+            }
+        } else if (key == "DWELL") {
+            if (Goal* g = needGoal()) {
+                const SourcePos p = l.pos();
+                g->dwell = l.number("the dwell time [s]");
+                positive(l, g->dwell, p, "the dwell time", true);
+            }
+        } else if (key == "NAME") {
+            if (last == Last::Goal && !t.goals.empty()) {
+                l.texts(t.goals.back().name);
+            } else if (last == Last::Worker && !t.workers.empty()) {
+                l.texts(t.workers.back().name);
+            } else {
+                l.error("misplaced-statement", kw.pos, "NAME belongs to a GOAL or a WORKER and must follow it",
+                        "put it on the line after its GOAL or WORKER");
+            }
+        } else if (key == "HINT") {
+            Hint h;
+            if (l.accept("GOAL")) h.goal = l.name("the goal's id");
+            if (l.accept("AFTER")) {
+                const SourcePos p = l.pos();
+                h.after = l.number("the time on the goal before the hint shows [s]");
+                positive(l, h.after, p, "AFTER", true);
+            }
+            l.texts(h.text);
+            t.hints.push_back(h);
+        } else if (key == "WORKER") {
+            Worker w;
+            w.pos = kw.pos;
+            l.expect("G", "(WORKER G id id … ZONE d PENALTY p: the scene's graphics of the person)");
+            while (!l.atEnd() && !l.failed() && l.peek().isNumber()) w.graphicIds.push_back(l.integer("a graphic id"));
+            if (!l.failed() && w.graphicIds.empty()) {
+                l.error("expected-number", l.pos(), "WORKER lists no graphic", "give the scene's G ids of the person");
+            }
+            if (l.accept("ZONE")) {
+                const SourcePos p = l.pos();
+                w.zone = l.number("the safety zone [m]");
+                positive(l, w.zone, p, "the safety zone");
+            }
+            if (l.accept("PENALTY")) w.penalty = l.number("the penalty [points]");
+            t.workers.push_back(w);
+            last = Last::Worker;
+        } else if (key == "AVOID") {
+            once();
+            l.expect("SCENE", "(AVOID SCENE PENALTY p NEAR d HARD v)");
+            t.scoring.avoidScene = true;
+            if (l.accept("PENALTY")) t.scoring.hitPenalty = l.number("the penalty per hit [points]");
+            if (l.accept("NEAR")) {
+                const SourcePos p = l.pos();
+                t.scoring.nearDistance = l.number("the near-miss distance [m]");
+                positive(l, t.scoring.nearDistance, p, "NEAR", true);
+            }
+            if (l.accept("HARD")) {
+                const SourcePos p = l.pos();
+                t.scoring.hardSpeed = l.number("the speed of a hard hit [m/s]");
+                positive(l, t.scoring.hardSpeed, p, "HARD");
+            }
+        } else if (key == "OVERLOAD") {
+            once();
+            l.expect("PENALTY", "(OVERLOAD PENALTY p)");
+            t.scoring.overloadPenalty = l.number("the penalty per overload [points]");
+        } else if (key == "LIMITS") {
+            once();
+            l.expect("PENALTY", "(LIMITS PENALTY p SPEED f)");
+            t.scoring.limitPenalty = l.number("the penalty per limit bang [points]");
+            if (l.accept("SPEED")) {
+                const SourcePos p = l.pos();
+                t.scoring.limitSpeedFraction = l.number("the fraction of the drive's speed");
+                positive(l, t.scoring.limitSpeedFraction, p, "SPEED", true);
+            }
+        } else if (key == "DROP") {
+            once();
+            l.expect("PENALTY", "(DROP PENALTY p)");
+            t.scoring.dropPenalty = l.number("the penalty for releasing the load out of place [points]");
+        } else {
+            l.error("unknown-statement", kw.pos,
+                    "unknown statement '" + kw.text + "'", "a tutorial's statements are " + std::string(kStatements));
+        }
+        l.end();
+        if (key != "GOAL" && key != "ALIGN" && key != "JOINT" && key != "DWELL" && key != "NAME" && key != "WORKER" &&
+            key != "GRIP" && key != "CLAW" && key != "FINGERS") {
+            last = Last::None;
+        }
+        if (end == text.size()) break;
+    }
+    if (!sawTutorial) {
+        diags.error("missing-statement", {1, 1}, "the file has no TUTORIAL statement",
+                    "start the file with TUTORIAL <id>, e.g. TUTORIAL T0");
+    }
+    if (t.modelPath.empty() && sawTutorial) {
+        diags.error("missing-statement", {1, 1}, "the tutorial names no MODEL", "add MODEL \"path/to/model.pad\"");
+    }
+    if (t.goals.empty() && sawTutorial) {
+        diags.error("missing-statement", {1, 1}, "the tutorial has no GOAL", "add at least one GOAL");
+    }
+    if (sawWeights) {
+        const Scoring& s = t.scoring;
+        const double sum = s.wTime + s.wPath + s.wSmooth + s.wSafety;
+        if (std::abs(sum - 100.0) > 1e-9) {
+            diags.error("weights-sum", weightsPos, "the weights add up to " + std::to_string(sum).substr(0, 6) + ", not 100",
+                        "the score is out of 100: make TIME + PATH + SMOOTH + SAFETY = 100");
+        }
+    }
+    return t;
+}
+
+}  // namespace trainer
