@@ -580,6 +580,28 @@ void Simulation::applyModeRules(std::vector<SimulationEvent>& events)
                 changed = true;
             }
         }
+        // a joint without a hydraulic drive resting on a limit, joined by constraints to
+        // joints that now move (a liner lying on its stop, welded to claws that lift it),
+        // leaves the limit when those rates would carry it away from the stop: counted
+        // free, the impulse of the prescribed rates moves it off the stop (else it stays)
+        if (hasConstraints(m, m_state)) {
+            for (int j = 0; j < m.nb; ++j) {
+                if (isHydraulic(m, j) || m_state.limit[j] == LimitState::Free) continue;
+                const LimitState was = m_state.limit[j];
+                const Eigen::VectorXd qdKept = m_state.qd;
+                m_state.limit[j] = LimitState::Free;
+                prescribeRates();
+                const int side = was == LimitState::AtLower ? -1 : +1;
+                if (side * m_state.qd[j] < -1e-12) {
+                    events.push_back({SimulationEvent::Kind::LimitLeave, m_state.t, j, side,
+                                      m.coordinate(j, side < 0 ? m.lower[j] : m.upper[j])});
+                    changed = true;
+                } else {
+                    m_state.limit[j] = was;
+                    m_state.qd = qdKept;
+                }
+            }
+        }
         prescribeRates();
         m_state.constraintRank = -1;  // found anew, here on the constraints
         evaluate();

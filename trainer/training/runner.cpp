@@ -285,6 +285,9 @@ bool recordWithAutopilot(std::shared_ptr<const Tutorial> tutorial, const std::ve
         session.step();
     }
     engine->setRecorder(nullptr);
+    // the last line marks the end of the run: a log holds changes only, and the levers
+    // may have been held since the last one
+    recorder.record(session.time(), *console, console->sample());
     if (!recorder.stop(error)) return false;
     out.result = session.result();
     out.samples = session.samples();

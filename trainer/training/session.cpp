@@ -246,7 +246,7 @@ void TutorialSession::handleSolverEvents(const std::vector<solver::SimulationEve
             addEvent(TutorialEvent::Kind::Overload, std::abs(e.value), sc.overloadPenalty, driveName(j));
         } else if (e.kind == K::ReliefClose) {
             m_reliefOpen[std::size_t(j)] = 0;
-        } else if (e.kind == K::LimitHit && driven) {
+        } else if (e.kind == K::LimitHit && driven && !isClaw(j)) {  // claws close onto their stops
             const solver::CompiledDrive& d = m.drive[j];
             const double signedRate = qdBefore[std::size_t(j)] * m.coordinateRate(j, m_sim->state().q[j]);
             const double rate = std::abs(signedRate);
@@ -590,6 +590,14 @@ std::string TutorialSession::shapeName(int shape) const
         return name.empty() ? "body " + std::to_string(m.bodyId[std::size_t(s.body)]) : name;
     }
     return s.describe();
+}
+
+bool TutorialSession::isClaw(int joint) const
+{
+    for (const Tutorial::Target& c : m_tutorial->gripClose) {
+        if (c.joint == joint) return true;
+    }
+    return false;
 }
 
 std::string TutorialSession::driveName(int joint) const

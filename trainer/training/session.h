@@ -161,6 +161,7 @@ private:
     Eigen::Vector3d trackPoint() const;
     std::string shapeName(int shape) const;
     std::string driveName(int joint) const;
+    bool isClaw(int joint) const;
 
     std::shared_ptr<const Tutorial> m_tutorial;
     SessionOptions m_options;

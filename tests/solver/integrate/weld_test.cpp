@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 namespace solver {
@@ -251,6 +252,41 @@ TEST(Welds, TheWeldedLinerMovesWithTheClawsAndFallsWhenReleased)
     ASSERT_TRUE(sim.advanceTo(1.21, ev, err)) << err;
     EXPECT_NEAR(sim.data().acc[liner].z(), -9.81, 1e-9);
     EXPECT_NEAR(sim.data().acc[claw].norm(), 0.0, 1e-9);
+}
+
+
+TEST(Welds, ALinerLyingOnItsStopAndWeldedToTheHeadLeavesTheStopWhenTheBoomLifts)
+{
+    // models/liner_station.pad: the claws around the liner's edge on the cart, the liner
+    // resting on its z stop (C 12 at LL); welded to the head, the boom lifts it off
+    const auto model = test::compileExample("liner_station.pad");
+    ASSERT_TRUE(model);
+    const Model& m = *model;
+    Simulation sim(model, rk4(1e-3));
+    sim.setInitial(m.jointIndex(1), -std::numbers::pi / 2, 0);
+    sim.setInitial(m.jointIndex(2), *m.lengthLaw[m.jointIndex(2)].angle(1.46095), 0);
+    sim.setInitial(m.jointIndex(3), 0.45, 0);
+    sim.setInitial(m.jointIndex(5), *m.lengthLaw[m.jointIndex(5)].angle(0.413), 0);
+    std::vector<SimulationEvent> ev;
+    std::string err;
+    ASSERT_TRUE(sim.advanceTo(0.1, ev, err)) << err;
+    const int z = m.jointIndex(12), lift = m.jointIndex(2);
+    ASSERT_EQ(sim.state().limit[z], LimitState::AtLower);
+    const double before = sim.data().driveForce[lift];
+    ASSERT_TRUE(sim.weld(m.bodyIndex(6), m.bodyIndex(15), ev, err)) << err;
+    ASSERT_TRUE(sim.advanceTo(0.2, ev, err)) << err;
+    EXPECT_EQ(sim.state().limit[z], LimitState::AtLower) << "at rest it stays on its stop";
+    ev.clear();
+    sim.setCommand(lift, 1.0);
+    ASSERT_TRUE(sim.advanceTo(1.2, ev, err)) << err;
+    bool left = false;
+    for (const SimulationEvent& e : ev) left = left || (e.kind == SimulationEvent::Kind::LimitLeave && e.joint == z);
+    EXPECT_TRUE(left);
+    EXPECT_EQ(sim.state().limit[z], LimitState::Free);
+    EXPECT_GT(sim.state().q[z], 0.228 + 0.3);  // the boom's tip rises ~0.38 m/s at 4 m
+    // the cylinder now holds the liner too (827 kN by hand, models/liner_station.pad)
+    EXPECT_GT(sim.data().driveForce[lift] - before, 7e5);
+    EXPECT_LT(sim.data().driveForce[lift] - before, 1.1e6);
 }
 
 }  // namespace

@@ -1,0 +1,468 @@
+// Tutorials (issue 7): the file format's diagnostics (where and how to fix), and the
+// session's checks against the solver: reaching with a dwell, grasping the 4,500 kg
+// liner (and missing it), carrying it, placing and dropping it, hits, hard hits, a
+// worker's safety zone, limit bangs, the time limit, and the score.
+
+#include "trainer/training/runner.h"
+#include "trainer/training/session.h"
+#include "solver/kinematics/kinematics.h"
+#include "trainer/training/tutorial.h"
+
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+using namespace trainer;
+
+namespace {
+
+const std::string kSource = PADROB_SOURCE_DIR;
+const std::string kManipulator = kSource + "/models/liner_manipulator.pad";
+const std::string kStation = kSource + "/models/liner_station.pad";
+
+std::string header(const std::string& model, const std::string& extra = {})
+{
+    return "TUTORIAL X LEVEL 1\n"
+           "TITLE ES \"Prueba\" EN \"Test\"\n"
+           "MODEL \"" + model + "\"\n" + extra;
+}
+
+const char* kReachGoal = "GOAL g REACH BODY 6 POINT 0 0.48 0 AT -2.10 3.08 1.32 TOL 0.15\n"
+                         "  DWELL 1\n"
+                         "  NAME ES \"Objetivo\" EN \"Target\"\n";
+
+std::shared_ptr<const Tutorial> load(const std::string& text, solver::Diagnostics& d,
+                                     const std::string& file = kSource + "/tests/trainer/x.tut")
+{
+    return loadTutorialText(text, file, d);
+}
+
+const solver::Diagnostic* find(const solver::Diagnostics& d, const std::string& code)
+{
+    for (const solver::Diagnostic& x : d) {
+        if (x.code == code) return &x;
+    }
+    return nullptr;
+}
+
+std::string dump(const solver::Diagnostics& d)
+{
+    std::string s;
+    for (const solver::Diagnostic& x : d) s += x.format() + "\n";
+    return s;
+}
+
+/// Steps `s` with commands `u` (per joint id 1…) for `seconds`.
+void drive(TutorialSession& s, std::vector<std::pair<int, double>> u, double seconds)
+{
+    std::vector<double> cmd(std::size_t(s.tutorial().model->nb), 0.0);
+    for (auto [id, v] : u) cmd[std::size_t(s.tutorial().model->jointIndex(id))] = v;
+    s.setCommands(cmd);
+    s.advanceTo(s.time() + seconds);
+}
+
+}  // namespace
+
+TEST(TutorialFile, TheShippedFirstStageLoads)
+{
+    solver::Diagnostics d;
+    auto t = loadTutorial(kSource + "/resources/tutorials/t0_reach.tut", d);
+    ASSERT_TRUE(t) << dump(d);
+    EXPECT_EQ(t->spec.id, "T0");
+    EXPECT_EQ(t->title("es"), "Alcanzar un objetivo");
+    EXPECT_EQ(t->title("en"), "Reach a target");
+    ASSERT_EQ(t->spec.goals.size(), 1u);
+    EXPECT_EQ(t->spec.goals[0].kind, Goal::Kind::Reach);
+    EXPECT_FALSE(t->demoFile.empty());
+    // only slew, boom lift and extension are enabled
+    const solver::Model& m = *t->model;
+    for (int id = 1; id <= 9; ++id) EXPECT_EQ(t->enabled[std::size_t(m.jointIndex(id))] != 0, id <= 3) << id;
+}
+
+TEST(TutorialFile, ProblemsAreReportedWhereTheyAreWithAHint)
+{
+    struct Case {
+        const char* name;
+        std::string text;
+        const char* code;
+        int line;
+    };
+    const std::vector<Case> cases = {
+        {"unknown statement", header(kManipulator, "GOLA g JOINT\n") + kReachGoal, "unknown-statement", 4},
+        {"decimal comma", header(kManipulator, "PASS 60,5\n") + kReachGoal, "expected-number", 4},
+        {"missing model", header(kSource + "/models/nope.pad") + kReachGoal, "model-errors", 3},
+        {"no goal", header(kManipulator), "missing-statement", 1},
+        {"unknown body", header(kManipulator) + "GOAL g REACH BODY 42 POINT 0 0 0 AT 0 3 0 TOL 0.1\n NAME ES \"a\" EN \"b\"\n",
+         "unknown-body", 4},
+        {"not a drive", header(kStation, "DRIVES 1 12\n") + kReachGoal, "not-a-drive", 4},
+        {"unknown joint", header(kManipulator, "SET 77 0\n") + kReachGoal, "unknown-joint", 4},
+        {"beyond limits", header(kManipulator, "SET 3 2.5\n") + kReachGoal, "out-of-range", 4},
+        {"only Spanish", "TUTORIAL X\nTITLE ES \"Prueba\"\nMODEL \"" + kManipulator + "\"\n" + kReachGoal,
+         "missing-language", 2},
+        {"goal without name", header(kManipulator) + "GOAL g JOINT\n JOINT 3 AT 0.5 TOL 0.01\n", "missing-name", 4},
+        {"ALIGN without goal", header(kManipulator, "ALIGN 0 1 0 WITH 0 0 1 ANGTOL 5 DEG\n") + kReachGoal,
+         "misplaced-statement", 4},
+        {"weights", header(kManipulator, "WEIGHTS TIME 30 PATH 30 SMOOTH 30 SAFETY 30\n") + kReachGoal, "weights-sum", 4},
+        {"par over limit", header(kManipulator, "TIME LIMIT 60 PAR 90\n") + kReachGoal, "out-of-range", 4},
+        {"place before grasp",
+         header(kStation, "GRIP LOAD 15 AT 0 -0.285 -0.065767 TOOL 6 AT 0 0.48 0 TOL 0.03 ANGTOL 3 DEG\n"
+                          "CLAW 9 CLOSE 0.12 OPEN 0.03\n") +
+             "GOAL p PLACE AT 0 4 0.5 TOL 0.05\n NAME ES \"a\" EN \"b\"\n",
+         "place-before-grasp", 6},
+        {"joint goal beyond limits", header(kManipulator) + "GOAL g JOINT\n JOINT 3 AT 1.5 TOL 0.01\n NAME ES \"a\" EN \"b\"\n",
+         "unreachable-goal", 5},
+        {"unreachable target", header(kManipulator, "DRIVES 1 2 3\n") +
+                                   "GOAL g REACH BODY 6 POINT 0 0.48 0 AT -2.1 3.1 4.5 TOL 0.15\n NAME ES \"a\" EN \"b\"\n",
+         "unreachable-goal", 5},
+        {"worker without scene", header(kManipulator, "WORKER G 1 2 ZONE 1\n") + kReachGoal, "missing-scene", 4},
+        {"hint for no goal", header(kManipulator, "HINT GOAL zz ES \"a\" EN \"b\"\n") + kReachGoal, "unknown-goal", 4},
+    };
+    for (const Case& c : cases) {
+        solver::Diagnostics d;
+        auto t = load(c.text, d);
+        EXPECT_FALSE(t) << c.name;
+        const solver::Diagnostic* x = find(d, c.code);
+        ASSERT_TRUE(x) << c.name << ": expected " << c.code << ", got\n" << dump(d);
+        EXPECT_EQ(x->pos.line, c.line) << c.name << ": " << x->format();
+        EXPECT_FALSE(x->hint.empty()) << c.name << ": " << x->format();
+    }
+}
+
+TEST(TutorialFile, AModelWithErrorsIsReportedInItsOwnFile)
+{
+    QTemporaryDir dir;
+    const QString model = dir.filePath("broken.pad");
+    QFile f(model);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write("B 1 4,5 1 1 1\nC 1\nB1 0 P1 0 0 0 A1 0 0 1 R1 1 0 0\nB2 1 P2 0 0 0 A2 0 0 1 R2 1 0 0\n");
+    f.close();
+    solver::Diagnostics d;
+    auto t = load(header(model.toStdString()) + kReachGoal, d);
+    EXPECT_FALSE(t);
+    bool inModel = false;
+    for (const solver::Diagnostic& x : d) inModel = inModel || (x.file == model.toStdString() && x.pos.line == 1);
+    EXPECT_TRUE(inModel) << dump(d);
+    EXPECT_TRUE(find(d, "model-errors"));
+}
+
+TEST(TutorialFile, ACorruptDemonstrationIsAWarningAndTheTutorialStillLoads)
+{
+    QTemporaryDir dir;
+    QFile f(dir.filePath("demo.log"));
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write("# padrob input log 1\n#device 0 {\"id\":\nthis is not a log\n");
+    f.close();
+    solver::Diagnostics d;
+    auto t = load(header(kManipulator, "DEMO \"demo.log\"\n") + kReachGoal, d, dir.filePath("t.tut").toStdString());
+    ASSERT_TRUE(t) << dump(d);
+    EXPECT_TRUE(t->demoFile.empty());
+    const solver::Diagnostic* x = find(d, "bad-demonstration");
+    ASSERT_TRUE(x) << dump(d);
+    EXPECT_EQ(x->severity, solver::Severity::Warning);
+    EXPECT_EQ(x->pos.line, 4);
+}
+
+TEST(TutorialSession, AReachGoalNeedsItsDwellAndTheScoreFollowsTheRun)
+{
+    solver::Diagnostics d;
+    auto t = load(header(kManipulator, "DRIVES 1 2 3\nTIME LIMIT 60 PAR 30\n") + kReachGoal, d);
+    ASSERT_TRUE(t) << dump(d);
+    TutorialSession s(t);
+    // slew left, lift, extend: the joint targets of the point (-2.11, 3.09, 1.32)
+    drive(s, {{1, 1.0}}, 0.6 / 0.131);
+    drive(s, {{2, 1.0}}, (1.52 - 1.464) / 0.0180);
+    EXPECT_EQ(s.progress().goal, 0);
+    double entered = -1;
+    for (int k = 0; k < 800 && !s.ended(); ++k) {
+        drive(s, {{3, 1.0}}, 0.01);
+        if (entered < 0 && s.progress().withinTolerance) entered = s.time();
+    }
+    ASSERT_GT(entered, 0);
+    ASSERT_TRUE(s.ended());
+    // done after being held within tolerance for its DWELL (1 s), not before
+    EXPECT_NEAR(s.result().events.back().t - entered, 1.0, 0.011);
+    ASSERT_TRUE(s.ended());
+    const TutorialResult r = s.result();
+    EXPECT_TRUE(r.completed);
+    EXPECT_TRUE(r.passed);
+    EXPECT_EQ(r.endReason, "completed");
+    ASSERT_EQ(r.breakdown.size(), 4u);
+    EXPECT_DOUBLE_EQ(r.breakdown[0].points, r.breakdown[0].max);  // under par
+    EXPECT_GT(r.breakdown[1].value, 60.0);                        // one joint at a time: not straight
+    EXPECT_LT(r.breakdown[1].value, 100.0);
+    EXPECT_DOUBLE_EQ(r.breakdown[3].points, r.breakdown[3].max);  // no penalty
+    EXPECT_GE(r.stars, 1);
+    double sum = 0;
+    for (const ScoreItem& i : r.breakdown) sum += i.points;
+    EXPECT_NEAR(r.score, sum, 1e-9);
+}
+
+TEST(TutorialSession, DisabledDrivesStayClosed)
+{
+    solver::Diagnostics d;
+    auto t = load(header(kManipulator, "DRIVES 1 2 3\n") + kReachGoal, d);
+    ASSERT_TRUE(t) << dump(d);
+    TutorialSession s(t);
+    const solver::Model& m = *t->model;
+    const double wrist0 = s.simulation().state().q[m.jointIndex(4)];
+    drive(s, {{4, 1.0}, {6, 1.0}}, 1.0);
+    EXPECT_NEAR(s.simulation().state().q[m.jointIndex(4)], wrist0, 1e-9);
+}
+
+TEST(TutorialSession, LimitBangsAndTheTimeLimit)
+{
+    solver::Diagnostics d;
+    auto t = load(header(kManipulator, "TIME LIMIT 12 PAR 6\nLIMITS PENALTY 2 SPEED 0.5\n") + kReachGoal, d);
+    ASSERT_TRUE(t) << dump(d);
+    TutorialSession s(t);
+    drive(s, {{3, 1.0}}, 11.0);  // the extension runs into its end stop at full speed
+    TutorialResult r = s.result();
+    ASSERT_EQ(r.count(TutorialEvent::Kind::LimitBang), 1);
+    EXPECT_NEAR(r.events.front().t, 10.0 + 0.0, 0.1);  // 0.9 m at 0.090 m/s
+    EXPECT_DOUBLE_EQ(r.penalties, 2.0);
+    drive(s, {{3, -0.2}}, 0.5);  // backing off slowly: no bang
+    drive(s, {{3, 0.3}}, 2.0);   // slowly back onto the stop: no bang either
+    EXPECT_TRUE(s.ended());
+    r = s.result();
+    EXPECT_EQ(r.count(TutorialEvent::Kind::LimitBang), 1);
+    EXPECT_EQ(r.endReason, "time-up");
+    EXPECT_FALSE(r.passed);
+    EXPECT_EQ(r.breakdown[0].points, 0.0);
+}
+
+namespace {
+
+/// liner_station at the pose where the open claws surround the liner's near edge
+/// (models/liner_station.pad "GRASPING IT ON THE CART").
+std::string graspStation(const std::string& goals, const std::string& extra = {})
+{
+    return header(kStation,
+                  "SET 1 -90 DEG\nSET 2 1.46095\nSET 3 0.45\nSET 5 0.413\n"
+                  "GRIP LOAD 15 AT 0 -0.285 -0.065767 TOOL 6 AT 0 0.48 0 TOL 0.03 ANGTOL 3 DEG\n"
+                  "CLAW 8 CLOSE -0.12 OPEN -0.03\n"
+                  "CLAW 9 CLOSE 0.12 OPEN 0.03\n"
+                  "FINGERS 7 8 9\n" + extra) +
+           goals;
+}
+
+}  // namespace
+
+TEST(TutorialSession, ClosingTheClawsOnTheGripGraspsTheLinerWhichThenRisesWithTheArm)
+{
+    solver::Diagnostics d;
+    auto t = load(graspStation("GOAL take GRASP\n NAME ES \"Tome la lainera\" EN \"Take the liner\"\n"
+                               "GOAL up PLACE AT 4.1378 0 0.5 TOL 0.1\n NAME ES \"Súbala\" EN \"Lift it\"\n"),
+                  d);
+    ASSERT_TRUE(t) << dump(d);
+    TutorialSession s(t);
+    const solver::Model& m = *t->model;
+    const int z = m.jointIndex(12);
+    const int lift = m.jointIndex(2);
+    drive(s, {}, 0.2);
+    const double forceBefore = s.simulation().data().driveForce[lift];
+    drive(s, {{8, -1.0}, {9, 1.0}}, 5.0);  // claws close (0.15 m at their speed)
+    ASSERT_EQ(s.result().count(TutorialEvent::Kind::Grasp), 1) << s.result().events.size();
+    EXPECT_EQ(s.progress().goal, 1);
+    EXPECT_TRUE(s.progress().grasped);
+    const double z0 = s.simulation().state().q[z];
+    drive(s, {{2, 1.0}}, 3.0);  // lift the boom
+    const double z1 = s.simulation().state().q[z];
+    EXPECT_GT(z1, z0 + 0.1);
+    // the boom cylinder now carries the liner: its weight's moment (~820 kN, see
+    // models/liner_station.pad "CHECKED") on top of the arm's
+    EXPECT_GT(s.simulation().data().driveForce[lift] - forceBefore, 6e5);
+    // held there until within tolerance of the target, then released: placed
+    EXPECT_FALSE(s.ended());
+}
+
+TEST(TutorialSession, ClawsClosedAwayFromTheGripMissAndReleasingOutOfPlaceIsADrop)
+{
+    solver::Diagnostics d;
+    auto t = load(graspStation("GOAL take GRASP\n NAME ES \"Tome la lainera\" EN \"Take the liner\"\n"
+                               "GOAL put PLACE AT 4.1378 0 1.2 TOL 0.05\n NAME ES \"Póngala\" EN \"Put it\"\n",
+                               "DROP PENALTY 20\n"),
+                  d);
+    ASSERT_TRUE(t) << dump(d);
+    {
+        TutorialSession s(t);
+        drive(s, {{3, -1.0}}, 1.5);  // pull the claws back off the liner's edge
+        drive(s, {{8, -1.0}, {9, 1.0}}, 5.0);
+        const TutorialResult r = s.result();
+        EXPECT_EQ(r.count(TutorialEvent::Kind::Grasp), 0);
+        EXPECT_EQ(r.count(TutorialEvent::Kind::MissedGrasp), 1);
+        EXPECT_FALSE(s.progress().grasped);
+    }
+    TutorialSession s(t);
+    drive(s, {{8, -1.0}, {9, 1.0}}, 5.0);
+    ASSERT_TRUE(s.progress().grasped);
+    drive(s, {{2, 1.0}}, 2.0);
+    const double high = s.simulation().state().q[t->model->jointIndex(12)];
+    drive(s, {{8, 1.0}, {9, -1.0}}, 5.0);  // open the claws in the air
+    const TutorialResult r = s.result();
+    EXPECT_EQ(r.count(TutorialEvent::Kind::Release), 1);
+    ASSERT_EQ(r.count(TutorialEvent::Kind::Drop), 1);
+    EXPECT_DOUBLE_EQ(r.penalties, 20.0);
+    EXPECT_FALSE(s.progress().grasped);
+    drive(s, {}, 1.0);
+    EXPECT_NEAR(s.simulation().state().q[t->model->jointIndex(12)], 0.228, 1e-6) << "fell from " << high;
+}
+
+TEST(TutorialSession, ReleasedWithinToleranceIsPlacedAndFixed)
+{
+    solver::Diagnostics d;
+    // grasp, lift for 2 s: the liner then sits where the PLACE target says
+    auto probe = load(graspStation("GOAL take GRASP\n NAME ES \"a\" EN \"b\"\n"), d);
+    ASSERT_TRUE(probe) << dump(d);
+    Eigen::Vector3d where;
+    {
+        TutorialSession s(probe);
+        drive(s, {{8, -1.0}, {9, 1.0}}, 5.0);
+        ASSERT_TRUE(s.ended());
+    }
+    {
+        auto t2 = load(graspStation("GOAL take GRASP\n NAME ES \"a\" EN \"b\"\nGOAL hold JOINT\n JOINT 7 AT 0.2 TOL 0.001\n NAME ES \"c\" EN \"d\"\n"), d);
+        ASSERT_TRUE(t2) << dump(d);
+        TutorialSession s(t2);
+        drive(s, {{8, -1.0}, {9, 1.0}}, 5.0);
+        drive(s, {{2, 1.0}}, 2.0);
+        where = solver::comPosition(*t2->model, s.simulation().data(), t2->model->bodyIndex(15));
+    }
+    char place[160];
+    std::snprintf(place, sizeof place, "GOAL put PLACE AT %.6f %.6f %.6f TOL 0.05 FIX\n NAME ES \"Póngala\" EN \"Put it\"\n",
+                  where.x(), where.y(), where.z());
+    auto t = load(graspStation(std::string("GOAL take GRASP\n NAME ES \"a\" EN \"b\"\n") + place), d);
+    ASSERT_TRUE(t) << dump(d);
+    TutorialSession s(t);
+    drive(s, {{8, -1.0}, {9, 1.0}}, 5.0);
+    drive(s, {{2, 1.0}}, 2.0);
+    EXPECT_TRUE(s.progress().withinTolerance) << s.progress().distance;
+    drive(s, {{8, 1.0}, {9, -1.0}}, 5.0);
+    ASSERT_TRUE(s.ended());
+    const TutorialResult r = s.result();
+    EXPECT_TRUE(r.completed);
+    EXPECT_EQ(r.count(TutorialEvent::Kind::Drop), 0);
+    // bolted: the liner stays where it was released
+    const Eigen::Vector3d after = solver::comPosition(*t->model, s.simulation().data(), t->model->bodyIndex(15));
+    EXPECT_LT((after - where).norm(), 0.05);
+}
+
+namespace {
+
+/// A yard with a wall in front of the claws and a person to the right of the arm.
+std::string yard(QTemporaryDir& dir)
+{
+    const QString scene = dir.filePath("yard.pad");
+    QFile f(scene);
+    f.open(QIODevice::WriteOnly);
+    f.write("G 1 B 0 BOX 0.6 0.2 0.8 POS 0 4.3 0.21 COLOR 0.8 0.2 0.2\n"
+            "G 2 B 0 CYL 0.2 1.75 POS 1.6 3.0 -0.2 COLOR 0.9 0.6 0.1\n"
+            "G 3 B 0 SPHERE 0.12 POS 1.6 3.0 0.8 COLOR 0.9 0.9 0.1\n");
+    return scene.toStdString();
+}
+
+}  // namespace
+
+TEST(TutorialSession, TouchingTheSceneIsAHitAndTooFastItEndsTheAttempt)
+{
+    QTemporaryDir dir;
+    const std::string scene = yard(dir);
+    for (double hard : {0.5, 0.05}) {
+        solver::Diagnostics d;
+        auto t = load(header(kManipulator, "SCENE \"" + scene + "\"\nAVOID SCENE PENALTY 5 NEAR 0.1 HARD " + std::to_string(hard) + "\n") + kReachGoal, d);
+        ASSERT_TRUE(t) << dump(d);
+        TutorialSession s(t);
+        drive(s, {{3, 1.0}}, 8.5);  // extend into the wall at 0.09 m/s (the end stop is at 10 s)
+        const TutorialResult r = s.result();
+        EXPECT_EQ(r.count(TutorialEvent::Kind::NearMiss), 1);
+        if (hard > 0.09) {
+            ASSERT_EQ(r.count(TutorialEvent::Kind::Hit), 1) << hard;
+            EXPECT_DOUBLE_EQ(r.penalties, 5.0);
+            EXPECT_FALSE(s.ended());
+            EXPECT_LE(s.progress().clearance, 0.0);
+        } else {
+            ASSERT_EQ(r.count(TutorialEvent::Kind::HardHit), 1) << hard;
+            EXPECT_TRUE(s.ended());
+            EXPECT_EQ(r.endReason, "hard-hit");
+            EXPECT_FALSE(r.passed);
+        }
+        const TutorialEvent& e = r.events.back();
+        EXPECT_NEAR(e.value, 0.09, 0.02);  // the speed of the touching point
+    }
+}
+
+TEST(TutorialSession, EnteringAWorkersZoneIsAPenaltyAndTouchingThemEndsTheAttempt)
+{
+    QTemporaryDir dir;
+    const std::string scene = yard(dir);
+    solver::Diagnostics d;
+    auto t = load(header(kManipulator, "SCENE \"" + scene + "\"\nWORKER G 2 3 ZONE 1.0 PENALTY 10\n NAME ES \"el mecánico\" EN \"the fitter\"\n") +
+                      kReachGoal,
+                  d);
+    ASSERT_TRUE(t) << dump(d);
+    TutorialSession s(t);
+    drive(s, {}, 0.1);
+    EXPECT_GT(s.progress().workerDistance, 1.0);
+    EXPECT_FALSE(s.progress().nearWorker);
+    drive(s, {{1, -1.0}}, 2.0);  // slew right, towards the person
+    EXPECT_TRUE(s.progress().nearWorker) << s.progress().workerDistance;
+    TutorialResult r = s.result();
+    ASSERT_EQ(r.count(TutorialEvent::Kind::WorkerZone), 1);
+    EXPECT_EQ(r.events.back().detail, "the fitter");
+    drive(s, {{1, -1.0}}, 6.0);
+    r = s.result();
+    EXPECT_TRUE(s.ended());
+    EXPECT_EQ(r.endReason, "worker-hit");
+    EXPECT_FALSE(r.passed);
+}
+
+TEST(TutorialRun, TheDemonstrationPassesAndACarelessRunFailsWithItsPenalties)
+{
+    solver::Diagnostics d;
+    auto t = loadTutorial(kSource + "/resources/tutorials/t0_reach.tut", d);
+    ASSERT_TRUE(t) << dump(d);
+    StationProfile profile;
+    QString error;
+    ASSERT_TRUE(tutorialProfile(*t, {}, profile, &error)) << error.toStdString();
+    auto log = std::make_shared<InputLog>();
+    ASSERT_TRUE(InputLog::load(QString::fromStdString(t->demoFile), *log, &error)) << error.toStdString();
+    RunOutput out;
+    ASSERT_TRUE(runTutorialWithLog(t, log, profile, out, &error)) << error.toStdString();
+    EXPECT_TRUE(out.result.passed);
+    EXPECT_GE(out.result.score, t->scoring().pass);
+    EXPECT_FALSE(out.samples.empty());
+
+    // careless: the extension slammed into its end stop, the boom never lifted
+    QTemporaryDir dir;
+    std::vector<AutopilotWaypoint> path;
+    ASSERT_TRUE(parseAutopilotPath("3=1.2\n", path, &error));
+    RunOutput careless;
+    ASSERT_TRUE(recordWithAutopilot(t, path, profile, dir.filePath("careless.log"), careless, &error)) << error.toStdString();
+    auto clog = std::make_shared<InputLog>();
+    ASSERT_TRUE(InputLog::load(dir.filePath("careless.log"), *clog, &error));
+    RunOutput replay;
+    ASSERT_TRUE(runTutorialWithLog(t, clog, profile, replay, &error));
+    EXPECT_FALSE(replay.result.passed);
+    EXPECT_EQ(replay.result.count(TutorialEvent::Kind::LimitBang), 1);
+    EXPECT_FALSE(replay.result.completed);
+}
+
+TEST(Autopilot, PathsAreCheckedLineByLine)
+{
+    std::vector<AutopilotWaypoint> p;
+    QString error;
+    ASSERT_TRUE(parseAutopilotPath("# comment\n1=-90deg 2=1.5 tol=0.01\n\nwait=2\n", p, &error));
+    ASSERT_EQ(p.size(), 2u);
+    EXPECT_NEAR(p[0].targets[0].second, -std::numbers::pi / 2, 1e-12);
+    EXPECT_DOUBLE_EQ(p[0].tolerance, 0.01);
+    EXPECT_DOUBLE_EQ(p[1].wait, 2.0);
+    EXPECT_EQ(p[1].line, 4);
+    EXPECT_FALSE(parseAutopilotPath("1=0.5\n2=abc\n", p, &error));
+    EXPECT_TRUE(error.startsWith("line 2")) << error.toStdString();
+    EXPECT_FALSE(parseAutopilotPath("wait=-1\n", p, &error));
+    EXPECT_FALSE(parseAutopilotPath("x=1\n", p, &error));
+}
