@@ -36,6 +36,9 @@ packages=(
   libmujoco-dev libqhull-dev
   # GUI tests: a virtual X server (QOpenGLWidget needs xcb, not `offscreen`)
   xvfb xauth
+  # trainee records on PostgreSQL: Qt's driver, and the server programs (initdb, pg_ctl) that
+  # trainer_tests start a throwaway server with (about 1 s; its default cluster is not used)
+  libqt6sql6-psql postgresql
   # tests
   libgtest-dev libgmock-dev libbenchmark-dev locales
 )

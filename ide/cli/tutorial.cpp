@@ -126,6 +126,10 @@ void printJson(const trainer::Tutorial& t, const trainer::TutorialResult& r, con
     j.key("rms_jerk").num(r.rmsJerk);
     j.key("penalties").num(r.penalties);
     j.key("final_point").beginArray().num(r.finalPoint.x()).num(r.finalPoint.y()).num(r.finalPoint.z()).endArray();
+    j.key("final_axes").beginArray();
+    for (int c = 0; c < 3; ++c) j.beginArray().num(r.finalAxes(0, c)).num(r.finalAxes(1, c)).num(r.finalAxes(2, c)).endArray();
+    j.endArray();
+    if (t.loadBody >= 0) j.key("final_load").beginArray().num(r.finalLoad.x()).num(r.finalLoad.y()).num(r.finalLoad.z()).endArray();
     j.endObject();
     j.key("events").beginArray();
     for (const trainer::TutorialEvent& e : r.events) {

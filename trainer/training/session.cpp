@@ -556,6 +556,8 @@ TutorialResult TutorialSession::result() const
     const Scoring& sc = m_tutorial->scoring();
     r.time = time();
     r.finalPoint = trackPoint();
+    if (m_tutorial->trackBody >= 0) r.finalAxes = m_sim->data().X_wb[std::size_t(m_tutorial->trackBody)].linear();
+    if (m_tutorial->loadBody >= 0) r.finalLoad = solver::comPosition(*m_tutorial->model, m_sim->data(), m_tutorial->loadBody);
     r.rmsJerk = m_jerkCount > 0 ? std::sqrt(m_jerkSquares / double(m_jerkCount)) : 0.0;
     const bool completed = r.completed;
     ScoreItem time{"time", r.time, 0.0, sc.wTime};

@@ -82,6 +82,8 @@ struct TutorialResult {
     double rmsJerk = 0.0;         ///< of the tracked point [m/s³]
     double penalties = 0.0;
     Eigen::Vector3d finalPoint = Eigen::Vector3d::Zero();  ///< where the tracked point ended [m]
+    Eigen::Matrix3d finalAxes = Eigen::Matrix3d::Identity();  ///< the tracked body's axes then (columns, world)
+    Eigen::Vector3d finalLoad = Eigen::Vector3d::Zero();   ///< the load's centre of mass then (GRIP) [m]
     int count(TutorialEvent::Kind k) const;
     /// Translated advice, most valuable first.
     QStringList improvements() const;

@@ -1,0 +1,231 @@
+#pragma once
+// Trainee records (docs/records.md): operators, their attempts at tutorials, each
+// attempt's score breakdown and event log, in an SQLite file (the default:
+// <AppDataLocation>/records.sqlite) or on a PostgreSQL server shared by several
+// stations. One class, RecordsDb, on Qt SQL; the SQL is the same for both back ends
+// except the id column type, the transaction start and the liveness locks.
+//
+// Crash safety: every call that writes is one transaction, committed before it returns
+// (SQLite in WAL mode with synchronous=FULL), so nothing is ever half-written.
+// beginAttempt() commits the attempt as "running"; a process that dies during the
+// attempt leaves it so, with the events it had committed, and the next open() marks it
+// "interrupted". An attempt being recorded by a live RecordsDb (this process or
+// another) is never marked: its owner holds a lock (a QLockFile next to the SQLite
+// file, an advisory lock on PostgreSQL) that dies with it.
+//
+// Errors: calls return false / 0 and, when `error` is given, a sentence for people
+// (English, through tr()) saying what failed and what to do: the database in use by
+// another program, read-only, disk full, not a records database, from a newer Padrob,
+// a missing PostgreSQL driver, a server that refuses the connection. The password of
+// a PostgreSQL connection is never logged nor put in a message. After an error the
+// object stays open and usable for reads where the database allows.
+//
+// Threads: a RecordsDb has its own uniquely named QSqlDatabase connection and is used
+// only from the thread that opened it (calls from another thread fail with an error).
+// Several may be open in one process, one per thread, on the same database.
+
+#include <QDateTime>
+#include <QList>
+#include <QString>
+
+#include <limits>
+#include <memory>
+
+namespace trainer::records {
+
+/// A trainee. `code` is the operator's id as a trainer types it (badge number,
+/// national id…), unique in the database.
+struct Operator {
+    qint64 id = 0;
+    QString code;
+    QString name;
+    QDateTime created;  ///< UTC
+
+    bool operator==(const Operator&) const = default;
+};
+
+enum class AttemptStatus {
+    Running,      ///< begun, not finished yet (or its process is alive and recording)
+    Finished,     ///< finished and scored
+    Aborted,      ///< stopped by the operator or trainer, scored as far as it went
+    Interrupted,  ///< its process stopped (crash, power cut) during the attempt
+};
+/// "running", "finished", "aborted", "interrupted": the values stored in the database.
+QString statusName(AttemptStatus status);
+/// The status named `name`; false when it is none of statusName()'s values.
+bool statusFromName(const QString& name, AttemptStatus& status);
+
+/// One line of an attempt's score: what was measured and what it earned
+/// (trainer::ScoreItem of training/session.h, with its label as shown).
+struct ScoreItem {
+    QString key;    ///< stable id of the criterion ("time", "path", "smooth", "safety"…)
+    QString label;  ///< what the trainee saw, in the attempt's language
+    double value = 0;      ///< the measure, in the criterion's own unit (s, %, m/s³, points)
+    double points = 0;     ///< its contribution to the score
+    double maxPoints = 0;  ///< the most it could have contributed (0 = no maximum)
+
+    bool operator==(const ScoreItem&) const = default;
+};
+
+/// Something that happened during an attempt.
+struct AttemptEvent {
+    double t = 0;  ///< time since the attempt began [s]
+    QString kind;  ///< "step", "hint", "collision", "limit"… (the tutorial runner's vocabulary)
+    QString text;
+    /// a number that goes with it (an impact speed, a step index…); NaN = none, stored as NULL
+    double value = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// What beginAttempt() records.
+struct AttemptStart {
+    qint64 operatorId = 0;
+    QString tutorialId;     ///< the tutorial's stable id
+    QString tutorialTitle;  ///< its title as shown (in `language`)
+    QString language;       ///< the UI language of the attempt ("en", "es"…)
+    QDateTime started;      ///< invalid = now; stored in UTC to the millisecond
+};
+
+/// What finishAttempt() records.
+struct AttemptResult {
+    AttemptStatus status = AttemptStatus::Finished;  ///< Finished or Aborted
+    double durationS = 0;  ///< [s]
+    double score = 0;      ///< 0…100
+    int stars = 0;         ///< 0…3
+    bool passed = false;
+    QList<ScoreItem> breakdown;  ///< keys unique within the attempt
+};
+
+/// An attempt as stored.
+struct Attempt {
+    qint64 id = 0;
+    qint64 operatorId = 0;
+    QString tutorialId;
+    QString tutorialTitle;
+    QDateTime started;  ///< UTC
+    double durationS = 0;  ///< [s]; 0 while running or interrupted
+    double score = 0;      ///< 0…100; 0 while running or interrupted
+    int stars = 0;         ///< 0…3
+    bool passed = false;
+    AttemptStatus status = AttemptStatus::Running;
+    QString language;
+    QList<ScoreItem> breakdown;  ///< in the order given to finishAttempt()
+    QList<AttemptEvent> events;  ///< in the order appended
+};
+
+/// One tutorial in an operator's progress: scores are of finished attempts only.
+struct TutorialProgress {
+    QString tutorialId;
+    QString tutorialTitle;  ///< the title of the latest attempt
+    int attempts = 0;       ///< of every status
+    double bestScore = 0;   ///< 0…100
+    int bestStars = 0;      ///< 0…3
+    bool passed = false;    ///< at least one finished attempt passed
+    QDateTime lastAttempt;  ///< UTC
+};
+
+/// An operator with their progress, for the trainer's view.
+struct OperatorProgress {
+    Operator op;
+    int attempts = 0;          ///< of every status, every tutorial
+    int tutorialsPassed = 0;   ///< tutorials with a passed, finished attempt
+    QDateTime lastAttempt;     ///< UTC; invalid when there is none
+    QList<TutorialProgress> tutorials;  ///< by tutorial id
+};
+
+/// A PostgreSQL server. The password is kept only in memory and in the connection.
+struct PostgresConfig {
+    QString host;  ///< name, address, or a Unix socket folder ("/run/postgresql"); "" = libpq's default
+    int port = 5432;
+    QString database;  ///< required: the records' database (one of their own is best)
+    QString user;
+    QString password;
+    int connectTimeoutS = 5;  ///< give up connecting after this many seconds
+
+    /// Whether a server is configured (a database name is given).
+    bool isSet() const { return !database.isEmpty(); }
+    /// "user@host:port/database", never the password (for messages and the UI).
+    QString describe() const;
+};
+
+/// Where the records are.
+struct RecordsLocation {
+    PostgresConfig postgres;  ///< used when set (isSet()); the SQLite file otherwise
+    QString sqlitePath;       ///< "" = RecordsDb::defaultSqlitePath()
+    bool readOnly = false;    ///< only read: no upgrade, no writes (SQLite opens read-only)
+    int busyTimeoutMs = 2000; ///< how long to wait for another program's lock before giving up
+};
+
+class RecordsDb {
+public:
+    RecordsDb();
+    ~RecordsDb();  ///< close()s
+    RecordsDb(const RecordsDb&) = delete;
+    RecordsDb& operator=(const RecordsDb&) = delete;
+
+    /// <AppDataLocation>/records.sqlite (e.g. ~/.local/share/padrob/records.sqlite).
+    static QString defaultSqlitePath();
+    /// The schema version this Padrob reads and writes (the last migration's number).
+    static int schemaVersion();
+
+    /// Opens (creating or upgrading unless read-only) the records at `where`. On an
+    /// open database: marks attempts left running by dead processes interrupted
+    /// (interruptedAtOpen()). False with `error` when it cannot: the database is
+    /// then closed and, when it was refused (newer schema, not a records database),
+    /// untouched.
+    bool open(const RecordsLocation& where, QString* error = nullptr);
+    /// open() on an SQLite file ("" = the default path).
+    bool openSqlite(const QString& path = {}, bool readOnly = false, QString* error = nullptr);
+    /// open() on a PostgreSQL server.
+    bool openPostgres(const PostgresConfig& server, QString* error = nullptr);
+    /// Closes; attempts of this object still running are recorded as interrupted.
+    void close();
+
+    bool isOpen() const;
+    bool isPostgres() const;
+    bool isReadOnly() const;
+    /// The file path, or "user@host:port/database" (never the password).
+    QString where() const;
+    /// How many running attempts of dead processes open() marked interrupted.
+    int interruptedAtOpen() const;
+
+    // operators
+
+    /// Adds an operator; `code` is trimmed and must be new and non-empty. Returns the
+    /// id, 0 on failure (`error`: e.g. the code is taken).
+    qint64 addOperator(const QString& code, const QString& name, QString* error = nullptr);
+    /// Changes an operator's name.
+    bool renameOperator(qint64 operatorId, const QString& name, QString* error = nullptr);
+    /// The operator with `code` (trimmed). False when there is none (`error` empty)
+    /// or on failure (`error` says why).
+    bool findOperator(const QString& code, Operator& out, QString* error = nullptr) const;
+
+    // attempts (the recording side)
+
+    /// Records a new attempt as running and commits it. Returns its id, 0 on failure.
+    qint64 beginAttempt(const AttemptStart& start, QString* error = nullptr);
+    /// Appends events to an attempt: the whole batch is committed or none of it.
+    /// Each call costs a disk sync: append in batches (e.g. once a second), not per event.
+    bool appendEvents(qint64 attemptId, const QList<AttemptEvent>& events, QString* error = nullptr);
+    /// Records the result (status, score, breakdown) in one transaction; the attempt
+    /// then no longer counts as running.
+    bool finishAttempt(qint64 attemptId, const AttemptResult& result, QString* error = nullptr);
+
+    // queries (the trainer's view)
+
+    /// Every operator (by code) with their progress.
+    bool progress(QList<OperatorProgress>& out, QString* error = nullptr) const;
+    /// An operator's attempts, newest first, with breakdown and (when `withEvents`) events.
+    bool attemptsOf(qint64 operatorId, QList<Attempt>& out, bool withEvents = true, QString* error = nullptr) const;
+    /// One attempt with breakdown and events. False when there is none or on failure.
+    bool attempt(qint64 attemptId, Attempt& out, QString* error = nullptr) const;
+    /// Writes every attempt (by operator code, then start) to a CSV file: a header,
+    /// one row per attempt, RFC 4180 (comma, CRLF, "quoted" where needed, UTF-8),
+    /// replacing `path` only once it is complete (QSaveFile).
+    bool exportCsv(const QString& path, QString* error = nullptr) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> d;
+};
+
+}  // namespace trainer::records
