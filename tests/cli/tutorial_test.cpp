@@ -1,0 +1,80 @@
+// `padrob tutorial` through the real binary: every shipped tutorial checks clean and
+// its demonstration passes (exit 0); a careless run fails (exit 1) with its penalties;
+// bad input exits 2 with where and why.
+
+#include "cli_run.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+using test::padrob;
+
+namespace {
+
+std::vector<std::string> shippedTutorials()
+{
+    std::vector<std::string> out;
+    for (const auto& e : std::filesystem::directory_iterator(std::string(PADROB_SOURCE_DIR) + "/resources/tutorials")) {
+        if (e.path().extension() == ".tut") out.push_back("resources/tutorials/" + e.path().filename().string());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+}  // namespace
+
+TEST(CliTutorial, EveryShippedTutorialChecksCleanAndItsDemonstrationPasses)
+{
+    const auto all = shippedTutorials();
+    ASSERT_GE(all.size(), 4u);
+    for (const std::string& t : all) {
+        const test::CliRun check = padrob("tutorial " + t);
+        EXPECT_EQ(check.status, 0) << t << "\n" << check.err;
+        EXPECT_EQ(check.err, "") << t;
+        const test::CliRun run = padrob("tutorial " + t + " --demo --json");
+        EXPECT_EQ(run.status, 0) << t << "\n" << run.out << run.err;
+        EXPECT_NE(run.out.find("\"passed\": true"), std::string::npos) << t << "\n" << run.out;
+        EXPECT_NE(run.out.find("\"end_reason\": \"completed\""), std::string::npos) << t;
+    }
+}
+
+TEST(CliTutorial, ACarelessRunFailsWithThePenaltiesItEarned)
+{
+    // the claws driven straight into the liner on its cart instead of around its edge
+    const std::string path = test::writeTemp("careless.path", "1=-90deg\n3=0.9\n");
+    const std::string log = test::writeTemp("careless.log", "");
+    const test::CliRun rec = padrob("tutorial resources/tutorials/t3_approach.tut --autopilot '" + path + "' --record '" + log + "'");
+    EXPECT_EQ(rec.status, 1) << rec.out << rec.err;
+    const test::CliRun run = padrob("tutorial resources/tutorials/t3_approach.tut --input '" + log + "'");
+    EXPECT_EQ(run.status, 1) << run.out << run.err;
+    EXPECT_NE(run.out.find("FAILED"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find(" hit "), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("(-5.0)"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("to improve:"), std::string::npos) << run.out;
+}
+
+TEST(CliTutorial, BadInputExitsTwoWithWhereAndWhy)
+{
+    const std::string bad = test::writeTemp("bad.tut", "TUTORIAL B\nTITLE ES \"a\" EN \"b\"\nMODEL \"nope.pad\"\nGOAL g GRASP\n");
+    test::CliRun r = padrob("tutorial '" + bad + "'");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("bad.tut:3:7: error: the model 'nope.pad' cannot be used"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("bad.tut:4:1: error: goal 'g' has no NAME"), std::string::npos) << r.err;
+
+    const std::string corrupt = test::writeTemp("corrupt.log", "# padrob input log 1\n0.0,0,garbage\n");
+    r = padrob("tutorial resources/tutorials/t0_reach.tut --input '" + corrupt + "'");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("corrupt.log"), std::string::npos) << r.err;
+
+    r = padrob("tutorial resources/tutorials/t0_reach.tut --demo --input x.log");
+    EXPECT_EQ(r.status, 2);
+    r = padrob("tutorial");
+    EXPECT_EQ(r.status, 2);
+    r = padrob("tutorial resources/tutorials/t0_reach.tut --lang fr");
+    EXPECT_EQ(r.status, 2);
+    r = padrob("tutorial --help");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_NE(r.out.find("--demo"), std::string::npos);
+}
