@@ -78,10 +78,12 @@ ReachCheck checkReach(const solver::Model& model, const std::vector<char>& enabl
     double angleTolerance = std::numbers::pi;
     for (const Alignment& a : align) angleTolerance = std::min(angleTolerance, a.tolerance);
     t.angleTolerance = 0.5 * angleTolerance;
-    std::vector<Eigen::Matrix3d> attitudes = candidateAttitudes(align);
-    if (attitudes.empty()) attitudes.push_back(Eigen::Matrix3d::Identity());
-    for (std::size_t k = 0; k < attitudes.size(); ++k) {
-        if (!align.empty()) t.orientation = attitudes[k];
+    // first the position alone (its pose may already meet the alignments), then each
+    // attitude that meets them
+    const std::vector<Eigen::Matrix3d> attitudes = candidateAttitudes(align);
+    for (std::size_t k = 0; k <= attitudes.size(); ++k) {
+        if (k == 0) t.orientation.reset();
+        else t.orientation = attitudes[k - 1];
         // the frame's attitude is the body's: the alignments are in the body's frame
         const solver::IkResult r = solver::inverseKinematics(model, frame, t, state.q, data, options);
         // alignments measured on the result (a one-alignment goal leaves a free turn)
