@@ -163,6 +163,19 @@ struct CollisionWorld::Impl {
 
 namespace {
 
+/// Overlapping shapes: the plain query gives no points (its distance is −1); the signed
+/// one gives the depth (negative) and the deepest points. Only then: it is less exact
+/// (GJK/EPA tolerances) than the plain query on separate shapes.
+void signedDistance(fcl::CollisionObjectd* a, fcl::CollisionObjectd* b, fcl::DistanceResultd& result)
+{
+    fcl::DistanceRequestd request;
+    request.enable_nearest_points = true;
+    request.enable_signed_distance = true;
+    result.clear();
+    fcl::distance(a, b, request, result);
+    result.min_distance = std::min(result.min_distance, 0.0);
+}
+
 struct Query {
     const std::vector<CollisionShape>* shapes;
     const std::vector<int>* parent;
@@ -195,6 +208,7 @@ bool distanceCallback(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void
     fcl::DistanceResultd result;
     result.min_distance = q->best.distance;
     fcl::distance(mine, other, request, result);
+    if (result.min_distance < 0) signedDistance(mine, other, result);
     if (result.min_distance < q->best.distance) {
         q->best.distance = result.min_distance;
         q->best.shapeA = q->shape;
@@ -309,6 +323,7 @@ void closer(Clearance& best, fcl::CollisionObjectd* a, fcl::CollisionObjectd* b,
     request.enable_nearest_points = true;
     fcl::DistanceResultd result;
     fcl::distance(a, b, request, result);
+    if (result.min_distance < 0) signedDistance(a, b, result);
     if (result.min_distance < best.distance) {
         best.distance = result.min_distance;
         best.shapeA = ia;

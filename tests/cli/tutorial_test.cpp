@@ -55,6 +55,20 @@ TEST(CliTutorial, ACarelessRunFailsWithThePenaltiesItEarned)
     EXPECT_NE(run.out.find("to improve:"), std::string::npos) << run.out;
 }
 
+TEST(CliTutorial, SwingingTheLinerIntoTheWallIsAHardHitThatEndsTheAttempt)
+{
+    // T6 flown as T5: the boom not lifted over the blast wall; the liner slews into it at
+    // ~0.5 m/s (0.131 rad/s at ~4 m)
+    const std::string path = test::writeTemp("wall.path", "1=-90deg\n5=0.413 2=1.46095\n3=0.45\n9=0.1415\n2=1.50\n1=-45deg\n");
+    const std::string log = test::writeTemp("wall.log", "");
+    padrob("tutorial resources/tutorials/t6_obstacles.tut --autopilot '" + path + "' --record '" + log + "'");
+    const test::CliRun run = padrob("tutorial resources/tutorials/t6_obstacles.tut --input '" + log + "' --json");
+    EXPECT_EQ(run.status, 1) << run.out << run.err;
+    EXPECT_NE(run.out.find("\"end_reason\": \"hard-hit\""), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("\"kind\": \"grasp\""), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("\"detail\": \"scene G 10"), std::string::npos) << run.out;  // the wall (G 101/102)
+}
+
 TEST(CliTutorial, BadInputExitsTwoWithWhereAndWhy)
 {
     const std::string bad = test::writeTemp("bad.tut", "TUTORIAL B\nTITLE ES \"a\" EN \"b\"\nMODEL \"nope.pad\"\nGOAL g GRASP\n");
