@@ -76,6 +76,12 @@ const QList<Migration>& migrations()
              " value DOUBLE PRECISION)",
              "CREATE INDEX attempt_events_by_attempt ON attempt_events (attempt_id, id)",
          }},
+        {2,
+         "events: the points they cost and what they concern (a goal, a shape, a drive)",
+         {
+             "ALTER TABLE attempt_events ADD COLUMN penalty DOUBLE PRECISION NOT NULL DEFAULT 0",
+             "ALTER TABLE attempt_events ADD COLUMN detail TEXT NOT NULL DEFAULT ''",
+         }},
     };
     return steps;
 }
@@ -681,7 +687,7 @@ bool RecordsDb::Impl::loadAttempts(const QString& filter, const QVariant& arg, b
 
     if (withEvents) {
         if (!run(q,
-                 "SELECT e.attempt_id, e.t, e.kind, e.text, e.value FROM attempt_events e"
+                 "SELECT e.attempt_id, e.t, e.kind, e.text, e.value, e.penalty, e.detail FROM attempt_events e"
                  " JOIN attempts a ON a.id = e.attempt_id WHERE " +
                      filter + " ORDER BY e.attempt_id, e.id",
                  {arg}))
@@ -689,8 +695,8 @@ bool RecordsDb::Impl::loadAttempts(const QString& filter, const QVariant& arg, b
         while (q.next()) {
             const auto it = index.constFind(q.value(0).toLongLong());
             if (it == index.constEnd()) continue;
-            list[*it].events.append(
-                {q.value(1).toDouble(), q.value(2).toString(), q.value(3).toString(), doubleOrNaN(q.value(4))});
+            list[*it].events.append({q.value(1).toDouble(), q.value(2).toString(), q.value(3).toString(),
+                                     doubleOrNaN(q.value(4)), q.value(5).toDouble(), q.value(6).toString()});
         }
         if (q.lastError().isValid()) return fail(error, what, q.lastError());
     }
@@ -896,7 +902,8 @@ bool RecordsDb::appendEvents(qint64 attemptId, const QList<AttemptEvent>& events
     if (!run(q, "SELECT id FROM attempts WHERE id = ?", {attemptId})) return d->fail(error, what, q.lastError());
     if (!q.next()) return d->fail(error, what, Tr::tr("there is no attempt %1").arg(attemptId));
     q.finish();
-    if (!q.prepare("INSERT INTO attempt_events (attempt_id, t, kind, text, value) VALUES (?, ?, ?, ?, ?)"))
+    if (!q.prepare("INSERT INTO attempt_events (attempt_id, t, kind, text, value, penalty, detail)"
+                   " VALUES (?, ?, ?, ?, ?, ?, ?)"))
         return d->fail(error, what, q.lastError());
     for (const AttemptEvent& e : events) {
         q.bindValue(0, attemptId);
@@ -904,6 +911,8 @@ bool RecordsDb::appendEvents(qint64 attemptId, const QList<AttemptEvent>& events
         q.bindValue(2, e.kind);
         q.bindValue(3, e.text);
         q.bindValue(4, nullableDouble(e.value));
+        q.bindValue(5, std::isfinite(e.penalty) ? e.penalty : 0.0);
+        q.bindValue(6, e.detail.isNull() ? QString::fromLatin1("") : e.detail);  // a null QString binds NULL
         if (!q.exec()) return d->fail(error, what, q.lastError());
     }
     q.finish();

@@ -69,11 +69,19 @@ struct ScoreItem {
 
 /// Something that happened during an attempt.
 struct AttemptEvent {
+    AttemptEvent() = default;
+    AttemptEvent(double t_, QString kind_, QString text_, double value_ = std::numeric_limits<double>::quiet_NaN(),
+                 double penalty_ = 0, QString detail_ = {})
+        : t(t_), kind(std::move(kind_)), text(std::move(text_)), value(value_), penalty(penalty_), detail(std::move(detail_))
+    {
+    }
     double t = 0;  ///< time since the attempt began [s]
     QString kind;  ///< "step", "hint", "collision", "limit"… (the tutorial runner's vocabulary)
     QString text;
     /// a number that goes with it (an impact speed, a step index…); NaN = none, stored as NULL
     double value = std::numeric_limits<double>::quiet_NaN();
+    double penalty = 0;  ///< points the event cost
+    QString detail;      ///< what it concerns: a goal's id, a shape, a drive (as the model names it)
 };
 
 /// What beginAttempt() records.
