@@ -8,14 +8,16 @@ import math
 R = 36 * 0.3048 / 2            # shell's inner radius: 36'-0" diameter = 10.9728 m
 L = (16 + 9 / 12) * 0.3048     # effective grinding length 16'-9" = 5.1054 m
 SHELL_T = 0.075                # shell plate thickness
-AX, AZ = 1.30, 0.21            # mill axis: along y, through x = AX, z = AZ
+AX, AZ = 1.30, 0.30            # mill axis: along y, through x = AX, z = AZ (see PLACEMENT)
 Y0 = -1.55                     # feed end: the liner cart (y -1.5 … 1.5) just inside
 Y1 = Y0 + L                    # discharge end
 ROWS = 40                      # liner rows around the shell (9 degrees: 0.861 m chord)
 PLATE_T, LIFTER_H = 0.18, 0.253
+PLATE_W = 0.80                 # drawn width of the mounted liners' plates (see the header)
 LIFTER_W = 0.30
 FLOOR_Z = -0.98                # top of the remaining charge the crew stands on
 EMPTY_ROW, EMPTY_RING = 20, 0  # the liner taken out: 9 o'clock, feed-end ring
+WORKER_1, WORKER_2 = (-3.3, 3.25), (4.4, 2.9)  # where the two workers stand (x, y)
 
 out = []
 g = [0]
@@ -47,28 +49,99 @@ header = f"""// ================================================================
 //
 // PLACEMENT (the manipulator's frame: z up, y forward along the arm at rest,
 //   slew axis at x = y = 0, boom pivot height z = 0.21 m):
-//   - mill axis along y, through x = {AX} m, z = {AZ} m (the arm's height at
-//     rest): the manipulator stands inside the mill, {AX} m off the axis, so
-//     that slewed to the left (-x) the arm reaches the shell at 9 o'clock,
-//     where the liner to change is; the mill spans y = {Y0:.4f} … {Y1:.4f} m
-//     (feed end, discharge end): the liner cart of models/liner_station.pad
-//     (y -1.5 … 1.5) fits with 5 cm to spare, and at rest the arm's piston is
-//     0.12 m from the discharge-end grate (the mill is only 5.1 m long: the
-//     arm extended along the axis hits it).
+//   - mill axis along y, through x = {AX} m, z = {AZ} m: the manipulator
+//     stands inside the mill, {AX} m off the axis, so that slewed to the left
+//     (-x) the arm reaches the shell at 9 o'clock, where the liner to change
+//     is. The axis is {AZ - 0.21:.2f} m above the boom's pivot (it was at the pivot's
+//     height, 0.21 m): a liner mounted at 9 o'clock has its centre of mass at
+//     the axis' height, and liner_station.pad's liner cannot go below 0.228 m
+//     (its z stop C 12, a plane everywhere: the cart's timbers). The
+//     mill spans y = {Y0:.4f} … {Y1:.4f} m (feed end, discharge end): the
+//     liner cart of models/liner_station.pad (y -1.5 … 1.5) fits with 5 cm to
+//     spare, and at rest the arm's piston is 0.12 m from the discharge-end
+//     grate (the mill is only 5.1 m long: the arm extended along the axis
+//     hits it).
 //   - shell: inner radius {R:.4f} m (36'-0" / 2), {SHELL_T} m plate.
 //   - liners: {ROWS} rows around (every {360/ROWS:g}°), two rings along the
-//     length ({L/2:.4f} m each): a plate {PLATE_T} m thick and a lifter bar
-//     {LIFTER_H} m high, {LIFTER_W} m wide (drawn as boxes; the real plates are
-//     curved to the shell: 16.5 mm at mid-width). Row {EMPTY_ROW} (9 o'clock,
-//     x = {AX - R:.4f} m at z = {AZ} m) of the feed-end ring is EMPTY: the
-//     mounting position of the new liner (its bolt holes: 2 x 2 pads on the
-//     shell there).
+//     length ({L/2:.4f} m each): a plate {PLATE_T} m thick, drawn {PLATE_W} m
+//     wide, and a lifter bar {LIFTER_H} m high, {LIFTER_W} m wide (drawn as
+//     boxes; the real plates are curved to the shell: 16.5 mm at mid-width).
+//     A box's sides are parallel to its own radius, so its inner corners lean
+//     into the next row: drawn 0.84 m wide they stood in the way of the new
+//     liner (0.85 m wide at its back) going into its slot; at {PLATE_W} m it goes
+//     in straight along the radius (1 cm to spare each side). Row {EMPTY_ROW}
+//     (9 o'clock, x = {AX - R:.4f} m at z = {AZ} m) of the feed-end ring is
+//     EMPTY: the mounting position of the new liner (its bolt holes: 2 x 2
+//     pads on the shell there, 20 mm proud of it).
 //   - ends: the feed-end head with its opening (radius 2.2 m) and the
 //     discharge-end grate.
 //   - floor: the charge left in the mill, levelled at z = {FLOOR_Z} m (the
 //     liner cart of models/liner_station.pad stands on it); the manipulator's
 //     base flange is bedded 0.1 m into it.
-//   - two workers (1.75 m, hard hats) and two work lights on tripods.
+//   - two workers (1.75 m, hard hats) at x, y = {WORKER_1[0]}, {WORKER_1[1]} and
+//     {WORKER_2[0]}, {WORKER_2[1]}, in the discharge end's corners: more than 1 m
+//     from the arm and the liner along the path below (the arm sweeps the
+//     rest of the floor); two work lights on tripods.
+//
+// THE LINER'S MOUNTING POSITION AND A PATH TO IT (models/liner_station.pad in
+//   this mill; checked by tests/solver/kinematics/liner_mill_reach_test.cpp,
+//   which holds the same numbers: change both together).
+//   Mounting target, row {EMPTY_ROW} of the feed-end ring: the liner's back on
+//   the bore, its face towards the axis, its length along it, its bolt holes
+//   (±0.85 m along, ±0.2 m across) over the four pads: the liner's centre of
+//   mass at (-4.023099, -0.273650, 0.300000) (0.163301 m inside the bore at 9
+//   o'clock, the ring's middle), attitude C 13 yaw -90°, C 14 pitch 0°, C 15
+//   roll -90° (length along -y, width downwards, face +x; the liner turned
+//   end for end, +90° 0° +90°, is the same). Its end is then 1.4 mm from the
+//   feed-end head.
+//   The grip (liner_station.pad, the claws across the plate at its edge):
+//   the liner's centre of mass at (0, 0.764486, 0.067960) in the head's frame
+//   (body 6), its axes the head's turned +0.4397° about the head's x.
+//   Waypoints, joints C 1 … C 9 (C 1, C 4, C 6 in rad; C 2, C 5 the
+//   cylinders' lengths and the rest in m; straight lines in the joints'
+//   angles between them) -> the liner's centre of mass and C 13/14/15 [°]:
+//     start   0 1.464 0 0 0.412 0 0.075 0 0 (QI) -> on the cart
+//             (4.1378, 0, 0.2280) -90/0/0
+//     front   -1.570796 1.460950 0.15 0 0.413 0 0.075 0 0: the open claws
+//             0.30 m before the liner's near edge
+//     grasp   the same with C 3 0.45: the claws round the edge
+//     closed  the same with C 8 -0.1397, C 9 0.1415: gripped (weld it here)
+//     lift    -1.570796 1.478151 0.431222 0 0.403152 0 (C 7-9 as closed)
+//             -> (4.1378, 0, 0.4780) -90/0/0
+//     pull    -1.570796 1.480480 0.028893 0 0.401747 0 -> (3.7378, 0, 0.4780)
+//     raise   -1.570796 1.567 0 0 0.333342 0 -> (3.4708, 0, 1.6243) level
+//     roll    C 6 3.141593 (a half turn: the liner upside down)
+//             -> (3.4697, 0, 1.4884) 90/0/-179.12
+//     tilt    -1.570796 1.61 0 0 0.1 3.141593: hanging 51° from level
+//             -> (2.7484, 0, 1.0728) 90/0/-129.10
+//     swing   C 1 1.623156, through +y (the feed-end opening is too small for
+//             the liner) -> (-2.7447, -0.1438, 1.0728) -87/0/-129.10
+//     present 1.640381 1.564252 0.638685 0.001028 0.044 3.212055 -> turned
+//             as mounted, (-3.0001, -0.2137, 0.2999) -90/0/-90.02: in front
+//             of its slot, 1.02 m short of the seat.
+//   Along it (sampled every 3 cm of motion or less) the arm stays 6.7 cm or
+//   more from the scene and the cart (the lower claw over the deck), the
+//   liner 6.1 cm (presented, from the feed-end head) once off the timbers,
+//   the workers 1.08 m, the liner 0.54 m from the boom and the wrist, its
+//   centre of mass 0.30 m up or more.
+//   NOT REACHED: THE SEAT. Held by its edge, the liner has the head beyond
+//   that edge in its own plane, the head's mast reaching 0.38 m past the
+//   liner's back: on the seat the head would be in row {EMPTY_ROW - 1}'s liner and in
+//   the shell. Moved out along the radius with the liner, the head clears
+//   row {EMPTY_ROW - 1}'s lifter only with the liner 0.9 m out ("present",
+//   1.02 m out, leaves it 13 cm); and the arm, holding it so, ends 0.26 m
+//   and 19° short of the seat (the nearest inverse kinematics finds). No
+//   placement of the mill helps: the grip in liner_station.pad has to change.
+//   A GRIP ON THE LIFTER BAR would seat it from here: the head looking at the
+//   liner's face, the claws across the lifter (the teeth's centre 0.2 m
+//   above the centre of mass; C 7 0.17, C 8 -0.086, C 9 0.086), the liner's
+//   centre of mass at (0, 0.68, 0) in the head's frame and its x, y, z the
+//   head's x, z, -y. On the seat: 1.675318 1.469965 0.424419 -0.104574
+//   0.408836 3.1383; 0.30 m out: 1.688839 1.470693 0.125355 -0.118115
+//   0.408428 3.13744; pushed in straight between them, the arm stays 12.8 cm
+//   from everything and the liner is free until its back meets the pads. But
+//   with that grip the liner cannot be taken where the cart stands: the head
+//   would have to look down on the lifter 4.1 m out, 0.28 m beyond its reach.
 // =============================================================================
 
 GRAVITY 0 0 -9.81
@@ -94,7 +167,7 @@ for ring in range(2):
         deg = -math.degrees(phi)          # ROT about +y by -phi takes +x to (cos phi, 0, sin phi)
         rp = R - PLATE_T / 2
         rl = R - PLATE_T - LIFTER_H / 2
-        G(f"BOX {fmt(PLATE_T, L / 2 - 0.02, 0.84)} POS {fmt(AX + rp * c, yc, AZ + rp * s)} ROT 0 1 0 {deg:.3f} "
+        G(f"BOX {fmt(PLATE_T, L / 2 - 0.02, PLATE_W)} POS {fmt(AX + rp * c, yc, AZ + rp * s)} ROT 0 1 0 {deg:.3f} "
           f"COLOR 0.42 0.40 0.37", f"liner, ring {ring + 1}, row {k}")
         G(f"BOX {fmt(LIFTER_H, L / 2 - 0.02, LIFTER_W)} POS {fmt(AX + rl * c, yc, AZ + rl * s)} ROT 0 1 0 {deg:.3f} "
           f"COLOR 0.38 0.36 0.33", f"lifter, ring {ring + 1}, row {k}")
@@ -117,7 +190,8 @@ G(f"BOX {fmt(2 * half - 0.2, L - 0.1, 0.40)} POS {fmt(AX, (Y0 + Y1) / 2, FLOOR_Z
   "the charge left in the mill, levelled")
 
 # workers: legs, body, head, hard hat
-for name, (x, y) in (("worker 1", (-2.3, 1.7)), ("worker 2", (2.6, -1.0))):
+# (where they stand: at least 1 m from the arm and the liner along the path in the header)
+for name, (x, y) in (("worker 1", WORKER_1), ("worker 2", WORKER_2)):
     G(f"CYL 0.16 0.85 POS {fmt(x, y, FLOOR_Z + 0.425)} COLOR 0.15 0.20 0.45", name + ": legs")
     G(f"CYL 0.21 0.65 POS {fmt(x, y, FLOOR_Z + 1.175)} COLOR 0.95 0.45 0.05", name + ": reflective vest")
     G(f"SPHERE 0.11 POS {fmt(x, y, FLOOR_Z + 1.62)} COLOR 0.80 0.62 0.50", name + ": head")

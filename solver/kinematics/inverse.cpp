@@ -45,7 +45,8 @@ void residual(const Problem& pb, const Data& data, Eigen::VectorXd& e, double& p
     }
 }
 
-// weighted Jacobian de/dθ… of −e, i.e. d(p_F, rotation)/dθ (rows as e, one column per moving joint)
+// J = −∂e/∂θ: the weighted rates of p_F and of F's attitude per unit θ of each moving
+// joint (rows as e, one column per moving joint)
 void jacobian(const Problem& pb, const Data& data, Eigen::MatrixXd& J)
 {
     const Eigen::Vector3d p = framePose(data, pb.frame).translation();
@@ -60,6 +61,12 @@ void jacobian(const Problem& pb, const Data& data, Eigen::MatrixXd& J)
 double clampTo(double v, double lo, double hi)
 {
     return std::min(std::max(v, lo), hi);
+}
+
+bool withinTolerance(const IkTarget& t, double posErr, double angErr)
+{
+    return (t.positionWeight <= 0 || posErr <= t.positionTolerance) &&
+           (!t.orientation || t.orientationWeight <= 0 || angErr <= t.angleTolerance);
 }
 
 // one LM attempt from theta (in/out); returns the weighted cost ½|e|² at the end
@@ -81,7 +88,7 @@ double attempt(const Problem& pb, Eigen::VectorXd& theta, Data& data, const IkOp
     int stalls = 0;
 
     for (int it = 0; it < opt.maxIterations; ++it) {
-        if (posErr <= pb.target.positionTolerance && angErr <= pb.target.angleTolerance) break;
+        if (withinTolerance(pb.target, posErr, angErr)) break;
         ++res.iterations;
         jacobian(pb, data, J);
         g.noalias() = J.transpose() * e;  // −∇cost: the descent direction
@@ -121,8 +128,7 @@ double attempt(const Problem& pb, Eigen::VectorXd& theta, Data& data, const IkOp
             trial = theta;
             for (Eigen::Index k = 0; k < n; ++k) {
                 const int i = pb.joints[k];
-                trial[i] = clampTo(theta[i] + step[k], pb.lower[k],
-                                   pb.upper[k]);
+                trial[i] = clampTo(theta[i] + step[k], pb.lower[k], pb.upper[k]);
             }
             forwardKinematics(model, trial, zero, data);
             double pTrial = 0, aTrial = 0;
@@ -167,14 +173,13 @@ Eigen::Isometry3d framePose(const Data& data, const IkFrame& frame)
 
 void ikJointRange(const Model& model, int i, bool limits, double& lower, double& upper)
 {
-    const int k = i;
-    lower = limits ? model.lower[k] : -kInf;
-    upper = limits ? model.upper[k] : kInf;
-    if (model.jointType[k] == JointType::Actuator) {
+    lower = limits ? model.lower[i] : -kInf;
+    upper = limits ? model.upper[i] : kInf;
+    if (model.jointType[i] == JointType::Actuator) {
         // the branch (φ, φ + π) or (φ − π, φ) of L(θ) that holds θ0, unwrapped to its turn
         constexpr double pi = std::numbers::pi;
-        const ActuatorLengthLaw& law = model.lengthLaw[k];
-        const double theta0 = model.theta0[k];
+        const ActuatorLengthLaw& law = model.lengthLaw[i];
+        const double theta0 = model.theta0[i];
         const double side = wrapAngle(theta0 - law.phi()) >= 0 ? 1.0 : -1.0;
         const double mid = law.phi() + side * 0.5 * pi;
         const double centre = theta0 - wrapAngle(theta0 - mid);
@@ -235,16 +240,15 @@ IkResult inverseKinematics(const Model& model, const IkFrame& frame, const IkTar
             best.theta = theta;
             best.positionError = posErr;
             best.angleError = angErr;
-            best.converged = posErr <= target.positionTolerance && angErr <= target.angleTolerance;
+            best.converged = withinTolerance(target, posErr, angErr);
         }
         if (best.converged) break;
     }
 
     // unlimited revolute angles: within π of the start
     for (int i : pb.joints) {
-        const int k = i;
-        if (model.jointType[k] == JointType::Revolute && !std::isfinite(model.lower[k]) &&
-            !std::isfinite(model.upper[k]))
+        if (model.jointType[i] == JointType::Revolute && !std::isfinite(model.lower[i]) &&
+            !std::isfinite(model.upper[i]))
             best.theta[i] = start[i] + wrapAngle(best.theta[i] - start[i]);
     }
     best.coordinates.resize(model.nb);

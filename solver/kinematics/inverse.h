@@ -63,10 +63,12 @@ struct IkTarget {
     Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< the frame's origin, world [m]
     /// The frame's axes in the world (columns x, y, z); nullopt: position only.
     std::optional<Eigen::Matrix3d> orientation;
-    double positionWeight = 1.0;     ///< w_p [1/m]: weight of a metre of position error
-    double orientationWeight = 1.0;  ///< w_o [1/rad]: weight of a radian of angle error
-    double positionTolerance = 1e-9;  ///< converged when |p* − p_F| ≤ this [m] …
-    double angleTolerance = 1e-9;     ///< … and the angle between R* and R_F ≤ this [rad]
+    /// w_p [1/m]: weight of a metre of position error. 0: the position is free (it
+    /// neither pulls nor counts for convergence: an orientation-only target).
+    double positionWeight = 1.0;
+    double orientationWeight = 1.0;  ///< w_o [1/rad]: weight of a radian of angle error (≥ 0)
+    double positionTolerance = 1e-9;  ///< converged when |p* − p_F| ≤ this [m] (if w_p > 0) …
+    double angleTolerance = 1e-9;     ///< … and the angle between R* and R_F ≤ this [rad] (if w_o > 0)
 };
 
 struct IkOptions {

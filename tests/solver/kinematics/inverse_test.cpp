@@ -91,7 +91,9 @@ TEST(InverseKinematics, RoundTripsOnRandomPosesOfTheLinerStation)
         EXPECT_LE(r.angleError, 1e-9);
         // joints 7–15 held where they were
         for (int i = 0; i < model.nb; ++i) {
-            if (std::find(st.arm.begin(), st.arm.end(), i) == st.arm.end()) EXPECT_EQ(r.theta[i], qi[i]);
+            if (std::find(st.arm.begin(), st.arm.end(), i) == st.arm.end()) {
+                EXPECT_EQ(r.theta[i], qi[i]);
+            }
         }
         // the modeler's coordinates are the same pose's: T 1 lengths within LL … UL
         for (int i : st.arm) {
@@ -252,9 +254,36 @@ TEST(InverseKinematics, HeldJointsStayAndTheRestReachesPositionOnly)
     EXPECT_NEAR(r.theta[boom], moved[boom], 1e-7);
     EXPECT_NEAR(r.theta[tele], 0.6, 1e-7);
     for (int i = 0; i < model.nb; ++i) {
-        if (i != boom && i != tele) EXPECT_EQ(r.theta[i], truth[i]);
+        if (i != boom && i != tele) {
+            EXPECT_EQ(r.theta[i], truth[i]);
+        }
     }
     EXPECT_EQ(r.angleError, 0.0);
+}
+
+TEST(InverseKinematics, OrientationOnlyLeavesThePositionFree)
+{
+    // the wrist pitch alone (C 5) levels the head at another boom angle: a target with
+    // position weight 0 asks for the attitude only, and converges on it
+    Station st;
+    ASSERT_TRUE(st.model);
+    const Model& model = *st.model;
+    Data data(model);
+    VectorXd start = makeState(model).q;
+    start[model.jointIndex(2)] += 0.1;  // boom up
+    IkOptions opt;
+    opt.joints = {model.jointIndex(5)};
+    IkTarget target;
+    target.positionWeight = 0;
+    target.orientation = poseAt(model, st.frame, makeState(model).q, data).linear();
+    const IkResult r = inverseKinematics(model, st.frame, target, start, data, opt);
+    EXPECT_TRUE(r.converged);
+    EXPECT_LT(r.angleError, 1e-9);
+    EXPECT_GT(r.positionError, 0.1);  // the position was not asked for
+    // the wrist took up the boom's turn: the two angles sum to what they were
+    const VectorXd qi = makeState(model).q;
+    EXPECT_NEAR(r.theta[model.jointIndex(5)] - qi[model.jointIndex(5)],
+                -(start[model.jointIndex(2)] - qi[model.jointIndex(2)]), 1e-9);
 }
 
 TEST(InverseKinematics, UnlimitedCylinderStaysOnItsBranch)
