@@ -55,6 +55,22 @@ struct World {
 
 }  // namespace
 
+TEST(CollisionWorld, OverlappingShapesGiveTheirDepthAndTheDeepestPoints)
+{
+    // floor top at z = −1.05: the hanging sphere (centre −1, radius 0.1) is 5 cm into it
+    World w(kPendulum, "G 1 B 0 BOX 4 4 0.2 POS 0 0 -1.15\n");
+    ASSERT_TRUE(w.world);
+    const Clearance c = w.at(0);
+    ASSERT_TRUE(c.valid());
+    EXPECT_NEAR(c.distance, -0.05, 1e-4);
+    EXPECT_NEAR(c.pointA.z(), -1.1, 1e-4);  // the sphere's lowest point
+    EXPECT_NEAR(c.pointB.z(), -1.05, 1e-4); // on the floor's top
+    EXPECT_NEAR(c.pointA.x(), 0.0, 1e-4);
+    // the pair query the tutorials use says the same
+    const Clearance b = w.world->bodyToShapes(0, w.world->sceneShapes({1}));
+    EXPECT_NEAR(b.distance, -0.05, 1e-4);
+}
+
 TEST(CollisionWorld, SphereAboveAFloorAsThePendulumSwings)
 {
     // floor top at z = −1.9: hanging, the sphere's bottom is at −1.1 → 0.8 m
