@@ -82,7 +82,7 @@ void printText(const trainer::Tutorial& t, const trainer::TutorialResult& r, con
     for (const trainer::TutorialEvent& e : r.events) {
         char line[512];
         std::snprintf(line, sizeof line, "  %9.3f s  %-13s %s%s\n", e.t, trainer::TutorialEvent::key(e.kind),
-                      e.text().toStdString().c_str(), e.penalty > 0 ? (" (-" + fixed(e.penalty, 1) + ")").c_str() : "");
+                      e.text(&t, lang).toStdString().c_str(), e.penalty > 0 ? (" (-" + fixed(e.penalty, 1) + ")").c_str() : "");
         out += line;
     }
     const QStringList improve = r.improvements();
@@ -136,7 +136,7 @@ void printJson(const trainer::Tutorial& t, const trainer::TutorialResult& r, con
         j.beginObject();
         j.key("t").num(e.t);
         j.key("kind").str(trainer::TutorialEvent::key(e.kind));
-        j.key("text").str(e.text().toStdString());
+        j.key("text").str(e.text(&t, lang).toStdString());
         j.key("detail").str(e.detail);
         j.key("value").num(e.value);
         j.key("penalty").num(e.penalty);

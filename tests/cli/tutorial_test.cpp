@@ -66,7 +66,7 @@ TEST(CliTutorial, SwingingTheLinerIntoTheWallIsAHardHitThatEndsTheAttempt)
     EXPECT_EQ(run.status, 1) << run.out << run.err;
     EXPECT_NE(run.out.find("\"end_reason\": \"hard-hit\""), std::string::npos) << run.out;
     EXPECT_NE(run.out.find("\"kind\": \"grasp\""), std::string::npos) << run.out;
-    EXPECT_NE(run.out.find("\"detail\": \"scene G 10"), std::string::npos) << run.out;  // the wall (G 101/102)
+    EXPECT_NE(run.out.find("\"detail\": \"the blast wall"), std::string::npos) << run.out;  // the wall (G 101/102)
 }
 
 TEST(CliTutorial, BadInputExitsTwoWithWhereAndWhy)

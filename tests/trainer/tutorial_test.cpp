@@ -120,6 +120,9 @@ TEST(TutorialFile, ProblemsAreReportedWhereTheyAreWithAHint)
                                    "GOAL g REACH BODY 6 POINT 0 0.48 0 AT -2.1 3.1 4.5 TOL 0.15\n NAME ES \"a\" EN \"b\"\n",
          "unreachable-goal", 5},
         {"worker without scene", header(kManipulator, "WORKER G 1 2 ZONE 1\n") + kReachGoal, "missing-scene", 4},
+        {"part without name", header(kManipulator, "PART MODEL G 1\n") + kReachGoal, "missing-name", 4},
+        {"part of no graphic", header(kManipulator, "PART MODEL G 999\n NAME ES \"a\" EN \"b\"\n") + kReachGoal,
+         "unknown-graphic", 4},
         {"hint for no goal", header(kManipulator, "HINT GOAL zz ES \"a\" EN \"b\"\n") + kReachGoal, "unknown-goal", 4},
     };
     for (const Case& c : cases) {

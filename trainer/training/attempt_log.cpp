@@ -23,12 +23,13 @@ constexpr const char* kPendingFormat = "padrob-pending-attempt";
 
 }  // namespace
 
-QList<records::AttemptEvent> toRecordEvents(const std::vector<TutorialEvent>& events, std::size_t from)
+QList<records::AttemptEvent> toRecordEvents(const std::vector<TutorialEvent>& events, std::size_t from,
+                                           const Tutorial* tutorial, const std::string& language)
 {
     QList<records::AttemptEvent> out;
     for (std::size_t i = from; i < events.size(); ++i) {
         const TutorialEvent& e = events[i];
-        out.append({e.t, QString::fromLatin1(TutorialEvent::key(e.kind)), e.text(), e.value, e.penalty,
+        out.append({e.t, QString::fromLatin1(TutorialEvent::key(e.kind)), e.text(tutorial, language), e.value, e.penalty,
                     QString::fromStdString(e.detail)});
     }
     return out;
@@ -50,7 +51,7 @@ records::AttemptResult toRecordResult(const TutorialResult& r, bool aborted)
 
 AttemptLog::AttemptLog(records::RecordsDb* db, QString pendingFolder, qint64 operatorId, const Tutorial& tutorial,
                        const QString& language)
-    : m_db(db), m_folder(std::move(pendingFolder))
+    : m_db(db), m_tutorial(&tutorial), m_folder(std::move(pendingFolder))
 {
     m_start.operatorId = operatorId;
     m_start.tutorialId = QString::fromStdString(tutorial.spec.id);
@@ -81,7 +82,7 @@ void AttemptLog::update(const std::vector<TutorialEvent>& events)
 {
     if (m_written >= events.size() || !ensureBegun()) return;
     QString error;
-    if (m_db->appendEvents(m_attempt, toRecordEvents(events, m_written), &error)) {
+    if (m_db->appendEvents(m_attempt, toRecordEvents(events, m_written, m_tutorial, m_start.language.toStdString()), &error)) {
         m_written = events.size();
         m_problem.clear();
     } else {
@@ -120,7 +121,7 @@ bool AttemptLog::finish(const std::vector<TutorialEvent>& events, const Tutorial
     for (const records::ScoreItem& i : r.breakdown) {
         breakdown.append(QJsonObject{{"key", i.key}, {"label", i.label}, {"value", i.value}, {"points", i.points}, {"max", i.maxPoints}});
     }
-    for (const records::AttemptEvent& e : toRecordEvents(events)) {
+    for (const records::AttemptEvent& e : toRecordEvents(events, 0, m_tutorial, m_start.language.toStdString())) {
         list.append(QJsonObject{{"t", e.t}, {"kind", e.kind}, {"text", e.text}, {"value", std::isfinite(e.value) ? QJsonValue(e.value) : QJsonValue()},
                                 {"penalty", e.penalty}, {"detail", e.detail}});
     }

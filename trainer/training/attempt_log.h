@@ -20,12 +20,14 @@
 namespace trainer {
 
 /// The records' form of a tutorial's events and breakdown.
-QList<records::AttemptEvent> toRecordEvents(const std::vector<TutorialEvent>& events, std::size_t from = 0);
+QList<records::AttemptEvent> toRecordEvents(const std::vector<TutorialEvent>& events, std::size_t from = 0,
+                                           const Tutorial* tutorial = nullptr, const std::string& language = "en");
 records::AttemptResult toRecordResult(const TutorialResult& result, bool aborted);
 
 class AttemptLog {
 public:
-    /// Begins the attempt of `operatorId` at `tutorial` (nullptr db: pending file only).
+    /// Begins the attempt of `operatorId` at `tutorial` (nullptr db: pending file only);
+    /// `tutorial` must outlive the log.
     AttemptLog(records::RecordsDb* db, QString pendingFolder, qint64 operatorId, const Tutorial& tutorial,
                const QString& language);
     /// Writes the events not written yet (call every few hundred milliseconds).
@@ -45,6 +47,7 @@ public:
 private:
     bool ensureBegun();
     records::RecordsDb* m_db;
+    const Tutorial* m_tutorial;  ///< outlives the log (the attempt's)
     QString m_folder;
     records::AttemptStart m_start;
     qint64 m_attempt = 0;

@@ -75,9 +75,16 @@ QString TutorialEvent::label(Kind k)
     return {};
 }
 
-QString TutorialEvent::text() const
+QString TutorialEvent::text(const Tutorial* tutorial, const std::string& language) const
 {
-    const QString d = QString::fromStdString(detail);
+    QString d = QString::fromStdString(detail);
+    if (tutorial && subject >= 0) {
+        const bool worker = kind == Kind::WorkerZone || kind == Kind::WorkerHit;
+        if (worker && std::size_t(subject) < tutorial->spec.workers.size() && !tutorial->spec.workers[std::size_t(subject)].name.empty())
+            d = QString::fromStdString(tutorial->spec.workers[std::size_t(subject)].name.in(language));
+        if (!worker && std::size_t(subject) < tutorial->spec.parts.size())
+            d = QString::fromStdString(tutorial->spec.parts[std::size_t(subject)].name.in(language));
+    }
     const QString v = QString::number(value, 'f', 2);
     switch (kind) {
     case Kind::GoalDone: return Tr::tr("Goal \"%1\" done").arg(d);
@@ -434,18 +441,19 @@ void TutorialSession::checkClearances()
                 m_touching = true;
                 const double v = pointSpeed(bestBody, best.pointA);
                 const std::string what = shapeName(best.shapeB);
+                const int part = partOf(best.shapeB);
                 if (v > sc.hardSpeed) {
-                    addEvent(TutorialEvent::Kind::HardHit, v, sc.hitPenalty, what);
+                    addEvent(TutorialEvent::Kind::HardHit, v, sc.hitPenalty, what, part);
                     end("hard-hit", false);
                     return;
                 }
-                addEvent(TutorialEvent::Kind::Hit, v, sc.hitPenalty, what);
+                addEvent(TutorialEvent::Kind::Hit, v, sc.hitPenalty, what, part);
             } else if (best.distance > 0.01) {
                 m_touching = false;
             }
             if (best.distance > 0.0 && best.distance < sc.nearDistance && !m_near && !m_touching) {
                 m_near = true;
-                addEvent(TutorialEvent::Kind::NearMiss, best.distance, 0.0, shapeName(best.shapeB));
+                addEvent(TutorialEvent::Kind::NearMiss, best.distance, 0.0, shapeName(best.shapeB), partOf(best.shapeB));
             } else if (best.distance > 2 * sc.nearDistance) {
                 m_near = false;
             }
@@ -466,7 +474,7 @@ void TutorialSession::checkClearances()
         if (m_progress.workerDistance < 0 || best.distance < m_progress.workerDistance) m_progress.workerDistance = best.distance;
         const std::string who = worker.name.empty() ? "G " + std::to_string(worker.graphicIds.front()) : worker.name.in("en");
         if (best.distance <= 0.0) {
-            addEvent(TutorialEvent::Kind::WorkerHit, 0.0, worker.penalty, who);
+            addEvent(TutorialEvent::Kind::WorkerHit, 0.0, worker.penalty, who, int(w));
             end("worker-hit", false);
             return;
         }
@@ -474,7 +482,7 @@ void TutorialSession::checkClearances()
             m_progress.nearWorker = true;
             if (!m_inZone[w]) {
                 m_inZone[w] = 1;
-                addEvent(TutorialEvent::Kind::WorkerZone, best.distance, worker.penalty, who);
+                addEvent(TutorialEvent::Kind::WorkerZone, best.distance, worker.penalty, who, int(w));
             }
         } else if (best.distance > worker.zone + 0.2) {
             m_inZone[w] = 0;
@@ -527,9 +535,10 @@ void TutorialSession::sample()
     m_samples.push_back(std::move(x));
 }
 
-void TutorialSession::addEvent(TutorialEvent::Kind kind, double value, double penalty, std::string detail)
+void TutorialSession::addEvent(TutorialEvent::Kind kind, double value, double penalty, std::string detail, int subject)
 {
     TutorialEvent e;
+    e.subject = subject;
     e.kind = kind;
     e.t = time();
     e.value = value;
@@ -582,9 +591,23 @@ TutorialResult TutorialSession::result() const
     return r;
 }
 
+int TutorialSession::partOf(int shape) const
+{
+    if (!m_world || shape < 0 || std::size_t(shape) >= m_world->shapes().size()) return -1;
+    const solver::CollisionShape& s = m_world->shapes()[std::size_t(shape)];
+    if (s.body >= 0) return -1;
+    const std::vector<Part>& parts = m_tutorial->spec.parts;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        if (parts[k].scene != s.scene) continue;
+        if (std::find(parts[k].graphicIds.begin(), parts[k].graphicIds.end(), s.graphicId) != parts[k].graphicIds.end()) return int(k);
+    }
+    return -1;
+}
+
 std::string TutorialSession::shapeName(int shape) const
 {
     if (!m_world || shape < 0 || std::size_t(shape) >= m_world->shapes().size()) return "?";
+    if (const int part = partOf(shape); part >= 0) return m_tutorial->spec.parts[std::size_t(part)].name.in("en");
     const solver::CollisionShape& s = m_world->shapes()[std::size_t(shape)];
     const solver::Model& m = *m_tutorial->model;
     if (s.body >= 0) {

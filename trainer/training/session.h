@@ -48,11 +48,14 @@ struct TutorialEvent {
     double t = 0.0;        ///< [s]
     double value = 0.0;    ///< speed of a hit [m/s], distance [m], force [N]…
     double penalty = 0.0;  ///< points taken
-    std::string detail;    ///< goal id, shape, drive name (as in the model)
+    std::string detail;    ///< goal id, shape, drive name (as in the model); a PART's or WORKER's English name
+    int subject = -1;      ///< hits: the tutorial's PART touched; worker events: the WORKER (−1 none)
 
     static const char* key(Kind k);  ///< stable name, e.g. "hit" (files, JSON, records)
     static QString label(Kind k);    ///< translated, e.g. "Hit"
-    QString text() const;            ///< translated sentence for the timeline
+    /// Translated sentence for the timeline; with the tutorial, parts and people are
+    /// named in `language`.
+    QString text(const Tutorial* tutorial = nullptr, const std::string& language = "en") const;
 };
 
 struct ScoreItem {
@@ -157,7 +160,8 @@ private:
     void checkClearances();
     void track();
     void sample();
-    void addEvent(TutorialEvent::Kind kind, double value, double penalty, std::string detail);
+    void addEvent(TutorialEvent::Kind kind, double value, double penalty, std::string detail, int subject = -1);
+    int partOf(int shape) const;
     void end(const std::string& reason, bool completed);
     void goalDone();
     Eigen::Vector3d trackPoint() const;

@@ -93,6 +93,10 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
         }
     }
     for (const Hint& h : s.hints) checkText(h.text, "this HINT", diags);
+    for (const Part& p : s.parts) {
+        if (p.name.empty()) diags.error("missing-name", p.pos, "this PART has no NAME", "add a NAME ES \"…\" EN \"…\" line after it");
+        else checkText(p.name, "this PART's NAME", diags);
+    }
     for (const Worker& w : s.workers) {
         if (!w.name.empty()) checkText(w.name, "this WORKER's NAME", diags);
     }
@@ -285,6 +289,23 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
                 diags.error("unknown-graphic", w.pos, "the scene has no graphic G " + std::to_string(id), "use the G ids of the person in the scene file");
             } else {
                 tut->workerShapes.back().push_back(id);
+            }
+        }
+    }
+    // parts: their graphics exist (the scene's, or the model's on the ground)
+    for (const Part& p : s.parts) {
+        const solver::ModelSpec* spec = p.scene ? tut->sceneSpec.get() : tut->modelSpec.get();
+        if (!spec) {
+            diags.error("missing-scene", p.pos, "PART SCENE needs a SCENE", "add SCENE \"…\", or write PART MODEL for the model's graphics");
+            continue;
+        }
+        for (int id : p.graphicIds) {
+            bool found = false;
+            for (const solver::GraphicSpec& gr : spec->graphics) found = found || (gr.id == id && gr.body == 0);
+            if (!found) {
+                diags.error("unknown-graphic", p.pos,
+                            std::string(p.scene ? "the scene" : "the model") + " has no ground graphic G " + std::to_string(id),
+                            "use the G ids (on body 0) of the part");
             }
         }
     }

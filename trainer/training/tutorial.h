@@ -103,6 +103,15 @@ struct Worker {
     solver::SourcePos pos;
 };
 
+/// A named part of the scene or of the model's ground graphics (the blast wall, the
+/// liner cart), so that hits name what was touched.
+struct Part {
+    bool scene = true;             ///< the scene's graphics; false: the model's ground graphics
+    std::vector<int> graphicIds;
+    LocalText name;
+    solver::SourcePos pos;
+};
+
 struct Scoring {
     double timeLimit = 300.0;  ///< the attempt ends there, failed [s]
     double parTime = 120.0;    ///< full time points at or under it [s]
@@ -138,6 +147,7 @@ struct TutorialSpec {
     std::vector<Goal> goals;
     std::vector<Hint> hints;
     std::vector<Worker> workers;
+    std::vector<Part> parts;
     Grip grip;
     bool track = false;
     int trackBodyId = 0;

@@ -31,7 +31,7 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 /// The statements, for messages and "unknown statement" hints.
 constexpr std::string_view kStatements =
     "TUTORIAL, TITLE, INTRO, MODEL, SCENE, PROFILE, DEMO, DRIVES, SET, TIME, PASS, WEIGHTS, JERK, "
-    "TRACK, GRIP, CLAW, FINGERS, GOAL (with ALIGN, JOINT, DWELL, NAME), HINT, WORKER, AVOID, OVERLOAD, "
+    "TRACK, GRIP, CLAW, FINGERS, GOAL (with ALIGN, JOINT, DWELL, NAME), HINT, WORKER, PART, AVOID, OVERLOAD, "
     "LIMITS, DROP";
 
 /// Reads one statement's tokens left to right, reporting what is missing or wrong at
@@ -197,7 +197,7 @@ TutorialSpec parseTutorial(const std::string& text, const std::string& file, Dia
     TutorialSpec t;
     t.file = file;
     std::set<std::string> seen;  // statements allowed once
-    enum class Last { None, Goal, Worker, Grip } last = Last::None;
+    enum class Last { None, Goal, Worker, Grip, Part } last = Last::None;
     bool sawTutorial = false;
     bool sawWeights = false;
     SourcePos weightsPos;
@@ -453,9 +453,11 @@ TutorialSpec parseTutorial(const std::string& text, const std::string& file, Dia
                 l.texts(t.goals.back().name);
             } else if (last == Last::Worker && !t.workers.empty()) {
                 l.texts(t.workers.back().name);
+            } else if (last == Last::Part && !t.parts.empty()) {
+                l.texts(t.parts.back().name);
             } else {
-                l.error("misplaced-statement", kw.pos, "NAME belongs to a GOAL or a WORKER and must follow it",
-                        "put it on the line after its GOAL or WORKER");
+                l.error("misplaced-statement", kw.pos, "NAME belongs to a GOAL, a WORKER or a PART and must follow it",
+                        "put it on the line after its GOAL, WORKER or PART");
             }
         } else if (key == "HINT") {
             Hint h;
@@ -483,6 +485,18 @@ TutorialSpec parseTutorial(const std::string& text, const std::string& file, Dia
             if (l.accept("PENALTY")) w.penalty = l.number("the penalty [points]");
             t.workers.push_back(w);
             last = Last::Worker;
+        } else if (key == "PART") {
+            Part part;
+            part.pos = kw.pos;
+            if (l.accept("MODEL")) part.scene = false;
+            else l.accept("SCENE");
+            l.expect("G", "(PART [SCENE|MODEL] G id id …, then a NAME line)");
+            while (!l.atEnd() && !l.failed() && l.peek().isNumber()) part.graphicIds.push_back(l.integer("a graphic id"));
+            if (!l.failed() && part.graphicIds.empty()) {
+                l.error("expected-number", l.pos(), "PART lists no graphic", "give the G ids of the part");
+            }
+            t.parts.push_back(part);
+            last = Last::Part;
         } else if (key == "AVOID") {
             once();
             l.expect("SCENE", "(AVOID SCENE PENALTY p NEAR d HARD v)");
@@ -520,7 +534,7 @@ TutorialSpec parseTutorial(const std::string& text, const std::string& file, Dia
                     "unknown statement '" + kw.text + "'", "a tutorial's statements are " + std::string(kStatements));
         }
         l.end();
-        if (key != "GOAL" && key != "ALIGN" && key != "JOINT" && key != "DWELL" && key != "NAME" && key != "WORKER" &&
+        if (key != "GOAL" && key != "ALIGN" && key != "JOINT" && key != "DWELL" && key != "NAME" && key != "WORKER" && key != "PART" &&
             key != "GRIP" && key != "CLAW" && key != "FINGERS") {
             last = Last::None;
         }
