@@ -1,8 +1,11 @@
-// padrob-studio [--scene FILE] [MODEL]: the application (see app/main_window.h).
+// padrob-studio [--scene FILE] [--lang es|en] [MODEL]: the application (see app/main_window.h).
+// padrob-studio --trainer [--operator ID] [--lang es|en]: kiosk mode, only the Train
+// workspace, full screen (Ctrl+Shift+F12 and the trainer's PIN leave it).
 // padrob-studio --bench-frames N [--scene FILE] [--views 1|3] [--json] [MODEL]: how
 // fast it starts and draws and how steady its real-time loop is (app/frame_bench.h).
 #include "ide/studio/app/frame_bench.h"
 #include "ide/studio/app/main_window.h"
+#include "ide/studio/train/train_page.h"
 #include "ide/studio/view/viewport.h"
 
 #include <QApplication>
@@ -24,7 +27,16 @@ int main(int argc, char** argv)
     QApplication::setOrganizationName("Padrob");
     QApplication::setApplicationName("padrob-studio");
     QApplication::setApplicationVersion(PADROB_VERSION);
-    // the system's language (Spanish or English; the settings will choose it too)
+    // the system's language (Spanish or English; the settings will choose it too), or
+    // --lang's (read before the parser, whose --help is translated)
+    const QStringList args = QCoreApplication::arguments();
+    for (qsizetype i = 1; i < args.size(); ++i) {
+        QString lang;
+        if (args[i] == QLatin1String("--lang") && i + 1 < args.size()) lang = args[i + 1];
+        else if (args[i].startsWith(QLatin1String("--lang="))) lang = args[i].mid(7);
+        if (lang == QLatin1String("es")) QLocale::setDefault(QLocale(QLocale::Spanish, QLocale::Spain));
+        else if (lang == QLatin1String("en")) QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+    }
     QTranslator qtTranslator, translator;
     if (qtTranslator.load(QLocale(), "qtbase", "_", QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
         QApplication::installTranslator(&qtTranslator);
@@ -63,8 +75,27 @@ int main(int argc, char** argv)
     const QCommandLineOption json(
         QStringLiteral("json"),
         QCoreApplication::translate("studio::main", "With --bench-frames: print the results as one JSON object."));
-    parser.addOptions({scene, bench, views, json});
+    const QCommandLineOption trainerMode(
+        QStringLiteral("trainer"),
+        QCoreApplication::translate("studio::main", "Kiosk mode for the training room: only the Train workspace, "
+                                                    "full screen, without menus. Ctrl+Shift+F12 leaves it (asking "
+                                                    "the trainer's PIN when one is set)."));
+    const QCommandLineOption operatorId(
+        QStringLiteral("operator"),
+        QCoreApplication::translate("studio::main", "With --trainer: the operator in training."),
+        QStringLiteral("ID"));
+    const QCommandLineOption lang(
+        QStringLiteral("lang"),
+        QCoreApplication::translate("studio::main", "The language of the application and the tutorials (es or en)."),
+        QStringLiteral("es|en"));
+    parser.addOptions({scene, bench, views, json, trainerMode, operatorId, lang});
     parser.process(app);
+    if (parser.isSet(lang) && parser.value(lang) != "es" && parser.value(lang) != "en") {
+        std::fputs(qPrintable(QCoreApplication::translate("studio::main", "--lang must be es or en.") +
+                              QLatin1Char('\n')),
+                   stderr);
+        return 2;
+    }
     const QString model = parser.positionalArguments().value(0);
 
     if (parser.isSet(bench)) {
@@ -92,6 +123,8 @@ int main(int argc, char** argv)
     window.openInitial(model);
     if (parser.isSet(scene)) window.loadScene(parser.value(scene));
     else window.restoreScene();
-    window.show();
+    if (parser.isSet(operatorId)) window.trainPage()->setOperator(parser.value(operatorId));
+    if (parser.isSet(trainerMode)) window.setKioskMode(true);  // shows it full screen
+    else window.show();
     return QApplication::exec();
 }

@@ -5,6 +5,8 @@
 #include "ide/studio/plots/plot_panel.h"
 #include "ide/studio/sim/keyboard_input.h"
 #include "ide/studio/station/station_page.h"
+#include "ide/studio/train/train_page.h"
+#include "ide/studio/train/tutorial_runner.h"
 #include "trainer/input/keyboard_device.h"
 #include "trainer/station/profile_store.h"
 #include "trainer/station/station.h"
@@ -26,11 +28,14 @@
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
+#include <QLineEdit>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
+#include <QShortcut>
 #include <QStackedWidget>
 #include <QStatusBar>
 #include <QTextBrowser>
@@ -66,30 +71,21 @@ QString docsDir()
     return QStringLiteral(PADROB_DOCS_DIR);
 }
 
-/// A page for a workspace that comes with a later issue.
-QWidget* comingPage(const QString& title, const QString& text)
-{
-    auto* page = new QWidget;
-    auto* layout = new QVBoxLayout(page);
-    auto* heading = new QLabel("<h2>" + title.toHtmlEscaped() + "</h2>");
-    auto* body = new QLabel(text);
-    body->setWordWrap(true);
-    layout->addStretch();
-    layout->addWidget(heading, 0, Qt::AlignHCenter);
-    layout->addWidget(body, 0, Qt::AlignHCenter);
-    layout->addStretch();
-    return page;
-}
-
 }  // namespace
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_runner(std::make_unique<SimulationRunner>())
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), m_runner(std::make_unique<SimulationRunner>()),
+      m_tutorialRunner(std::make_unique<TutorialRunner>())
 {
     setObjectName("MainWindow");
     // the operator's station: its input thread reads every device (the keyboard, SDL
     // joysticks, serial consoles) and writes the mapped commands to the solver thread
+    // (during a live attempt in the Train workspace, to the tutorial's)
     m_station = std::make_unique<trainer::Station>(
-        [runner = m_runner.get()](std::span<const double> u) { runner->setCommands(u); });
+        [runner = m_runner.get(), tutorial = m_tutorialRunner.get()](std::span<const double> u) {
+            if (tutorial->wantsCommands()) tutorial->setCommands(u);
+            else runner->setCommands(u);
+        });
     m_station->start(qEnvironmentVariableIntValue("PADROB_NO_JOYSTICKS") == 0);
     m_stationPage = new StationPage(m_station.get());
     connect(m_stationPage, &StationPage::profileChanged, this, [this](const trainer::StationProfile& p) {
@@ -115,6 +111,23 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_runner(std::mak
     m_keyboard = new KeyboardInput(m_runner.get(), this);
     m_keyboard->setDevice(m_keyboardDevice);
     m_keyboard->attachTo(m_viewports);
+    m_keyboard->attachTo(m_trainPage->attemptViewport());
+    // an attempt: the Model workspace's simulation pauses, the station drives the tutorial's model
+    connect(m_trainPage, &TrainPage::attemptStarted, this, [this](std::shared_ptr<const trainer::Tutorial> t) {
+        m_runner->pause();
+        const QList<trainer::DriveInfo> drives = trainer::drivesOf(*t->model);
+        const int nb = t->model->nb;
+        m_station->post([nb, drives](trainer::StationEngine& e) { e.setDrives(nb, drives); });
+    });
+    connect(m_trainPage, &TrainPage::attemptEnded, this, [this] {
+        if (!m_bundle) return;
+        const QList<trainer::DriveInfo> drives = trainer::drivesOf(*m_bundle->model);
+        const int nb = m_bundle->model->nb;
+        m_station->post([nb, drives](trainer::StationEngine& e) { e.setDrives(nb, drives); });
+    });
+    auto* leaveKiosk = new QShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F12), this);
+    leaveKiosk->setContext(Qt::ApplicationShortcut);
+    connect(leaveKiosk, &QShortcut::activated, this, &MainWindow::requestLeaveKiosk);
     m_hud = new QLabel(m_viewports);
     m_hud->setObjectName("Hud");
     m_hud->setAttribute(Qt::WA_TransparentForMouseEvents);
@@ -149,6 +162,8 @@ MainWindow::~MainWindow()
     m_pollTimer->stop();
     delete m_stationPage;  // it talks to the station: before the station goes
     m_stationPage = nullptr;
+    delete m_trainPage;  // it talks to the tutorial runner
+    m_trainPage = nullptr;
     m_station->stop();  // no more commands to the runner
     m_runner->pause();
 }
@@ -189,12 +204,13 @@ void MainWindow::buildWorkspaces()
 
     m_workspaces->addWidget(m_modelSpace);
     m_workspaces->addWidget(m_stationPage);
-    m_workspaces->addWidget(comingPage(tr("Train"), tr("Tutorials, scoring and trainee records will be run "
-                                                       "here.")));
+    m_trainPage = new TrainPage(m_tutorialRunner.get(), m_station.get());
+    m_workspaces->addWidget(m_trainPage);
     setCentralWidget(m_workspaces);
 
     // the mode bar
     auto* modes = new QToolBar(tr("Workspaces"));
+    m_modeBar = modes;
     modes->setObjectName("WorkspaceBar");
     modes->setMovable(false);
     modes->setToolButtonStyle(Qt::ToolButtonTextOnly);
@@ -233,6 +249,8 @@ void MainWindow::buildWorkspaces()
 
 void MainWindow::setWorkspace(Workspace w)
 {
+    if (m_kiosk && w != Workspace::Train) return;
+    if (w != Workspace::Train) m_trainPage->stopAttempt();  // an attempt is not left running unseen
     const int i = static_cast<int>(w);
     m_workspaces->setCurrentIndex(i);
     m_workspaceActions[i]->setChecked(true);
@@ -241,6 +259,42 @@ void MainWindow::setWorkspace(Workspace w)
 MainWindow::Workspace MainWindow::workspace() const
 {
     return static_cast<Workspace>(m_workspaces->currentIndex());
+}
+
+void MainWindow::setKioskMode(bool on)
+{
+    if (on == m_kiosk) return;
+    if (on) {
+        setWorkspace(Workspace::Train);
+        m_kiosk = true;
+    } else {
+        m_kiosk = false;
+    }
+    menuBar()->setVisible(!on);
+    m_modeBar->setVisible(!on);
+    statusBar()->setVisible(!on);
+    for (QAction* a : m_workspaceActions) a->setEnabled(!on);
+    for (QAction* a : menuBar()->actions()) a->setEnabled(!on);
+    if (on) showFullScreen();
+    else showNormal();
+}
+
+void MainWindow::requestLeaveKiosk()
+{
+    if (!m_kiosk) return;
+    const QString pin = QSettings().value("trainer/pin").toString();
+    if (pin.isEmpty()) return setKioskMode(false);
+    if (findChild<QInputDialog*>("KioskPinDialog")) return;  // already asking
+    auto* dialog = new QInputDialog(this);
+    dialog->setObjectName("KioskPinDialog");
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setWindowTitle(tr("Leave Trainer Mode"));
+    dialog->setLabelText(tr("Trainer's PIN:"));
+    dialog->setTextEchoMode(QLineEdit::Password);
+    connect(dialog, &QInputDialog::textValueSelected, this, [this, pin](const QString& typed) {
+        if (typed == pin) setKioskMode(false);
+    });
+    dialog->open();
 }
 
 void MainWindow::buildMenus()
@@ -745,7 +799,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
         return;
     }
     m_runner->pause();
-    saveLayout();
+    if (!m_kiosk) saveLayout();
     m_editor->discardOwnRecovery();
     event->accept();
 }

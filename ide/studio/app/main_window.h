@@ -2,7 +2,12 @@
 // MainWindow: padrob-studio's window (DESIGN.md "layout").
 //
 // A mode bar on the left switches the three workspaces: Model, Station (devices,
-// calibration, valve mapping: StationPage) and Train (its issue: the page says so). The Model workspace is an inner main
+// calibration, valve mapping: StationPage) and Train (the course, attempts, results and
+// debriefs: TrainPage over a TutorialRunner; during a live attempt the station's
+// commands go to the TutorialRunner instead of the SimulationRunner). Kiosk mode
+// (padrob-studio --trainer) shows only the Train workspace, full screen, without the
+// mode bar and menus; Ctrl+Shift+F12 and the trainer's PIN (QSettings "trainer/pin";
+// none set: the keys alone) leave it. The Model workspace is an inner main
 // window whose central widget is the 3D viewport layout, with docks for the model
 // tree, the joint sliders, the editor (with its problems list) and the plots; its
 // dock layout and the window geometry persist in QSettings, as do the recent files.
@@ -27,6 +32,7 @@ class QLabel;
 class QMenu;
 class QStackedWidget;
 class QTimer;
+class QToolBar;
 
 namespace trainer {
 class KeyboardDevice;
@@ -44,6 +50,8 @@ class ModelTree;
 class PlotPanel;
 class SimulationRunner;
 class StationPage;
+class TrainPage;
+class TutorialRunner;
 class ViewportLayout;
 
 class MainWindow : public QMainWindow {
@@ -84,6 +92,15 @@ public:
     /// The heads-up display over the viewports (profile, active bank, device warnings).
     QLabel* hud() const { return m_hud; }
     StationPage* stationPage() const { return m_stationPage; }
+    TrainPage* trainPage() const { return m_trainPage; }
+    TutorialRunner* tutorialRunner() const { return m_tutorialRunner.get(); }
+
+    /// Kiosk mode: only the Train workspace, full screen, no mode bar, menus or status bar.
+    void setKioskMode(bool on);
+    bool isKioskMode() const { return m_kiosk; }
+    /// Ctrl+Shift+F12 in kiosk mode: asks the trainer's PIN (a dialog named
+    /// "KioskPinDialog") when one is set, else leaves kiosk mode at once.
+    void requestLeaveKiosk();
     std::shared_ptr<const ModelBundle> bundle() const { return m_bundle; }
 
     enum class Workspace { Model, Station, Train };
@@ -129,11 +146,15 @@ private:
 
     std::shared_ptr<const ModelBundle> m_bundle;
     std::unique_ptr<SimulationRunner> m_runner;
+    std::unique_ptr<TutorialRunner> m_tutorialRunner;  ///< before m_station: destroyed after it
     KeyboardInput* m_keyboard = nullptr;
     std::unique_ptr<trainer::Station> m_station;  ///< after m_runner: destroyed first
     std::shared_ptr<trainer::KeyboardDevice> m_keyboardDevice;
     QLabel* m_hud = nullptr;
     StationPage* m_stationPage = nullptr;
+    TrainPage* m_trainPage = nullptr;
+    QToolBar* m_modeBar = nullptr;
+    bool m_kiosk = false;
     QString m_hudText;
     QString m_scenePath;
 

@@ -1,0 +1,1204 @@
+#include "ide/studio/train/train_page.h"
+
+#include "ide/studio/train/tutorial_runner.h"
+#include "ide/studio/view/viewport.h"
+#include "trainer/station/station.h"
+#include "trainer/training/attempt_log.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QApplication>
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QFrame>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QKeyEvent>
+#include <QWheelEvent>
+#include <QLabel>
+#include <QLegend>
+#include <QLineEdit>
+#include <QLineSeries>
+#include <QListWidget>
+#include <QLocale>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSettings>
+#include <QShortcut>
+#include <QSlider>
+#include <QSplitter>
+#include <QStandardPaths>
+#include <QStackedWidget>
+#include <QTableWidget>
+#include <QThread>
+#include <QTimer>
+#include <QValueAxis>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace studio {
+
+namespace {
+
+constexpr double kSpeeds[] = {0.25, 0.5, 1.0, 2.0, 4.0};
+
+QString stars(int n)
+{
+    QString s;
+    for (int i = 0; i < 3; ++i) s += i < n ? QChar(0x2605) : QChar(0x2606);
+    return s;
+}
+
+QString num(double v, int decimals) { return QLocale().toString(v, 'f', decimals); }
+
+constexpr qint64 kLogEveryMs = 500;  // events to the records this often during an attempt
+
+QString guestCode() { return QStringLiteral("guest"); }
+
+/// Where attempts the records refused wait to be imported.
+QString pendingFolder()
+{
+    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/pending-attempts");
+}
+
+QString settingsKey(const QString& op, const QString& id, const char* what)
+{
+    return QStringLiteral("trainer/progress/%1/%2/%3").arg(op.isEmpty() ? QStringLiteral("-") : op, id,
+                                                          QLatin1String(what));
+}
+
+/// Fit All, then one notch of the wheel out: Fit All frames the model only, and the
+/// targets (scene graphics) often lie just outside it.
+void frameModelAndTargets(Viewport* v)
+{
+    v->fitAll();
+    const QPointF centre(v->width() / 2.0, v->height() / 2.0);
+    QWheelEvent out(centre, v->mapToGlobal(centre), QPoint(), QPoint(0, -120), Qt::NoButton, Qt::NoModifier,
+                    Qt::NoScrollPhase, false);
+    QCoreApplication::sendEvent(v, &out);
+}
+
+QLabel* wrapped(const QString& text = {})
+{
+    auto* l = new QLabel(text);
+    l->setWordWrap(true);
+    return l;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------- progress
+
+CourseProgress CourseProgress::load(const QString& op, const QString& id)
+{
+    QSettings s;
+    CourseProgress p;
+    p.stars = s.value(settingsKey(op, id, "stars"), 0).toInt();
+    p.score = s.value(settingsKey(op, id, "score"), 0.0).toDouble();
+    p.passed = s.value(settingsKey(op, id, "passed"), false).toBool();
+    p.attempts = s.value(settingsKey(op, id, "attempts"), 0).toInt();
+    return p;
+}
+
+void CourseProgress::record(const QString& op, const QString& id, const trainer::TutorialResult& r)
+{
+    const CourseProgress old = load(op, id);
+    QSettings s;
+    s.setValue(settingsKey(op, id, "stars"), std::max(old.stars, r.stars));
+    s.setValue(settingsKey(op, id, "score"), std::max(old.score, r.score));
+    s.setValue(settingsKey(op, id, "passed"), old.passed || r.passed);
+    s.setValue(settingsKey(op, id, "attempts"), old.attempts + 1);
+}
+
+// ---------------------------------------------------------------- page
+
+TrainPage::TrainPage(TutorialRunner* runner, trainer::Station* station, QWidget* parent)
+    : QWidget(parent), m_runner(runner), m_station(station)
+{
+    setObjectName("TrainPage");
+    // big enough to read from the operator's seat (the HUD's own labels are bigger)
+    setStyleSheet("QWidget { font-size: 14pt; }"
+                  "QPushButton { padding: 8px 18px; }"
+                  "QHeaderView::section { padding: 4px 8px; }"
+                  "QLabel#TrainTitle { font-size: 26pt; font-weight: bold; }");
+    m_operator = QSettings().value("trainer/operator").toString();
+    openRecords();
+    m_stack = new QStackedWidget;
+    m_stack->addWidget(buildCourse());
+    m_stack->addWidget(buildStart());
+    m_stack->addWidget(buildAttempt());
+    m_stack->addWidget(buildResult());
+    m_stack->addWidget(buildDebrief());
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_stack);
+
+    connect(m_runner, &TutorialRunner::finished, this, &TrainPage::onFinished);
+    m_timer = new QTimer(this);
+    m_timer->setInterval(16);
+    connect(m_timer, &QTimer::timeout, this, &TrainPage::poll);
+    m_timer->start();
+    setTutorialsDir(defaultTutorialsDir());
+    setOperator(m_operator);
+}
+
+void TrainPage::openRecords()
+{
+    auto db = std::make_unique<trainer::records::RecordsDb>();
+    QString error;
+    if (!db->openSqlite({}, false, &error)) {
+        m_recordsProblem = error;  // progress goes to QSettings instead
+        return;
+    }
+    m_db = std::move(db);
+    QString importError;
+    trainer::AttemptLog::importPending(*m_db, pendingFolder(), &importError);
+    if (!importError.isEmpty()) m_recordsProblem = importError;
+}
+
+QStringList TrainPage::knownOperators() const
+{
+    if (!m_db) return QSettings().value("trainer/operators").toStringList();
+    QList<trainer::records::OperatorProgress> all;
+    QStringList codes;
+    if (m_db->progress(all))
+        for (const auto& p : all)
+            if (p.op.code != guestCode()) codes << p.op.code;
+    return codes;
+}
+
+void TrainPage::loadProgress()
+{
+    m_progress.clear();
+    if (!m_db || m_operatorDbId == 0) return;
+    QList<trainer::records::OperatorProgress> all;
+    QString error;
+    if (!m_db->progress(all, &error)) {
+        m_recordsProblem = error;
+        return;
+    }
+    for (const auto& op : all) {
+        if (op.op.id != m_operatorDbId) continue;
+        for (const trainer::records::TutorialProgress& t : op.tutorials)
+            m_progress.insert(t.tutorialId, CourseProgress{t.bestStars, t.bestScore, t.passed, t.attempts});
+    }
+}
+
+CourseProgress TrainPage::progressOf(const QString& tutorialId) const
+{
+    return m_db ? m_progress.value(tutorialId) : CourseProgress::load(m_operator, tutorialId);
+}
+
+TrainPage::~TrainPage()
+{
+    m_timer->stop();
+    if (m_runner->isActive()) m_runner->close();
+    m_attemptLog.reset();  // before the records close
+}
+
+QString TrainPage::language()
+{
+    return QLocale().language() == QLocale::Spanish ? QStringLiteral("es") : QStringLiteral("en");
+}
+
+QString TrainPage::defaultTutorialsDir()
+{
+    const QString installed = QCoreApplication::applicationDirPath() + "/../share/padrob/tutorials";
+    if (QDir(installed).exists()) return QDir(installed).canonicalPath();
+    return QDir(QStringLiteral(PADROB_MODELS_DIR "/../resources/tutorials")).canonicalPath();
+}
+
+void TrainPage::setTutorialsDir(const QString& dir)
+{
+    m_dir = dir;
+    m_entries.clear();
+    const std::string lang = language().toStdString();
+    for (const QFileInfo& f : QDir(dir).entryInfoList({"*.tut"}, QDir::Files, QDir::Name)) {
+        Entry e;
+        e.path = f.absoluteFilePath();
+        solver::Diagnostics diags(e.path.toStdString());
+        e.tutorial = trainer::loadTutorial(e.path.toStdString(), diags);
+        if (e.tutorial) {
+            e.id = QString::fromStdString(e.tutorial->spec.id);
+            e.level = e.tutorial->spec.level;
+            e.title = QString::fromStdString(e.tutorial->title(lang));
+        } else {
+            // what it says about itself, for the list
+            QFile file(e.path);
+            solver::Diagnostics ignored(e.path.toStdString());
+            if (file.open(QIODevice::ReadOnly)) {
+                const trainer::TutorialSpec spec =
+                    trainer::parseTutorial(file.readAll().toStdString(), e.path.toStdString(), ignored);
+                e.id = QString::fromStdString(spec.id);
+                e.level = spec.level;
+                e.title = QString::fromStdString(spec.title.in(lang));
+            }
+            for (const solver::Diagnostic& d : diags) {
+                if (d.severity == solver::Severity::Error) {
+                    e.problem = QString::fromStdString(d.format());
+                    break;
+                }
+            }
+            if (e.problem.isEmpty()) e.problem = tr("This tutorial cannot be loaded.");
+        }
+        if (e.id.isEmpty()) e.id = f.completeBaseName();
+        if (e.title.isEmpty()) e.title = f.completeBaseName();
+        m_entries.push_back(std::move(e));
+    }
+    std::stable_sort(m_entries.begin(), m_entries.end(),
+                     [](const Entry& a, const Entry& b) { return a.level < b.level; });
+    refreshCourse();
+}
+
+void TrainPage::setOperator(const QString& id)
+{
+    m_operator = id.trimmed();
+    QSettings s;
+    s.setValue("trainer/operator", m_operator);
+    if (m_db) {
+        // the records know operators by code; a new code is a new operator
+        const QString code = m_operator.isEmpty() ? guestCode() : m_operator;
+        trainer::records::Operator op;
+        QString error;
+        m_operatorDbId = 0;
+        if (m_db->findOperator(code, op, &error)) m_operatorDbId = op.id;
+        else if (error.isEmpty()) m_operatorDbId = m_db->addOperator(code, m_operator.isEmpty() ? tr("Guest") : code, &error);
+        if (m_operatorDbId == 0) m_recordsProblem = error;
+    } else {
+        QStringList known = s.value("trainer/operators").toStringList();
+        if (!m_operator.isEmpty() && !known.contains(m_operator)) {
+            known.append(m_operator);
+            s.setValue("trainer/operators", known);
+        }
+    }
+    if (m_operatorBox) {
+        const QStringList known = knownOperators();
+        const QSignalBlocker block(m_operatorBox);
+        m_operatorBox->clear();
+        m_operatorBox->addItems(known);
+        m_operatorBox->setCurrentText(m_operator);
+    }
+    refreshCourse();
+}
+
+std::shared_ptr<const trainer::Tutorial> TrainPage::tutorial() const
+{
+    return m_current >= 0 ? m_entries[std::size_t(m_current)].tutorial : nullptr;
+}
+
+int TrainPage::entryOf(const QString& id) const
+{
+    for (std::size_t i = 0; i < m_entries.size(); ++i)
+        if (m_entries[i].id == id) return int(i);
+    return -1;
+}
+
+bool TrainPage::isLocked(int entry) const
+{
+    // every stage of the level just below must be passed
+    const int level = m_entries[std::size_t(entry)].level;
+    int below = -1;
+    for (const Entry& e : m_entries)
+        if (e.level < level) below = std::max(below, e.level);
+    if (below < 0) return false;
+    for (const Entry& e : m_entries) {
+        if (e.level == below && !progressOf(e.id).passed) return true;
+    }
+    return false;
+}
+
+void TrainPage::setScreen(Screen s)
+{
+    m_screen = s;
+    m_stack->setCurrentIndex(int(s));
+    emit screenChanged(s);
+}
+
+// ---------------------------------------------------------------- course
+
+QWidget* TrainPage::buildCourse()
+{
+    auto* page = new QWidget;
+    auto* layout = new QVBoxLayout(page);
+    layout->setContentsMargins(24, 24, 24, 24);
+    auto* title = new QLabel(tr("Training course"));
+    title->setObjectName("TrainTitle");
+    layout->addWidget(title);
+    auto* opRow = new QHBoxLayout;
+    opRow->addWidget(new QLabel(tr("Operator:")));
+    m_operatorBox = new QComboBox;
+    m_operatorBox->setObjectName("OperatorBox");
+    m_operatorBox->setEditable(true);
+    m_operatorBox->setMinimumWidth(240);
+    m_operatorBox->addItems(knownOperators());
+    m_operatorBox->setCurrentText(m_operator);
+    m_operatorBox->lineEdit()->setPlaceholderText(tr("name or number"));
+    connect(m_operatorBox->lineEdit(), &QLineEdit::editingFinished, this,
+            [this] { setOperator(m_operatorBox->currentText()); });
+    connect(m_operatorBox, &QComboBox::textActivated, this, [this](const QString& t) { setOperator(t); });
+    opRow->addWidget(m_operatorBox);
+    opRow->addStretch();
+    layout->addLayout(opRow);
+    m_courseList = new QListWidget;
+    m_courseList->setObjectName("CourseList");
+    m_courseList->setStyleSheet("QListWidget { font-size: 16pt; } QListWidget::item { padding: 10px; }");
+    layout->addWidget(m_courseList, 1);
+    auto* buttons = new QHBoxLayout;
+    buttons->addStretch();
+    m_openButton = new QPushButton(tr("Open"));
+    m_openButton->setEnabled(false);
+    buttons->addWidget(m_openButton);
+    layout->addLayout(buttons);
+    const auto open = [this] {
+        QListWidgetItem* it = m_courseList->currentItem();
+        if (it && (it->flags() & Qt::ItemIsEnabled)) openTutorial(it->data(Qt::UserRole).toString());
+    };
+    connect(m_openButton, &QPushButton::clicked, this, open);
+    connect(m_courseList, &QListWidget::itemActivated, this, open);
+    connect(m_courseList, &QListWidget::currentItemChanged, this, [this](QListWidgetItem* it) {
+        m_openButton->setEnabled(it && (it->flags() & Qt::ItemIsEnabled));
+    });
+    return page;
+}
+
+void TrainPage::refreshCourse()
+{
+    if (!m_courseList) return;
+    loadProgress();
+    m_courseList->clear();
+    for (std::size_t i = 0; i < m_entries.size(); ++i) {
+        const Entry& e = m_entries[i];
+        const CourseProgress p = progressOf(e.id);
+        QString text = tr("Level %1 — %2").arg(e.level).arg(e.title);
+        auto* it = new QListWidgetItem;
+        it->setData(Qt::UserRole, e.id);
+        if (!e.problem.isEmpty()) {
+            text += "   " + tr("(cannot be used)");
+            it->setFlags(it->flags() & ~Qt::ItemIsEnabled);
+            it->setToolTip(e.problem);
+        } else if (isLocked(int(i))) {
+            text += "   " + tr("(locked: pass the level before)");
+            it->setFlags(it->flags() & ~Qt::ItemIsEnabled);
+            it->setToolTip(tr("Pass every stage of the level before to unlock this one."));
+        } else {
+            text += "   " + stars(p.stars);
+            if (p.attempts > 0) text += "   " + tr("best %1 of 100").arg(num(p.score, 0));
+        }
+        it->setText(text);
+        m_courseList->addItem(it);
+    }
+}
+
+void TrainPage::showCourse()
+{
+    leaveRun();
+    m_current = -1;
+    refreshCourse();
+    setScreen(Screen::Course);
+}
+
+bool TrainPage::openTutorial(const QString& id)
+{
+    const int i = entryOf(id);
+    if (i < 0 || !m_entries[std::size_t(i)].tutorial || isLocked(i)) return false;
+    leaveRun();
+    const Entry& e = m_entries[std::size_t(i)];
+    const trainer::Tutorial& t = *e.tutorial;
+    if (m_current != i || !m_bundle) {
+        QString error;
+        m_bundle = makeTutorialBundle(t, &error);
+        if (!m_bundle) {
+            m_entries[std::size_t(i)].problem = error;
+            refreshCourse();
+            return false;
+        }
+        m_scene = makeTutorialScene(t);
+        for (Viewport* v : {m_demoView, m_attemptView, m_replayView}) {
+            v->setBundle(m_bundle);
+            v->setScene(m_scene);
+        }
+        m_expert.reset();
+        m_expertFor.clear();
+    }
+    m_current = i;
+    m_demoLog.reset();
+    if (!t.demoFile.empty()) {
+        auto log = std::make_shared<trainer::InputLog>();
+        if (trainer::InputLog::load(QString::fromStdString(t.demoFile), *log, nullptr)) m_demoLog = log;
+    }
+    QString error;
+    if (!trainer::tutorialProfile(t, {}, m_profile, &error)) m_profile = trainer::StationProfile{};
+    const std::string lang = language().toStdString();
+    m_startTitle->setText(QString::fromStdString(t.title(lang)));
+    QString intro;
+    for (const trainer::LocalText& p : t.spec.intro) intro += "<p>" + QString::fromStdString(p.in(lang)).toHtmlEscaped() + "</p>";
+    intro += "<p>" + tr("Time limit: %1 s. Pass mark: %2 of 100.")
+                         .arg(num(t.scoring().timeLimit, 0), num(t.scoring().pass, 0)) + "</p>";
+    m_startIntro->setText(intro);
+    m_watchButton->setEnabled(m_demoLog != nullptr);
+    m_watchButton->setToolTip(m_demoLog ? QString() : tr("This tutorial has no demonstration."));
+    m_demoSlider->setRange(0, m_demoLog ? int(std::ceil((m_demoLog->duration() + TutorialRunner::kGrace) * 10)) : 0);
+    m_demoSlider->setValue(0);
+    m_demoTime->clear();
+    // the machine at the start, before any demonstration
+    if (m_runner->start(e.tutorial, m_bundle, nullptr, m_profile, true)) {
+        if (auto f = m_runner->latest()) m_demoView->setSnapshot(f->snapshot);
+        m_runner->close();
+    }
+    QTimer::singleShot(0, m_demoView, [v = m_demoView] { frameModelAndTargets(v); });
+    setScreen(Screen::Start);
+    return true;
+}
+
+// ---------------------------------------------------------------- start and demonstration
+
+QWidget* TrainPage::buildStart()
+{
+    auto* page = new QWidget;
+    auto* layout = new QHBoxLayout(page);
+    layout->setContentsMargins(24, 24, 24, 24);
+    auto* left = new QVBoxLayout;
+    m_startTitle = new QLabel;
+    m_startTitle->setObjectName("TrainTitle");
+    m_startTitle->setWordWrap(true);
+    m_startIntro = wrapped();
+    m_startIntro->setTextFormat(Qt::RichText);
+    m_startIntro->setStyleSheet("font-size: 15pt;");
+    m_startIntro->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    left->addWidget(m_startTitle);
+    left->addWidget(m_startIntro, 1);
+    m_watchButton = new QPushButton(tr("Watch the demonstration"));
+    m_startButton = new QPushButton(tr("Start"));
+    m_startButton->setObjectName("StartButton");
+    m_startButton->setStyleSheet("font-size: 18pt; font-weight: bold; padding: 10px 30px;");
+    auto* back = new QPushButton(tr("Back to the course"));
+    left->addWidget(m_watchButton);
+    left->addWidget(m_startButton);
+    left->addWidget(back);
+    auto* leftBox = new QWidget;
+    leftBox->setLayout(left);
+    leftBox->setMinimumWidth(380);
+    leftBox->setMaximumWidth(560);
+    layout->addWidget(leftBox);
+
+    auto* right = new QVBoxLayout;
+    m_demoView = new Viewport;
+    m_demoView->setMinimumSize(480, 360);
+    right->addWidget(m_demoView, 1);
+    auto* controls = new QHBoxLayout;
+    m_demoPlay = new QPushButton(tr("Pause"));
+    m_demoPlay->setEnabled(false);
+    m_demoSpeed = new QComboBox;
+    for (double s : kSpeeds) m_demoSpeed->addItem(QStringLiteral("×%1").arg(QLocale().toString(s)), s);
+    m_demoSpeed->setCurrentIndex(2);
+    m_demoSlider = new QSlider(Qt::Horizontal);
+    m_demoSlider->setObjectName("DemoSlider");
+    m_demoTime = new QLabel;
+    m_demoTime->setMinimumWidth(150);
+    controls->addWidget(m_demoPlay);
+    controls->addWidget(new QLabel(tr("Speed:")));
+    controls->addWidget(m_demoSpeed);
+    controls->addWidget(m_demoSlider, 1);
+    controls->addWidget(m_demoTime);
+    right->addLayout(controls);
+    layout->addLayout(right, 1);
+
+    connect(m_watchButton, &QPushButton::clicked, this, &TrainPage::watchDemonstration);
+    connect(m_startButton, &QPushButton::clicked, this, [this] { startAttempt(); });
+    connect(back, &QPushButton::clicked, this, &TrainPage::showCourse);
+    connect(m_demoPlay, &QPushButton::clicked, this, [this] {
+        if (!m_demoRunning) return watchDemonstration();
+        m_runner->setPaused(!m_runner->isPaused());
+        m_demoPlay->setText(m_runner->isPaused() ? tr("Play") : tr("Pause"));
+    });
+    connect(m_demoSpeed, &QComboBox::currentIndexChanged, this,
+            [this](int) { m_runner->setSpeed(m_demoSpeed->currentData().toDouble()); });
+    // scrub: seek while dragging is cheap forward; a release seeks exactly
+    connect(m_demoSlider, &QSlider::sliderReleased, this, [this] {
+        if (!m_demoRunning) watchDemonstration();
+        m_runner->seek(m_demoSlider->value() / 10.0);
+    });
+    connect(m_demoSlider, &QSlider::actionTriggered, this, [this](int action) {
+        if (action == QSlider::SliderMove) return;  // dragging: on release
+        QTimer::singleShot(0, this, [this] {
+            if (!m_demoRunning) watchDemonstration();
+            m_runner->seek(m_demoSlider->value() / 10.0);
+        });
+    });
+    return page;
+}
+
+void TrainPage::watchDemonstration()
+{
+    const auto t = tutorial();
+    if (!t || !m_demoLog) return;
+    m_runner->setSpeed(m_demoSpeed->currentData().toDouble());
+    QString error;
+    if (!m_runner->start(t, m_bundle, m_demoLog, m_profile, false, &error)) {
+        m_demoTime->setText(error);
+        return;
+    }
+    m_demoRunning = true;
+    m_shownStep = -1;
+    m_demoPlay->setEnabled(true);
+    m_demoPlay->setText(tr("Pause"));
+}
+
+// ---------------------------------------------------------------- attempt
+
+QWidget* TrainPage::buildAttempt()
+{
+    auto* page = new QWidget;
+    auto* layout = new QVBoxLayout(page);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto* viewBox = new QWidget;
+    auto* grid = new QGridLayout(viewBox);
+    grid->setContentsMargins(0, 0, 0, 0);
+    m_attemptView = new Viewport;
+    m_attemptView->setObjectName("AttemptViewport");
+    m_attemptView->setFocusPolicy(Qt::StrongFocus);
+    m_attemptView->installEventFilter(this);
+    grid->addWidget(m_attemptView, 0, 0);
+
+    const QString panel = "background: rgba(20, 24, 28, 200); color: white; border-radius: 8px; padding: 10px 14px;";
+    m_hudPanel = new QFrame;
+    m_hudPanel->setObjectName("TrainHud");
+    m_hudPanel->setAttribute(Qt::WA_TransparentForMouseEvents);
+    m_hudPanel->setStyleSheet("QFrame#TrainHud { background: rgba(20, 24, 28, 200); border-radius: 8px; }");
+    auto* hudLayout = new QVBoxLayout(m_hudPanel);
+    hudLayout->setContentsMargins(14, 10, 14, 12);
+    m_hud = new QLabel;
+    m_hud->setObjectName("TrainHudText");
+    m_hud->setTextFormat(Qt::RichText);
+    m_hud->setStyleSheet("color: white; font-size: 22px;");
+    m_dwellBar = new QProgressBar;
+    m_dwellBar->setRange(0, 1000);
+    m_dwellBar->setTextVisible(false);
+    m_dwellBar->setFixedHeight(14);
+    m_dwellBar->setStyleSheet("QProgressBar { background: rgba(255,255,255,40); border: none; border-radius: 4px; }"
+                              "QProgressBar::chunk { background: #4cd964; border-radius: 4px; }");
+    hudLayout->addWidget(m_hud);
+    hudLayout->addWidget(m_dwellBar);
+    grid->addWidget(m_hudPanel, 0, 0, Qt::AlignTop | Qt::AlignLeft);
+    m_warningLabel = new QLabel;
+    m_warningLabel->setObjectName("TrainWarnings");
+    m_warningLabel->setTextFormat(Qt::RichText);
+    m_warningLabel->setAttribute(Qt::WA_TransparentForMouseEvents);
+    m_warningLabel->setStyleSheet("QLabel { " + panel + " font-size: 22px; }");
+    m_warningLabel->hide();
+    grid->addWidget(m_warningLabel, 0, 0, Qt::AlignTop | Qt::AlignRight);
+    m_hintLabel = new QLabel;
+    m_hintLabel->setObjectName("TrainHint");
+    m_hintLabel->setWordWrap(true);
+    m_hintLabel->setAttribute(Qt::WA_TransparentForMouseEvents);
+    m_hintLabel->setStyleSheet("QLabel { background: rgba(30, 60, 110, 210); color: white; border-radius: 8px; "
+                               "padding: 10px 16px; font-size: 22px; }");
+    m_hintLabel->setMaximumWidth(900);
+    m_hintLabel->hide();
+    grid->addWidget(m_hintLabel, 0, 0, Qt::AlignBottom | Qt::AlignHCenter);
+    grid->setContentsMargins(0, 0, 0, 0);
+    for (QWidget* w : {static_cast<QWidget*>(m_hudPanel), static_cast<QWidget*>(m_warningLabel),
+                       static_cast<QWidget*>(m_hintLabel)})
+        w->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(viewBox, 1);
+
+    auto* bar = new QHBoxLayout;
+    bar->setContentsMargins(12, 6, 12, 6);
+    auto* keys = new QLabel(tr("Esc or Stop ends the attempt."));
+    bar->addWidget(keys);
+    bar->addStretch();
+    bar->addWidget(new QLabel(tr("View:")));
+    m_cameraBox = new QComboBox;
+    m_cameraBox->setObjectName("AttemptCamera");
+    for (const QString& name : Viewport::cameraNames()) m_cameraBox->addItem(Viewport::cameraLabel(name), name);
+    bar->addWidget(m_cameraBox);
+    connect(m_cameraBox, &QComboBox::activated, this, [this](int i) {
+        m_attemptView->setCamera(m_cameraBox->itemData(i).toString());
+        if (m_cameraBox->itemData(i).toString() != QLatin1String("Operator seat")) frameModelAndTargets(m_attemptView);
+        m_attemptView->setFocus();
+    });
+    auto* stop = new QPushButton(tr("Stop"));
+    stop->setObjectName("StopButton");
+    bar->addWidget(stop);
+    layout->addLayout(bar);
+    connect(stop, &QPushButton::clicked, this, &TrainPage::stopAttempt);
+    auto* esc = new QShortcut(QKeySequence(Qt::Key_Escape), page);
+    esc->setContext(Qt::WidgetWithChildrenShortcut);
+    connect(esc, &QShortcut::activated, this, &TrainPage::stopAttempt);
+    return page;
+}
+
+void TrainPage::startAttempt(std::shared_ptr<const trainer::InputLog> drive)
+{
+    const auto t = tutorial();
+    if (!t) return;
+    leaveRun();
+    m_runner->setSpeed(1.0);
+    QString error;
+    if (!m_runner->start(t, m_bundle, drive, m_profile, false, &error)) return;
+    m_attemptLive = !drive;
+    m_lastRun.reset();
+    // the trainee records: the attempt now, its events as it goes, the result at the end
+    m_attemptLog.reset();
+    m_attemptTutorial = t;
+    m_attemptLog = std::make_unique<trainer::AttemptLog>(m_db.get(), pendingFolder(), m_operatorDbId, *t, language());
+    m_lastLogUpdate = QDateTime::currentMSecsSinceEpoch();
+    m_shownStep = -1;
+    m_hudText.clear();
+    setScreen(Screen::Attempt);
+    // inside a scene the operator's seat; in the open, from where the target shows
+    const QString camera = t->sceneFile.empty() ? QStringLiteral("Iso") : QStringLiteral("Operator seat");
+    m_attemptView->setCamera(camera);
+    if (t->sceneFile.empty()) QTimer::singleShot(0, m_attemptView, [v = m_attemptView] { frameModelAndTargets(v); });
+    m_cameraBox->setCurrentIndex(std::max(0, m_cameraBox->findData(camera)));
+    m_attemptView->setFocus();
+    if (m_attemptLive) emit attemptStarted(t);
+    poll();
+}
+
+bool TrainPage::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched == m_attemptView && event->type() == QEvent::KeyPress &&
+        static_cast<QKeyEvent*>(event)->key() == Qt::Key_Escape) {
+        stopAttempt();
+        return true;
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+void TrainPage::stopAttempt()
+{
+    if (m_screen == Screen::Attempt && m_runner->isActive()) m_runner->stop();
+}
+
+void TrainPage::leaveRun()
+{
+    const bool live = m_attemptLive;
+    m_attemptLive = false;
+    m_demoRunning = false;
+    m_replayPlaying = false;
+    if (m_demoPlay) {
+        m_demoPlay->setText(tr("Play"));
+        m_demoPlay->setEnabled(m_demoLog != nullptr);
+    }
+    if (m_runner->isActive()) m_runner->close();
+    m_attemptLog.reset();  // an attempt left unfinished stays "running" until the records mark it interrupted
+    if (live) emit attemptEnded();
+}
+
+void TrainPage::poll()
+{
+    if (m_screen == Screen::Debrief && m_replayPlaying && m_lastRun && !m_lastRun->samples.empty()) {
+        m_replayClock += m_timer->interval() / 1000.0;
+        const auto& samples = m_lastRun->samples;
+        int i = m_replaySlider->value();
+        while (i + 1 < int(samples.size()) && samples[std::size_t(i + 1)].t <= m_replayClock) ++i;
+        if (i + 1 >= int(samples.size())) {
+            m_replayPlaying = false;
+            m_replayPlay->setText(tr("Play"));
+        }
+        m_replaySlider->setValue(i);
+        return;
+    }
+    const std::shared_ptr<const TrainFrame> f = m_runner->latest();
+    if (!f || !f->snapshot) return;
+    if (m_screen == Screen::Start && m_demoRunning) {
+        if (f->snapshot->step == m_shownStep) return;
+        m_shownStep = f->snapshot->step;
+        m_demoView->setSnapshot(f->snapshot);
+        if (!m_demoSlider->isSliderDown()) {
+            const QSignalBlocker block(m_demoSlider);
+            m_demoSlider->setValue(int(std::lround(f->snapshot->t * 10)));
+        }
+        QString text = tr("%1 s of %2 s").arg(num(f->snapshot->t, 1), num(f->duration, 0));
+        if (f->ended && f->output)
+            text = f->output->result.passed ? tr("Done: passed, %1 of 100").arg(num(f->output->result.score, 0))
+                                            : tr("Done");
+        m_demoTime->setText(text);
+    } else if (m_screen == Screen::Attempt) {
+        if (f->snapshot->step != m_shownStep) {
+            m_shownStep = f->snapshot->step;
+            m_attemptView->setSnapshot(f->snapshot);
+        }
+        updateHud(*f);
+        const qint64 now = QDateTime::currentMSecsSinceEpoch();
+        if (m_attemptLog && !f->ended && now - m_lastLogUpdate >= kLogEveryMs) {
+            m_lastLogUpdate = now;
+            m_attemptLog->update(f->events);
+        }
+    }
+}
+
+void TrainPage::updateHud(const TrainFrame& f)
+{
+    const auto t = tutorial();
+    if (!t) return;
+    const std::string lang = language().toStdString();
+    const trainer::SessionProgress& p = f.progress;
+    const auto& goals = t->spec.goals;
+    QStringList lines;
+    if (p.goal < int(goals.size())) {
+        const trainer::Goal& g = goals[std::size_t(p.goal)];
+        lines << "<span style='font-size:26px; font-weight:bold'>" +
+                     QString::fromStdString(g.name.in(lang)).toHtmlEscaped() + "</span>";
+        if (goals.size() > 1) lines << tr("Goal %1 of %2").arg(p.goal + 1).arg(goals.size());
+        if (p.distance >= 0)
+            lines << tr("Distance: %1 m").arg(num(p.distance, 2)) +
+                         (p.withinTolerance ? " <span style='color:#4cd964'>✔</span>" : QString());
+        m_dwellBar->setVisible(g.dwell > 0);
+        m_dwellBar->setValue(g.dwell > 0 ? int(std::clamp(p.dwell / g.dwell, 0.0, 1.0) * 1000) : 0);
+        if (g.dwell > 0) lines << tr("Hold: %1 of %2 s").arg(num(p.dwell, 1), num(g.dwell, 1));
+    } else {
+        lines << "<span style='font-size:26px; font-weight:bold'>" + tr("All goals done") + "</span>";
+        m_dwellBar->hide();
+    }
+    lines << tr("Time: %1 / %2 s").arg(num(p.t, 1), num(t->scoring().timeLimit, 0));
+    if (p.penalties > 0) lines << "<span style='color:#ff8a80'>" + tr("Penalties: %1").arg(num(p.penalties, 0)) + "</span>";
+    if (p.grasped) lines << tr("Load in the claws");
+    // the station: bank and its warnings
+    QStringList warnings;
+    if (m_station) {
+        if (const auto st = m_station->latest()) {
+            if (st->bankNames.size() > 1)
+                lines << tr("Bank: <b>%1</b> (%2 of %3)")
+                             .arg(st->bankNames.value(st->activeBank).toHtmlEscaped())
+                             .arg(st->activeBank + 1)
+                             .arg(st->bankNames.size());
+            if (m_attemptLive)
+                for (const QString& w : st->warnings) warnings << w.toHtmlEscaped();
+        }
+    }
+    if (p.overload) warnings << tr("Overload: a relief valve is open");
+    if (p.nearWorker) warnings << tr("Too close to a worker (%1 m)").arg(num(p.workerDistance, 2));
+    if (p.clearance >= 0 && p.clearance < t->scoring().nearDistance)
+        warnings << tr("Clearance %1 m").arg(num(p.clearance, 2));
+    const QString text = lines.join("<br>");
+    if (text != m_hudText) {
+        m_hudText = text;
+        m_hud->setText(text);
+    }
+    QString w;
+    for (const QString& s : warnings) w += (w.isEmpty() ? "" : "<br>") + QStringLiteral("<span style='color:#ffc04d'>⚠ %1</span>").arg(s);
+    if (w != m_warningText) {
+        m_warningText = w;
+        m_warningLabel->setText(w);
+        m_warningLabel->setVisible(!w.isEmpty());
+    }
+    QStringList hints;
+    for (int h : p.hints)
+        if (h >= 0 && h < int(t->spec.hints.size()))
+            hints << QString::fromStdString(t->spec.hints[std::size_t(h)].text.in(lang));
+    const QString hint = hints.join("\n");
+    if (hint != m_hintText) {
+        m_hintText = hint;
+        m_hintLabel->setText(hint);
+        m_hintLabel->setVisible(!hint.isEmpty());
+    }
+}
+
+void TrainPage::onFinished()
+{
+    const auto f = m_runner->latest();
+    if (!f || !f->output) return;
+    if (m_screen == Screen::Start && m_demoRunning) {
+        m_demoPlay->setText(tr("Play"));
+        poll();
+        return;
+    }
+    if (m_screen != Screen::Attempt) return;
+    poll();  // the last frame on the HUD
+    m_lastRun = f->output;
+    const bool live = m_attemptLive;
+    m_attemptLive = false;
+    const trainer::TutorialResult& r = m_lastRun->result;
+    m_resultNote->clear();
+    if (m_attemptLog) {
+        if (!m_attemptLog->finish(r.events, r, r.endReason == "aborted"))
+            m_resultNote->setText(tr("The trainee records could not be written (%1); the attempt is kept and will "
+                                     "be added the next time they can.").arg(m_attemptLog->problem()));
+        m_attemptLog.reset();
+    }
+    if (!m_db) {
+        if (const auto t = tutorial()) CourseProgress::record(m_operator, QString::fromStdString(t->spec.id), r);
+    }
+    if (live) emit attemptEnded();
+    showResult();
+}
+
+// ---------------------------------------------------------------- result
+
+QWidget* TrainPage::buildResult()
+{
+    auto* page = new QWidget;
+    auto* layout = new QVBoxLayout(page);
+    layout->setContentsMargins(32, 24, 32, 24);
+    m_resultHeading = new QLabel;
+    m_resultHeading->setObjectName("ResultHeading");
+    m_resultHeading->setAlignment(Qt::AlignCenter);
+    m_resultStars = new QLabel;
+    m_resultStars->setAlignment(Qt::AlignCenter);
+    m_resultStars->setStyleSheet("font-size: 44px; color: #e6a700;");
+    m_resultScore = new QLabel;
+    m_resultScore->setAlignment(Qt::AlignCenter);
+    m_resultScore->setStyleSheet("font-size: 20pt;");
+    layout->addWidget(m_resultHeading);
+    layout->addWidget(m_resultStars);
+    layout->addWidget(m_resultScore);
+    m_resultNote = wrapped();
+    m_resultNote->setObjectName("ResultNote");
+    m_resultNote->setAlignment(Qt::AlignCenter);
+    m_resultNote->setStyleSheet("color: #b35c00;");
+    layout->addWidget(m_resultNote);
+    auto* middle = new QHBoxLayout;
+    m_breakdown = new QTableWidget(0, 4);
+    m_breakdown->setObjectName("Breakdown");
+    m_breakdown->setHorizontalHeaderLabels({tr("Measure"), tr("Measured"), tr("Points"), tr("Of")});
+    m_breakdown->verticalHeader()->hide();
+    m_breakdown->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    m_breakdown->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+    m_breakdown->horizontalHeader()->setSectionResizeMode(2, QHeaderView::ResizeToContents);
+    m_breakdown->horizontalHeader()->setSectionResizeMode(3, QHeaderView::ResizeToContents);
+    m_breakdown->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_breakdown->setSelectionMode(QAbstractItemView::NoSelection);
+    auto* left = new QVBoxLayout;
+    left->addWidget(new QLabel("<b>" + tr("Score") + "</b>"));
+    left->addWidget(m_breakdown);
+    middle->addLayout(left, 1);
+    auto* right = new QVBoxLayout;
+    right->addWidget(new QLabel("<b>" + tr("What to improve") + "</b>"));
+    m_improvements = new QListWidget;
+    m_improvements->setObjectName("Improvements");
+    m_improvements->setWordWrap(true);
+    m_improvements->setStyleSheet("QListWidget::item { padding: 6px 2px; }");
+    right->addWidget(m_improvements);
+    middle->addLayout(right, 1);
+    layout->addLayout(middle, 1);
+    auto* buttons = new QHBoxLayout;
+    auto* course = new QPushButton(tr("Course"));
+    auto* retryButton = new QPushButton(tr("Retry"));
+    retryButton->setObjectName("RetryButton");
+    auto* debrief = new QPushButton(tr("Debrief"));
+    debrief->setObjectName("DebriefButton");
+    m_nextButton = new QPushButton(tr("Next stage"));
+    m_nextButton->setObjectName("NextButton");
+    buttons->addWidget(course);
+    buttons->addStretch();
+    buttons->addWidget(retryButton);
+    buttons->addWidget(debrief);
+    buttons->addWidget(m_nextButton);
+    layout->addLayout(buttons);
+    connect(course, &QPushButton::clicked, this, &TrainPage::showCourse);
+    connect(retryButton, &QPushButton::clicked, this, &TrainPage::retry);
+    connect(debrief, &QPushButton::clicked, this, &TrainPage::showDebrief);
+    connect(m_nextButton, &QPushButton::clicked, this, &TrainPage::nextStage);
+    return page;
+}
+
+void TrainPage::showResult()
+{
+    if (!m_lastRun) return;
+    const trainer::TutorialResult& r = m_lastRun->result;
+    m_resultHeading->setText(r.passed ? tr("PASSED") : tr("NOT PASSED"));
+    m_resultHeading->setStyleSheet(QStringLiteral("font-size: 40px; font-weight: bold; color: %1;")
+                                       .arg(r.passed ? "#2e9d4a" : "#c0392b"));
+    m_resultStars->setText(stars(r.stars));
+    QString why;
+    if (r.endReason == "time-up") why = tr("The time ran out.");
+    else if (r.endReason == "hard-hit") why = tr("The machine hit the scene too hard.");
+    else if (r.endReason == "worker-hit") why = tr("The machine touched a worker.");
+    else if (r.endReason == "aborted") why = tr("The attempt was stopped.");
+    else if (r.endReason == "input-ended") why = tr("The input ended before the goals were done.");
+    else if (r.endReason == "solver-error") why = tr("The simulation failed.");
+    m_resultScore->setText(tr("Score %1 of 100 in %2 s").arg(num(r.score, 0), num(r.time, 1)) +
+                           (why.isEmpty() ? QString() : "\n" + why));
+    m_breakdown->setRowCount(int(r.breakdown.size()));
+    for (int i = 0; i < int(r.breakdown.size()); ++i) {
+        const trainer::ScoreItem& s = r.breakdown[std::size_t(i)];
+        QString measured;
+        if (s.key == "time") measured = tr("%1 s").arg(num(s.value, 1));
+        else if (s.key == "path") measured = tr("%1 %").arg(num(s.value, 0));
+        else if (s.key == "smooth") measured = tr("%1 m/s³").arg(num(s.value, 2));
+        else if (s.key == "safety") measured = tr("%1 penalty points").arg(num(s.value, 0));
+        else measured = num(s.value, 2);
+        m_breakdown->setItem(i, 0, new QTableWidgetItem(s.label()));
+        m_breakdown->setItem(i, 1, new QTableWidgetItem(measured));
+        m_breakdown->setItem(i, 2, new QTableWidgetItem(num(s.points, 1)));
+        m_breakdown->setItem(i, 3, new QTableWidgetItem(num(s.max, 0)));
+        for (int c = 1; c < 4; ++c) m_breakdown->item(i, c)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    }
+    m_improvements->clear();
+    const QStringList advice = r.improvements();
+    m_improvements->addItems(advice.isEmpty() ? QStringList{tr("Nothing: a clean run.")} : advice);
+    const int next = m_current + 1;
+    loadProgress();  // the attempt just recorded may unlock the next stage
+    m_nextButton->setEnabled(next < int(m_entries.size()) && m_entries[std::size_t(next)].tutorial && !isLocked(next));
+    setScreen(Screen::Result);
+}
+
+void TrainPage::retry()
+{
+    if (tutorial()) startAttempt();
+}
+
+void TrainPage::nextStage()
+{
+    const int next = m_current + 1;
+    if (next < int(m_entries.size())) openTutorial(m_entries[std::size_t(next)].id);
+}
+
+// ---------------------------------------------------------------- debrief
+
+QWidget* TrainPage::buildDebrief()
+{
+    auto* page = new QWidget;
+    auto* layout = new QVBoxLayout(page);
+    layout->setContentsMargins(12, 12, 12, 12);
+    auto* split = new QSplitter(Qt::Horizontal);
+    // the replay and its controls
+    auto* replayBox = new QWidget;
+    auto* replay = new QVBoxLayout(replayBox);
+    replay->setContentsMargins(0, 0, 0, 0);
+    m_replayView = new Viewport;
+    m_replayView->setMinimumSize(400, 300);
+    replay->addWidget(m_replayView, 1);
+    auto* controls = new QHBoxLayout;
+    m_replayPlay = new QPushButton(tr("Play"));
+    m_replaySlider = new QSlider(Qt::Horizontal);
+    m_replaySlider->setObjectName("ReplaySlider");
+    m_replayTime = new QLabel;
+    m_replayTime->setMinimumWidth(90);
+    controls->addWidget(m_replayPlay);
+    controls->addWidget(m_replaySlider, 1);
+    controls->addWidget(m_replayTime);
+    replay->addLayout(controls);
+    m_forceChart = new QChartView;
+    m_forceChart->setObjectName("ForceChart");
+    m_forceChart->setMinimumHeight(200);
+    m_forceChart->setRenderHint(QPainter::Antialiasing);
+    m_reliefChart = new QChartView;
+    m_reliefChart->setObjectName("ReliefChart");
+    m_reliefChart->setMinimumHeight(150);
+    replay->addWidget(m_forceChart);
+    replay->addWidget(m_reliefChart);
+    split->addWidget(replayBox);
+    // the events and the expert
+    auto* side = new QWidget;
+    auto* sideLayout = new QVBoxLayout(side);
+    sideLayout->setContentsMargins(0, 0, 0, 0);
+    sideLayout->addWidget(new QLabel("<b>" + tr("Events") + "</b>"));
+    m_timeline = new QListWidget;
+    m_timeline->setObjectName("Timeline");
+    m_timeline->setWordWrap(true);
+    sideLayout->addWidget(m_timeline, 1);
+    sideLayout->addWidget(new QLabel("<b>" + tr("You and the expert") + "</b>"));
+    m_comparison = new QTableWidget(5, 3);
+    m_comparison->setObjectName("Comparison");
+    m_comparison->setHorizontalHeaderLabels({tr("Measure"), tr("You"), tr("Expert")});
+    m_comparison->verticalHeader()->hide();
+    m_comparison->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    m_comparison->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+    m_comparison->horizontalHeader()->setSectionResizeMode(2, QHeaderView::ResizeToContents);
+    m_comparison->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_comparison->setSelectionMode(QAbstractItemView::NoSelection);
+    m_comparison->setMinimumHeight(200);
+    sideLayout->addWidget(m_comparison);
+    auto* back = new QPushButton(tr("Back to the result"));
+    sideLayout->addWidget(back);
+    split->addWidget(side);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 2);
+    layout->addWidget(split);
+
+    connect(back, &QPushButton::clicked, this, [this] {
+        m_replayPlaying = false;
+        setScreen(Screen::Result);
+    });
+    connect(m_replaySlider, &QSlider::valueChanged, this, &TrainPage::showReplaySample);
+    connect(m_replayPlay, &QPushButton::clicked, this, [this] {
+        if (!m_lastRun || m_lastRun->samples.empty()) return;
+        m_replayPlaying = !m_replayPlaying;
+        if (m_replayPlaying) {
+            if (m_replaySlider->value() >= m_replaySlider->maximum()) m_replaySlider->setValue(0);
+            m_replayClock = m_lastRun->samples[std::size_t(m_replaySlider->value())].t;
+        }
+        m_replayPlay->setText(m_replayPlaying ? tr("Pause") : tr("Play"));
+    });
+    connect(m_timeline, &QListWidget::itemClicked, this, [this](QListWidgetItem* it) {
+        if (!m_lastRun) return;
+        const double t = it->data(Qt::UserRole).toDouble();
+        const auto& s = m_lastRun->samples;
+        const auto at = std::lower_bound(s.begin(), s.end(), t,
+                                         [](const trainer::SessionSample& a, double v) { return a.t < v; });
+        m_replaySlider->setValue(int(std::min<std::ptrdiff_t>(at - s.begin(), std::ptrdiff_t(s.size()) - 1)));
+    });
+    return page;
+}
+
+void TrainPage::showDebrief()
+{
+    if (!m_lastRun) return;
+    fillDebrief();
+    setScreen(Screen::Debrief);
+    computeExpert();
+}
+
+void TrainPage::showReplaySample(int index)
+{
+    if (!m_lastRun || index < 0 || index >= int(m_lastRun->samples.size())) return;
+    const trainer::SessionSample& s = m_lastRun->samples[std::size_t(index)];
+    m_replayView->setSnapshot(snapshotFromSample(s, m_bundle));
+    m_replayTime->setText(tr("%1 s").arg(num(s.t, 2)));
+    if (!m_replayPlaying) m_replayClock = s.t;
+}
+
+void TrainPage::fillDebrief()
+{
+    const trainer::RunOutput& run = *m_lastRun;
+    const auto& samples = run.samples;
+    m_replayPlaying = false;
+    m_replayPlay->setText(tr("Play"));
+    m_replaySlider->setRange(0, std::max(0, int(samples.size()) - 1));
+    m_replaySlider->setValue(0);
+    showReplaySample(0);
+    QTimer::singleShot(0, m_replayView, [v = m_replayView] { frameModelAndTargets(v); });
+
+    m_timeline->clear();
+    for (const trainer::TutorialEvent& e : run.result.events) {
+        auto* it = new QListWidgetItem(tr("%1 s — %2").arg(num(e.t, 1), e.text()));
+        it->setData(Qt::UserRole, e.t);
+        m_timeline->addItem(it);
+    }
+    if (run.result.events.empty()) m_timeline->addItem(tr("No events."));
+
+    // the most loaded drive's force, and the relief valves open, against time
+    const solver::Model& m = *m_bundle->model;
+    int joint = -1;
+    double most = 0.0;
+    for (const trainer::SessionSample& s : samples)
+        for (std::size_t j = 0; j < s.driveForce.size(); ++j)
+            if (std::abs(s.driveForce[j]) > most) {
+                most = std::abs(s.driveForce[j]);
+                joint = int(j);
+            }
+    const auto makeChart = [](const QString& title, QLineSeries* series, const QString& yTitle, double yMin,
+                              double yMax, double tMax) {
+        auto* chart = new QChart;
+        chart->setAnimationOptions(QChart::NoAnimation);
+        chart->setTitle(title);
+        chart->legend()->hide();
+        chart->addSeries(series);
+        auto* x = new QValueAxis;
+        x->setTitleText(QCoreApplication::translate("studio::TrainPage", "t [s]"));
+        x->setRange(0, std::max(1.0, tMax));
+        auto* y = new QValueAxis;
+        y->setTitleText(yTitle);
+        y->setRange(yMin, yMax);
+        x->applyNiceNumbers();
+        y->applyNiceNumbers();
+        x->setLabelFormat("%g");
+        y->setLabelFormat("%g");
+        chart->addAxis(x, Qt::AlignBottom);
+        chart->addAxis(y, Qt::AlignLeft);
+        series->attachAxis(x);
+        series->attachAxis(y);
+        chart->setMargins(QMargins(4, 4, 4, 4));
+        return chart;
+    };
+    const double tMax = samples.empty() ? 1.0 : samples.back().t;
+    auto* force = new QLineSeries;
+    double lo = 0.0, hi = 0.0;
+    const bool linear = joint >= 0 && m.jointType[std::size_t(joint)] != solver::JointType::Revolute;
+    const double scale = 1e-3;  // kN or kN·m
+    if (joint >= 0) {
+        for (const trainer::SessionSample& s : samples) {
+            const double v = s.driveForce[std::size_t(joint)] * scale;
+            force->append(s.t, v);
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
+    }
+    const double pad = std::max(0.1, 0.08 * (hi - lo));
+    QString name;
+    if (joint >= 0) {
+        name = QStringLiteral("C %1").arg(m.jointId[std::size_t(joint)]);
+        if (!m.jointName[std::size_t(joint)].empty()) name += ' ' + QString::fromStdString(m.jointName[std::size_t(joint)]);
+    }
+    QChart* old = m_forceChart->chart();
+    m_forceChart->setChart(makeChart(joint >= 0 ? tr("Force of %1").arg(name) : tr("No drive force"), force,
+                                     linear ? tr("kN") : tr("kN·m"), lo - pad, hi + pad, tMax));
+    delete old;
+    auto* relief = new QLineSeries;
+    int reliefMax = 1;
+    for (const trainer::SessionSample& s : samples) {
+        const int open = int(std::count(s.relief.begin(), s.relief.end(), std::uint8_t(1)));
+        reliefMax = std::max(reliefMax, open);
+        relief->append(s.t, open);
+    }
+    old = m_reliefChart->chart();
+    m_reliefChart->setChart(makeChart(tr("Relief valves open"), relief, tr("valves"), 0, reliefMax + 0.2, tMax));
+    delete old;
+    fillComparison();
+}
+
+void TrainPage::computeExpert()
+{
+    const auto t = tutorial();
+    if (!t || !m_demoLog || m_expertBusy) return;
+    const QString id = QString::fromStdString(t->spec.id);
+    if (m_expert && m_expertFor == id) return fillComparison();
+    m_expertBusy = true;
+    auto log = m_demoLog;
+    auto profile = m_profile;
+    QPointer<TrainPage> self(this);
+    QThread* worker = QThread::create([self, t, log, profile, id] {
+        auto out = std::make_shared<trainer::RunOutput>();
+        QString error;
+        const bool ok = trainer::runTutorialWithLog(t, log, profile, *out, &error, TutorialRunner::kGrace);
+        // back in the GUI thread, where the page may have gone meanwhile
+        QMetaObject::invokeMethod(qApp, [self, out, ok, id] {
+            if (!self) return;
+            self->m_expertBusy = false;
+            if (!ok) return;
+            self->m_expert = out;
+            self->m_expertFor = id;
+            self->fillComparison();
+        }, Qt::QueuedConnection);
+    });
+    connect(worker, &QThread::finished, worker, &QObject::deleteLater);
+    worker->start(QThread::LowPriority);
+}
+
+void TrainPage::fillComparison()
+{
+    if (!m_lastRun) return;
+    const trainer::TutorialResult& you = m_lastRun->result;
+    const trainer::TutorialResult* expert = m_expert ? &m_expert->result : nullptr;
+    const struct {
+        QString label;
+        double a, b;
+        int decimals;
+    } rows[] = {
+        {tr("Time [s]"), you.time, expert ? expert->time : 0.0, 1},
+        {tr("Path length [m]"), you.pathLength, expert ? expert->pathLength : 0.0, 2},
+        {tr("Overshoot [m]"), you.overshoot, expert ? expert->overshoot : 0.0, 3},
+        {tr("RMS jerk [m/s³]"), you.rmsJerk, expert ? expert->rmsJerk : 0.0, 2},
+        {tr("Score"), you.score, expert ? expert->score : 0.0, 0},
+    };
+    m_comparison->setRowCount(5);
+    for (int i = 0; i < 5; ++i) {
+        m_comparison->setItem(i, 0, new QTableWidgetItem(rows[i].label));
+        m_comparison->setItem(i, 1, new QTableWidgetItem(num(rows[i].a, rows[i].decimals)));
+        m_comparison->setItem(i, 2, new QTableWidgetItem(expert ? num(rows[i].b, rows[i].decimals)
+                                                                : (m_demoLog ? tr("…") : tr("none"))));
+    }
+}
+
+}  // namespace studio

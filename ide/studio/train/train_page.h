@@ -1,0 +1,251 @@
+#pragma once
+// TrainPage: the Train workspace (issue 7): the course, a stage's start screen with its
+// demonstration, the attempt with its HUD, the result and the debrief.
+//
+//  - Course: the tutorials of resources/tutorials/*.tut (trainer::loadTutorial) ordered
+//    by LEVEL, each with its title in the UI language, the operator's best stars, and
+//    locked until every stage of the level below is passed. A tutorial with errors is
+//    listed disabled with its first diagnostic as tooltip. Operators and attempts go to
+//    the trainee records (trainer::records::RecordsDb, the SQLite file by default;
+//    trainer::AttemptLog writes each attempt as it runs, a pending file when the
+//    database refuses); when the records cannot be opened, progress is kept in
+//    QSettings ("trainer/progress/<operator>/<tutorial>/…", CourseProgress).
+//  - Start: title, intro, "Watch the demonstration" (the tutorial's DEMO input log
+//    replayed by the TutorialRunner: play/pause, speed 0.25×–4×, a scrub slider) and Start.
+//  - Attempt: one 3D view with a HUD big enough to read from the seat (goal, time /
+//    limit, distance, dwell, bank, hints, warnings, penalties); Esc or Stop ends it.
+//  - Result: passed/failed, stars, score, the breakdown, what to improve; Retry,
+//    Debrief, Next stage.
+//  - Debrief: the run replayed from its samples (scrub slider), the timeline of events
+//    (a click seeks), the force of the most loaded drive and the relief-valve openings
+//    against time (QtCharts), and the comparison with the expert (the demonstration run
+//    headless with trainer::runTutorialWithLog).
+//
+// The page owns no thread: the TutorialRunner (owned by MainWindow, whose station
+// writes its commands during an attempt) runs the sessions.
+
+#include "ide/studio/model/model_bundle.h"
+#include "trainer/input/input_log.h"
+#include "trainer/records/records_db.h"
+#include "trainer/training/runner.h"
+#include "trainer/training/tutorial.h"
+
+#include <QHash>
+#include <QPointer>
+#include <QWidget>
+
+#include <memory>
+#include <vector>
+
+class QChartView;
+class QComboBox;
+class QFrame;
+class QLabel;
+class QListWidget;
+class QProgressBar;
+class QPushButton;
+class QSlider;
+class QStackedWidget;
+class QTableWidget;
+class QTimer;
+
+namespace trainer {
+class AttemptLog;
+class Station;
+}
+
+namespace studio {
+
+class TutorialRunner;
+class Viewport;
+struct TrainFrame;
+
+/// The operator's best results per tutorial. From the trainee records (trainer/records)
+/// when they open; else kept in QSettings ("trainer/progress/…": load(), record()).
+struct CourseProgress {
+    int stars = 0;
+    double score = 0.0;
+    bool passed = false;
+    int attempts = 0;
+    static CourseProgress load(const QString& operatorId, const QString& tutorialId);
+    /// Adds an attempt, keeping the best stars and score.
+    static void record(const QString& operatorId, const QString& tutorialId, const trainer::TutorialResult& r);
+};
+
+class TrainPage : public QWidget {
+    Q_OBJECT
+public:
+    enum class Screen { Course, Start, Attempt, Result, Debrief };
+
+    TrainPage(TutorialRunner* runner, trainer::Station* station, QWidget* parent = nullptr);
+    ~TrainPage() override;
+
+    /// The language of tutorial texts: the UI's ("es" when the locale is Spanish, else "en").
+    static QString language();
+    /// resources/tutorials (installed: share/padrob/tutorials).
+    static QString defaultTutorialsDir();
+    /// Reads the course from `dir` again.
+    void setTutorialsDir(const QString& dir);
+
+    /// The operator in training, by code (badge number…); a new code is added to the
+    /// records. "" is the guest.
+    void setOperator(const QString& id);
+    QString operatorId() const { return m_operator; }
+    /// The operator's best results at a tutorial.
+    CourseProgress progressOf(const QString& tutorialId) const;
+    /// The trainee records in use (nullptr: they could not be opened, QSettings instead).
+    trainer::records::RecordsDb* records() const { return m_db.get(); }
+    /// Why the records could not be opened or written ("" when all is well).
+    QString recordsProblem() const { return m_recordsProblem; }
+
+    Screen screen() const { return m_screen; }
+    /// Opens a tutorial's start screen (by its TUTORIAL id); false when unknown, broken or locked.
+    bool openTutorial(const QString& id);
+    /// The tutorial open now (nullptr on the course screen).
+    std::shared_ptr<const trainer::Tutorial> tutorial() const;
+    /// Plays the open tutorial's demonstration on the start screen.
+    void watchDemonstration();
+    /// Starts an attempt at the open tutorial with the operator's commands (the station),
+    /// or — a test hook — driven by `drive`, an input log (e.g. demoLog()).
+    void startAttempt(std::shared_ptr<const trainer::InputLog> drive = nullptr);
+    /// Ends the attempt now (Esc, Stop).
+    void stopAttempt();
+    void showCourse();
+    void showDebrief();
+    void retry();
+    void nextStage();
+    /// The open tutorial's demonstration log (nullptr when it has none).
+    std::shared_ptr<const trainer::InputLog> demoLog() const { return m_demoLog; }
+    /// The result of the last attempt (nullptr before one ended).
+    const trainer::RunOutput* lastRun() const { return m_lastRun.get(); }
+    /// The expert's run of the open tutorial, once the debrief computed it (nullptr before).
+    const trainer::RunOutput* expertRun() const { return m_expert.get(); }
+
+    // parts, for tests and wiring
+    QListWidget* courseList() const { return m_courseList; }
+    Viewport* attemptViewport() const { return m_attemptView; }
+    Viewport* demoViewport() const { return m_demoView; }
+    QLabel* hud() const { return m_hud; }
+    QLabel* resultHeading() const { return m_resultHeading; }
+    QTableWidget* breakdownTable() const { return m_breakdown; }
+    QChartView* forceChart() const { return m_forceChart; }
+    QTableWidget* comparisonTable() const { return m_comparison; }
+    QListWidget* timeline() const { return m_timeline; }
+    QSlider* replaySlider() const { return m_replaySlider; }
+    QSlider* demoSlider() const { return m_demoSlider; }
+
+signals:
+    /// An attempt with live commands began (the station's commands go to the runner) …
+    void attemptStarted(std::shared_ptr<const trainer::Tutorial> tutorial);
+    /// … and ended (or was left).
+    void attemptEnded();
+    void screenChanged(studio::TrainPage::Screen screen);
+
+protected:
+    /// Esc in the attempt's 3D view ends the attempt (the view has the keyboard focus).
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+    struct Entry {
+        QString path;
+        QString id;
+        int level = 0;
+        QString title;
+        QString problem;  ///< the first error ("" when it loaded)
+        std::shared_ptr<const trainer::Tutorial> tutorial;
+    };
+    QWidget* buildCourse();
+    QWidget* buildStart();
+    QWidget* buildAttempt();
+    QWidget* buildResult();
+    QWidget* buildDebrief();
+    void setScreen(Screen s);
+    void refreshCourse();
+    bool isLocked(int entry) const;
+    int entryOf(const QString& id) const;
+    void poll();
+    void updateHud(const TrainFrame& f);
+    void onFinished();
+    void showResult();
+    void fillDebrief();
+    void showReplaySample(int index);
+    void computeExpert();
+    void fillComparison();
+    void leaveRun();
+
+    void openRecords();
+    void loadProgress();
+    QStringList knownOperators() const;
+
+    TutorialRunner* m_runner;
+    trainer::Station* m_station;
+    std::unique_ptr<trainer::records::RecordsDb> m_db;
+    qint64 m_operatorDbId = 0;
+    QHash<QString, CourseProgress> m_progress;  ///< by tutorial id, from the records
+    std::shared_ptr<const trainer::Tutorial> m_attemptTutorial;  ///< the log's: outlives it
+    std::unique_ptr<trainer::AttemptLog> m_attemptLog;
+    qint64 m_lastLogUpdate = 0;  ///< ms (steady)
+    QString m_recordsProblem;
+    QString m_dir;
+    QString m_operator;
+    std::vector<Entry> m_entries;
+    int m_current = -1;  ///< entry open
+    std::shared_ptr<const ModelBundle> m_bundle, m_scene;
+    std::shared_ptr<const trainer::InputLog> m_demoLog;
+    trainer::StationProfile m_profile;
+    bool m_demoRunning = false;
+    bool m_attemptLive = false;
+    long m_shownStep = -1;
+    std::shared_ptr<const trainer::RunOutput> m_lastRun;
+    std::shared_ptr<const trainer::RunOutput> m_expert;
+    QString m_expertFor;  ///< tutorial id of m_expert
+    bool m_expertBusy = false;
+    Screen m_screen = Screen::Course;
+
+    QStackedWidget* m_stack = nullptr;
+    QTimer* m_timer = nullptr;
+    // course
+    QListWidget* m_courseList = nullptr;
+    QComboBox* m_operatorBox = nullptr;
+    QPushButton* m_openButton = nullptr;
+    // start
+    QLabel* m_startTitle = nullptr;
+    QLabel* m_startIntro = nullptr;
+    QPushButton* m_watchButton = nullptr;
+    QPushButton* m_startButton = nullptr;
+    Viewport* m_demoView = nullptr;
+    QPushButton* m_demoPlay = nullptr;
+    QComboBox* m_demoSpeed = nullptr;
+    QSlider* m_demoSlider = nullptr;
+    QLabel* m_demoTime = nullptr;
+    // attempt
+    Viewport* m_attemptView = nullptr;
+    QComboBox* m_cameraBox = nullptr;
+    QFrame* m_hudPanel = nullptr;
+    QLabel* m_hud = nullptr;
+    QProgressBar* m_dwellBar = nullptr;
+    QLabel* m_hintLabel = nullptr;
+    QLabel* m_warningLabel = nullptr;
+    QString m_hudText, m_hintText, m_warningText;
+    // result
+    QLabel* m_resultHeading = nullptr;
+    QLabel* m_resultStars = nullptr;
+    QLabel* m_resultScore = nullptr;
+    QLabel* m_resultNote = nullptr;
+    QTableWidget* m_breakdown = nullptr;
+    QListWidget* m_improvements = nullptr;
+    QPushButton* m_nextButton = nullptr;
+    // debrief
+    Viewport* m_replayView = nullptr;
+    QSlider* m_replaySlider = nullptr;
+    QPushButton* m_replayPlay = nullptr;
+    QLabel* m_replayTime = nullptr;
+    QListWidget* m_timeline = nullptr;
+    QChartView* m_forceChart = nullptr;
+    QChartView* m_reliefChart = nullptr;
+    QTableWidget* m_comparison = nullptr;
+    bool m_replayPlaying = false;
+    double m_replayClock = 0.0;
+};
+
+}  // namespace studio

@@ -1,0 +1,369 @@
+// The Train workspace as a trainee meets it (a real window under Xvfb): the course
+// lists T0; its start screen plays the demonstration (pause, speed, seek); a live
+// attempt takes the keyboard through the station and shows the goal and the time on
+// the HUD, and Stop ends it; an attempt driven by the demonstration's input log
+// passes, and the debrief shows the force plot, the timeline and the comparison with
+// the expert; kiosk mode opens full screen without the mode bar and menus, and
+// Ctrl+Shift+F12 (with the PIN when one is set) leaves it. Screenshots of the start
+// screen, the HUD and the result, in English and in Spanish.
+
+#include "ide/studio/app/main_window.h"
+#include "ide/studio/train/train_page.h"
+#include "ide/studio/train/tutorial_runner.h"
+#include "ide/studio/view/viewport.h"
+#include "trainer/station/station.h"
+
+#include <QApplication>
+#include <QChart>
+#include <QChartView>
+#include <QDir>
+#include <QFile>
+#include <QInputDialog>
+#include <QLabel>
+#include <QLineSeries>
+#include <QListWidget>
+#include <QMenuBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QSurfaceFormat>
+#include <QTableWidget>
+#include <QTest>
+#include <QToolBar>
+#include <QTemporaryDir>
+#include <QTranslator>
+
+#include <memory>
+
+using namespace studio;
+
+namespace {
+
+QString screenshotPath(const QString& name)
+{
+    QDir().mkpath(QStringLiteral(PADROB_SCREENSHOT_DIR));
+    return QStringLiteral(PADROB_SCREENSHOT_DIR) + "/" + name;
+}
+
+void settle(int ms = 300)
+{
+    QTest::qWait(ms);
+    QApplication::processEvents();
+}
+
+}  // namespace
+
+class TrainTest : public QObject {
+    Q_OBJECT
+
+    std::unique_ptr<MainWindow> m_window;
+    TrainPage* page() const { return m_window->trainPage(); }
+
+    /// A fresh window on the Train workspace.
+    void openWindow()
+    {
+        m_window = std::make_unique<MainWindow>();
+        m_window->openInitial(QString());
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+        m_window->setWorkspace(MainWindow::Workspace::Train);
+        settle();
+    }
+
+    /// An attempt driven by the demonstration's log, at 4× to spare time; waits for the result.
+    void passWithTheDemonstration()
+    {
+        QVERIFY(page()->openTutorial("T0"));
+        QVERIFY(page()->demoLog());
+        page()->startAttempt(page()->demoLog());
+        m_window->tutorialRunner()->setSpeed(4.0);
+        QCOMPARE(page()->screen(), TrainPage::Screen::Attempt);
+        QTRY_VERIFY_WITH_TIMEOUT(page()->screen() == TrainPage::Screen::Result, 120000);
+        QVERIFY(page()->lastRun());
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName("PadrobTest");
+        QCoreApplication::setApplicationName("padrob-studio-train-test");
+        QSettings().clear();
+        // fresh trainee records (the test location's SQLite file) and no pending attempts
+        const QString db = trainer::records::RecordsDb::defaultSqlitePath();
+        for (const char* suffix : {"", "-wal", "-shm"}) QFile::remove(db + suffix);
+        QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/pending-attempts").removeRecursively();
+        QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+        openWindow();
+    }
+
+    void cleanupTestCase() { m_window.reset(); }
+
+    void courseListsTheTutorials()
+    {
+        QListWidget* list = page()->courseList();
+        QVERIFY(list->count() >= 1);
+        QListWidgetItem* t0 = list->item(0);
+        QVERIFY(t0->text().contains("Reach a target"));
+        QVERIFY(t0->flags() & Qt::ItemIsEnabled);
+        QCOMPARE(t0->data(Qt::UserRole).toString(), QString("T0"));
+        // the next level is locked until T0 is passed
+        if (list->count() > 1) {
+            QVERIFY(!(list->item(1)->flags() & Qt::ItemIsEnabled));
+            QVERIFY(!page()->openTutorial(list->item(1)->data(Qt::UserRole).toString()));
+        }
+        QVERIFY(m_window->grab().save(screenshotPath("train_course_en.png")));
+    }
+
+    void brokenTutorialIsListedDisabled()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        QFile good(QStringLiteral(PADROB_SOURCE_DIR) + "/resources/tutorials/t0_reach.tut");
+        QVERIFY(good.open(QIODevice::ReadOnly));
+        QString text = QString::fromUtf8(good.readAll());
+        text.replace("../../models", QStringLiteral(PADROB_SOURCE_DIR) + "/models");
+        text.replace("\"t0_reach.demo.log\"", "\"" PADROB_SOURCE_DIR "/resources/tutorials/t0_reach.demo.log\"");
+        QFile copy(dir.filePath("t0.tut"));
+        QVERIFY(copy.open(QIODevice::WriteOnly));
+        copy.write(text.toUtf8());
+        copy.close();
+        QFile broken(dir.filePath("t1_broken.tut"));
+        QVERIFY(broken.open(QIODevice::WriteOnly));
+        broken.write("TUTORIAL T1 LEVEL 1\nTITLE ES \"Roto\" EN \"Broken\"\nMODEL \"nowhere.pad\"\n");
+        broken.close();
+        page()->setTutorialsDir(dir.path());
+        QListWidget* list = page()->courseList();
+        QCOMPARE(list->count(), 2);
+        QVERIFY(list->item(0)->flags() & Qt::ItemIsEnabled);
+        QVERIFY(!(list->item(1)->flags() & Qt::ItemIsEnabled));
+        QVERIFY(!list->item(1)->toolTip().isEmpty());
+        page()->setTutorialsDir(TrainPage::defaultTutorialsDir());
+    }
+
+    void startScreenPlaysTheDemonstration()
+    {
+        QVERIFY(page()->openTutorial("T0"));
+        QCOMPARE(page()->screen(), TrainPage::Screen::Start);
+        settle(500);
+        QVERIFY(m_window->grab().save(screenshotPath("train_start_en.png")));
+        page()->watchDemonstration();
+        TutorialRunner* runner = m_window->tutorialRunner();
+        QTRY_VERIFY_WITH_TIMEOUT(runner->latest() && runner->latest()->snapshot->t > 0.5, 10000);
+        QVERIFY(runner->latest()->duration > 5.0);
+        // seek forward, then back: the same input gives the same state
+        runner->setPaused(true);
+        runner->seek(6.0);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(runner->latest()->snapshot->t - 6.0) < 0.01, 30000);
+        const Eigen::VectorXd at6 = runner->latest()->snapshot->theta;
+        runner->seek(2.0);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(runner->latest()->snapshot->t - 2.0) < 0.01, 30000);
+        runner->seek(6.0);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(runner->latest()->snapshot->t - 6.0) < 0.01, 30000);
+        QVERIFY((runner->latest()->snapshot->theta - at6).norm() < 1e-12);
+        // speed 2: simulated time runs faster than the wall clock
+        runner->setSpeed(2.0);
+        runner->setPaused(false);
+        const double t0 = runner->latest()->snapshot->t;
+        QTest::qWait(1000);
+        const double advanced = runner->latest()->snapshot->t - t0;
+        QVERIFY2(advanced > 1.2, qPrintable(QString::number(advanced)));
+        settle();
+        QVERIFY(page()->demoSlider()->value() > 60);
+        QVERIFY(m_window->grab().save(screenshotPath("train_demo_en.png")));
+    }
+
+    void liveAttemptTakesTheKeyboardAndShowsTheHud()
+    {
+        QVERIFY(page()->openTutorial("T0"));
+        page()->startAttempt();
+        QCOMPARE(page()->screen(), TrainPage::Screen::Attempt);
+        TutorialRunner* runner = m_window->tutorialRunner();
+        QVERIFY(runner->wantsCommands());
+        QTRY_VERIFY_WITH_TIMEOUT(runner->latest() && runner->latest()->snapshot->t > 0.3, 10000);
+        // the station's keyboard: Q opens the first drive (C 1, the slew) while held
+        Viewport* view = page()->attemptViewport();
+        view->setFocus();
+        const double before = runner->latest()->snapshot->theta[0];
+        QTest::keyPress(view, Qt::Key_Q);
+        QTest::qWait(800);
+        QTest::keyRelease(view, Qt::Key_Q);
+        settle();
+        const double after = runner->latest()->snapshot->theta[0];
+        QVERIFY2(std::abs(after - before) > 1e-3, qPrintable(QString("%1 → %2").arg(before).arg(after)));
+        // the HUD: the goal's name, the time against the limit, the distance
+        const QString hud = page()->hud()->text();
+        QVERIFY2(hud.contains("Bring the claws to the green sphere"), qPrintable(hud));
+        QVERIFY2(hud.contains("Time:") && hud.contains("/ 120 s"), qPrintable(hud));
+        QVERIFY2(hud.contains("Distance:"), qPrintable(hud));
+        QVERIFY(page()->hud()->font().pixelSize() >= 20 || page()->hud()->fontInfo().pixelSize() >= 20);
+        QVERIFY(m_window->grab().save(screenshotPath("train_hud_en.png")));
+        // Esc ends it: a result, not passed
+        QTest::keyClick(view, Qt::Key_Escape);
+        QTRY_VERIFY_WITH_TIMEOUT(page()->screen() == TrainPage::Screen::Result, 5000);
+        QVERIFY(!runner->wantsCommands());
+        QCOMPARE(page()->lastRun()->result.endReason, std::string("aborted"));
+        QVERIFY(!page()->lastRun()->result.passed);
+        QVERIFY(page()->resultHeading()->text().contains("NOT PASSED"));
+    }
+
+    void demonstrationDrivenAttemptPasses()
+    {
+        passWithTheDemonstration();
+        const trainer::TutorialResult& r = page()->lastRun()->result;
+        QVERIFY2(r.passed, r.endReason.c_str());
+        QCOMPARE(page()->resultHeading()->text(), QString("PASSED"));
+        QCOMPARE(page()->breakdownTable()->rowCount(), int(r.breakdown.size()));
+        QVERIFY(r.breakdown.size() >= 4);
+        // the next stage is unlocked now
+        QPushButton* next = m_window->findChild<QPushButton*>("NextButton");
+        QCOMPARE(next->isEnabled(), page()->courseList()->count() > 1);
+        QVERIFY(m_window->grab().save(screenshotPath("train_result_en.png")));
+        // the course remembers the stars
+        page()->showCourse();
+        QVERIFY(page()->courseList()->item(0)->text().contains(QChar(0x2605)));
+        QCOMPARE(page()->progressOf("T0").passed, true);
+        // in the trainee records: the guest's attempts at T0, the aborted one and the passed one
+        trainer::records::RecordsDb* records = page()->records();
+        QVERIFY2(records, qPrintable(page()->recordsProblem()));
+        trainer::records::Operator guest;
+        QVERIFY(records->findOperator("guest", guest));
+        QList<trainer::records::Attempt> attempts;
+        QVERIFY(records->attemptsOf(guest.id, attempts));
+        QCOMPARE(attempts.size(), 2);
+        QCOMPARE(attempts[0].tutorialId, QString("T0"));  // newest first
+        QVERIFY(attempts[0].passed);
+        QCOMPARE(attempts[0].status, trainer::records::AttemptStatus::Finished);
+        QVERIFY(!attempts[0].events.isEmpty());
+        QCOMPARE(attempts[1].status, trainer::records::AttemptStatus::Aborted);
+        QCOMPARE(page()->progressOf("T0").attempts, 2);
+        if (page()->courseList()->count() > 1) {
+            QVERIFY(page()->courseList()->item(1)->flags() & Qt::ItemIsEnabled);
+            QVERIFY(page()->openTutorial("T0"));
+            passWithTheDemonstration();
+            next->click();
+            QCOMPARE(page()->screen(), TrainPage::Screen::Start);
+            QVERIFY(page()->tutorial()->spec.level >= 1);
+        }
+    }
+
+    void debriefShowsThePlotTheTimelineAndTheExpert()
+    {
+        QVERIFY(page()->openTutorial("T0"));
+        passWithTheDemonstration();
+        page()->showDebrief();
+        QCOMPARE(page()->screen(), TrainPage::Screen::Debrief);
+        QChart* chart = page()->forceChart()->chart();
+        QVERIFY(chart);
+        QCOMPARE(chart->series().size(), 1);
+        auto* series = qobject_cast<QLineSeries*>(chart->series().first());
+        QVERIFY(series && series->count() > 100);
+        QVERIFY(chart->title().contains("C 2"));  // the lift cylinder carries the most
+        QVERIFY(page()->timeline()->count() >= 1);
+        QTRY_VERIFY_WITH_TIMEOUT(page()->expertRun(), 60000);
+        QTableWidget* cmp = page()->comparisonTable();
+        QCOMPARE(cmp->rowCount(), 5);
+        bool ok = false;
+        QLocale().toDouble(cmp->item(4, 2)->text(), &ok);
+        QVERIFY2(ok, qPrintable(cmp->item(4, 2)->text()));
+        // the same input, the same run: the expert's score is the attempt's
+        QCOMPARE(cmp->item(4, 1)->text(), cmp->item(4, 2)->text());
+        // a click on the goal's event seeks the replay there
+        QListWidgetItem* last = page()->timeline()->item(page()->timeline()->count() - 1);
+        const QRect rect = page()->timeline()->visualItemRect(last);
+        QTest::mouseClick(page()->timeline()->viewport(), Qt::LeftButton, {}, rect.center());
+        QTRY_VERIFY(page()->replaySlider()->value() > 0);
+        settle(500);
+        QVERIFY(m_window->grab().save(screenshotPath("train_debrief_en.png")));
+    }
+
+    void kioskModeIsFullScreenAndTheKeysLeaveIt()
+    {
+        QSettings().remove("trainer/pin");
+        m_window->setWorkspace(MainWindow::Workspace::Model);
+        m_window->setKioskMode(true);
+        settle(500);
+        QVERIFY(m_window->isKioskMode());
+        QVERIFY(m_window->isFullScreen());
+        QCOMPARE(m_window->workspace(), MainWindow::Workspace::Train);
+        QVERIFY(!m_window->findChild<QToolBar*>("WorkspaceBar")->isVisible());
+        QVERIFY(!m_window->menuBar()->isVisible());
+        m_window->setWorkspace(MainWindow::Workspace::Model);  // refused in kiosk mode
+        QCOMPARE(m_window->workspace(), MainWindow::Workspace::Train);
+        QVERIFY(m_window->grab().save(screenshotPath("train_kiosk_en.png")));
+        // no PIN: the keys alone
+        QTest::keyClick(page(), Qt::Key_F12, Qt::ControlModifier | Qt::ShiftModifier);
+        QTRY_VERIFY(!m_window->isKioskMode());
+        QVERIFY(m_window->findChild<QToolBar*>("WorkspaceBar")->isVisible());
+        QVERIFY(m_window->menuBar()->isVisible());
+        // a PIN: asked, a wrong one keeps the kiosk, the right one leaves
+        QSettings().setValue("trainer/pin", "4711");
+        m_window->setKioskMode(true);
+        settle();
+        QTest::keyClick(page(), Qt::Key_F12, Qt::ControlModifier | Qt::ShiftModifier);
+        QInputDialog* dialog = nullptr;
+        QTRY_VERIFY((dialog = m_window->findChild<QInputDialog*>("KioskPinDialog")) != nullptr);
+        dialog->setTextValue("1234");
+        dialog->accept();
+        settle();
+        QVERIFY(m_window->isKioskMode());
+        QTest::keyClick(page(), Qt::Key_F12, Qt::ControlModifier | Qt::ShiftModifier);
+        QTRY_VERIFY((dialog = m_window->findChild<QInputDialog*>("KioskPinDialog")) != nullptr);
+        dialog->setTextValue("4711");
+        dialog->accept();
+        QTRY_VERIFY(!m_window->isKioskMode());
+        QSettings().remove("trainer/pin");
+    }
+
+    void operatorsAreKeptApart()
+    {
+        page()->showCourse();
+        page()->setOperator("4711");
+        QCOMPARE(page()->progressOf("T0").attempts, 0);
+        QVERIFY(!page()->courseList()->item(0)->text().contains(QChar(0x2605)));
+        if (page()->courseList()->count() > 1) QVERIFY(!(page()->courseList()->item(1)->flags() & Qt::ItemIsEnabled));
+        page()->setOperator(QString());
+        QVERIFY(page()->progressOf("T0").passed);
+    }
+
+    void spanishScreens()
+    {
+        m_window.reset();
+        QLocale::setDefault(QLocale(QLocale::Spanish, QLocale::Spain));
+        QTranslator translator;
+        const bool translated = translator.load(QLocale(), "padrob", "_", QStringLiteral(PADROB_QM_DIR));
+        if (translated) QApplication::installTranslator(&translator);
+        openWindow();
+        QVERIFY(page()->courseList()->item(0)->text().contains("Alcanzar un objetivo"));
+        QVERIFY(page()->openTutorial("T0"));
+        settle(500);
+        QVERIFY(m_window->grab().save(screenshotPath("train_start_es.png")));
+        page()->startAttempt();
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->tutorialRunner()->latest()->snapshot->t > 0.5, 10000);
+        settle();
+        QVERIFY2(page()->hud()->text().contains("Lleve las garras a la esfera verde"), qPrintable(page()->hud()->text()));
+        QVERIFY(m_window->grab().save(screenshotPath("train_hud_es.png")));
+        page()->stopAttempt();
+        QTRY_VERIFY_WITH_TIMEOUT(page()->screen() == TrainPage::Screen::Result, 5000);
+        passWithTheDemonstration();
+        QVERIFY(m_window->grab().save(screenshotPath("train_result_es.png")));
+        page()->showDebrief();
+        QTRY_VERIFY_WITH_TIMEOUT(page()->expertRun(), 60000);
+        settle(500);
+        QVERIFY(m_window->grab().save(screenshotPath("train_debrief_es.png")));
+        m_window.reset();
+        if (translated) QApplication::removeTranslator(&translator);
+        QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+    }
+};
+
+int main(int argc, char** argv)
+{
+    QSurfaceFormat::setDefaultFormat(Viewport::surfaceFormat());
+    QApplication app(argc, argv);
+    TrainTest test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "train_test.moc"
