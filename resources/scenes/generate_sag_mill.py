@@ -142,6 +142,8 @@ header = f"""// ================================================================
 //   from everything and the liner is free until its back meets the pads. But
 //   with that grip the liner cannot be taken where the cart stands: the head
 //   would have to look down on the lifter 4.1 m out, 0.28 m beyond its reach.
+//   SO TUTORIAL T7 (resources/tutorials/t7_mill.tut) uses that grip with the
+//   cart 1 m nearer the machine (models/liner_mill.pad) and seats the liner.
 // =============================================================================
 
 GRAVITY 0 0 -9.81

@@ -374,17 +374,34 @@ void CollisionWorld::excludeFromScene(const std::vector<int>& shapeIndices)
     if (changed) m_impl->still.setup();
 }
 
-Clearance CollisionWorld::bodyToShapes(int body, const std::vector<int>& shapeIndices)
+Clearance CollisionWorld::bodyToShapes(int body, const std::vector<int>& shapeIndices, double cap)
 {
     Clearance best;
     for (int i : m_impl->moving) {
         if (m_shapes[std::size_t(i)].body != body) continue;
+        fcl::CollisionObjectd* a = m_impl->objects[std::size_t(i)].get();
         for (int j : shapeIndices) {
             if (std::size_t(j) >= m_shapes.size() || j == i) continue;
-            closer(best, m_impl->objects[std::size_t(i)].get(), m_impl->objects[std::size_t(j)].get(), i, j);
+            fcl::CollisionObjectd* b = m_impl->objects[std::size_t(j)].get();
+            // the boxes' distance is a lower bound of the shapes'
+            if (a->getAABB().distance(b->getAABB()) >= std::min(best.distance, cap)) continue;
+            closer(best, a, b, i, j);
         }
     }
     return best;
+}
+
+Clearance CollisionWorld::machineToScene(const std::vector<char>& skip)
+{
+    Query q{&m_shapes, &m_impl->parent, -1, {}};
+    for (int i : m_impl->moving) {
+        const int body = m_shapes[std::size_t(i)].body;
+        if (std::size_t(body) < skip.size() && skip[std::size_t(body)]) continue;
+        q.shape = i;
+        m_impl->still.distance(m_impl->objects[std::size_t(i)].get(), &q, distanceCallback);
+        if (q.best.distance <= 0) break;
+    }
+    return q.best;
 }
 
 }  // namespace solver

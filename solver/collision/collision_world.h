@@ -83,8 +83,13 @@ public:
     /// the people in the mill on their own); bodyToShapes() still sees them.
     void excludeFromScene(const std::vector<int>& shapeIndices);
     /// The smallest distance between one body's shapes (tree index) and the given shapes
-    /// (indices into shapes()), pair by pair.
-    Clearance bodyToShapes(int body, const std::vector<int>& shapeIndices);
+    /// (indices into shapes()), pair by pair; pairs whose bounding boxes are farther apart
+    /// than `cap` or than the best so far are not measured (invalid: none within `cap`).
+    Clearance bodyToShapes(int body, const std::vector<int>& shapeIndices,
+                           double cap = std::numeric_limits<double>::infinity());
+    /// machineToScene() over the bodies whose entry in `skip` (per tree index) is 0: one
+    /// running minimum, so each body's broad-phase query prunes by the others' best.
+    Clearance machineToScene(const std::vector<char>& skip);
 
 private:
     struct Impl;

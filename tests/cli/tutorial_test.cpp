@@ -69,6 +69,23 @@ TEST(CliTutorial, SwingingTheLinerIntoTheWallIsAHardHitThatEndsTheAttempt)
     EXPECT_NE(run.out.find("\"detail\": \"the blast wall"), std::string::npos) << run.out;  // the wall (G 101/102)
 }
 
+TEST(CliTutorial, InTheMillTheLinerSwungWithTheTelescopeOutHitsTheGrate)
+{
+    // T7's expert path without pulling the telescope in before the slew
+    std::string path = test::slurp(std::string(PADROB_SOURCE_DIR) + "/resources/tutorials/t7_mill.path");
+    const auto at = path.find("\n3=0.0\n");
+    ASSERT_NE(at, std::string::npos);
+    path.erase(at + 1, 6);
+    const std::string file = test::writeTemp("t7careless.path", path);
+    const std::string log = test::writeTemp("t7careless.log", "");
+    padrob("tutorial resources/tutorials/t7_mill.tut --autopilot '" + file + "' --record '" + log + "'");
+    const test::CliRun run = padrob("tutorial resources/tutorials/t7_mill.tut --input '" + log + "' --lang es");
+    EXPECT_EQ(run.status, 1) << run.out << run.err;
+    EXPECT_NE(run.out.find("hard-hit"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("la parrilla de descarga"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("Montaje de la lainera en el molino SAG"), std::string::npos) << run.out;
+}
+
 TEST(CliTutorial, BadInputExitsTwoWithWhereAndWhy)
 {
     const std::string bad = test::writeTemp("bad.tut", "TUTORIAL B\nTITLE ES \"a\" EN \"b\"\nMODEL \"nope.pad\"\nGOAL g GRASP\n");

@@ -401,28 +401,40 @@ void TutorialSession::checkClearances()
     const Scoring& sc = t.scoring();
     m_lastCheck = time();
     m_world->update(d);
-    // the load counts while carried, except near the place it is being set down on
+    // the load counts while carried, except near the place it is being set down on (its
+    // SEAT zone: a liner slid into its slot touches its neighbours): there only a hard
+    // hit counts
     bool loadCounts = m_grasped;
+    bool seating = false;
     const std::vector<Goal>& goals = t.spec.goals;
     if (loadCounts && m_progress.goal < int(goals.size())) {
         const Goal& g = goals[std::size_t(m_progress.goal)];
-        if (g.kind == Goal::Kind::Place && m_progress.distance >= 0 && m_progress.distance < 3 * g.tolerance) loadCounts = false;
+        const double seat = g.seat > 0 ? g.seat : 3 * g.tolerance;
+        if (g.kind == Goal::Kind::Place && m_progress.distance >= 0 && m_progress.distance < seat) {
+            loadCounts = false;
+            seating = true;
+        }
     }
     auto pointSpeed = [&](int body, const Eigen::Vector3d& world) {
         const std::size_t b = std::size_t(body);
         return (d.vel[b] + d.omega[b].cross(world - d.X_wb[b].translation())).norm();
     };
-    if (sc.avoidScene) {
-        solver::Clearance best;
-        int bestBody = -1;
-        for (int b = 0; b < m.nb; ++b) {
-            if (b == t.loadBody && !loadCounts) continue;
-            const solver::Clearance c = m_world->bodyToScene(b);
-            if (c.distance < best.distance) {
-                best = c;
-                bestBody = b;
+    if (sc.avoidScene && seating) {
+        const solver::Clearance c = m_world->bodyToScene(t.loadBody);
+        if (c.valid() && c.distance <= 0.0) {
+            const double v = pointSpeed(t.loadBody, c.pointA);
+            if (v > sc.hardSpeed) {
+                addEvent(TutorialEvent::Kind::HardHit, v, sc.hitPenalty, shapeName(c.shapeB), partOf(c.shapeB));
+                end("hard-hit", false);
+                return;
             }
         }
+    }
+    if (sc.avoidScene) {
+        m_skip.assign(std::size_t(m.nb), 0);
+        if (t.loadBody >= 0 && !loadCounts) m_skip[std::size_t(t.loadBody)] = 1;
+        solver::Clearance best = m_world->machineToScene(m_skip);
+        int bestBody = best.valid() ? m_world->shapes()[std::size_t(best.shapeA)].body : -1;
         // the arm against the load lying there (the fingers may touch it)
         if (t.loadBody >= 0 && !m_grasped && !m_fixed) {
             for (int b = 0; b < m.nb; ++b) {
@@ -467,7 +479,8 @@ void TutorialSession::checkClearances()
         solver::Clearance best;
         for (int b = 0; b < m.nb; ++b) {
             if (b == t.loadBody && !m_grasped) continue;
-            const solver::Clearance c = m_world->bodyToShapes(b, m_workerShapes[w]);
+            // only what is within reach of the zone matters (the HUD shows nearer than that)
+            const solver::Clearance c = m_world->bodyToShapes(b, m_workerShapes[w], std::min(best.distance, worker.zone + 1.0));
             if (c.distance < best.distance) best = c;
         }
         if (!best.valid()) continue;

@@ -68,6 +68,7 @@ struct Goal {
     std::vector<JointTarget> joints;  ///< Joint
     double dwell = 0.0;           ///< [s]
     bool fix = false;             ///< Place: the placed load is bolted (welded to the ground)
+    double seat = 0.0;            ///< Place: within this of the target the load's touches are free, hard hits not (0: 3 × tolerance) [m]
     solver::SourcePos pos;
 };
 

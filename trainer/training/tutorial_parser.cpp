@@ -403,6 +403,11 @@ TutorialSpec parseTutorial(const std::string& text, const std::string& file, Dia
                 g.tolerance = l.number("the tolerance [m]");
                 positive(l, g.tolerance, p, "the tolerance");
                 if (l.accept("FIX")) g.fix = true;
+                if (l.accept("SEAT")) {
+                    const SourcePos sp = l.pos();
+                    g.seat = l.number("the seat zone [m]");
+                    positive(l, g.seat, sp, "SEAT");
+                }
             } else {
                 l.error("unknown-goal", l.pos(), "expected the kind of goal: REACH, JOINT, GRASP or PLACE",
                         "e.g. GOAL g1 REACH BODY 6 POINT 0 0 0 AT 1 2 0.5 TOL 0.1");
