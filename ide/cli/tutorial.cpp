@@ -34,10 +34,11 @@ std::string help()
               "  --demo                replay the tutorial's own demonstration (its DEMO statement)\n"
               "  --profile P           the station profile for the log: a .json file or the name of\n"
               "                        one of the model's profiles (default: the tutorial's PROFILE)\n"
-              "  --autopilot PATH --record OUT\n"
+              "  --autopilot PATH --record OUT [--camera CAM]\n"
               "                        fly the joint targets of PATH with the levers of a virtual\n"
               "                        console and record them to OUT (a demonstration; see\n"
-              "                        docs/training.md), then print the result of that run\n"
+              "                        docs/training.md), and a chase camera to CAM, then print\n"
+              "                        the result of that run\n"
               "  --lang es|en          language of the tutorial's texts (default: en)\n"
               "  --json                print the result as one JSON object\n"
               "\n"
@@ -154,7 +155,7 @@ void printJson(const trainer::Tutorial& t, const trainer::TutorialResult& r, con
 
 int runTutorial(const std::vector<std::string>& args)
 {
-    std::string file, input, profile, autopilot, record, lang = "en";
+    std::string file, input, profile, autopilot, record, camera, lang = "en";
     bool demo = false, json = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
@@ -166,10 +167,12 @@ int runTutorial(const std::vector<std::string>& args)
         if (a == "-h" || a == "--help") {
             printOut(help());
             return kExitOk;
-        } else if (a == "--input" || a == "--profile" || a == "--autopilot" || a == "--record" || a == "--lang") {
+        } else if (a == "--input" || a == "--profile" || a == "--autopilot" || a == "--record" || a == "--lang" || a == "--camera") {
             std::string v;
             if (!value(v)) return usage(a + tr(" needs a value"));
-            (a == "--input" ? input : a == "--profile" ? profile : a == "--autopilot" ? autopilot : a == "--record" ? record : lang) = v;
+            (a == "--input" ? input : a == "--profile" ? profile : a == "--autopilot" ? autopilot : a == "--record" ? record
+                         : a == "--camera"                                                        ? camera
+                                                                                                  : lang) = v;
         } else if (a == "--demo") {
             demo = true;
         } else if (a == "--json") {
@@ -186,6 +189,7 @@ int runTutorial(const std::vector<std::string>& args)
     if (lang != "es" && lang != "en") return usage(tr("--lang is es or en"));
     if (int(!input.empty()) + int(demo) + int(!autopilot.empty()) > 1) return usage(tr("--input, --demo and --autopilot exclude each other"));
     if (autopilot.empty() != record.empty()) return usage(tr("--autopilot and --record go together"));
+    if (!camera.empty() && autopilot.empty()) return usage(tr("--camera goes with --autopilot"));
 
     solver::Diagnostics diags(file);
     std::shared_ptr<const trainer::Tutorial> tut = trainer::loadTutorial(file, diags);
@@ -211,9 +215,15 @@ int runTutorial(const std::vector<std::string>& args)
             return kExitUsage;
         }
         std::vector<trainer::AutopilotWaypoint> path;
+        trainer::CameraPath cameraPath;
         if (!trainer::parseAutopilotPath(QString::fromUtf8(f.readAll()), path, &error) ||
-            !trainer::recordWithAutopilot(tut, path, stationProfile, QString::fromStdString(record), run, &error)) {
+            !trainer::recordWithAutopilot(tut, path, stationProfile, QString::fromStdString(record), run, &error,
+                                          camera.empty() ? nullptr : &cameraPath)) {
             printErr("padrob tutorial: " + autopilot + ": " + error.toStdString() + "\n");
+            return kExitUsage;
+        }
+        if (!camera.empty() && !cameraPath.save(QString::fromStdString(camera), &error)) {
+            printErr("padrob tutorial: " + camera + ": " + error.toStdString() + "\n");
             return kExitUsage;
         }
     } else {

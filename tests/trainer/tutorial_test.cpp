@@ -3,6 +3,7 @@
 // liner (and missing it), carrying it, placing and dropping it, hits, hard hits, a
 // worker's safety zone, limit bangs, the time limit, and the score.
 
+#include "trainer/training/camera_path.h"
 #include "trainer/training/runner.h"
 #include "trainer/training/session.h"
 #include "solver/kinematics/kinematics.h"
@@ -468,4 +469,36 @@ TEST(Autopilot, PathsAreCheckedLineByLine)
     EXPECT_TRUE(error.startsWith("line 2")) << error.toStdString();
     EXPECT_FALSE(parseAutopilotPath("wait=-1\n", p, &error));
     EXPECT_FALSE(parseAutopilotPath("x=1\n", p, &error));
+}
+
+TEST(CameraPath, KeysRoundTripAndInterpolateTheShortWayRound)
+{
+    CameraPath p;
+    p.add({0.0, {0, 0, 0}, 10, 3.0, 0.2});
+    p.add({2.0, {2, 0, 1}, 6, -3.0, 0.6});  // yaw across ±π: the short way is through π
+    QTemporaryDir dir;
+    QString error;
+    ASSERT_TRUE(p.save(dir.filePath("x.cam"), &error)) << error.toStdString();
+    CameraPath q;
+    ASSERT_TRUE(CameraPath::load(dir.filePath("x.cam"), q, &error)) << error.toStdString();
+    ASSERT_EQ(q.keys().size(), 2u);
+    const CameraKey mid = q.at(1.0);
+    EXPECT_NEAR(mid.target.x(), 1.0, 1e-9);
+    EXPECT_NEAR(mid.distance, 8.0, 1e-9);
+    EXPECT_NEAR(std::remainder(mid.yaw - std::numbers::pi, 2 * std::numbers::pi), 0.0, 1e-6);
+    EXPECT_NEAR(q.at(-1).distance, 10.0, 1e-9);  // held before the first key
+    EXPECT_NEAR(q.at(9).pitch, 0.6, 1e-9);       // and after the last
+    EXPECT_FALSE(CameraPath::parse("0 1 2 3 4 5 6\n", q, &error));  // no header
+    EXPECT_FALSE(CameraPath::parse("# padrob camera path 1\n0 1 2 3 4 5\n", q, &error));
+    EXPECT_TRUE(error.startsWith("line 2")) << error.toStdString();
+    EXPECT_FALSE(CameraPath::parse("# padrob camera path 1\n1 0 0 0 5 0 0\n0 0 0 0 5 0 0\n", q, &error));  // time back
+    EXPECT_FALSE(CameraPath::parse("# padrob camera path 1\n0 0 0 0 -5 0 0\n", q, &error));
+    // every shipped demonstration has its camera
+    solver::Diagnostics d;
+    auto t = loadTutorial(kSource + "/resources/tutorials/t7_mill.tut", d);
+    ASSERT_TRUE(t) << dump(d);
+    EXPECT_TRUE(d.empty()) << dump(d);
+    ASSERT_FALSE(t->cameraFile.empty());
+    ASSERT_TRUE(CameraPath::load(QString::fromStdString(t->cameraFile), q, &error));
+    EXPECT_GT(q.duration(), 100.0);
 }

@@ -175,7 +175,8 @@ bool parseAutopilotPath(const QString& text, std::vector<AutopilotWaypoint>& out
 }
 
 bool recordWithAutopilot(std::shared_ptr<const Tutorial> tutorial, const std::vector<AutopilotWaypoint>& path,
-                         const StationProfile& profile, const QString& logPath, RunOutput& out, QString* error)
+                         const StationProfile& profile, const QString& logPath, RunOutput& out, QString* error,
+                         CameraPath* camera)
 {
     const Tutorial& t = *tutorial;
     const solver::Model& m = *t.model;
@@ -229,6 +230,8 @@ bool recordWithAutopilot(std::shared_ptr<const Tutorial> tutorial, const std::ve
     double waitUntil = kSettle;
     bool waiting = true;
     const double dt = 1e-3;
+    double nextCamera = 0.0;
+    Eigen::Vector3d look = Eigen::Vector3d::Zero();
     constexpr double kReadPeriod = 0.02;
     double lastRead = -1.0;
     while (!session.ended()) {
@@ -283,6 +286,14 @@ bool recordWithAutopilot(std::shared_ptr<const Tutorial> tutorial, const std::ve
         engine->update(now);
         session.setCommands(engine->commands());
         session.step();
+        if (camera && now >= nextCamera - 1e-9) {
+            nextCamera = now + 0.5;
+            const Eigen::Vector3d p = session.result().finalPoint;
+            look = camera->empty() ? p : Eigen::Vector3d(look + 0.3 * (p - look));
+            const double heading = std::atan2(look.y(), look.x());
+            camera->add({now, look, Eigen::Vector2d(look.x(), look.y()).norm() + 4.5,
+                         heading + std::numbers::pi + 0.6, 0.5});
+        }
     }
     engine->setRecorder(nullptr);
     // the last line marks the end of the run: a log holds changes only, and the levers

@@ -12,6 +12,7 @@
 
 #include "trainer/input/input_log.h"
 #include "trainer/station/profile.h"
+#include "trainer/training/camera_path.h"
 #include "trainer/training/session.h"
 
 #include <QString>
@@ -55,7 +56,10 @@ bool parseAutopilotPath(const QString& text, std::vector<AutopilotWaypoint>& out
 /// `profile` maps (an axis per drive), recording them to `logPath`. False with `error`
 /// when a target's drive has no lever in the profile, or the log cannot be written. The
 /// run's result (as the autopilot flew it) is in `out`.
+/// With `camera`, a chase camera is recorded too: every 0.5 s, looking at the tracked
+/// point (smoothed) from behind the machine and 35° to the side, from above.
 bool recordWithAutopilot(std::shared_ptr<const Tutorial> tutorial, const std::vector<AutopilotWaypoint>& path,
-                         const StationProfile& profile, const QString& logPath, RunOutput& out, QString* error);
+                         const StationProfile& profile, const QString& logPath, RunOutput& out, QString* error,
+                         CameraPath* camera = nullptr);
 
 }  // namespace trainer

@@ -7,6 +7,7 @@
 #include "solver/model/load.h"
 #include "solver/parse/lexer.h"
 #include "trainer/input/input_log.h"
+#include "trainer/training/camera_path.h"
 #include "trainer/station/profile.h"
 #include "trainer/station/profile_store.h"
 #include "trainer/training/reach.h"
@@ -359,7 +360,16 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
                           "record it again (Train ▸ Record demonstration) or fix the path");
             tut->demoFile.clear();
         }
-        if (!s.cameraPath.empty()) tut->cameraFile = resolvePath(tut->directory, s.cameraPath);
+        if (!s.cameraPath.empty()) {
+            tut->cameraFile = resolvePath(tut->directory, s.cameraPath);
+            CameraPath camera;
+            QString cameraError;
+            if (!CameraPath::load(QString::fromStdString(tut->cameraFile), camera, &cameraError)) {
+                diags.warning("bad-camera-path", s.demoPos, "the demonstration's camera path cannot be used: " + cameraError.toStdString(),
+                              "record the demonstration again, or remove CAMERA: the viewer's own camera is used");
+                tut->cameraFile.clear();
+            }
+        }
     }
     return tut;
 }
