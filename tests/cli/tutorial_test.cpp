@@ -86,6 +86,37 @@ TEST(CliTutorial, InTheMillTheLinerSwungWithTheTelescopeOutHitsTheGrate)
     EXPECT_NE(run.out.find("Montaje de la lainera en el molino SAG"), std::string::npos) << run.out;
 }
 
+TEST(CliTutorial, CarelessRunsOfEveryStageFailWithTheirPenalties)
+{
+    struct Case {
+        const char* tutorial;
+        const char* path;   // the autopilot's careless path
+        const char* event;  // an event the run must show
+        const char* end;    // its end reason
+    };
+    const Case cases[] = {
+        // the wrist held against its stop, hit at full speed, until the time is up
+        {"t1_wrist", "5=0.02\n", "\"kind\": \"limit-bang\"", "time-up"},
+        // the telescope slammed out and held there, the head never rolled
+        {"t2_extension", "3=1.2\n", "\"kind\": \"limit-bang\"", "time-up"},
+        // the claws closed and never opened again
+        {"t4_claws", "9=0.14\n", "\"kind\": \"goal\"", "input-ended"},
+        // the liner let go in the air
+        {"t5_grasp", "1=-90deg\n5=0.413 2=1.46095\n3=0.45\n9=0.1415\n2=1.50\n9=0.0\n", "\"kind\": \"drop\"", "input-ended"},
+    };
+    for (const Case& c : cases) {
+        const std::string tut = std::string("resources/tutorials/") + c.tutorial + ".tut";
+        const std::string path = test::writeTemp(std::string(c.tutorial) + ".careless.path", c.path);
+        const std::string log = test::writeTemp(std::string(c.tutorial) + ".careless.log", "");
+        padrob("tutorial " + tut + " --autopilot '" + path + "' --record '" + log + "'");
+        const test::CliRun run = padrob("tutorial " + tut + " --input '" + log + "' --json");
+        EXPECT_EQ(run.status, 1) << c.tutorial << "\n" << run.out << run.err;
+        EXPECT_NE(run.out.find("\"passed\": false"), std::string::npos) << c.tutorial;
+        EXPECT_NE(run.out.find(c.event), std::string::npos) << c.tutorial << "\n" << run.out;
+        EXPECT_NE(run.out.find(std::string("\"end_reason\": \"") + c.end + "\""), std::string::npos) << c.tutorial << "\n" << run.out;
+    }
+}
+
 TEST(CliTutorial, BadInputExitsTwoWithWhereAndWhy)
 {
     const std::string bad = test::writeTemp("bad.tut", "TUTORIAL B\nTITLE ES \"a\" EN \"b\"\nMODEL \"nope.pad\"\nGOAL g GRASP\n");
