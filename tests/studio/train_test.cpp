@@ -4,18 +4,27 @@
 // the HUD, and Stop ends it; an attempt driven by the demonstration's input log
 // passes, and the debrief shows the force plot, the timeline and the comparison with
 // the expert; kiosk mode opens full screen without the mode bar and menus, and
-// Ctrl+Shift+F12 (with the PIN when one is set) leaves it. Screenshots of the start
-// screen, the HUD and the result, in English and in Spanish.
+// Ctrl+Shift+F12 (with the PIN when one is set) leaves it. The trainer's records view
+// (operators, attempts, chart, CSV, adding an operator; records that cannot be opened:
+// the attempt goes to a pending file, imported at the next opening); the expert's
+// ghost beside a live attempt; a live attempt's recorded input saved as the stage's
+// demonstration replays headless to the same result. Screenshots of the start screen,
+// the HUD and the result, in English and in Spanish (every tutorial:
+// train_shots_test).
 
 #include "ide/studio/app/main_window.h"
+#include "ide/studio/train/records_view.h"
 #include "ide/studio/train/train_page.h"
 #include "ide/studio/train/tutorial_runner.h"
 #include "ide/studio/view/viewport.h"
 #include "trainer/station/station.h"
+#include "trainer/training/camera_path.h"
+#include "trainer/training/runner.h"
 
 #include <QApplication>
 #include <QChart>
 #include <QChartView>
+#include <QCheckBox>
 #include <QDir>
 #include <QFile>
 #include <QInputDialog>
@@ -25,6 +34,7 @@
 #include <QMenuBar>
 #include <QPushButton>
 #include <QSettings>
+#include <QStatusBar>
 #include <QSlider>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
@@ -171,6 +181,19 @@ private slots:
         QVERIFY2(advanced > 1.2, qPrintable(QString::number(advanced)));
         settle();
         QVERIFY(page()->demoSlider()->value() > 60);
+        // the view follows the expert's recorded camera (DEMO … CAMERA)
+        trainer::CameraPath path;
+        QString error;
+        QVERIFY2(trainer::CameraPath::load(QString::fromStdString(std::string(PADROB_SOURCE_DIR) +
+                                                                  "/resources/tutorials/t0_reach.demo.cam"),
+                                           path, &error),
+                 qPrintable(error));
+        runner->setPaused(true);
+        settle();
+        const trainer::CameraKey key = path.at(runner->latest()->snapshot->t);
+        const Camera& cam = page()->demoViewport()->cameraState();
+        QVERIFY2((cam.target - key.target).norm() < 1e-6, qPrintable(QString::number((cam.target - key.target).norm())));
+        QCOMPARE(cam.distance, key.distance);
         QVERIFY(m_window->grab().save(screenshotPath("train_demo_en.png")));
     }
 
@@ -276,6 +299,194 @@ private slots:
         QTRY_VERIFY(page()->replaySlider()->value() > 0);
         settle(500);
         QVERIFY(m_window->grab().save(screenshotPath("train_debrief_en.png")));
+    }
+
+    void recordsViewShowsOperatorsAttemptsAndChart()
+    {
+        page()->showCourse();
+        QPushButton* button = page()->recordsButton();
+        QVERIFY(button->isVisible());
+        button->click();
+        QCOMPARE(page()->screen(), TrainPage::Screen::Records);
+        RecordsView* view = page()->recordsView();
+        QVERIFY(!view->message()->isVisible());
+        QTableWidget* ops = view->operatorsTable();
+        QVERIFY(ops->rowCount() >= 1);
+        QVERIFY(view->selectOperator("guest"));
+        const int row = ops->currentRow();
+        QCOMPARE(ops->item(row, 0)->text(), QString("guest"));
+        QVERIFY(ops->item(row, 2)->text().toInt() >= 3);  // attempts
+        QCOMPARE(ops->item(row, 3)->text().toInt(), 1);   // tutorials passed: T0
+        // the attempts, newest first, with the newest one's breakdown and events
+        QTableWidget* attempts = view->attemptsTable();
+        QCOMPARE(attempts->rowCount(), ops->item(row, 2)->text().toInt());
+        const int guestAttempts = attempts->rowCount();
+        QVERIFY(attempts->item(0, 2)->text().contains("passed"));
+        QVERIFY(view->breakdownTable()->rowCount() >= 4);
+        QVERIFY(view->eventsList()->count() >= 1);
+        // the chart: T0's scores and its pass mark
+        QChart* chart = view->chartView()->chart();
+        QCOMPARE(chart->series().size(), 2);
+        auto* scores = qobject_cast<QLineSeries*>(chart->series().at(0));
+        QVERIFY(scores && scores->count() == attempts->rowCount());
+        QVERIFY(chart->series().at(1)->name().contains("pass mark"));
+        // an older attempt: its own breakdown (the aborted one has one too)
+        attempts->setCurrentCell(attempts->rowCount() - 1, 0);
+        QVERIFY(view->eventsList()->count() >= 1);
+        // adding an operator; a code taken is refused
+        const int before = ops->rowCount();
+        QString error;
+        QVERIFY2(view->addOperator("B-17", "Ana Pérez", &error), qPrintable(error));
+        QCOMPARE(ops->rowCount(), before + 1);
+        QCOMPARE(ops->item(ops->currentRow(), 1)->text(), QString("Ana Pérez"));
+        QCOMPARE(view->attemptsTable()->rowCount(), 0);
+        QVERIFY(!view->addOperator("B-17", "again", &error));
+        QVERIFY(!error.isEmpty());
+        // Export CSV: a header and a row per attempt
+        QTemporaryDir dir;
+        const QString csv = dir.filePath("attempts.csv");
+        QVERIFY2(view->exportCsv(csv, &error), qPrintable(error));
+        QFile file(csv);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QStringList lines = QString::fromUtf8(file.readAll()).split("\r\n", Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 1 + guestAttempts);  // only the guest has attempts
+        view->selectOperator("guest");
+        settle();
+        QVERIFY(m_window->grab().save(screenshotPath("train_records_en.png")));
+        page()->showCourse();
+        // in kiosk mode: hidden without a PIN
+        m_window->setKioskMode(true);
+        settle();
+        QVERIFY(!page()->recordsButton()->isVisible());
+        m_window->setKioskMode(false);
+        settle();
+        QVERIFY(page()->recordsButton()->isVisible());
+    }
+
+    void recordsThatCannotOpenLeaveTrainingGoing()
+    {
+        QTemporaryDir dir;
+        const QString junk = dir.filePath("records.sqlite");
+        QFile f(junk);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(QByteArray(8192, 'x'));
+        f.close();
+        QVERIFY(!page()->openRecordsAt(junk));
+        QVERIFY(!page()->records());
+        QVERIFY(!page()->recordsProblem().isEmpty());
+        page()->showRecords();
+        QVERIFY(page()->recordsView()->message()->isVisible());
+        QVERIFY(page()->recordsView()->message()->text().contains(page()->recordsProblem()));
+        settle();
+        QVERIFY(m_window->grab().save(screenshotPath("train_records_problem_en.png")));
+        // training goes on: an attempt (stopped at once) goes to a pending file …
+        QVERIFY(page()->openTutorial("T0"));
+        page()->startAttempt();
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->tutorialRunner()->latest()->snapshot->t > 0.2, 5000);
+        page()->stopAttempt();
+        QTRY_VERIFY_WITH_TIMEOUT(page()->screen() == TrainPage::Screen::Result, 5000);
+        QVERIFY(page()->resultNote()->text().contains("could not be written"));
+        // … imported when the records open again: at the next start, said in the status bar
+        m_window.reset();
+        openWindow();
+        QVERIFY2(page()->records(), qPrintable(page()->recordsProblem()));
+        QCOMPARE(page()->importedPending(), 1);
+        auto* note = m_window->statusBar()->findChild<QLabel*>("RecordsNote");
+        QVERIFY(note);
+        QVERIFY2(note->text().contains("1 attempt"), qPrintable(note->text()));
+        page()->showCourse();
+    }
+
+    void expertGhostRunsBesideTheAttempt()
+    {
+        QVERIFY(page()->openTutorial("T0"));
+        page()->setShowExpert(true);
+        page()->startAttempt();
+        TutorialRunner* runner = m_window->tutorialRunner();
+        QVERIFY(runner->hasGhost());
+        QTRY_VERIFY_WITH_TIMEOUT(runner->latest()->snapshot->t > 2.5 && runner->latest()->ghost, 10000);
+        const auto f = runner->latest();
+        // in step with the attempt's clock, and moving where the operator does not
+        QVERIFY2(std::abs(f->ghost->t - f->snapshot->t) < 2e-3, qPrintable(QString("%1 %2").arg(f->ghost->t).arg(f->snapshot->t)));
+        QVERIFY((f->ghost->theta - f->snapshot->theta).norm() > 1e-3);
+        QTRY_VERIFY(page()->attemptViewport()->ghost() != nullptr);
+        settle();
+        QVERIFY(m_window->grab().save(screenshotPath("train_ghost_en.png")));
+        // off: no more ghost drawn, and the runner drops it
+        page()->expertBox()->click();
+        QVERIFY(!page()->showExpert());
+        QVERIFY(!page()->attemptViewport()->ghost());
+        QVERIFY(!runner->hasGhost());
+        QTRY_VERIFY(!runner->latest()->ghost);
+        page()->stopAttempt();
+        QTRY_VERIFY_WITH_TIMEOUT(page()->screen() == TrainPage::Screen::Result, 5000);
+        QVERIFY(!page()->attemptViewport()->ghost());
+    }
+
+    void recordedInputReplaysToTheSameResult()
+    {
+        // a live attempt whose station replays the demonstration (as an operator's
+        // devices would give it), recorded as every live attempt is
+        QVERIFY(page()->openTutorial("T0"));
+        const auto demo = page()->demoLog();
+        QVERIFY(demo);
+        trainer::Station* station = m_window->station();
+        trainer::StationProfile before;
+        trainer::StationProfile profile = page()->demoProfile();
+        profile.devices.clear();
+        station->call([&](trainer::StationEngine& e) {
+            before = e.profile();
+            e.setProfile(profile);
+        });
+        page()->startAttempt();
+        QVERIFY(m_window->tutorialRunner()->wantsCommands());
+        const auto devices = trainer::replayDevices(demo);
+        station->call([&](trainer::StationEngine& e) {
+            e.setReplayOnly(true);
+            for (const auto& d : devices) e.addDevice(d);
+        });
+        QTRY_VERIFY_WITH_TIMEOUT(page()->screen() == TrainPage::Screen::Result, 60000);
+        station->call([&](trainer::StationEngine& e) {
+            for (const auto& d : devices) e.removeDevice(d.get());
+            e.setReplayOnly(false);
+            e.setProfile(before);
+        });
+        const trainer::TutorialResult live = page()->lastRun()->result;
+        QVERIFY2(live.passed, live.endReason.c_str());
+        QVERIFY(!page()->recordedInput().isEmpty());
+        QVERIFY(m_window->findChild<QPushButton*>("UseDemoButton")->isVisible());
+        // saved, it replays headless to the same result
+        QTemporaryDir dir;
+        const QString saved = dir.filePath("mine.demo.log");
+        QString error;
+        QVERIFY2(page()->saveDemonstration(saved, &error), qPrintable(error));
+        QVERIFY(QFile::exists(saved + ".profile.json"));
+        QVERIFY2(page()->useAsDemonstration(saved, &error), qPrintable(error));
+        QCOMPARE(page()->demoFile(), QFileInfo(saved).absoluteFilePath());
+        trainer::RunOutput replay;
+        QVERIFY2(trainer::runTutorialWithLog(page()->tutorial(), page()->demoLog(), page()->demoProfile(), replay, &error,
+                                             TutorialRunner::kGrace),
+                 qPrintable(error));
+        QCOMPARE(replay.result.passed, live.passed);
+        QCOMPARE(replay.result.goalsDone, live.goalsDone);
+        QVERIFY2(std::abs(replay.result.time - live.time) < 0.5,
+                 qPrintable(QString("%1 / %2").arg(replay.result.time).arg(live.time)));
+        // the stage keeps it; a log that no longer loads falls back to the shipped one
+        QVERIFY(page()->openTutorial("T0"));
+        QCOMPARE(page()->demoFile(), QFileInfo(saved).absoluteFilePath());
+        QVERIFY(page()->demoWarning().isEmpty());
+        QFile broken(saved);
+        QVERIFY(broken.open(QIODevice::WriteOnly));
+        broken.write("not a log\n");
+        broken.close();
+        QVERIFY(page()->openTutorial("T0"));
+        QVERIFY(!page()->demoWarning().isEmpty());
+        QVERIFY(page()->demoFile().endsWith("t0_reach.demo.log"));
+        QVERIFY(page()->demoLog());
+        QVERIFY(m_window->findChild<QLabel*>("DemoNote")->isVisible());
+        page()->useShippedDemonstration();
+        QVERIFY(page()->demoWarning().isEmpty());
+        page()->showCourse();
     }
 
     void kioskModeIsFullScreenAndTheKeysLeaveIt()

@@ -104,6 +104,22 @@ MainWindow::MainWindow(QWidget* parent)
     statusBar()->addPermanentWidget(m_timeLabel);
     statusBar()->addPermanentWidget(m_rtLabel);
     statusBar()->addPermanentWidget(m_frameLabel);
+    // the trainee records at start-up: attempts kept in pending files were imported, or
+    // the records cannot be opened (training goes on without them)
+    // (a normal status bar widget: the passing messages, e.g. the model applied, hide it
+    // only while they last; it goes after two minutes)
+    QString recordsNote;
+    if (m_trainPage->importedPending() > 0)
+        recordsNote = tr("%n attempt(s) kept while the trainee records could not be written were added to them.",
+                         nullptr, m_trainPage->importedPending());
+    else if (!m_trainPage->records())
+        recordsNote = tr("The trainee records cannot be opened: %1").arg(m_trainPage->recordsProblem());
+    if (!recordsNote.isEmpty()) {
+        auto* note = new QLabel(recordsNote);
+        note->setObjectName("RecordsNote");
+        statusBar()->addWidget(note, 1);
+        QTimer::singleShot(120000, note, &QLabel::hide);
+    }
 
     // the keyboard is a station device like any other
     m_keyboardDevice = std::make_shared<trainer::KeyboardDevice>(KeyboardInput::pairNames());
@@ -270,6 +286,7 @@ void MainWindow::setKioskMode(bool on)
     } else {
         m_kiosk = false;
     }
+    m_trainPage->setKiosk(on);
     menuBar()->setVisible(!on);
     m_modeBar->setVisible(!on);
     statusBar()->setVisible(!on);

@@ -1,5 +1,6 @@
 #include "ide/studio/train/train_page.h"
 
+#include "ide/studio/train/records_view.h"
 #include "ide/studio/train/tutorial_runner.h"
 #include "ide/studio/view/viewport.h"
 #include "trainer/station/station.h"
@@ -8,7 +9,11 @@
 #include <QChart>
 #include <QChartView>
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
+#include <QFileDialog>
+#include <QInputDialog>
+#include <QMessageBox>
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QDir>
@@ -68,6 +73,16 @@ QString pendingFolder()
 {
     return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/pending-attempts");
 }
+
+/// Where the operator's input of each live attempt is recorded.
+QString recordingsFolder()
+{
+    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/attempt-input");
+}
+constexpr int kKeptRecordings = 20;  // older recordings are deleted
+
+/// The station profile saved beside an input log.
+QString profileBeside(const QString& log) { return log + QStringLiteral(".profile.json"); }
 
 QString settingsKey(const QString& op, const QString& id, const char* what)
 {
@@ -137,6 +152,10 @@ TrainPage::TrainPage(TutorialRunner* runner, trainer::Station* station, QWidget*
     m_stack->addWidget(buildAttempt());
     m_stack->addWidget(buildResult());
     m_stack->addWidget(buildDebrief());
+    m_recordsView = new RecordsView;
+    m_stack->addWidget(m_recordsView);
+    connect(m_recordsView, &RecordsView::backRequested, this, &TrainPage::showCourse);
+    connect(m_recordsView, &RecordsView::operatorsChanged, this, [this] { setOperator(m_operator); });
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_stack);
@@ -150,18 +169,78 @@ TrainPage::TrainPage(TutorialRunner* runner, trainer::Station* station, QWidget*
     setOperator(m_operator);
 }
 
-void TrainPage::openRecords()
+void TrainPage::openRecords(const QString& path)
 {
+    m_imported = 0;
+    m_recordsProblem.clear();
     auto db = std::make_unique<trainer::records::RecordsDb>();
     QString error;
-    if (!db->openSqlite({}, false, &error)) {
-        m_recordsProblem = error;  // progress goes to QSettings instead
+    if (!db->openSqlite(path, false, &error)) {
+        m_recordsProblem = error;  // progress goes to QSettings, attempts to pending files
+        qWarning("Train: the trainee records cannot be opened: %s", qPrintable(error));
         return;
     }
     m_db = std::move(db);
     QString importError;
-    trainer::AttemptLog::importPending(*m_db, pendingFolder(), &importError);
+    m_imported = trainer::AttemptLog::importPending(*m_db, pendingFolder(), &importError);
     if (!importError.isEmpty()) m_recordsProblem = importError;
+}
+
+bool TrainPage::openRecordsAt(const QString& path)
+{
+    if (m_attemptLog) return false;  // not during an attempt
+    m_db.reset();
+    openRecords(path);
+    setOperator(m_operator);
+    if (m_screen == Screen::Records) showRecords();
+    return m_db != nullptr;
+}
+
+void TrainPage::setKiosk(bool kiosk)
+{
+    m_kiosk = kiosk;
+    // in kiosk mode only a trainer with the PIN sees the records; without a PIN, nobody
+    m_recordsButton->setVisible(!kiosk || !QSettings().value("trainer/pin").toString().isEmpty());
+    if (kiosk && m_screen == Screen::Records) showCourse();
+}
+
+void TrainPage::setAllUnlocked(bool unlocked)
+{
+    m_allUnlocked = unlocked;
+    refreshCourse();
+}
+
+void TrainPage::askRecordsPin()
+{
+    const QString pin = QSettings().value("trainer/pin").toString();
+    if (!m_kiosk) return showRecords();
+    if (pin.isEmpty() || findChild<QInputDialog*>("RecordsPinDialog")) return;
+    auto* dialog = new QInputDialog(this);
+    dialog->setObjectName("RecordsPinDialog");
+    dialog->setWindowTitle(tr("Trainee records"));
+    dialog->setLabelText(tr("The trainer's PIN:"));
+    dialog->setTextEchoMode(QLineEdit::Password);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QInputDialog::textValueSelected, this, [this, pin](const QString& typed) {
+        if (typed == pin) showRecords();
+    });
+    dialog->open();
+}
+
+void TrainPage::showRecords()
+{
+    leaveRun();
+    m_current = -1;
+    QHash<QString, QString> titles;
+    QHash<QString, double> passMarks;
+    for (const Entry& e : m_entries) {
+        titles.insert(e.id, e.title);
+        if (e.tutorial) passMarks.insert(e.id, e.tutorial->scoring().pass);
+    }
+    m_recordsView->setTutorials(titles, passMarks);
+    m_recordsView->setRecords(m_db.get(), m_recordsProblem);
+    m_recordsView->selectOperator(m_operator.isEmpty() ? guestCode() : m_operator);
+    setScreen(Screen::Records);
 }
 
 QStringList TrainPage::knownOperators() const
@@ -200,6 +279,7 @@ CourseProgress TrainPage::progressOf(const QString& tutorialId) const
 TrainPage::~TrainPage()
 {
     m_timer->stop();
+    stopRecording();
     if (m_runner->isActive()) m_runner->close();
     m_attemptLog.reset();  // before the records close
 }
@@ -303,6 +383,7 @@ int TrainPage::entryOf(const QString& id) const
 
 bool TrainPage::isLocked(int entry) const
 {
+    if (m_allUnlocked) return false;
     // every stage of the level just below must be passed
     const int level = m_entries[std::size_t(entry)].level;
     int below = -1;
@@ -352,6 +433,11 @@ QWidget* TrainPage::buildCourse()
     m_courseList->setStyleSheet("QListWidget { font-size: 16pt; } QListWidget::item { padding: 10px; }");
     layout->addWidget(m_courseList, 1);
     auto* buttons = new QHBoxLayout;
+    m_recordsButton = new QPushButton(tr("Records"));
+    m_recordsButton->setObjectName("RecordsButton");
+    m_recordsButton->setToolTip(tr("The trainee records: operators, attempts, progress (for the trainer)."));
+    connect(m_recordsButton, &QPushButton::clicked, this, &TrainPage::askRecordsPin);
+    buttons->addWidget(m_recordsButton);
     buttons->addStretch();
     m_openButton = new QPushButton(tr("Open"));
     m_openButton->setEnabled(false);
@@ -429,13 +515,9 @@ bool TrainPage::openTutorial(const QString& id)
         m_expertFor.clear();
     }
     m_current = i;
-    m_demoLog.reset();
-    if (!t.demoFile.empty()) {
-        auto log = std::make_shared<trainer::InputLog>();
-        if (trainer::InputLog::load(QString::fromStdString(t.demoFile), *log, nullptr)) m_demoLog = log;
-    }
     QString error;
     if (!trainer::tutorialProfile(t, {}, m_profile, &error)) m_profile = trainer::StationProfile{};
+    loadDemonstration(t);
     const std::string lang = language().toStdString();
     m_startTitle->setText(QString::fromStdString(t.title(lang)));
     QString intro;
@@ -443,6 +525,8 @@ bool TrainPage::openTutorial(const QString& id)
     intro += "<p>" + tr("Time limit: %1 s. Pass mark: %2 of 100.")
                          .arg(num(t.scoring().timeLimit, 0), num(t.scoring().pass, 0)) + "</p>";
     m_startIntro->setText(intro);
+    m_demoNote->setText(m_demoWarning);
+    m_demoNote->setVisible(!m_demoWarning.isEmpty());
     m_watchButton->setEnabled(m_demoLog != nullptr);
     m_watchButton->setToolTip(m_demoLog ? QString() : tr("This tutorial has no demonstration."));
     m_demoSlider->setRange(0, m_demoLog ? int(std::ceil((m_demoLog->duration() + TutorialRunner::kGrace) * 10)) : 0);
@@ -459,6 +543,171 @@ bool TrainPage::openTutorial(const QString& id)
 }
 
 // ---------------------------------------------------------------- start and demonstration
+
+QString TrainPage::userDemonstrationPath(const QString& tutorialId)
+{
+    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/demonstrations/") +
+           tutorialId + QStringLiteral(".demo.log");
+}
+
+void TrainPage::loadDemonstration(const trainer::Tutorial& t)
+{
+    const QString id = QString::fromStdString(t.spec.id);
+    const QString before = m_demoFile;
+    m_demoLog.reset();
+    m_demoFile.clear();
+    m_demoWarning.clear();
+    m_demoProfile = m_profile;
+    // the stage's own demonstration, chosen by a trainer; else the shipped one
+    const QString chosen = QSettings().value("trainer/demo/" + id).toString();
+    if (!chosen.isEmpty()) {
+        auto log = std::make_shared<trainer::InputLog>();
+        QString error;
+        if (trainer::InputLog::load(chosen, *log, &error)) {
+            m_demoLog = log;
+            m_demoFile = chosen;
+            // the profile it was recorded through, when it was kept beside it
+            QFile json(profileBeside(chosen));
+            trainer::StationProfile p;
+            QList<trainer::ProfileIssue> issues;
+            if (json.open(QIODevice::ReadOnly) && trainer::StationProfile::fromJson(json.readAll(), p, issues))
+                m_demoProfile = p;
+        } else {
+            m_demoWarning = tr("The demonstration chosen for this stage (%1) cannot be read: %2. The shipped "
+                               "demonstration is used.").arg(chosen, error);
+            qWarning("Train: %s", qPrintable(m_demoWarning));
+        }
+    }
+    // the shipped demonstration's camera (a trainer's own recording has none)
+    m_demoCamera = trainer::CameraPath();
+    if (m_demoFile.isEmpty() && !t.cameraFile.empty()) {
+        QString cameraError;
+        if (!trainer::CameraPath::load(QString::fromStdString(t.cameraFile), m_demoCamera, &cameraError))
+            qWarning("Train: %s", qPrintable(cameraError));
+    }
+    if (m_demoFollow) m_demoFollow->setEnabled(!m_demoCamera.empty());
+    if (!m_demoLog && !t.demoFile.empty()) {
+        auto log = std::make_shared<trainer::InputLog>();
+        const QString shipped = QString::fromStdString(t.demoFile);
+        if (trainer::InputLog::load(shipped, *log, nullptr)) {
+            m_demoLog = log;
+            m_demoFile = shipped;
+        }
+    }
+    if (m_demoFile != before) {  // the expert's run was of another log
+        m_expert.reset();
+        m_expertFor.clear();
+    }
+}
+
+bool TrainPage::saveDemonstration(const QString& path, QString* error)
+{
+    if (m_recordedInput.isEmpty() || !QFileInfo::exists(m_recordedInput)) {
+        if (error) *error = tr("There is no recorded input: only an attempt with the operator's controls is recorded.");
+        return false;
+    }
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    if (QFileInfo(path).absoluteFilePath() != QFileInfo(m_recordedInput).absoluteFilePath()) {
+        for (const QString& f : {path, profileBeside(path)}) QFile::remove(f);
+        if (!QFile::copy(m_recordedInput, path)) {
+            if (error) *error = tr("Cannot write %1.").arg(path);
+            return false;
+        }
+        QFile::copy(profileBeside(m_recordedInput), profileBeside(path));
+    }
+    return true;
+}
+
+bool TrainPage::useAsDemonstration(const QString& pathIn, QString* error)
+{
+    const auto t = tutorial();
+    if (!t) return false;
+    const QString id = QString::fromStdString(t->spec.id);
+    QString path = pathIn;
+    if (path.isEmpty()) {
+        path = userDemonstrationPath(id);
+        if (!saveDemonstration(path, error)) return false;
+    }
+    auto log = std::make_shared<trainer::InputLog>();
+    if (!trainer::InputLog::load(path, *log, error)) return false;
+    QSettings().setValue("trainer/demo/" + id, QFileInfo(path).absoluteFilePath());
+    loadDemonstration(*t);
+    return true;
+}
+
+void TrainPage::useShippedDemonstration()
+{
+    const auto t = tutorial();
+    if (!t) return;
+    QSettings().remove("trainer/demo/" + QString::fromStdString(t->spec.id));
+    loadDemonstration(*t);
+}
+
+bool TrainPage::startRecording(const trainer::Tutorial& t)
+{
+    if (!m_station || m_recorder) return false;
+    QDir dir(recordingsFolder());
+    dir.mkpath(".");
+    // keep the newest few
+    const QFileInfoList old = dir.entryInfoList({"*.log"}, QDir::Files, QDir::Time);
+    for (int i = kKeptRecordings - 1; i < old.size(); ++i) {
+        QFile::remove(old[i].absoluteFilePath());
+        QFile::remove(profileBeside(old[i].absoluteFilePath()));
+    }
+    const QString file = dir.filePath(QStringLiteral("%1-%2.log")
+                                          .arg(QString::fromStdString(t.spec.id),
+                                               QDateTime::currentDateTime().toString("yyyyMMdd-HHmmss-zzz")));
+    auto recorder = std::make_unique<trainer::InputRecorder>();
+    trainer::InputRecorder* r = recorder.get();
+    bool ok = false;
+    QString error;
+    trainer::StationProfile profile;
+    // the recorder is used in the input thread: started and attached there
+    m_station->call([&](trainer::StationEngine& e) {
+        ok = r->start(file, e.state().time, &error);
+        if (ok) e.setRecorder(r);
+        profile = e.profile();
+    });
+    if (!ok) {
+        qWarning("Train: the attempt's input is not recorded: %s", qPrintable(error));
+        return false;
+    }
+    m_recorder = std::move(recorder);
+    m_recordingFile = file;
+    m_recordingProfile = profile;
+    return true;
+}
+
+void TrainPage::stopRecording()
+{
+    if (!m_recorder) return;
+    trainer::InputRecorder* r = m_recorder.get();
+    bool ok = false;
+    bool ran = false;
+    QString error;
+    if (m_station)
+        m_station->call([&](trainer::StationEngine& e) {
+            ran = true;
+            e.setRecorder(nullptr);
+            ok = r->stop(&error);
+        });
+    if (!ran) ok = r->stop(&error);
+    m_recorder.reset();
+    if (!ok) {
+        qWarning("Train: the attempt's input log %s may be incomplete: %s", qPrintable(m_recordingFile), qPrintable(error));
+        return;
+    }
+    QFile json(profileBeside(m_recordingFile));
+    if (json.open(QIODevice::WriteOnly)) json.write(m_recordingProfile.toJson());
+    m_recordedInput = m_recordingFile;
+}
+
+void TrainPage::setShowExpert(bool show)
+{
+    m_expertBox->setChecked(show);
+}
+
+bool TrainPage::showExpert() const { return m_expertBox->isChecked(); }
 
 QWidget* TrainPage::buildStart()
 {
@@ -503,11 +752,22 @@ QWidget* TrainPage::buildStart()
     m_demoSlider->setObjectName("DemoSlider");
     m_demoTime = new QLabel;
     m_demoTime->setMinimumWidth(150);
+    m_demoNote = wrapped();
+    m_demoNote->setObjectName("DemoNote");
+    m_demoNote->setStyleSheet("color: #b35c00;");
+    m_demoNote->hide();
+    left->insertWidget(2, m_demoNote);
     controls->addWidget(m_demoPlay);
     controls->addWidget(new QLabel(tr("Speed:")));
     controls->addWidget(m_demoSpeed);
     controls->addWidget(m_demoSlider, 1);
     controls->addWidget(m_demoTime);
+    m_demoFollow = new QCheckBox(tr("Expert's camera"));
+    m_demoFollow->setObjectName("DemoFollowCamera");
+    m_demoFollow->setToolTip(tr("Look where the expert looked while recording (untick to move the view yourself)."));
+    m_demoFollow->setChecked(true);
+    m_demoFollow->setEnabled(false);
+    controls->addWidget(m_demoFollow);
     right->addLayout(controls);
     layout->addLayout(right, 1);
 
@@ -542,7 +802,7 @@ void TrainPage::watchDemonstration()
     if (!t || !m_demoLog) return;
     m_runner->setSpeed(m_demoSpeed->currentData().toDouble());
     QString error;
-    if (!m_runner->start(t, m_bundle, m_demoLog, m_profile, false, &error)) {
+    if (!m_runner->start(t, m_bundle, m_demoLog, m_demoProfile, false, &error)) {
         m_demoTime->setText(error);
         return;
     }
@@ -615,6 +875,19 @@ QWidget* TrainPage::buildAttempt()
     auto* keys = new QLabel(tr("Esc or Stop ends the attempt."));
     bar->addWidget(keys);
     bar->addStretch();
+    m_expertBox = new QCheckBox(tr("Show the expert"));
+    m_expertBox->setObjectName("ShowExpert");
+    m_expertBox->setToolTip(tr("The demonstration runs beside the attempt, drawn translucent."));
+    m_expertBox->setChecked(QSettings().value("trainer/showExpert", false).toBool());
+    connect(m_expertBox, &QCheckBox::toggled, this, [this](bool on) {
+        QSettings().setValue("trainer/showExpert", on);
+        if (m_screen == Screen::Attempt && m_runner->isActive() && !(m_runner->latest() && m_runner->latest()->ended))
+            m_runner->setGhost(on ? m_demoLog : nullptr, m_demoProfile);
+        if (!on) m_attemptView->clearGhost();
+        m_attemptView->setFocus();
+    });
+    bar->addWidget(m_expertBox);
+    bar->addSpacing(12);
     bar->addWidget(new QLabel(tr("View:")));
     m_cameraBox = new QComboBox;
     m_cameraBox->setObjectName("AttemptCamera");
@@ -643,7 +916,16 @@ void TrainPage::startAttempt(std::shared_ptr<const trainer::InputLog> drive)
     leaveRun();
     m_runner->setSpeed(1.0);
     QString error;
-    if (!m_runner->start(t, m_bundle, drive, m_profile, false, &error)) return;
+    m_recordedInput.clear();
+    // the operator's input, recorded from the session's start (a demonstration from any run)
+    const bool recording = !drive && startRecording(*t);
+    if (!m_runner->start(t, m_bundle, drive, drive ? m_demoProfile : m_profile, false, &error)) {
+        if (recording) stopRecording();
+        return;
+    }
+    m_expertBox->setEnabled(m_demoLog != nullptr);
+    if (m_demoLog && m_expertBox->isChecked()) m_runner->setGhost(m_demoLog, m_demoProfile);
+    m_attemptView->clearGhost();
     m_attemptLive = !drive;
     m_lastRun.reset();
     // the trainee records: the attempt now, its events as it goes, the result at the end
@@ -656,12 +938,63 @@ void TrainPage::startAttempt(std::shared_ptr<const trainer::InputLog> drive)
     setScreen(Screen::Attempt);
     // inside a scene the operator's seat; in the open, from where the target shows
     const QString camera = t->sceneFile.empty() ? QStringLiteral("Iso") : QStringLiteral("Operator seat");
+    m_attemptView->resetOperatorSeat();
     m_attemptView->setCamera(camera);
+    if (!t->sceneFile.empty()) aimSeatAtFirstGoal(*t);
     if (t->sceneFile.empty()) QTimer::singleShot(0, m_attemptView, [v = m_attemptView] { frameModelAndTargets(v); });
     m_cameraBox->setCurrentIndex(std::max(0, m_cameraBox->findData(camera)));
     m_attemptView->setFocus();
     if (m_attemptLive) emit attemptStarted(t);
     poll();
+}
+
+void TrainPage::aimSeatAtFirstGoal(const trainer::Tutorial& t)
+{
+    // where the first goal is: its target, or the load to grasp (where it is now)
+    if (t.spec.goals.empty()) return;
+    const trainer::Goal& g = t.spec.goals.front();
+    Eigen::Vector3d p;
+    if (g.kind == trainer::Goal::Kind::Reach || g.kind == trainer::Goal::Kind::Place) {
+        p = g.target;
+    } else if (g.kind == trainer::Goal::Kind::Grasp) {
+        const auto f = m_runner->latest();
+        const int i = t.model->bodyIndex(t.spec.grip.loadBodyId);
+        if (!f || !f->snapshot || i < 0 || std::size_t(i) >= f->snapshot->bodyPoses.size()) return;
+        p = f->snapshot->bodyPoses[std::size_t(i)] * t.spec.grip.loadPoint;
+    } else {
+        return;
+    }
+    // and the tool that goes there: the seat looks between the two
+    const auto f = m_runner->latest();
+    const auto worldPoint = [&](int bodyId, const Eigen::Vector3d& local, Eigen::Vector3d& out) {
+        const int i = t.model->bodyIndex(bodyId);
+        if (!f || !f->snapshot || i < 0 || std::size_t(i) >= f->snapshot->bodyPoses.size()) return false;
+        out = f->snapshot->bodyPoses[std::size_t(i)] * local;
+        return true;
+    };
+    Eigen::Vector3d tool;
+    const bool hasTool = g.kind == trainer::Goal::Kind::Reach ? worldPoint(g.bodyId, g.point, tool)
+                                                              : worldPoint(t.spec.grip.toolBodyId, t.spec.grip.toolPoint, tool);
+    // when the goal is outside the middle of the view, the seat turns (the operator turns
+    // their head) to see the goal and the tool, or at least the goal; its place and
+    // pitch stay
+    const Camera& c = m_attemptView->cameraState();
+    const auto headingTo = [&](const Eigen::Vector3d& q) {
+        const Eigen::Vector3d d = q - c.seatEye;
+        return std::atan2(d.x(), d.y());  // 0 = +y, positive to the right (+x)
+    };
+    if ((p - c.seatEye).head<2>().norm() < 0.5) return;
+    const double half = 0.5 * c.seatFieldOfView;
+    const double toGoal = std::remainder(headingTo(p) - c.seatHeading, 2 * M_PI);
+    if (std::abs(toGoal) < 0.7 * half) return;
+    double turn = toGoal;
+    if (hasTool) {
+        const double toTool = std::remainder(headingTo(tool) - c.seatHeading, 2 * M_PI);
+        turn = 0.5 * (toGoal + toTool);
+        // the goal at most 0.8 of the half-field from the middle
+        turn = std::clamp(turn, toGoal - 0.8 * half, toGoal + 0.8 * half);
+    }
+    m_attemptView->setOperatorSeat(c.seatEye, c.seatHeading + turn, c.seatPitch);
 }
 
 bool TrainPage::eventFilter(QObject* watched, QEvent* event)
@@ -690,6 +1023,8 @@ void TrainPage::leaveRun()
         m_demoPlay->setEnabled(m_demoLog != nullptr);
     }
     if (m_runner->isActive()) m_runner->close();
+    stopRecording();
+    m_attemptView->clearGhost();
     m_attemptLog.reset();  // an attempt left unfinished stays "running" until the records mark it interrupted
     if (live) emit attemptEnded();
 }
@@ -714,6 +1049,16 @@ void TrainPage::poll()
         if (f->snapshot->step == m_shownStep) return;
         m_shownStep = f->snapshot->step;
         m_demoView->setSnapshot(f->snapshot);
+        if (!m_demoCamera.empty() && m_demoFollow->isChecked()) {
+            const trainer::CameraKey k = m_demoCamera.at(f->snapshot->t);
+            Camera c = m_demoView->cameraState();
+            c.mode = Camera::Mode::Orbit;
+            c.target = k.target;
+            c.distance = k.distance;
+            c.yaw = k.yaw;
+            c.pitch = k.pitch;
+            m_demoView->setCameraState(c);
+        }
         if (!m_demoSlider->isSliderDown()) {
             const QSignalBlocker block(m_demoSlider);
             m_demoSlider->setValue(int(std::lround(f->snapshot->t * 10)));
@@ -727,6 +1072,8 @@ void TrainPage::poll()
         if (f->snapshot->step != m_shownStep) {
             m_shownStep = f->snapshot->step;
             m_attemptView->setSnapshot(f->snapshot);
+            if (f->ghost && m_expertBox->isChecked()) m_attemptView->setGhost(f->ghost);
+            else m_attemptView->clearGhost();
         }
         updateHud(*f);
         const qint64 now = QDateTime::currentMSecsSinceEpoch();
@@ -815,6 +1162,7 @@ void TrainPage::onFinished()
     }
     if (m_screen != Screen::Attempt) return;
     poll();  // the last frame on the HUD
+    stopRecording();
     m_lastRun = f->output;
     const bool live = m_attemptLive;
     m_attemptLive = false;
@@ -890,6 +1238,30 @@ QWidget* TrainPage::buildResult()
     m_nextButton = new QPushButton(tr("Next stage"));
     m_nextButton->setObjectName("NextButton");
     buttons->addWidget(course);
+    m_saveDemoButton = new QPushButton(tr("Save as demonstration…"));
+    m_saveDemoButton->setObjectName("SaveDemoButton");
+    m_saveDemoButton->setToolTip(tr("Saves the operator's input of this attempt as an input log."));
+    m_useDemoButton = new QPushButton(tr("Use as this stage's demonstration"));
+    m_useDemoButton->setObjectName("UseDemoButton");
+    m_useDemoButton->setToolTip(tr("From now on the demonstration, the expert and the comparison of this stage "
+                                   "replay this attempt's input instead of the shipped one."));
+    buttons->addWidget(m_saveDemoButton);
+    buttons->addWidget(m_useDemoButton);
+    connect(m_saveDemoButton, &QPushButton::clicked, this, [this] {
+        const auto t = tutorial();
+        if (!t) return;
+        const QString path = QFileDialog::getSaveFileName(
+            this, tr("Save as demonstration"), userDemonstrationPath(QString::fromStdString(t->spec.id)),
+            tr("Padrob input logs (*.log);;All files (*)"));
+        QString error;
+        if (!path.isEmpty() && !saveDemonstration(path, &error))
+            QMessageBox::warning(this, tr("Save as demonstration"), error);
+    });
+    connect(m_useDemoButton, &QPushButton::clicked, this, [this] {
+        QString error;
+        if (useAsDemonstration({}, &error)) m_resultNote->setText(tr("This attempt is now the stage's demonstration."));
+        else QMessageBox::warning(this, tr("Use as this stage's demonstration"), error);
+    });
     buttons->addStretch();
     buttons->addWidget(retryButton);
     buttons->addWidget(debrief);
@@ -940,6 +1312,9 @@ void TrainPage::showResult()
     const int next = m_current + 1;
     loadProgress();  // the attempt just recorded may unlock the next stage
     m_nextButton->setEnabled(next < int(m_entries.size()) && m_entries[std::size_t(next)].tutorial && !isLocked(next));
+    const bool recorded = !m_recordedInput.isEmpty();
+    m_saveDemoButton->setVisible(recorded && !m_kiosk);  // for trainers
+    m_useDemoButton->setVisible(recorded && !m_kiosk);
     setScreen(Screen::Result);
 }
 
@@ -1156,7 +1531,7 @@ void TrainPage::computeExpert()
     if (m_expert && m_expertFor == id) return fillComparison();
     m_expertBusy = true;
     auto log = m_demoLog;
-    auto profile = m_profile;
+    auto profile = m_demoProfile;
     QPointer<TrainPage> self(this);
     QThread* worker = QThread::create([self, t, log, profile, id] {
         auto out = std::make_shared<trainer::RunOutput>();

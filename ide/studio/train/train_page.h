@@ -20,6 +20,19 @@
 //    (a click seeks), the force of the most loaded drive and the relief-valve openings
 //    against time (QtCharts), and the comparison with the expert (the demonstration run
 //    headless with trainer::runTutorialWithLog).
+//  - Records: the trainer's view of the trainee records (RecordsView); in kiosk mode
+//    only after the PIN (QSettings "trainer/pin"), and not at all without one.
+//
+// The expert's ghost: "Show the expert" during an attempt (off by default, remembered
+// in QSettings "trainer/showExpert") runs the demonstration in a second session beside
+// the attempt (TutorialRunner::setGhost) and draws it translucent (Viewport::setGhost).
+//
+// Every live attempt records the operator's input (a trainer::InputRecorder on the
+// station, in its input thread) to <AppDataLocation>/attempt-input/, with the station
+// profile in use beside it (<log>.profile.json); the result screen saves it as a
+// demonstration and can make it this stage's demonstration (QSettings
+// "trainer/demo/<tutorial id>"; a log that no longer loads falls back to the shipped
+// DEMO with a warning on the start screen).
 //
 // The page owns no thread: the TutorialRunner (owned by MainWindow, whose station
 // writes its commands during an attempt) runs the sessions.
@@ -27,6 +40,7 @@
 #include "ide/studio/model/model_bundle.h"
 #include "trainer/input/input_log.h"
 #include "trainer/records/records_db.h"
+#include "trainer/training/camera_path.h"
 #include "trainer/training/runner.h"
 #include "trainer/training/tutorial.h"
 
@@ -38,6 +52,7 @@
 #include <vector>
 
 class QChartView;
+class QCheckBox;
 class QComboBox;
 class QFrame;
 class QLabel;
@@ -56,6 +71,7 @@ class Station;
 
 namespace studio {
 
+class RecordsView;
 class TutorialRunner;
 class Viewport;
 struct TrainFrame;
@@ -75,7 +91,7 @@ struct CourseProgress {
 class TrainPage : public QWidget {
     Q_OBJECT
 public:
-    enum class Screen { Course, Start, Attempt, Result, Debrief };
+    enum class Screen { Course, Start, Attempt, Result, Debrief, Records };
 
     TrainPage(TutorialRunner* runner, trainer::Station* station, QWidget* parent = nullptr);
     ~TrainPage() override;
@@ -97,6 +113,19 @@ public:
     trainer::records::RecordsDb* records() const { return m_db.get(); }
     /// Why the records could not be opened or written ("" when all is well).
     QString recordsProblem() const { return m_recordsProblem; }
+    /// Opens the trainee records at the SQLite file `path` ("" = the default) instead of
+    /// the ones in use, and imports the pending attempts; false when they cannot be
+    /// opened (recordsProblem() says why; training goes on without them).
+    bool openRecordsAt(const QString& path);
+    /// How many pending attempts the last opening of the records imported.
+    int importedPending() const { return m_imported; }
+    /// Kiosk mode: the records only after the trainer's PIN, hidden without one.
+    void setKiosk(bool kiosk);
+    /// Every stage can be opened, passed or not (a trainer previewing; screenshots).
+    void setAllUnlocked(bool unlocked);
+    /// The trainer's records view (in kiosk mode only after the PIN).
+    void showRecords();
+    RecordsView* recordsView() const { return m_recordsView; }
 
     Screen screen() const { return m_screen; }
     /// Opens a tutorial's start screen (by its TUTORIAL id); false when unknown, broken or locked.
@@ -114,8 +143,29 @@ public:
     void showDebrief();
     void retry();
     void nextStage();
-    /// The open tutorial's demonstration log (nullptr when it has none).
+    /// The open tutorial's demonstration log (nullptr when it has none): the one chosen
+    /// for the stage (useAsDemonstration) or the shipped DEMO.
     std::shared_ptr<const trainer::InputLog> demoLog() const { return m_demoLog; }
+    /// The file of demoLog() ("" none).
+    QString demoFile() const { return m_demoFile; }
+    /// The station profile the demonstration is replayed with.
+    const trainer::StationProfile& demoProfile() const { return m_demoProfile; }
+    /// Why the stage's chosen demonstration is not used ("" when it is, or none is chosen).
+    QString demoWarning() const { return m_demoWarning; }
+    /// The operator's input of the last live attempt ("" none), and the profile it went through.
+    QString recordedInput() const { return m_recordedInput; }
+    /// Copies the last live attempt's input (and its profile) to `path`. False with `error`.
+    bool saveDemonstration(const QString& path, QString* error = nullptr);
+    /// Makes `path` ("" = the last attempt's input, saved as the stage's user copy)
+    /// the open stage's demonstration. False with `error` (nothing changes then).
+    bool useAsDemonstration(const QString& path = {}, QString* error = nullptr);
+    /// Back to the shipped demonstration for the open stage.
+    void useShippedDemonstration();
+    /// <AppDataLocation>/demonstrations/<id>.demo.log: the user copy of a stage's demonstration.
+    static QString userDemonstrationPath(const QString& tutorialId);
+    /// The expert's ghost during attempts (the "Show the expert" box).
+    void setShowExpert(bool show);
+    bool showExpert() const;
     /// The result of the last attempt (nullptr before one ended).
     const trainer::RunOutput* lastRun() const { return m_lastRun.get(); }
     /// The expert's run of the open tutorial, once the debrief computed it (nullptr before).
@@ -127,12 +177,15 @@ public:
     Viewport* demoViewport() const { return m_demoView; }
     QLabel* hud() const { return m_hud; }
     QLabel* resultHeading() const { return m_resultHeading; }
+    QLabel* resultNote() const { return m_resultNote; }
     QTableWidget* breakdownTable() const { return m_breakdown; }
     QChartView* forceChart() const { return m_forceChart; }
     QTableWidget* comparisonTable() const { return m_comparison; }
     QListWidget* timeline() const { return m_timeline; }
     QSlider* replaySlider() const { return m_replaySlider; }
     QSlider* demoSlider() const { return m_demoSlider; }
+    QCheckBox* expertBox() const { return m_expertBox; }
+    QPushButton* recordsButton() const { return m_recordsButton; }
 
 signals:
     /// An attempt with live commands began (the station's commands go to the runner) …
@@ -173,8 +226,14 @@ private:
     void fillComparison();
     void leaveRun();
 
-    void openRecords();
+    void openRecords(const QString& path = {});
     void loadProgress();
+    void loadDemonstration(const trainer::Tutorial& t);
+    bool startRecording(const trainer::Tutorial& t);
+    void stopRecording();
+    void askRecordsPin();
+    /// A scene's attempt: turns the seat towards the first goal when it is out of view.
+    void aimSeatAtFirstGoal(const trainer::Tutorial& t);
     QStringList knownOperators() const;
 
     TutorialRunner* m_runner;
@@ -184,6 +243,16 @@ private:
     QHash<QString, CourseProgress> m_progress;  ///< by tutorial id, from the records
     std::shared_ptr<const trainer::Tutorial> m_attemptTutorial;  ///< the log's: outlives it
     std::unique_ptr<trainer::AttemptLog> m_attemptLog;
+    int m_imported = 0;
+    bool m_kiosk = false;
+    bool m_allUnlocked = false;
+    // the operator's input of a live attempt, recorded in the station's input thread
+    std::unique_ptr<trainer::InputRecorder> m_recorder;
+    QString m_recordingFile;
+    trainer::StationProfile m_recordingProfile;
+    QString m_recordedInput;  ///< the last live attempt's, once stopped
+    QString m_demoFile, m_demoWarning;
+    trainer::StationProfile m_demoProfile;
     qint64 m_lastLogUpdate = 0;  ///< ms (steady)
     QString m_recordsProblem;
     QString m_dir;
@@ -192,6 +261,8 @@ private:
     int m_current = -1;  ///< entry open
     std::shared_ptr<const ModelBundle> m_bundle, m_scene;
     std::shared_ptr<const trainer::InputLog> m_demoLog;
+    trainer::CameraPath m_demoCamera;        ///< the demonstration's camera (empty: none)
+    QCheckBox* m_demoFollow = nullptr;       ///< follow the demonstration's camera
     trainer::StationProfile m_profile;
     bool m_demoRunning = false;
     bool m_attemptLive = false;
@@ -208,6 +279,8 @@ private:
     QListWidget* m_courseList = nullptr;
     QComboBox* m_operatorBox = nullptr;
     QPushButton* m_openButton = nullptr;
+    QPushButton* m_recordsButton = nullptr;
+    RecordsView* m_recordsView = nullptr;
     // start
     QLabel* m_startTitle = nullptr;
     QLabel* m_startIntro = nullptr;
@@ -218,9 +291,11 @@ private:
     QComboBox* m_demoSpeed = nullptr;
     QSlider* m_demoSlider = nullptr;
     QLabel* m_demoTime = nullptr;
+    QLabel* m_demoNote = nullptr;
     // attempt
     Viewport* m_attemptView = nullptr;
     QComboBox* m_cameraBox = nullptr;
+    QCheckBox* m_expertBox = nullptr;
     QFrame* m_hudPanel = nullptr;
     QLabel* m_hud = nullptr;
     QProgressBar* m_dwellBar = nullptr;
@@ -235,6 +310,8 @@ private:
     QTableWidget* m_breakdown = nullptr;
     QListWidget* m_improvements = nullptr;
     QPushButton* m_nextButton = nullptr;
+    QPushButton* m_saveDemoButton = nullptr;
+    QPushButton* m_useDemoButton = nullptr;
     // debrief
     Viewport* m_replayView = nullptr;
     QSlider* m_replaySlider = nullptr;

@@ -41,6 +41,9 @@ struct TutorialRunner::Shared {
     double seekTo = 0.0;
     bool paused = false;
     double speed = 1.0;
+    bool ghostChanged = false;
+    std::shared_ptr<const trainer::InputLog> ghostLog;
+    trainer::StationProfile ghostProfile;
 
     std::mutex commandMutex;
     std::vector<double> commands;
@@ -77,6 +80,7 @@ struct TutorialRunner::Run {
     std::unique_ptr<trainer::StationEngine> engine;
     std::shared_ptr<const trainer::RunOutput> output;
     double duration = 0.0;
+    std::unique_ptr<Run> ghost;  ///< the expert beside the operator (setGhost), or nullptr
 
     /// (Re)builds the session at its start, and the engine replaying the log.
     bool build(QString* error)
@@ -114,6 +118,14 @@ struct TutorialRunner::Run {
         return !session->ended();
     }
 
+    /// Brings the ghost to the session's time (it stops where its log ended).
+    void syncGhost()
+    {
+        if (!ghost) return;
+        while (!ghost->session->ended() && ghost->session->time() < session->time() - 1e-9)
+            if (!ghost->step()) break;
+    }
+
     std::shared_ptr<const TrainFrame> frame(bool paused, double speed)
     {
         auto f = std::make_shared<TrainFrame>();
@@ -130,6 +142,7 @@ struct TutorialRunner::Run {
         f->speed = speed;
         f->duration = log ? duration : 0.0;
         f->ended = session->ended();
+        if (ghost) f->ghost = captureSnapshot(ghost->session->simulation(), bundle);
         if (f->ended) {
             if (!output) {
                 auto o = std::make_shared<trainer::RunOutput>();
@@ -172,6 +185,7 @@ bool TutorialRunner::start(std::shared_ptr<const trainer::Tutorial> tutorial, st
     if (!run->build(error)) return false;
     m_paused = paused;
     m_active = true;
+    m_hasGhost = false;
     const bool live = !run->log;
     m_shared->reset(run->generation, run->frame(paused, m_speed));
     {
@@ -185,6 +199,8 @@ bool TutorialRunner::start(std::shared_ptr<const trainer::Tutorial> tutorial, st
         m_shared->pendingClose = false;
         m_shared->stopRequest = false;
         m_shared->seekRequest = false;
+        m_shared->ghostChanged = false;
+        m_shared->ghostLog.reset();
         m_shared->paused = paused;
         m_shared->speed = m_speed;
         ++m_shared->controlVersion;
@@ -216,6 +232,7 @@ void TutorialRunner::close()
     }
     m_wantsCommands = false;
     m_active = false;
+    m_hasGhost = false;
     m_shared->reset(m_generation, nullptr);
     m_shared->wake.notify_all();
 }
@@ -226,6 +243,19 @@ void TutorialRunner::setPaused(bool paused)
     {
         std::lock_guard lock(m_shared->control);
         m_shared->paused = paused;
+        ++m_shared->controlVersion;
+    }
+    m_shared->wake.notify_all();
+}
+
+void TutorialRunner::setGhost(std::shared_ptr<const trainer::InputLog> log, const trainer::StationProfile& profile)
+{
+    m_hasGhost = log && m_active;
+    {
+        std::lock_guard lock(m_shared->control);
+        m_shared->ghostChanged = true;
+        m_shared->ghostLog = m_hasGhost ? std::move(log) : nullptr;
+        m_shared->ghostProfile = profile;
         ++m_shared->controlVersion;
     }
     m_shared->wake.notify_all();
@@ -297,8 +327,10 @@ void TutorialRunner::loop()
     };
 
     for (;;) {
-        bool stopNow = false, seekNow = false, resync = false;
+        bool stopNow = false, seekNow = false, resync = false, ghostNow = false;
         double seekTo = 0.0;
+        std::shared_ptr<const trainer::InputLog> ghostLog;
+        trainer::StationProfile ghostProfile;
         {
             std::unique_lock lock(sh.control);
             if (sh.quit) return;
@@ -318,9 +350,27 @@ void TutorialRunner::loop()
                 stopNow = std::exchange(sh.stopRequest, false);
                 seekNow = std::exchange(sh.seekRequest, false);
                 seekTo = sh.seekTo;
+                if (std::exchange(sh.ghostChanged, false)) {
+                    ghostNow = true;
+                    ghostLog = std::move(sh.ghostLog);
+                    ghostProfile = sh.ghostProfile;
+                }
                 paused = sh.paused;
                 speed = sh.speed;
             }
+        }
+        if (run && ghostNow) {
+            run->ghost.reset();
+            if (ghostLog) {
+                auto g = std::make_unique<Run>();
+                g->generation = run->generation;
+                g->tutorial = run->tutorial;
+                g->bundle = run->bundle;
+                g->log = std::move(ghostLog);
+                g->profile = ghostProfile;
+                if (g->build(nullptr)) run->ghost = std::move(g);
+            }
+            run->syncGhost();
         }
         if (run && stopNow && !run->session->ended()) {
             run->session->stop(trainer::TutorialEvent::Kind::Aborted);
@@ -330,10 +380,13 @@ void TutorialRunner::loop()
         if (run && seekNow && run->log) {
             if (seekTo < run->session->time() - 1e-9) {
                 run->build(nullptr);  // it built before, so it builds again
+                if (run->ghost) run->ghost->build(nullptr);
                 endSignalled = false;
             }
             while (run->session->time() < seekTo - 1e-9 && run->step()) {
+                run->syncGhost();
             }
+            run->syncGhost();
             sh.publish(run->frame(paused, speed));
             signalEnd();
         } else if (run && resync) {
@@ -371,7 +424,9 @@ void TutorialRunner::loop()
                 }
                 s.setCommands(commands);
             }
-            if (!run->step()) break;
+            const bool going = run->step();
+            run->syncGhost();
+            if (!going) break;
         }
         sh.publish(run->frame(paused, speed));
         signalEnd();
@@ -421,6 +476,13 @@ std::shared_ptr<const ModelBundle> makeTutorialScene(const trainer::Tutorial& tu
         line.imbue(std::locale::classic());
         line << "G " << id++ << " B 0 SPHERE " << r << " POS " << g.target.x() << ' ' << g.target.y() << ' '
              << g.target.z() << " COLOR 0.15 0.75 0.25\n";
+        // and a green arrow above it, pointing down at it: the target shows when the
+        // sphere is inside something (a liner's edge, the mill's shell) or small at a distance
+        const double x = g.target.x(), y = g.target.y(), z = g.target.z();
+        line << "G " << id++ << " B 0 CYL 0.015 0.4 POS " << x << ' ' << y << ' ' << z + r + 0.45
+             << " COLOR 0.15 0.75 0.25\n";
+        line << "G " << id++ << " B 0 CONE 0.08 0.2 POS " << x << ' ' << y << ' ' << z + r + 0.25
+             << " AXIS 0 0 -1 COLOR 0.15 0.75 0.25\n";
         text += QString::fromStdString(line.str());
     }
     if (text.trimmed().isEmpty()) return nullptr;

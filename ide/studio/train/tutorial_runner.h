@@ -53,6 +53,8 @@ struct TrainFrame {
     bool ended = false;
     /// The result and samples, once ended (nullptr before).
     std::shared_ptr<const trainer::RunOutput> output;
+    /// The ghost's machine now (setGhost; nullptr without one): the same bundle.
+    std::shared_ptr<const Snapshot> ghost;
 };
 
 class TutorialRunner : public QObject {
@@ -90,6 +92,14 @@ public:
     /// With an input log: to simulated time `t` (off-clock); the pause state stays.
     void seek(double t);
 
+    /// A ghost for the session running: a second TutorialSession of the same tutorial
+    /// driven by `log` through `profile` (the expert's demonstration), stepped in the
+    /// runner thread in step with the session (built and brought to the session's time
+    /// at once when set during a run; rebuilt by a backward seek), published as
+    /// TrainFrame::ghost. nullptr drops it. start() and close() drop it too.
+    void setGhost(std::shared_ptr<const trainer::InputLog> log, const trainer::StationProfile& profile);
+    bool hasGhost() const { return m_hasGhost; }
+
     /// The operator's commands, one per tree joint (any thread); used by a live session.
     void setCommands(std::span<const double> u);
     /// A live session is running: the station's commands belong here (any thread).
@@ -112,6 +122,7 @@ private:
     long m_generation = 0;
     bool m_active = false;
     bool m_paused = false;
+    bool m_hasGhost = false;
     double m_speed = 1.0;
     std::atomic<bool> m_wantsCommands{false};
 };
@@ -120,7 +131,8 @@ private:
 /// with `error`.
 std::shared_ptr<const ModelBundle> makeTutorialBundle(const trainer::Tutorial& tutorial, QString* error = nullptr);
 /// The scene drawn around it: the tutorial's scene's ground graphics plus a green sphere
-/// (radius: the tolerance) at every Reach goal's target; nullptr when there is nothing to draw.
+/// (radius: the tolerance) at every Reach goal's target (Place: 0.1 m) with a green
+/// arrow above it pointing down at it; nullptr when there is nothing to draw.
 std::shared_ptr<const ModelBundle> makeTutorialScene(const trainer::Tutorial& tutorial);
 /// A snapshot of the machine at a recorded sample (a replay: poses by forward kinematics
 /// from SessionSample::q; no dynamics).

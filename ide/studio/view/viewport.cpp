@@ -36,6 +36,7 @@ constexpr double kDeg = std::numbers::pi / 180;
 const Vector3f kHighlight(1.0f, 0.86f, 0.10f);
 const Vector3f kRodSilver(0.82f, 0.83f, 0.86f);
 constexpr float kOverlayAlpha = 0.6f;
+const Eigen::Vector3f kGhostTint(0.55f, 0.8f, 1.0f);  // the ghost: a pale blue
 
 // lighting inside a scene (an interior): the daylight dimmed, the scene's lamps lit
 constexpr float kInteriorDaylight = 0.45f;
@@ -157,6 +158,20 @@ void Viewport::setSnapshot(std::shared_ptr<const Snapshot> snapshot)
     setPoses(snapshot->bodyPoses);
 }
 
+void Viewport::setGhost(std::shared_ptr<const Snapshot> ghost)
+{
+    if (ghost == m_ghost) return;
+    m_ghost = std::move(ghost);
+    update();
+}
+
+void Viewport::clearGhost()
+{
+    if (!m_ghost) return;
+    m_ghost.reset();
+    update();
+}
+
 void Viewport::setDisplayMode(DisplayMode mode)
 {
     if (m_mode == mode) return;
@@ -202,6 +217,13 @@ QString Viewport::cameraLabel(const QString& name)
     if (name == QLatin1String("Top")) return tr("Top");
     if (name == QLatin1String(kSeat)) return tr("Operator seat");
     return name;
+}
+
+void Viewport::setCameraState(const Camera& camera)
+{
+    m_camera = camera;
+    m_cameraName.clear();
+    update();
 }
 
 bool Viewport::setCamera(const QString& name)
@@ -542,6 +564,28 @@ void Viewport::paintGL()
         glUniform1f(m_u.fadeRadius, 0.0f);
         glUniform1i(m_u.lit, 1);
         setAlpha(1.0f);
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+    }
+
+    // the ghost: the same machine at other poses, translucent, tinted blue; no depth
+    // writes, so the real machine and the scene show through it
+    if (m_ghost && m_ghost->bundle == m_bundle && m_ghost->bodyPoses.size() == m_poses.size()) {
+        glEnable(GL_BLEND);
+        // the frame's alpha stays 1: a translucent alpha would make the widget itself
+        // translucent when composed (garish colours in grabs and under a compositor)
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+        glDepthMask(GL_FALSE);
+        setTint(kGhostTint, 0.45f);
+        setAlpha(kGhostAlpha);
+        for (int s = 1; s < g.slotCount(); ++s) {  // not slot 0: the ground's graphics do not move
+            const auto k = static_cast<std::size_t>(s);
+            const Matrix4f X = m_ghost->bodyPoses[k - 1].matrix().cast<float>();
+            if (schematic) drawRange(g.schematic[k], X);
+            else drawRange(g.dressed[k].empty() ? g.bars[k] : g.dressed[k], X);
+        }
+        setAlpha(1.0f);
+        setTint(Vector3f::Zero(), 0.0f);
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
     }

@@ -89,6 +89,15 @@ public:
     /// The snapshot's poses (and its bundle, when it is another one).
     void setSnapshot(std::shared_ptr<const Snapshot> snapshot);
 
+    /// A ghost: a second machine of the same bundle at the snapshot's poses, drawn
+    /// translucent (kGhostAlpha, tinted, without depth writes) over the scene, e.g.
+    /// the expert's run beside the operator's. A snapshot of another bundle (or other
+    /// body count) is not drawn. clearGhost() removes it.
+    void setGhost(std::shared_ptr<const Snapshot> ghost);
+    void clearGhost();
+    std::shared_ptr<const Snapshot> ghost() const { return m_ghost; }
+    static constexpr float kGhostAlpha = 0.35f;
+
     void setDisplayMode(DisplayMode mode);
     DisplayMode displayMode() const { return m_mode; }
 
@@ -106,6 +115,9 @@ public:
     /// The current named camera, or "" after the view was moved by hand.
     QString camera() const { return m_cameraName; }
     const Camera& cameraState() const { return m_camera; }
+    /// Puts the camera where `camera` says (a demonstration's recorded camera); the view
+    /// then has no name, as after a move by hand.
+    void setCameraState(const Camera& camera);
 
     /// The operator seat: eye [m, world] and view direction (yaw: 0 = +y, positive turns
     /// right; pitch: positive up) [rad]. Kept across models until resetOperatorSeat().
@@ -177,6 +189,7 @@ private:
     std::shared_ptr<const ModelBundle> m_scene;
     std::shared_ptr<const SceneDressing> m_dressing;
     std::vector<Eigen::Isometry3d> m_poses;
+    std::shared_ptr<const Snapshot> m_ghost;
     DisplayMode m_mode = DisplayMode::Dressed;
     Camera m_camera;
     QString m_cameraName = QStringLiteral("Iso");

@@ -1,0 +1,390 @@
+#include "ide/studio/train/records_view.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLegend>
+#include <QLineEdit>
+#include <QLineSeries>
+#include <QListWidget>
+#include <QLocale>
+#include <QMessageBox>
+#include <QPen>
+#include <QPushButton>
+#include <QScatterSeries>
+#include <QSplitter>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QValueAxis>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace studio {
+
+namespace {
+
+namespace rec = trainer::records;
+
+QString num(double v, int decimals) { return QLocale().toString(v, 'f', decimals); }
+
+QString when(const QDateTime& utc)
+{
+    return utc.isValid() ? QLocale().toString(utc.toLocalTime(), QLocale::ShortFormat) : QStringLiteral("—");
+}
+
+QString statusText(rec::AttemptStatus s)
+{
+    switch (s) {
+    case rec::AttemptStatus::Running: return RecordsView::tr("running");
+    case rec::AttemptStatus::Finished: return RecordsView::tr("finished");
+    case rec::AttemptStatus::Aborted: return RecordsView::tr("stopped");
+    case rec::AttemptStatus::Interrupted: return RecordsView::tr("interrupted");
+    }
+    return {};
+}
+
+QTableWidget* table(const QStringList& headers)
+{
+    auto* t = new QTableWidget(0, int(headers.size()));
+    t->setHorizontalHeaderLabels(headers);
+    t->verticalHeader()->hide();
+    t->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    t->setSelectionBehavior(QAbstractItemView::SelectRows);
+    t->setSelectionMode(QAbstractItemView::SingleSelection);
+    t->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    t->horizontalHeader()->setStretchLastSection(true);
+    return t;
+}
+
+QTableWidgetItem* cell(const QString& text, bool number = false)
+{
+    auto* it = new QTableWidgetItem(text);
+    if (number) it->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    return it;
+}
+
+}  // namespace
+
+RecordsView::RecordsView(QWidget* parent) : QWidget(parent)
+{
+    setObjectName("RecordsView");
+    // a trainer's desk view: smaller than the trainee's screens (the page's 14 pt)
+    setStyleSheet("QTableWidget, QListWidget, QLineEdit, QHeaderView::section { font-size: 11pt; }");
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(16, 12, 16, 12);
+    auto* title = new QLabel(tr("Trainee records"));
+    title->setObjectName("TrainTitle");
+    layout->addWidget(title);
+    m_message = new QLabel;
+    m_message->setObjectName("RecordsMessage");
+    m_message->setWordWrap(true);
+    m_message->setStyleSheet("color: #b35c00;");
+    m_message->hide();
+    layout->addWidget(m_message);
+
+    auto* split = new QSplitter(Qt::Horizontal);
+    // the operators and adding one
+    auto* left = new QWidget;
+    auto* leftLayout = new QVBoxLayout(left);
+    leftLayout->setContentsMargins(0, 0, 0, 0);
+    leftLayout->addWidget(new QLabel("<b>" + tr("Operators") + "</b>"));
+    m_operators = table({tr("Code"), tr("Name"), tr("Attempts"), tr("Passed"), tr("Last attempt")});
+    m_operators->setObjectName("RecordsOperators");
+    leftLayout->addWidget(m_operators, 1);
+    auto* addRow = new QHBoxLayout;
+    auto* addFields = new QHBoxLayout;
+    m_newCode = new QLineEdit;
+    m_newCode->setMinimumWidth(110);
+    m_newCode->setPlaceholderText(tr("code"));
+    m_newCode->setObjectName("NewOperatorCode");
+    m_newName = new QLineEdit;
+    m_newName->setPlaceholderText(tr("name"));
+    m_newName->setObjectName("NewOperatorName");
+    m_add = new QPushButton(tr("Add operator"));
+    m_add->setObjectName("AddOperatorButton");
+    m_newName->setMinimumWidth(180);
+    addFields->addWidget(m_newCode, 1);
+    addFields->addWidget(m_newName, 2);
+    addRow->addStretch();
+    addRow->addWidget(m_add);
+    leftLayout->addLayout(addFields);
+    leftLayout->addLayout(addRow);
+    left->setMinimumWidth(420);
+    split->addWidget(left);
+
+    // the selected operator: attempts, the selected one's breakdown and events, the chart
+    auto* right = new QSplitter(Qt::Vertical);
+    auto* top = new QWidget;
+    auto* topLayout = new QHBoxLayout(top);
+    topLayout->setContentsMargins(0, 0, 0, 0);
+    auto* attemptsBox = new QVBoxLayout;
+    attemptsBox->addWidget(new QLabel("<b>" + tr("Attempts (newest first)") + "</b>"));
+    m_attempts = table({tr("Started"), tr("Tutorial"), tr("Status"), tr("Score"), tr("Stars"), tr("Time [s]")});
+    m_attempts->setObjectName("RecordsAttempts");
+    attemptsBox->addWidget(m_attempts, 1);
+    topLayout->addLayout(attemptsBox, 5);
+    auto* detail = new QVBoxLayout;
+    detail->addWidget(new QLabel("<b>" + tr("Breakdown") + "</b>"));
+    m_breakdown = table({tr("Measure"), tr("Value"), tr("Points"), tr("Of")});
+    m_breakdown->setObjectName("RecordsBreakdown");
+    m_breakdown->setSelectionMode(QAbstractItemView::NoSelection);
+    m_breakdown->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    m_breakdown->horizontalHeader()->setStretchLastSection(false);
+    detail->addWidget(m_breakdown, 1);
+    detail->addWidget(new QLabel("<b>" + tr("Events") + "</b>"));
+    m_events = new QListWidget;
+    m_events->setObjectName("RecordsEvents");
+    m_events->setWordWrap(true);
+    detail->addWidget(m_events, 1);
+    topLayout->addLayout(detail, 3);
+    right->addWidget(top);
+    m_chart = new QChartView;
+    m_chart->setObjectName("RecordsChart");
+    m_chart->setRenderHint(QPainter::Antialiasing);
+    m_chart->setMinimumHeight(220);
+    right->addWidget(m_chart);
+    right->setStretchFactor(0, 3);
+    right->setStretchFactor(1, 2);
+    split->addWidget(right);
+    split->setStretchFactor(0, 2);
+    split->setStretchFactor(1, 4);
+    split->setSizes({560, 1100});
+    layout->addWidget(split, 1);
+
+    auto* buttons = new QHBoxLayout;
+    auto* back = new QPushButton(tr("Back to the course"));
+    back->setObjectName("RecordsBack");
+    auto* reload = new QPushButton(tr("Refresh"));
+    m_export = new QPushButton(tr("Export CSV…"));
+    m_export->setObjectName("ExportCsvButton");
+    buttons->addWidget(back);
+    buttons->addStretch();
+    buttons->addWidget(reload);
+    buttons->addWidget(m_export);
+    layout->addLayout(buttons);
+
+    connect(back, &QPushButton::clicked, this, &RecordsView::backRequested);
+    connect(reload, &QPushButton::clicked, this, &RecordsView::refresh);
+    connect(m_operators, &QTableWidget::currentCellChanged, this, [this](int row) { showOperator(row); });
+    connect(m_attempts, &QTableWidget::currentCellChanged, this, [this](int row) { showAttempt(row); });
+    const auto add = [this] {
+        QString error;
+        if (addOperator(m_newCode->text(), m_newName->text(), &error)) {
+            m_newCode->clear();
+            m_newName->clear();
+        } else {
+            QMessageBox::warning(this, tr("Add operator"), error);
+        }
+    };
+    connect(m_add, &QPushButton::clicked, this, add);
+    connect(m_newName, &QLineEdit::returnPressed, this, add);
+    connect(m_export, &QPushButton::clicked, this, [this] {
+        const QString dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export CSV"), dir + "/padrob-attempts.csv",
+                                                          tr("CSV files (*.csv);;All files (*)"));
+        if (path.isEmpty()) return;
+        QString error;
+        if (!exportCsv(path, &error)) QMessageBox::warning(this, tr("Export CSV"), error);
+    });
+    setRecords(nullptr, {});
+}
+
+void RecordsView::setRecords(trainer::records::RecordsDb* db, const QString& problem)
+{
+    m_db = db;
+    m_problem = problem;
+    refresh();
+}
+
+void RecordsView::setTutorials(const QHash<QString, QString>& titles, const QHash<QString, double>& passMarks)
+{
+    m_titles = titles;
+    m_passMarks = passMarks;
+}
+
+void RecordsView::refresh()
+{
+    const int oldRow = m_operators->currentRow();
+    const QString selected = oldRow >= 0 && oldRow < m_progress.size() ? m_progress[oldRow].op.code : QString();
+    m_progress.clear();
+    QString error;
+    if (!m_db) error = m_problem.isEmpty() ? tr("There are no trainee records.") : m_problem;
+    else if (!m_db->progress(m_progress, &error)) m_progress.clear();
+    if (!error.isEmpty())
+        error = tr("The trainee records cannot be read: %1 Training goes on; attempts are kept in pending files and "
+                   "added to the records the next time they open.").arg(error);
+    else if (m_db && m_db->isReadOnly())
+        error = tr("The trainee records are open read-only: %1").arg(m_db->where());
+    m_message->setText(error);
+    m_message->setVisible(!error.isEmpty());
+    const bool writable = m_db && !m_db->isReadOnly();
+    m_add->setEnabled(writable);
+    m_newCode->setEnabled(writable);
+    m_newName->setEnabled(writable);
+    m_export->setEnabled(m_db != nullptr);
+
+    const QSignalBlocker block(m_operators);
+    m_operators->setRowCount(int(m_progress.size()));
+    int select = m_progress.isEmpty() ? -1 : 0;
+    for (int i = 0; i < m_progress.size(); ++i) {
+        const rec::OperatorProgress& p = m_progress[i];
+        m_operators->setItem(i, 0, cell(p.op.code));
+        m_operators->setItem(i, 1, cell(p.op.name));
+        m_operators->setItem(i, 2, cell(QString::number(p.attempts), true));
+        m_operators->setItem(i, 3, cell(QString::number(p.tutorialsPassed), true));
+        m_operators->setItem(i, 4, cell(when(p.lastAttempt)));
+        if (p.op.code == selected) select = i;
+    }
+    m_operators->setCurrentCell(select, 0);
+    showOperator(select);
+}
+
+bool RecordsView::selectOperator(const QString& code)
+{
+    for (int i = 0; i < m_progress.size(); ++i) {
+        if (m_progress[i].op.code != code) continue;
+        m_operators->setCurrentCell(i, 0);  // shows it
+        return true;
+    }
+    return false;
+}
+
+void RecordsView::showOperator(int row)
+{
+    m_list.clear();
+    const QSignalBlocker block(m_attempts);
+    if (m_db && row >= 0 && row < m_progress.size()) m_db->attemptsOf(m_progress[row].op.id, m_list, true);
+    m_attempts->setRowCount(int(m_list.size()));
+    for (int i = 0; i < m_list.size(); ++i) {
+        const rec::Attempt& a = m_list[i];
+        const bool scored = a.status == rec::AttemptStatus::Finished || a.status == rec::AttemptStatus::Aborted;
+        QString status = statusText(a.status);
+        if (a.status == rec::AttemptStatus::Finished) status += a.passed ? " — " + tr("passed") : " — " + tr("not passed");
+        m_attempts->setItem(i, 0, cell(when(a.started)));
+        m_attempts->setItem(i, 1, cell(a.tutorialTitle.isEmpty() ? a.tutorialId : a.tutorialId + " " + a.tutorialTitle));
+        m_attempts->setItem(i, 2, cell(status));
+        m_attempts->setItem(i, 3, cell(scored ? num(a.score, 0) : QString(), true));
+        m_attempts->setItem(i, 4, cell(scored ? QString(a.stars, QChar(0x2605)) : QString()));
+        m_attempts->setItem(i, 5, cell(scored ? num(a.durationS, 1) : QString(), true));
+    }
+    m_attempts->setCurrentCell(m_list.isEmpty() ? -1 : 0, 0);
+    showAttempt(m_list.isEmpty() ? -1 : 0);
+    fillChart(m_list);
+}
+
+void RecordsView::showAttempt(int row)
+{
+    m_breakdown->setRowCount(0);
+    m_events->clear();
+    if (row < 0 || row >= m_list.size()) return;
+    const rec::Attempt& a = m_list[row];
+    m_breakdown->setRowCount(int(a.breakdown.size()));
+    for (int i = 0; i < a.breakdown.size(); ++i) {
+        const rec::ScoreItem& s = a.breakdown[i];
+        m_breakdown->setItem(i, 0, cell(s.label.isEmpty() ? s.key : s.label));
+        m_breakdown->setItem(i, 1, cell(num(s.value, 2), true));
+        m_breakdown->setItem(i, 2, cell(num(s.points, 1), true));
+        m_breakdown->setItem(i, 3, cell(s.maxPoints > 0 ? num(s.maxPoints, 0) : QString(), true));
+    }
+    for (const rec::AttemptEvent& e : a.events) {
+        QString text = tr("%1 s — %2").arg(num(e.t, 1), e.text);
+        if (e.penalty > 0) text += " " + tr("(−%1)").arg(num(e.penalty, 0));
+        m_events->addItem(text);
+    }
+    if (a.events.isEmpty()) m_events->addItem(tr("No events."));
+}
+
+void RecordsView::fillChart(const QList<trainer::records::Attempt>& attempts)
+{
+    auto* chart = new QChart;
+    chart->setAnimationOptions(QChart::NoAnimation);
+    chart->setTitle(tr("Score of each attempt"));
+    chart->setMargins(QMargins(4, 4, 4, 4));
+    auto* x = new QValueAxis;
+    x->setTitleText(tr("attempt"));
+    x->setLabelFormat("%d");
+    auto* y = new QValueAxis;
+    y->setTitleText(tr("score"));
+    y->setRange(0, 100);
+    y->setLabelFormat("%g");
+    chart->addAxis(x, Qt::AlignBottom);
+    chart->addAxis(y, Qt::AlignLeft);
+    // the operator's attempts oldest first, numbered; one series per tutorial
+    QMap<QString, QLineSeries*> byTutorial;
+    const int n = int(attempts.size());
+    for (int k = n - 1; k >= 0; --k) {
+        const rec::Attempt& a = attempts[k];
+        if (a.status != rec::AttemptStatus::Finished && a.status != rec::AttemptStatus::Aborted) continue;
+        QLineSeries*& s = byTutorial[a.tutorialId];
+        if (!s) {
+            s = new QLineSeries;
+            const QString title = m_titles.value(a.tutorialId, a.tutorialTitle);
+            s->setName(title.isEmpty() ? a.tutorialId : a.tutorialId + " " + title);
+            s->setPointsVisible(true);
+        }
+        s->append(n - k, a.score);
+    }
+    const double xMax = std::max(2, n);
+    for (QLineSeries* s : byTutorial) {
+        chart->addSeries(s);
+        s->attachAxis(x);
+        s->attachAxis(y);
+    }
+    // each tutorial's pass mark, dashed in its series' colour
+    QMap<double, QStringList> marks;
+    for (auto it = byTutorial.begin(); it != byTutorial.end(); ++it)
+        if (m_passMarks.contains(it.key())) marks[m_passMarks.value(it.key())] << it.key();
+    for (auto it = marks.begin(); it != marks.end(); ++it) {
+        auto* line = new QLineSeries;
+        line->setName(tr("pass mark %1 (%2)").arg(num(it.key(), 0), it.value().join(", ")));
+        line->append(1, it.key());
+        line->append(xMax, it.key());
+        QPen pen(it.value().size() == 1 ? byTutorial.value(it.value().first())->color() : QColor("#2e9d4a"));
+        pen.setStyle(Qt::DashLine);
+        pen.setWidth(2);
+        chart->addSeries(line);
+        line->setPen(pen);
+        line->attachAxis(x);
+        line->attachAxis(y);
+    }
+    x->setRange(1, xMax);
+    x->setTickCount(int(std::min(xMax, 11.0)));
+    chart->legend()->setVisible(!byTutorial.isEmpty());
+    chart->legend()->setAlignment(Qt::AlignRight);
+    QChart* old = m_chart->chart();
+    m_chart->setChart(chart);
+    delete old;
+}
+
+bool RecordsView::addOperator(const QString& code, const QString& name, QString* error)
+{
+    if (!m_db) {
+        if (error) *error = m_problem.isEmpty() ? tr("There are no trainee records.") : m_problem;
+        return false;
+    }
+    if (code.trimmed().isEmpty()) {
+        if (error) *error = tr("Type the operator's code (badge number…).");
+        return false;
+    }
+    if (m_db->addOperator(code, name.trimmed().isEmpty() ? code.trimmed() : name.trimmed(), error) == 0) return false;
+    refresh();
+    selectOperator(code.trimmed());
+    emit operatorsChanged();
+    return true;
+}
+
+bool RecordsView::exportCsv(const QString& path, QString* error)
+{
+    if (!m_db) {
+        if (error) *error = m_problem.isEmpty() ? tr("There are no trainee records.") : m_problem;
+        return false;
+    }
+    return m_db->exportCsv(path, error);
+}
+
+}  // namespace studio
