@@ -1,5 +1,6 @@
 #include "trainer/station/station.h"
 
+#include "trainer/input/input_log.h"
 #include "trainer/input/sdl_joysticks.h"
 
 #include <QThread>
@@ -101,6 +102,31 @@ void Station::call(std::function<void(StationEngine&)> f)
     m_queue.push_back([&f](StationEngine& e) { f(e); });
     const std::uint64_t mine = ++m_postCount;
     m_posted.wait(lock, [&] { return m_doneCount >= mine; });
+}
+
+bool Station::startRecording(InputRecorder& recorder, const QString& path, QString* error, StationProfile* profile)
+{
+    bool ok = false, ran = false;
+    call([&](StationEngine& e) {
+        ran = true;
+        ok = recorder.start(path, e.state().time, error);
+        if (ok) e.setRecorder(&recorder);
+        if (profile) *profile = e.profile();
+    });
+    if (!ran && error) *error = tr("the station is not running");
+    return ok;
+}
+
+bool Station::stopRecording(InputRecorder& recorder, QString* error)
+{
+    bool ok = false, ran = false;
+    call([&](StationEngine& e) {
+        ran = true;
+        e.setRecorder(nullptr);
+        ok = recorder.stop(error);
+    });
+    if (!ran) ok = recorder.stop(error);  // no engine any more: nobody else uses it
+    return ok;
 }
 
 void Station::drain()

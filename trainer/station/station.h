@@ -55,6 +55,15 @@ public:
     /// Runs `f` there and waits for it (for set-up and tests; never from the input thread).
     void call(std::function<void(StationEngine&)> f);
 
+    /// Starts `recorder` writing to `path` and attaches it to the engine, in the input
+    /// thread (where it is used). `profile` (optional): the profile in use then. False
+    /// with `error` (the file cannot be written, or the station is not running).
+    bool startRecording(InputRecorder& recorder, const QString& path, QString* error,
+                        StationProfile* profile = nullptr);
+    /// Detaches `recorder` and stops it, in the input thread (here when the thread has
+    /// ended: nobody else uses it then). False with `error` when the log may be incomplete.
+    bool stopRecording(InputRecorder& recorder, QString* error);
+
     /// The newest state; nullptr before the first update.
     std::shared_ptr<const StationState> latest() const;
 

@@ -649,17 +649,8 @@ bool StationPage::startRecording(const QString& fileIn)
     if (file.isEmpty()) return false;
     if (QFileInfo::exists(file) && !ask(tr("Record input"), tr("%1 exists already. Replace it?").arg(file))) return false;
     auto recorder = std::make_unique<trainer::InputRecorder>();
-    trainer::InputRecorder* r = recorder.get();
-    bool ok = false;
-    bool ran = false;
     QString error;
-    m_station->call([&](trainer::StationEngine& e) {
-        ran = true;
-        ok = r->start(file, e.state().time, &error);
-        if (ok) e.setRecorder(r);
-    });
-    if (!ran) error = tr("the station is not running");
-    if (!ok) {
+    if (!m_station->startRecording(*recorder, file, &error)) {
         tell(tr("Record input"), tr("Cannot record to %1: %2").arg(file, error));
         return false;
     }
@@ -673,17 +664,8 @@ bool StationPage::startRecording(const QString& fileIn)
 bool StationPage::stopRecording()
 {
     if (!m_recorder) return false;
-    trainer::InputRecorder* r = m_recorder.get();
-    bool ok = true;
-    bool ran = false;
     QString error;
-    if (m_station)
-        m_station->call([&](trainer::StationEngine& e) {
-            ran = true;
-            e.setRecorder(nullptr);
-            ok = r->stop(&error);
-        });
-    if (!ran) ok = r->stop(&error);  // no engine any more: nobody else uses it
+    const bool ok = m_station ? m_station->stopRecording(*m_recorder, &error) : m_recorder->stop(&error);
     m_recorder.reset();
     updateButtons();
     if (!ok) tell(tr("Record input"), tr("The log %1 may be incomplete: %2").arg(m_recordFile, error));

@@ -658,17 +658,9 @@ bool TrainPage::startRecording(const trainer::Tutorial& t)
                                           .arg(QString::fromStdString(t.spec.id),
                                                QDateTime::currentDateTime().toString("yyyyMMdd-HHmmss-zzz")));
     auto recorder = std::make_unique<trainer::InputRecorder>();
-    trainer::InputRecorder* r = recorder.get();
-    bool ok = false;
     QString error;
     trainer::StationProfile profile;
-    // the recorder is used in the input thread: started and attached there
-    m_station->call([&](trainer::StationEngine& e) {
-        ok = r->start(file, e.state().time, &error);
-        if (ok) e.setRecorder(r);
-        profile = e.profile();
-    });
-    if (!ok) {
+    if (!m_station->startRecording(*recorder, file, &error, &profile)) {
         qWarning("Train: the attempt's input is not recorded: %s", qPrintable(error));
         return false;
     }
@@ -681,17 +673,8 @@ bool TrainPage::startRecording(const trainer::Tutorial& t)
 void TrainPage::stopRecording()
 {
     if (!m_recorder) return;
-    trainer::InputRecorder* r = m_recorder.get();
-    bool ok = false;
-    bool ran = false;
     QString error;
-    if (m_station)
-        m_station->call([&](trainer::StationEngine& e) {
-            ran = true;
-            e.setRecorder(nullptr);
-            ok = r->stop(&error);
-        });
-    if (!ran) ok = r->stop(&error);
+    const bool ok = m_station ? m_station->stopRecording(*m_recorder, &error) : m_recorder->stop(&error);
     m_recorder.reset();
     if (!ok) {
         qWarning("Train: the attempt's input log %s may be incomplete: %s", qPrintable(m_recordingFile), qPrintable(error));
