@@ -57,16 +57,7 @@ std::unique_ptr<trainer::StationEngine> replayStation(const solver::Model& m, co
     const QList<trainer::DriveInfo> drives = passive ? QList<trainer::DriveInfo>{} : trainer::drivesOf(m);
     trainer::StationProfile profile;
     QList<trainer::ProfileIssue> issues;
-    if (profileArg.empty()) {
-        profile = trainer::StationProfile::defaultFor(trainer::ProfileStore::modelKey(model), drives);
-    } else if (QFileInfo(QString::fromStdString(profileArg)).isFile()) {
-        QFile f(QString::fromStdString(profileArg));
-        if (!f.open(QIODevice::ReadOnly) || !trainer::StationProfile::fromJson(f.readAll(), profile, issues)) {
-            problem = profileArg + ": " +
-                      (issues.isEmpty() ? f.errorString() : issues.first().text()).toStdString();
-            return nullptr;
-        }
-    } else if (!trainer::ProfileStore().load(model, QString::fromStdString(profileArg), profile, issues)) {
+    if (!trainer::ProfileStore().resolve(model, QString::fromStdString(profileArg), drives, profile, issues)) {
         problem = issues.isEmpty() ? profileArg : issues.first().text().toStdString();
         return nullptr;
     }

@@ -120,6 +120,17 @@ bool ProfileStore::load(const QString& modelPath, const QString& name, StationPr
     return false;
 }
 
+bool ProfileStore::resolve(const QString& modelPath, const QString& nameOrFile, const QList<DriveInfo>& drives,
+                           StationProfile& out, QList<ProfileIssue>& issues) const
+{
+    if (nameOrFile.isEmpty()) {
+        out = StationProfile::defaultFor(modelKey(modelPath), drives);
+        return true;
+    }
+    if (QFileInfo(nameOrFile).isFile()) return readProfile(nameOrFile, out, issues);
+    return load(modelPath, nameOrFile, out, issues);
+}
+
 bool ProfileStore::save(const QString& modelPath, const StationProfile& profile, SaveMode mode, QString* error) const
 {
     if (profile.name.trimmed().isEmpty()) {

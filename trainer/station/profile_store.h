@@ -47,6 +47,12 @@ public:
     /// corrupt one: where and why).
     bool load(const QString& modelPath, const QString& name, StationProfile& out, QList<ProfileIssue>& issues) const;
 
+    /// The profile `nameOrFile` names for the model: a .json file, else one of the
+    /// model's profiles (load()); "" the one Padrob makes for the model
+    /// (StationProfile::defaultFor with `drives`). False with `issues`.
+    bool resolve(const QString& modelPath, const QString& nameOrFile, const QList<DriveInfo>& drives,
+                 StationProfile& out, QList<ProfileIssue>& issues) const;
+
     enum class SaveMode { CreateOnly, Overwrite };
     /// Saves under the profile's name in the user folder. CreateOnly: false (and
     /// `error`) when that name exists. Overwrite: replaces it, keeping an unreadable

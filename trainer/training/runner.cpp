@@ -4,8 +4,6 @@
 #include "trainer/station/station_engine.h"
 
 #include <QCoreApplication>
-#include <QFile>
-#include <QFileInfo>
 #include <QRegularExpression>
 
 #include <algorithm>
@@ -79,29 +77,13 @@ private:
 
 bool tutorialProfile(const Tutorial& t, const QString& override, StationProfile& out, QString* error)
 {
-    QString which = override;
-    if (which.isEmpty() && !t.profileFile.empty()) which = QString::fromStdString(t.profileFile);
-    if (which.isEmpty()) which = QString::fromStdString(t.spec.profile);
-    const QString model = QString::fromStdString(t.modelFile);
-    if (which.isEmpty()) {
-        out = StationProfile::defaultFor(ProfileStore::modelKey(model), drivesOf(*t.model));
+    if (override.isEmpty()) {
+        out = t.profile;
         return true;
     }
     QList<ProfileIssue> issues;
-    if (QFileInfo(which).isFile()) {
-        QFile f(which);
-        if (!f.open(QIODevice::ReadOnly)) {
-            if (error) *error = which + ": " + f.errorString();
-            return false;
-        }
-        if (!StationProfile::fromJson(f.readAll(), out, issues)) {
-            if (error) *error = which + ": " + (issues.isEmpty() ? QString() : issues.first().text());
-            return false;
-        }
-        return true;
-    }
-    if (!ProfileStore().load(model, which, out, issues)) {
-        if (error) *error = issues.isEmpty() ? Tr::tr("no station profile \"%1\" for this model").arg(which) : issues.first().text();
+    if (!ProfileStore().resolve(QString::fromStdString(t.modelFile), override, drivesOf(*t.model), out, issues)) {
+        if (error) *error = issues.isEmpty() ? override : issues.first().text();
         return false;
     }
     return true;
@@ -288,7 +270,7 @@ bool recordWithAutopilot(std::shared_ptr<const Tutorial> tutorial, const std::ve
         session.step();
         if (camera && now >= nextCamera - 1e-9) {
             nextCamera = now + 0.5;
-            const Eigen::Vector3d p = session.result().finalPoint;
+            const Eigen::Vector3d p = session.trackPoint();
             look = camera->empty() ? p : Eigen::Vector3d(look + 0.3 * (p - look));
             const double heading = std::atan2(look.y(), look.x());
             camera->add({now, look, Eigen::Vector2d(look.x(), look.y()).norm() + 4.5,

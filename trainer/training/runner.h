@@ -23,8 +23,8 @@
 namespace trainer {
 
 /// The station profile a tutorial runs with: `override` (a .json file or a name of the
-/// model's profiles) when given, else the tutorial's PROFILE, else the one Padrob makes
-/// for the model. False with `error`.
+/// model's profiles) when given, else Tutorial::profile (its PROFILE, else the one Padrob
+/// makes for the model). False with `error`.
 bool tutorialProfile(const Tutorial& tutorial, const QString& override, StationProfile& out, QString* error);
 
 struct RunOutput {

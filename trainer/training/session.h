@@ -152,6 +152,8 @@ public:
     const std::vector<SessionSample>& samples() const { return m_samples; }
     /// The result so far (final once ended()).
     TutorialResult result() const;
+    /// Where the tracked point is now (TRACK, else the GRIP's tool point…) [m].
+    Eigen::Vector3d trackPoint() const;
 
 private:
     void handleSolverEvents(const std::vector<solver::SimulationEvent>& events, const std::vector<double>& qdBefore);
@@ -164,7 +166,6 @@ private:
     int partOf(int shape) const;
     void end(const std::string& reason, bool completed);
     void goalDone();
-    Eigen::Vector3d trackPoint() const;
     std::string shapeName(int shape) const;
     std::string driveName(int joint) const;
     bool isClaw(int joint) const;

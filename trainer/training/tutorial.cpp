@@ -12,7 +12,6 @@
 #include "trainer/station/profile_store.h"
 #include "trainer/training/reach.h"
 
-#include <QFile>
 #include <QFileInfo>
 
 #include <cmath>
@@ -311,26 +310,16 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
         }
     }
     // the station profile: a file (relative to the tutorial) or a name of the model's profiles
-    if (!s.profile.empty()) {
+    {
         const std::string asFile = resolvePath(tut->directory, s.profile);
-        if (QFileInfo(QString::fromStdString(asFile)).isFile()) {
-            tut->profileFile = asFile;
-            QFile f(QString::fromStdString(asFile));
-            StationProfile p;
-            QList<ProfileIssue> issues;
-            if (!f.open(QIODevice::ReadOnly) || !StationProfile::fromJson(f.readAll(), p, issues)) {
-                diags.error("bad-profile", s.profilePos,
-                            "the station profile '" + s.profile + "' cannot be read: " +
-                                (issues.isEmpty() ? f.errorString() : issues.first().text()).toStdString(),
-                            "fix the file or name another profile");
-            }
-        } else {
-            StationProfile p;
-            QList<ProfileIssue> issues;
-            if (!ProfileStore().load(QString::fromStdString(tut->modelFile), QString::fromStdString(s.profile), p, issues)) {
-                diags.error("bad-profile", s.profilePos, "the model has no station profile '" + s.profile + "'",
-                            "name one of the model's profiles or give a .json file relative to the tutorial");
-            }
+        const QString which = QString::fromStdString(
+            !s.profile.empty() && QFileInfo(QString::fromStdString(asFile)).isFile() ? asFile : s.profile);
+        QList<ProfileIssue> issues;
+        if (!ProfileStore().resolve(QString::fromStdString(tut->modelFile), which, drivesOf(m), tut->profile, issues)) {
+            diags.error("bad-profile", s.profilePos,
+                        "the station profile '" + s.profile + "' cannot be used: " +
+                            (issues.isEmpty() ? std::string() : issues.first().text().toStdString()),
+                        "name one of the model's profiles or give a .json file relative to the tutorial");
         }
     }
     if (diags.hasErrors()) return nullptr;

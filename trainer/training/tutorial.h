@@ -12,6 +12,7 @@
 #include "solver/core/diagnostic.h"
 #include "solver/core/model.h"
 #include "solver/model/model_spec.h"
+#include "trainer/station/profile.h"
 
 #include <Eigen/Core>
 
@@ -164,7 +165,10 @@ TutorialSpec parseTutorial(const std::string& text, const std::string& file, sol
 struct Tutorial {
     TutorialSpec spec;
     std::string directory;  ///< of the tutorial file
-    std::string modelFile, sceneFile, demoFile, cameraFile, profileFile;  ///< absolute ("" none)
+    std::string modelFile, sceneFile, demoFile, cameraFile;  ///< absolute ("" none)
+    /// The station profile it runs with: PROFILE's (read when the tutorial was loaded),
+    /// else the one Padrob makes for the model.
+    StationProfile profile;
     std::shared_ptr<const solver::Model> model;
     std::shared_ptr<const solver::ModelSpec> modelSpec;
     std::shared_ptr<const solver::ModelSpec> sceneSpec;  ///< nullptr: no scene
