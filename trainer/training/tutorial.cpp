@@ -53,6 +53,16 @@ void checkText(const LocalText& t, const std::string& what, Diagnostics& d)
     }
 }
 
+/// The errors of a model (or scene) file, each in its own file, into the tutorial's list.
+void copyErrors(const solver::LoadedModel& loaded, const std::string& file, Diagnostics& diags)
+{
+    for (const solver::Diagnostic& d : loaded.diagnostics) {
+        if (d.severity != solver::Severity::Error) continue;
+        solver::Diagnostic& c = diags.error(d.code, d.pos, d.message, d.hint);
+        c.file = d.file.empty() ? file : d.file;
+    }
+}
+
 /// θ of a modeler coordinate value (T 1: a length), or nullopt when unreachable.
 std::optional<double> thetaOf(const solver::Model& m, int j, double value)
 {
@@ -105,12 +115,7 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
     tut->modelFile = resolvePath(tut->directory, s.modelPath);
     solver::LoadedModel loaded = solver::loadModelFile(tut->modelFile);
     if (!loaded.ok()) {
-        for (const solver::Diagnostic& d : loaded.diagnostics) {
-            if (d.severity == solver::Severity::Error) {
-                solver::Diagnostic& c = diags.error(d.code, d.pos, d.message, d.hint);
-                c.file = d.file.empty() ? tut->modelFile : d.file;
-            }
-        }
+        copyErrors(loaded, tut->modelFile, diags);
         diags.error("model-errors", s.modelPos, "the model '" + s.modelPath + "' cannot be used (errors above)",
                     "fix the model, or check the path: it is relative to the tutorial's folder");
         return nullptr;
@@ -130,12 +135,7 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
         tut->sceneFile = resolvePath(tut->directory, s.scenePath);
         solver::LoadedModel scene = solver::loadModelFile(tut->sceneFile);
         if (!scene.ok()) {
-            for (const solver::Diagnostic& d : scene.diagnostics) {
-                if (d.severity == solver::Severity::Error) {
-                    solver::Diagnostic& c = diags.error(d.code, d.pos, d.message, d.hint);
-                    c.file = d.file.empty() ? tut->sceneFile : d.file;
-                }
-            }
+            copyErrors(scene, tut->sceneFile, diags);
             diags.error("scene-errors", s.scenePos, "the scene '" + s.scenePath + "' cannot be used (errors above)",
                         "fix the scene, or check the path: it is relative to the tutorial's folder");
         } else {
