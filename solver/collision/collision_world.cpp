@@ -296,18 +296,25 @@ void CollisionWorld::update(const Data& data)
     }
 }
 
-Clearance CollisionWorld::bodyToScene(int body)
+Clearance CollisionWorld::sceneQuery(int body, const std::vector<char>* skip)
 {
     // one running minimum over every shape's query: each broad-phase traversal prunes the
     // scene's boxes farther than the best found so far
     Query q{&m_shapes, &m_impl->parent, -1, {}};
     for (int i : m_impl->moving) {
-        if (body >= 0 && m_shapes[std::size_t(i)].body != body) continue;
+        const int b = m_shapes[std::size_t(i)].body;
+        if (body >= 0 && b != body) continue;
+        if (skip && std::size_t(b) < skip->size() && (*skip)[std::size_t(b)]) continue;
         q.shape = i;
         m_impl->still.distance(m_impl->objects[std::size_t(i)].get(), &q, distanceCallback);
         if (q.best.distance <= 0) break;
     }
     return q.best;
+}
+
+Clearance CollisionWorld::bodyToScene(int body)
+{
+    return sceneQuery(body, nullptr);
 }
 
 Clearance CollisionWorld::machineToScene()
@@ -393,15 +400,7 @@ Clearance CollisionWorld::bodyToShapes(int body, const std::vector<int>& shapeIn
 
 Clearance CollisionWorld::machineToScene(const std::vector<char>& skip)
 {
-    Query q{&m_shapes, &m_impl->parent, -1, {}};
-    for (int i : m_impl->moving) {
-        const int body = m_shapes[std::size_t(i)].body;
-        if (std::size_t(body) < skip.size() && skip[std::size_t(body)]) continue;
-        q.shape = i;
-        m_impl->still.distance(m_impl->objects[std::size_t(i)].get(), &q, distanceCallback);
-        if (q.best.distance <= 0) break;
-    }
-    return q.best;
+    return sceneQuery(-1, &skip);
 }
 
 }  // namespace solver

@@ -92,6 +92,9 @@ public:
     Clearance machineToScene(const std::vector<char>& skip);
 
 private:
+    /// The running-minimum query of `body`'s shapes (−1: every moving shape) against the
+    /// scene, leaving out the bodies marked in `skip` (may be nullptr).
+    Clearance sceneQuery(int body, const std::vector<char>* skip);
     struct Impl;
     std::unique_ptr<Impl> m_impl;
     std::vector<CollisionShape> m_shapes;
