@@ -4,6 +4,7 @@
 // matches the solver library step for step, draws each display mode, reports a loop
 // that locks up without blocking, and takes the operator's keys.
 
+#include "tests/studio/gui_test.h"
 #include "ide/studio/app/main_window.h"
 #include "ide/studio/editor/code_editor.h"
 #include "ide/studio/editor/editor_panel.h"
@@ -38,16 +39,11 @@
 #include <QTreeWidgetItem>
 
 using namespace studio;
+using studio::test::screenshotPath;
 
 namespace {
 
 QString modelPath(const QString& name) { return QStringLiteral(PADROB_SOURCE_DIR) + "/models/" + name; }
-
-QString screenshotPath(const QString& name)
-{
-    QDir().mkpath(QStringLiteral(PADROB_SCREENSHOT_DIR));
-    return QStringLiteral(PADROB_SCREENSHOT_DIR) + "/" + name;
-}
 
 /// Distinct colours in an image (a blank view has one or two).
 int colourCount(const QImage& image)

@@ -9,6 +9,7 @@
 // steps the engine itself (call → update). One test runs a started station, as the
 // application does.
 
+#include "tests/studio/gui_test.h"
 #include "../trainer/fake_device.h"
 
 #include "ide/studio/station/calibration_wizard.h"
@@ -46,6 +47,7 @@
 using studio::CalibrationWizard;
 using studio::MappingTable;
 using studio::StationPage;
+using studio::test::screenshotPath;
 
 namespace {
 
@@ -101,13 +103,6 @@ bool writeFile(const QString& path, const QByteArray& data)
     QDir().mkpath(QFileInfo(path).absolutePath());
     QFile f(path);
     return f.open(QIODevice::WriteOnly) && f.write(data) == data.size();
-}
-
-QString screenshotPath(const QString& name)
-{
-    const QString dir = QStringLiteral(PADROB_SCREENSHOT_DIR);
-    QDir().mkpath(dir);
-    return dir + QLatin1Char('/') + name;
 }
 
 /// A model folder with a shipped profile next to the model, a user store, a station

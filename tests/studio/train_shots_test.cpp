@@ -5,6 +5,7 @@
 // the HUD's goal in the language, a passed result. Saved as
 // train_<tutorial>_{start,hud,result}_{en,es}.png with the other screenshots.
 
+#include "tests/studio/gui_test.h"
 #include "ide/studio/app/main_window.h"
 #include "ide/studio/train/train_page.h"
 #include "ide/studio/train/tutorial_runner.h"
@@ -24,22 +25,8 @@
 #include <memory>
 
 using namespace studio;
-
-namespace {
-
-QString screenshotPath(const QString& name)
-{
-    QDir().mkpath(QStringLiteral(PADROB_SCREENSHOT_DIR));
-    return QStringLiteral(PADROB_SCREENSHOT_DIR) + "/" + name;
-}
-
-void settle(int ms = 300)
-{
-    QTest::qWait(ms);
-    QApplication::processEvents();
-}
-
-}  // namespace
+using studio::test::screenshotPath;
+using studio::test::settle;
 
 class TrainShotsTest : public QObject {
     Q_OBJECT

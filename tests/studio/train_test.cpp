@@ -12,6 +12,7 @@
 // the HUD and the result, in English and in Spanish (every tutorial:
 // train_shots_test).
 
+#include "tests/studio/gui_test.h"
 #include "ide/studio/app/main_window.h"
 #include "ide/studio/train/records_view.h"
 #include "ide/studio/train/train_page.h"
@@ -47,22 +48,8 @@
 #include <memory>
 
 using namespace studio;
-
-namespace {
-
-QString screenshotPath(const QString& name)
-{
-    QDir().mkpath(QStringLiteral(PADROB_SCREENSHOT_DIR));
-    return QStringLiteral(PADROB_SCREENSHOT_DIR) + "/" + name;
-}
-
-void settle(int ms = 300)
-{
-    QTest::qWait(ms);
-    QApplication::processEvents();
-}
-
-}  // namespace
+using studio::test::screenshotPath;
+using studio::test::settle;
 
 class TrainTest : public QObject {
     Q_OBJECT
