@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs every Debian package Padrob needs to build, run and test.
-# One list, shared by scripts/run.sh and scripts/test.sh. Idempotent: when every
-# package is already installed it prints nothing and touches nothing.
+# One list, shared by scripts/run.sh and scripts/test.sh, and the locale es_CL.UTF-8 the
+# tests use. Idempotent: when every package is already installed and the locale exists it
+# prints nothing and touches nothing.
 #
 # We install with --no-install-recommends. What that drops, and why it is fine:
 #   - qt6-base-dev only *recommends* libqt6opengl6-dev and the SQLite driver;
@@ -41,6 +42,8 @@ packages=(
   libqt6sql6-psql postgresql
   # tests
   libgtest-dev libgmock-dev libbenchmark-dev locales
+  # Qt's own texts in Spanish (the buttons of standard dialogs, context menus)
+  qt6-translations-l10n
 )
 
 missing=()
@@ -48,14 +51,30 @@ for p in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)
   [ "$status" = installed ] || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
+
+# es_CL.UTF-8, the Spanish (Chile) locale: tests run padrob and the model parser under it
+# (a decimal comma) to check that model files and numbers keep the '.'. The `locales`
+# package above ships its definition but generates no locale.
+has_es_cl() { locale -a 2>/dev/null | grep -qiE '^es_CL\.utf-?8$'; }
+need_locale=0
+has_es_cl || need_locale=1
+
+[ ${#missing[@]} -eq 0 ] && [ $need_locale -eq 0 ] && exit 0
 
 sudo=""
 if [ "$(id -u)" -ne 0 ]; then
-  command -v sudo >/dev/null || { echo "install-deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  what="${missing[*]}"
+  [ $need_locale -eq 0 ] || what="${what:+$what and }the locale es_CL.UTF-8"
+  command -v sudo >/dev/null || { echo "install-deps: need root or sudo to install $what" >&2; exit 1; }
   sudo=sudo
 fi
-echo "install-deps: installing ${missing[*]}" >&2
-export DEBIAN_FRONTEND=noninteractive
-$sudo apt-get update -qq -o DPkg::Lock::Timeout=600
-$sudo apt-get install -y -qq --no-install-recommends -o DPkg::Lock::Timeout=600 "${missing[@]}" >/dev/null
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "install-deps: installing ${missing[*]}" >&2
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo apt-get update -qq -o DPkg::Lock::Timeout=600
+  $sudo apt-get install -y -qq --no-install-recommends -o DPkg::Lock::Timeout=600 "${missing[@]}" >/dev/null
+fi
+if ! has_es_cl; then
+  echo "install-deps: generating the locale es_CL.UTF-8" >&2
+  $sudo localedef -i es_CL -f UTF-8 es_CL.UTF-8
+fi

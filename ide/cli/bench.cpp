@@ -41,7 +41,7 @@
 #include "ide/cli/mujoco_bench.h"
 #endif
 
-#include <QCoreApplication>
+#include "ide/i18n/language.h"
 
 #include <algorithm>
 #include <charconv>
@@ -62,12 +62,11 @@ namespace {
 
 constexpr int kOk = 0, kModelErrors = 1, kUsage = 2;
 
-std::string tr(const char* s) { return QCoreApplication::translate("padrob-bench", s).toStdString(); }
-
+using i18n::trStd;
 
 int usage(const std::string& message)
 {
-    return usageError("bench", message, tr("Try 'padrob bench --help'."));
+    return usageError("bench", message);
 }
 
 std::optional<long> toInteger(const std::string& s)
@@ -78,17 +77,12 @@ std::optional<long> toInteger(const std::string& s)
     return v;
 }
 
-/// v with `digits` significant digits (%g), for the table.
+/// v with `digits` significant digits (%g), for the table; '.' whatever the locale.
 std::string fmt(double v, int digits = 3)
 {
-    char buf[48];
     if (!std::isfinite(v)) return "-";
-    if (std::abs(v) >= std::pow(10.0, digits)) {
-        std::snprintf(buf, sizeof buf, "%.0f", v);  // no exponent for large values
-    } else {
-        std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-    }
-    return buf;
+    if (std::abs(v) >= std::pow(10.0, digits)) return fixed(v, 0);  // no exponent for large values
+    return num(v, digits);
 }
 
 // ---- timing -----------------------------------------------------------------
@@ -215,7 +209,7 @@ std::optional<double> stepRun(const std::shared_ptr<const solver::Model>& model,
         const double t = k * o.dt;
         if (!o.passive && o.commanded) commands.apply(sim, t);
         if (!sim.advanceTo((k + 1) * o.dt, ev, error)) {
-            error = tr("the simulation failed: ") + error;
+            error = fill(trStd("padrob", "the simulation failed: %1"), {error});
             return std::nullopt;
         }
         events += static_cast<long>(ev.size());
@@ -327,7 +321,7 @@ bool benchModel(const std::shared_ptr<const solver::Model>& model, const StepOpt
     // MuJoCo on the same ODE (trees only)
     if (mujoco && m.cuts.empty() && so.adaptive) {
         f.mujocoTried = true;
-        f.mujocoError = tr("not compared with --integrator adaptive (MuJoCo is timed with RK4 at dt)");
+        f.mujocoError = trStd("padrob", "not compared with --integrator adaptive (MuJoCo is timed with RK4 at dt)");
     } else if (mujoco && m.cuts.empty()) {
         f.mujocoTried = true;
         f.mujocoOk = runMujoco(m, so.dt, so.steps, runs, kMujocoAgreementSeconds, kMujocoTolerance, f.mujoco,
@@ -336,7 +330,7 @@ bool benchModel(const std::shared_ptr<const solver::Model>& model, const StepOpt
             f.mujocoStep = summarize(f.mujoco.stepMicros);
             f.mujocoForward = summarize(f.mujoco.forwardMicros);
             f.mujocoOk = f.mujocoStep.ok() && f.mujocoForward.ok();
-            if (!f.mujocoOk) f.mujocoError = "no timings";
+            if (!f.mujocoOk) f.mujocoError = trStd("padrob", "no timings");
         }
     }
 #else
@@ -397,7 +391,7 @@ bool benchScaling(const StepOptions& so, int runs, Scaling& out, std::string& er
             solver::Diagnostics diags("generated.pad");
             std::shared_ptr<const solver::Model> model = solver::compileLoaded(loaded, diags);
             if (!model) {
-                error = "generated model of " + std::to_string(n) + " bodies does not compile";
+                error = fill(trStd("padrob", "generated model of %1 bodies does not compile"), {std::to_string(n)});
                 return false;
             }
             ScalingPoint p;
@@ -410,7 +404,8 @@ bool benchScaling(const StepOptions& so, int runs, Scaling& out, std::string& er
             o.commanded = true;
             if (p.held.ok()) p.commanded = measure(runs, [&]() { return stepRun(model, o, p.commandedEvents, error); });
             if (!p.held.ok() || !p.commanded.ok()) {
-                error = (tree ? "tree of " : "chain of ") + std::to_string(n) + " bodies: " + error;
+                error = fill(tree ? trStd("padrob", "tree of %1 bodies: %2") : trStd("padrob", "chain of %1 bodies: %2"),
+                             {std::to_string(n), error});
                 return false;
             }
             points.push_back(p);
@@ -439,7 +434,7 @@ std::string cpuModel()
             }
         }
     }
-    return "unknown";
+    return "unknown";  // the JSON's "cpu" too
 }
 
 int cores() { return static_cast<int>(std::thread::hardware_concurrency()); }
@@ -554,99 +549,99 @@ std::string jsonReport(const Options& o, const ModelFigures* mf, const Scaling* 
     return j.text() + "\n";
 }
 
-/// s padded with blanks to `width` characters (not bytes: labels hold non-ASCII).
-std::string pad(const std::string& s, std::size_t width)
-{
-    std::size_t chars = 0;
-    for (unsigned char c : s) chars += (c & 0xC0) != 0x80 ? 1 : 0;
-    return s + std::string(chars < width ? width - chars : 0, ' ');
-}
-
 constexpr std::size_t kLabelWidth = 40, kMedianWidth = 10, kRangeWidth = 20;
 
-/// One row of the table: label, median, min – max, and a remark.
+/// One row of the table: label, median, min – max, and a remark (a label too long for its
+/// column keeps one blank before the median).
 std::string row(const std::string& label, const Figure& f, const std::string& remark)
 {
-    return pad("  " + label, kLabelWidth) + pad(fmt(f.median), kMedianWidth) +
+    return pad("  " + label, kLabelWidth - 1) + " " + pad(fmt(f.median), kMedianWidth) +
            pad(fmt(f.min) + " – " + fmt(f.max), kRangeWidth) + remark + "\n";
 }
 
 std::string textReport(const Options& o, const ModelFigures* mf, const Scaling* sc)
 {
     std::string t;
-    t += tr("machine: ") + cpuModel() + ", " + std::to_string(cores()) + tr(" cores") + "\n";
-    t += tr("each figure: the median of ") + std::to_string(o.runs) +
-         tr(" runs after a warm-up run, and the fastest – slowest run") + "\n";
+    t += fill(trStd("padrob", "machine: %1, %2 cores"), {cpuModel(), std::to_string(cores())}) + "\n";
+    t += trStd("padrob", "each figure: the median of %n run(s) after a warm-up run, and the fastest – slowest run", nullptr,
+               o.runs) +
+         "\n";
     if (mf) {
         const ModelFigures& f = *mf;
         const double dtMicros = o.step.dt * 1e6;
-        t += tr("model: ") + o.model + tr(" (bodies: ") + std::to_string(f.bodies) + tr(", drives: ") +
-             std::to_string(f.drives) + tr(", loop closures: ") + std::to_string(f.cuts) + ")\n";
-        t += tr("steps: ") + std::to_string(o.step.steps) + tr(" of dt = ") + fmt(o.step.dt * 1e3, 6) + " ms, " +
-             (o.step.adaptive ? tr("adaptive integrator (Dormand–Prince 5(4), rtol 1e-8)") : tr("RK4")) + "\n\n";
-        t += pad("  " + tr("[µs]"), kLabelWidth) + pad(tr("median"), kMedianWidth) + tr("min – max") + "\n";
-        t += row(tr("forward dynamics, per evaluation"), f.forward,
-                 fmt(1e6 / f.forward.median, 4) + tr(" evaluations/s"));
-        const std::string realtime = tr("realtime factor ") + fmt(dtMicros / f.step.median, 4) + " (" +
-                                     fmt(dtMicros / f.step.max, 4) + " – " + fmt(dtMicros / f.step.min, 4) + ")";
+        t += fill(trStd("padrob", "model: %1 (bodies: %2, drives: %3, loop closures: %4)"),
+                  {o.model, std::to_string(f.bodies), std::to_string(f.drives), std::to_string(f.cuts)}) +
+             "\n";
+        t += fill(trStd("padrob", "steps: %1 of dt = %2 ms, %3"),
+                  {std::to_string(o.step.steps), fmt(o.step.dt * 1e3, 6),
+                   o.step.adaptive ? trStd("padrob", "adaptive integrator (Dormand–Prince 5(4), rtol 1e-8)") : trStd("padrob", "RK4")}) +
+             "\n\n";
+        t += pad("  " + trStd("padrob", "[µs]"), kLabelWidth) + pad(trStd("padrob", "median"), kMedianWidth) +
+             trStd("padrob", "min – max") + "\n";
+        t += row(trStd("padrob", "forward dynamics, per evaluation"), f.forward,
+                 fill(trStd("padrob", "%1 evaluations/s"), {fmt(1e6 / f.forward.median, 4)}));
+        const std::string realtime =
+            fill(trStd("padrob", "realtime factor %1 (%2 – %3)"),
+                 {fmt(dtMicros / f.step.median, 4), fmt(dtMicros / f.step.max, 4), fmt(dtMicros / f.step.min, 4)});
         if (o.step.adaptive) {
-            t += row(tr("adaptive, per simulated ms"), perMillisecond(f.step, o.step.dt), realtime);
+            t += row(trStd("padrob", "adaptive, per simulated ms"), perMillisecond(f.step, o.step.dt), realtime);
         } else {
-            t += row(tr("RK4 step"), f.step, fmt(1e6 / f.step.median, 4) + tr(" steps/s, ") + realtime);
-            t += row(tr("RK4 step, commands held"), f.held, tr("no restart after a new command"));
-            t += row(tr("RK4 step, passive, no limits"), f.passive, tr("no drives, no events"));
+            t += row(trStd("padrob", "RK4 step"), f.step, fill(trStd("padrob", "%1 steps/s, %2"), {fmt(1e6 / f.step.median, 4), realtime}));
+            t += row(trStd("padrob", "RK4 step, commands held"), f.held, trStd("padrob", "no restart after a new command"));
+            t += row(trStd("padrob", "RK4 step, passive, no limits"), f.passive, trStd("padrob", "no drives, no events"));
         }
-        t += row(tr("reference N–E system, per solve"), f.reference,
-                 "×" + fmt(f.reference.median / f.forward.median) + tr(" Padrob's forward dynamics"));
-        t += row(tr("reference RK4 step"), f.referenceStep,
+        t += row(trStd("padrob", "reference N–E system, per solve"), f.reference,
+                 fill(trStd("padrob", "×%1 Padrob's forward dynamics"), {fmt(f.reference.median / f.forward.median)}));
+        t += row(trStd("padrob", "reference RK4 step"), f.referenceStep,
                  o.step.adaptive ? std::string()
-                                 : "×" + fmt(f.referenceStep.median / f.step.median) + tr(" Padrob's RK4 step"));
+                                 : fill(trStd("padrob", "×%1 Padrob's RK4 step"), {fmt(f.referenceStep.median / f.step.median)}));
 #ifdef PADROB_HAVE_MUJOCO
         if (f.mujocoTried && f.mujocoOk) {
-            t += row(tr("MuJoCo RK4 step (passive, no limits)"), f.mujocoStep,
-                     tr("Padrob / MuJoCo ") + fmt(f.step.median / f.mujocoStep.median) + tr(" (passive ") +
-                         fmt(f.passive.median / f.mujocoStep.median) + ")");
-            t += row(tr("MuJoCo forward (mj_forward)"), f.mujocoForward,
-                     tr("Padrob / MuJoCo ") + fmt(f.forward.median / f.mujocoForward.median));
+            t += row(trStd("padrob", "MuJoCo RK4 step (passive, no limits)"), f.mujocoStep,
+                     fill(trStd("padrob", "Padrob / MuJoCo %1 (passive %2)"),
+                          {fmt(f.step.median / f.mujocoStep.median), fmt(f.passive.median / f.mujocoStep.median)}));
+            t += row(trStd("padrob", "MuJoCo forward (mj_forward)"), f.mujocoForward,
+                     fill(trStd("padrob", "Padrob / MuJoCo %1"), {fmt(f.forward.median / f.mujocoForward.median)}));
         }
 #endif
         t += "\n";
-        t += tr("Steps: every drive commanded by a sine (amplitude 0.8, 0.5 Hz, phases spread) set before every\n"
-                "step (held: set once), limits and relief valves watched as events, the joint reactions computed\n"
-                "in every evaluation. Events in one run: ") +
-             std::to_string(f.events) + ".\n";
-        t += tr("Reference: the thesis's Newton–Euler system A·X = B (eq. 2.8–2.11), dense LU, ") +
-             std::to_string(f.referenceEvaluations) + tr(" solves\nand ") + std::to_string(f.referenceSteps) +
-             tr(" RK4 steps per run, modes and commands held, no events; its θ̈ differs from Padrob's\nby ") +
-             fmt(f.referenceDifference, 2) + tr(" (relative).") + "\n";
+        t += fill(trStd("padrob", "Steps: every drive commanded by a sine (amplitude 0.8, 0.5 Hz, phases spread) set before every\n"
+                                  "step (held: set once), limits and relief valves watched as events, the joint reactions computed\n"
+                                  "in every evaluation. Events in one run: %1."),
+                  {std::to_string(f.events)}) +
+             "\n";
+        t += fill(trStd("padrob", "Reference: the thesis's Newton–Euler system A·X = B (eq. 2.8–2.11), dense LU, %1 solves\n"
+                                  "and %2 RK4 steps per run, modes and commands held, no events; its θ̈ differs from Padrob's\n"
+                                  "by %3 (relative)."),
+                  {std::to_string(f.referenceEvaluations), std::to_string(f.referenceSteps), fmt(f.referenceDifference, 2)}) +
+             "\n";
 #ifdef PADROB_HAVE_MUJOCO
         if (f.mujocoTried && f.mujocoOk) {
-            t += tr("MuJoCo: the same trajectory within ") + fmt(f.mujoco.maxPositionError, 2) + tr(" m over ") +
-                 fmt(f.mujoco.agreementSeconds) + " s";
-            t += f.mujoco.adjustments.empty() ? std::string(".") : tr("; adjusted for MuJoCo:");
+            const std::string within = fmt(f.mujoco.maxPositionError, 2), over = fmt(f.mujoco.agreementSeconds);
+            t += f.mujoco.adjustments.empty()
+                     ? fill(trStd("padrob", "MuJoCo: the same trajectory within %1 m over %2 s."), {within, over})
+                     : fill(trStd("padrob", "MuJoCo: the same trajectory within %1 m over %2 s; adjusted for MuJoCo:"), {within, over});
             t += "\n";
             for (const std::string& a : f.mujoco.adjustments) t += "  " + a + "\n";
         }
 #endif
-        t += tr("Allocations in the step loop: not counted here (tests/alloc counts them).") + "\n";
+        t += trStd("padrob", "Allocations in the step loop: not counted here (tests/alloc counts them).") + "\n";
     }
     if (sc) {
-        t += "\n" + tr("scaling: µs per RK4 step (median) of generated models: drives on every 3rd joint,\n"
-                       "limits on all; commands held, or set every step") +
+        t += "\n" + trStd("padrob", "scaling: µs per RK4 step (median) of generated models: drives on every 3rd joint,\n"
+                                    "limits on all; commands held, or set every step") +
              "\n";
         const std::size_t w = 18;
-        t += pad("  " + tr("bodies"), 10) + pad(tr("chain, held"), w) + pad(tr("chain, commanded"), w) +
-             pad(tr("tree, held"), w) + tr("tree, commanded") + "\n";
+        t += pad("  " + trStd("padrob", "bodies"), 10) + pad(trStd("padrob", "chain, held"), w) + pad(trStd("padrob", "chain, commanded"), w) +
+             pad(trStd("padrob", "tree, held"), w) + trStd("padrob", "tree, commanded") + "\n";
         for (std::size_t k = 0; k < sc->chain.size() && k < sc->tree.size(); ++k) {
-            char n[16];
-            std::snprintf(n, sizeof n, "%7d", sc->chain[k].bodies);
-            t += pad(std::string("  ") + n, 10) + pad(fmt(sc->chain[k].held.median), w) +
+            t += pad("  " + pad(std::to_string(sc->chain[k].bodies), 7, true), 10) + pad(fmt(sc->chain[k].held.median), w) +
                  pad(fmt(sc->chain[k].commanded.median), w) + pad(fmt(sc->tree[k].held.median), w) +
                  fmt(sc->tree[k].commanded.median) + "\n";
         }
-        t += pad("  " + tr("p"), 10) + pad(fmt(sc->chainExponent), w) + pad(fmt(sc->chainCommandedExponent), w) +
+        t += pad("  p", 10) + pad(fmt(sc->chainExponent), w) + pad(fmt(sc->chainCommandedExponent), w) +
              pad(fmt(sc->treeExponent), w) + fmt(sc->treeCommandedExponent) + "\n";
-        t += tr("  p: time ∝ n^p by least squares on log–log (p ≈ 1 is linear)") + "\n";
+        t += trStd("padrob", "  p: time ∝ n^p by least squares on log–log (p ≈ 1 is linear)") + "\n";
     }
     return t;
 }
@@ -655,7 +650,7 @@ std::string textReport(const Options& o, const ModelFigures* mf, const Scaling* 
 
 std::string benchHelp()
 {
-    return tr("Usage: padrob bench MODEL [OPTIONS]\n"
+    return trStd("padrob", "Usage: padrob bench MODEL [OPTIONS]\n"
               "       padrob bench --scaling [OPTIONS]\n"
               "\n"
               "Times the solver on a model: forward dynamics, RK4 steps with drives, limits and\n"
@@ -700,34 +695,34 @@ int runBench(const std::vector<std::string>& args)
         if (a == "--scaling") { o.scaling = true; continue; }
         if (a == "--no-mujoco") { o.mujoco = false; continue; }
         if (a == "--steps" || a == "--runs" || a == "--dt" || a == "--integrator") {
-            if (i + 1 >= args.size()) return usage(a + tr(" needs a value"));
+            if (i + 1 >= args.size()) return usage(fill(trStd("padrob", "%1 needs a value"), {a}));
             const std::string& v = args[++i];
             if (a == "--steps" || a == "--runs") {
                 const std::optional<long> n = toInteger(v);
                 const long most = a == "--steps" ? 100000000L : 1000L;
                 if (!n || *n < 1 || *n > most) {
-                    return usage(a + tr(" must be a whole number from 1 to ") + std::to_string(most) + tr(", not '") +
-                                 v + "'");
+                    return usage(fill(trStd("padrob", "%1 must be a whole number from 1 to %2, not '%3'"),
+                                      {a, std::to_string(most), v}));
                 }
                 (a == "--steps" ? o.step.steps : o.runs) = static_cast<int>(*n);
             } else if (a == "--dt") {
                 const std::optional<double> d = toNumber(v);
                 if (!d || !(*d > 0) || *d > 1) {
-                    return usage(tr("--dt must be a number of seconds above 0 and at most 1, not '") + v + "'");
+                    return usage(fill(trStd("padrob", "--dt must be a number of seconds above 0 and at most 1, not '%1'"), {v}));
                 }
                 o.step.dt = *d;
             } else {
                 if (v == "rk4") o.step.adaptive = false;
                 else if (v == "adaptive") o.step.adaptive = true;
-                else return usage(tr("--integrator must be rk4 or adaptive, not '") + v + "'");
+                else return usage(fill(trStd("padrob", "--integrator must be rk4 or adaptive, not '%1'"), {v}));
             }
             continue;
         }
-        if (a.size() > 1 && a[0] == '-') return usage(tr("unknown option '") + a + "'");
-        if (!o.model.empty()) return usage(tr("give one model"));
+        if (a.size() > 1 && a[0] == '-') return usage(fill(trStd("padrob", "unknown option '%1'"), {a}));
+        if (!o.model.empty()) return usage(trStd("padrob", "give one model"));
         o.model = a;
     }
-    if (o.model.empty() && !o.scaling) return usage(tr("no model given"));
+    if (o.model.empty() && !o.scaling) return usage(trStd("padrob", "no model given"));
 
     // the model
     std::shared_ptr<const solver::Model> model;
@@ -736,7 +731,7 @@ int runBench(const std::vector<std::string>& args)
         model = loadAndCompile(o.model, status);
         if (!model) return status;
         if (model->nb == 0) {
-            printErr("padrob bench: " + o.model + tr(": the model has no moving body: nothing to time") + "\n");
+            printErr("padrob bench: " + fill(trStd("padrob", "%1: the model has no moving body: nothing to time"), {o.model}) + "\n");
             return kModelErrors;
         }
     }
@@ -749,7 +744,7 @@ int runBench(const std::vector<std::string>& args)
     }
 #ifdef PADROB_HAVE_MUJOCO
     if (model && figures.mujocoTried && !figures.mujocoOk) {
-        printErr("padrob bench: " + tr("MuJoCo: ") + figures.mujocoError + "\n");
+        printErr("padrob bench: " + fill(trStd("padrob", "MuJoCo: %1"), {figures.mujocoError}) + "\n");
     }
 #endif
     Scaling scaling;
@@ -757,7 +752,7 @@ int runBench(const std::vector<std::string>& args)
         StepOptions so = o.step;
         so.adaptive = false;  // the scaling is of the real-time integrator
         if (!benchScaling(so, o.runs, scaling, error)) {
-            printErr("padrob bench: " + tr("scaling: ") + error + "\n");
+            printErr("padrob bench: " + fill(trStd("padrob", "scaling: %1"), {error}) + "\n");
             return kModelErrors;
         }
     }

@@ -1,5 +1,7 @@
 #include "ide/cli/cli_io.h"
 
+#include "ide/i18n/diagnostic_text.h"
+#include "ide/i18n/language.h"
 #include "solver/compile/compile.h"
 #include "solver/model/load.h"
 
@@ -19,9 +21,10 @@ void printErr(const std::string& s)
     std::fwrite(s.data(), 1, s.size(), stderr);
 }
 
-int usageError(const std::string& command, const std::string& message, const std::string& tryHelp)
+int usageError(const std::string& command, const std::string& message)
 {
-    printErr("padrob " + command + ": " + message + "\n" + tryHelp + "\n");
+    printErr("padrob " + command + ": " + message + "\n" +
+             fill(i18n::trStd("padrob", "Try 'padrob %1 --help'."), {command}) + "\n");
     return kExitUsage;
 }
 
@@ -35,19 +38,67 @@ std::optional<double> toNumber(const std::string& s)
     return v;
 }
 
+std::string fill(std::string_view tmpl, std::initializer_list<std::string_view> args)
+{
+    std::string out;
+    out.reserve(tmpl.size());
+    for (std::size_t k = 0; k < tmpl.size(); ++k) {
+        if (tmpl[k] == '%' && k + 1 < tmpl.size() && tmpl[k + 1] >= '1' && tmpl[k + 1] <= '9') {
+            const std::size_t n = static_cast<std::size_t>(tmpl[k + 1] - '1');
+            if (n < args.size()) {
+                out += *(args.begin() + n);
+                ++k;
+                continue;
+            }
+        }
+        out += tmpl[k];
+    }
+    return out;
+}
+
+std::string num(double v, int digits)
+{
+    if (v == 0) return "0";
+    char buf[64];
+    auto [p, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, digits);
+    return std::string(buf, p);
+}
+
+std::string fixed(double v, int decimals)
+{
+    char buf[400];
+    auto [p, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
+    if (ec != std::errc()) return num(v);
+    return std::string(buf, p);
+}
+
+std::string pad(const std::string& s, std::size_t width, bool right)
+{
+    std::size_t chars = 0;
+    for (unsigned char c : s) chars += (c & 0xC0) != 0x80;
+    const std::string fill(chars < width ? width - chars : 0, ' ');
+    return right ? fill + s : s + fill;
+}
+
+void printDiagnostic(std::FILE* f, const solver::Diagnostic& d)
+{
+    const std::string line = i18n::format(d) + "\n";
+    std::fwrite(line.data(), 1, line.size(), f);
+}
+
 std::shared_ptr<const solver::Model> loadAndCompile(const std::string& path, int& status)
 {
     const solver::LoadedModel loaded = solver::loadModelFile(path);
     bool io = false;
     for (const solver::Diagnostic& d : loaded.diagnostics) {
-        if (d.severity == solver::Severity::Error || d.code == "io-error") printErr(d.format() + "\n");
+        if (d.severity == solver::Severity::Error || d.code == "io-error") printDiagnostic(stderr, d);
         if (d.code == "io-error") io = true;
     }
     status = io ? kExitUsage : kExitModelErrors;
     if (io || !loaded.ok()) return nullptr;
     solver::Diagnostics compileDiags(path);
     std::shared_ptr<const solver::Model> model = solver::compileLoaded(loaded, compileDiags);
-    for (const solver::Diagnostic& d : compileDiags) printErr(d.format() + "\n");
+    for (const solver::Diagnostic& d : compileDiags) printDiagnostic(stderr, d);
     if (model) status = kExitOk;
     return model;
 }

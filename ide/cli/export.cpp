@@ -12,7 +12,8 @@
 #include "solver/io/mjcf.h"
 #include "solver/model/load.h"
 
-#include <QCoreApplication>
+#include "ide/i18n/language.h"
+
 #include <QFileInfo>
 #include <QSaveFile>
 
@@ -27,24 +28,16 @@ namespace {
 
 constexpr int kOk = 0, kModelErrors = 1, kUsage = 2;
 
-std::string tr(const char* s) { return QCoreApplication::translate("padrob-export", s).toStdString(); }
-
+using i18n::trStd;
 
 int usage(const std::string& message)
 {
-    return usageError("export", message, tr("Try 'padrob export --help'."));
+    return usageError("export", message);
 }
 
 #ifdef PADROB_HAVE_MUJOCO
 /// What --check compares: seconds of simulated time, and the largest distance [m].
 constexpr double kCheckSeconds = 0.2, kCheckTolerance = 1e-6;
-
-std::string fmt(const char* format, double v)
-{
-    char buf[48];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
 #endif
 
 /// Writes `text` to `path` through a temporary file renamed onto it (QSaveFile): the
@@ -53,17 +46,17 @@ bool writeAtomically(const std::string& path, const std::string& text, std::stri
 {
     const QString qpath = QString::fromStdString(path);
     if (QFileInfo(qpath).isDir()) {
-        error = tr("cannot write ") + path + tr(": it is a folder");
+        error = fill(trStd("padrob", "cannot write %1: it is a folder"), {path});
         return false;
     }
     QSaveFile file(qpath);
     if (!file.open(QIODevice::WriteOnly)) {
-        error = tr("cannot create ") + path + ": " + file.errorString().toStdString();
+        error = fill(trStd("padrob", "cannot create %1: %2"), {path, file.errorString().toStdString()});
         return false;
     }
     if (file.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size()) ||
         !file.commit()) {
-        error = tr("cannot write ") + path + ": " + file.errorString().toStdString();
+        error = fill(trStd("padrob", "cannot write %1: %2"), {path, file.errorString().toStdString()});
         return false;  // QSaveFile's destructor removes the temporary file
     }
     return true;
@@ -73,7 +66,7 @@ bool writeAtomically(const std::string& path, const std::string& text, std::stri
 
 std::string exportHelp()
 {
-    return tr("Usage: padrob export --mjcf MODEL [--out FILE] [--dt H] [--check]\n"
+    return trStd("padrob", "Usage: padrob export --mjcf MODEL [--out FILE] [--dt H] [--check]\n"
               "\n"
               "Writes a model without closed loops as MuJoCo's MJCF (XML). The bodies are posed\n"
               "with every joint at 0, so MuJoCo's qpos of each joint is Padrob's coordinate\n"
@@ -113,26 +106,26 @@ int runExport(const std::vector<std::string>& args)
         if (a == "--mjcf") { mjcf = true; continue; }
         if (a == "--check") { check = true; continue; }
         if (a == "--out" || a == "--dt") {
-            if (i + 1 >= args.size()) return usage(a + tr(" needs a value"));
+            if (i + 1 >= args.size()) return usage(fill(trStd("padrob", "%1 needs a value"), {a}));
             const std::string& v = args[++i];
             if (a == "--out") {
-                if (v.empty()) return usage(tr("--out needs a file name"));
+                if (v.empty()) return usage(trStd("padrob", "--out needs a file name"));
                 outPath = v;
             } else {
                 auto d = toNumber(v);
-                if (!d || !(*d > 0)) return usage(tr("--dt must be a positive number of seconds, not '") + v + "'");
+                if (!d || !(*d > 0)) return usage(fill(trStd("padrob", "--dt must be a positive number of seconds, not '%1'"), {v}));
                 dt = *d;
             }
             continue;
         }
-        if (a.size() > 1 && a[0] == '-') return usage(tr("unknown option '") + a + "'");
-        if (!modelPath.empty()) return usage(tr("give one model"));
+        if (a.size() > 1 && a[0] == '-') return usage(fill(trStd("padrob", "unknown option '%1'"), {a}));
+        if (!modelPath.empty()) return usage(trStd("padrob", "give one model"));
         modelPath = a;
     }
-    if (!mjcf) return usage(tr("give the format: --mjcf (the only one)"));
-    if (modelPath.empty()) return usage(tr("no model given"));
+    if (!mjcf) return usage(trStd("padrob", "give the format: --mjcf (the only one)"));
+    if (modelPath.empty()) return usage(trStd("padrob", "no model given"));
 #ifndef PADROB_HAVE_MUJOCO
-    if (check) return usage(tr("--check needs MuJoCo, and this padrob was built without it"));
+    if (check) return usage(trStd("padrob", "--check needs MuJoCo, and this padrob was built without it"));
 #endif
 
     // the model
@@ -158,17 +151,18 @@ int runExport(const std::vector<std::string>& args)
             printErr("padrob export: --check: " + error + "\n");
             return kModelErrors;
         }
-        for (const std::string& n : run.notes) printErr(tr("note: ") + n + "\n");
-        for (const std::string& a : run.adjustments) printErr(tr("set in MuJoCo after loading: ") + a + "\n");
-        printErr(tr("MuJoCo agrees with Padrob over ") + fmt("%g", run.agreementSeconds) + tr(" s (RK4, dt ") +
-                 fmt("%g", dt) + tr(" s): the centres of mass are at most ") + fmt("%.3g", run.maxPositionError) +
-                 tr(" m apart") + "\n");
+        for (const std::string& n : run.notes) printErr(fill(trStd("padrob", "note: %1"), {n}) + "\n");
+        for (const std::string& a : run.adjustments) printErr(fill(trStd("padrob", "set in MuJoCo after loading: %1"), {a}) + "\n");
+        printErr(fill(trStd("padrob", "MuJoCo agrees with Padrob over %1 s (RK4, dt %2 s): the centres of mass are at "
+                                      "most %3 m apart"),
+                      {num(run.agreementSeconds), num(dt), num(run.maxPositionError, 3)}) +
+                 "\n");
     }
 #endif
 
     if (outPath.empty()) {
         if (std::fwrite(xml.data(), 1, xml.size(), stdout) != xml.size() || std::fflush(stdout) != 0) {
-            printErr("padrob export: " + tr("cannot write to standard output") + "\n");
+            printErr("padrob export: " + trStd("padrob", "cannot write to standard output") + "\n");
             return kUsage;
         }
         return kOk;

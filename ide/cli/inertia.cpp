@@ -7,7 +7,8 @@
 #include "solver/inertia/solid_inertia.h"
 #include "solver/model/load.h"
 
-#include <QCoreApplication>
+#include "ide/i18n/diagnostic_text.h"
+#include "ide/i18n/language.h"
 
 #include <algorithm>
 #include <charconv>
@@ -23,31 +24,21 @@ namespace {
 
 constexpr int kOk = 0, kModelErrors = 1, kUsage = 2;
 
-std::string tr(const char* s) { return QCoreApplication::translate("padrob-inertia", s).toStdString(); }
+using i18n::trStd;
 
 void print(std::FILE* f, const std::string& s) { std::fwrite(s.data(), 1, s.size(), f); }
 
 int usage(const std::string& message)
 {
-    return usageError("inertia", message, tr("Try 'padrob inertia --help'."));
+    return usageError("inertia", message);
 }
 
-/// `v` with 6 significant digits, shortest form ("0" for zero).
-std::string num(double v)
-{
-    if (v == 0) return "0";
-    char buf[64];
-    auto [p, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 6);
-    return std::string(buf, p);
-}
-
-/// Relative difference of `computed` from `written`, as a signed percentage.
+/// Relative difference of `computed` from `written`, as a signed percentage ("+12.50%").
 std::string relative(double computed, double written)
 {
-    if (written == 0) return computed == 0 ? "0%" : tr("n/a (file: 0)");
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%+.2f%%", 100.0 * (computed - written) / std::abs(written));
-    return buf;
+    if (written == 0) return computed == 0 ? "0%" : trStd("padrob", "n/a (file: 0)");
+    std::string s = fixed(100.0 * (computed - written) / std::abs(written), 2);
+    return (s[0] == '-' ? s : "+" + s) + "%";
 }
 
 /// The B statement "B id m Ixx Iyy Izz Ixy Iyz Ixz CG x y z" of computed mass properties;
@@ -170,7 +161,7 @@ std::string replaceBodyStatement(const std::string& text, std::size_t offset, co
 
 std::string inertiaHelp()
 {
-    return tr("Usage: padrob inertia MODEL [--body I] [--write]\n"
+    return trStd("padrob", "Usage: padrob inertia MODEL [--body I] [--write]\n"
               "\n"
               "Computes each body's mass, centre of mass and inertia tensor (about the centre of\n"
               "mass, in body axes) from its solids: the graphics (G) with MASS or RHO, combined\n"
@@ -201,32 +192,33 @@ int runInertia(const std::vector<std::string>& args)
         }
         if (a == "--write") write = true;
         else if (a == "--body") {
-            if (k + 1 >= args.size()) return usage(tr("--body needs a body id"));
+            if (k + 1 >= args.size()) return usage(trStd("padrob", "--body needs a body id"));
             const std::string& v = args[++k];
             int id = 0;
             auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), id);
             if (ec != std::errc() || p != v.data() + v.size() || id <= 0) {
-                return usage(tr("--body takes a body id (a positive integer), not '") + v + "'");
+                return usage(fill(trStd("padrob", "--body takes a body id (a positive integer), not '%1'"), {v}));
             }
             onlyBody = id;
         } else if (a.size() > 1 && a[0] == '-') {
-            return usage(tr("unknown option '") + a + "'");
+            return usage(fill(trStd("padrob", "unknown option '%1'"), {a}));
         } else files.push_back(a);
     }
-    if (files.size() != 1) return usage(tr(files.empty() ? "no model given" : "give one model"));
+    if (files.empty()) return usage(trStd("padrob", "no model given"));
+    if (files.size() != 1) return usage(trStd("padrob", "give one model"));
     const std::string& file = files[0];
 
     // load and check the model
     solver::LoadedModel m = solver::loadModelFile(file);
     bool io = false;
     for (const solver::Diagnostic& d : m.diagnostics) {
-        print(stderr, d.format() + "\n");
+        printDiagnostic(stderr, d);
         io = io || d.code == "io-error";
     }
     if (io) return kUsage;
     if (!m.ok()) return kModelErrors;
     if (onlyBody && !m.spec.body(*onlyBody)) {
-        return usage(tr("--body: the model has no body ") + std::to_string(*onlyBody));
+        return usage(fill(trStd("padrob", "--body: the model has no body %1"), {std::to_string(*onlyBody)}));
     }
 
     // compute every body with solids
@@ -240,21 +232,22 @@ int runInertia(const std::vector<std::string>& args)
         if (b.id == 0 || (onlyBody && b.id != *onlyBody)) continue;
         if (auto p = solver::bodyMassProperties(m.spec, b.id, diags)) computed.push_back({&b, *p});
     }
-    for (const solver::Diagnostic& d : diags) print(stderr, d.format() + "\n");
+    for (const solver::Diagnostic& d : diags) printDiagnostic(stderr, d);
     if (diags.hasErrors()) return kModelErrors;
     if (computed.empty()) {
         if (onlyBody) {
-            print(stderr, "padrob inertia: " + tr("body ") + std::to_string(*onlyBody) +
-                              tr(" has no solids (graphics with MASS or RHO)") + "\n");
+            print(stderr, "padrob inertia: " +
+                              fill(trStd("padrob", "body %1 has no solids (graphics with MASS or RHO)"), {std::to_string(*onlyBody)}) +
+                              "\n");
             return kModelErrors;
         }
-        print(stdout, tr("No body has solids (graphics with MASS or RHO): nothing to compute.") + "\n");
+        print(stdout, trStd("padrob", "No body has solids (graphics with MASS or RHO): nothing to compute.") + "\n");
         return kOk;
     }
 
     std::string text;
     if (!readFile(file, text)) {
-        print(stderr, "padrob inertia: " + tr("cannot read '") + file + "'\n");
+        print(stderr, "padrob inertia: " + fill(trStd("padrob", "cannot read '%1'"), {file}) + "\n");
         return kUsage;
     }
     std::string updated = text;
@@ -265,6 +258,15 @@ int runInertia(const std::vector<std::string>& args)
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
         return computed[a].body->src.pos.line > computed[b].body->src.pos.line;
     });
+    // the labels of each body's lines, their values in one column (at least where the
+    // English ones put them); the difference's " m" one further
+    const std::string fileLabel = trStd("padrob", "file:"), computedLabel = trStd("padrob", "computed:"),
+                      differenceLabel = trStd("padrob", "difference:"), principalLabel = trStd("padrob", "principal:");
+    std::size_t labelWidth = 11;
+    labelWidth = std::max(labelWidth, codePoints(differenceLabel, 0, differenceLabel.size()));
+    for (const std::string* l : {&fileLabel, &computedLabel, &principalLabel}) {
+        labelWidth = std::max(labelWidth, codePoints(*l, 0, l->size()) + 1);
+    }
     for (const Computed& c : computed) {
         const solver::BodySpec& b = *c.body;
         const solver::MassProperties& p = c.props;
@@ -276,13 +278,14 @@ int runInertia(const std::vector<std::string>& args)
             fileLine = text.substr(s, e - s);
         }
         const solver::PrincipalAxes pa = solver::principalAxes(p.inertia);
-        out += tr("body ") + std::to_string(b.id) + (b.name.empty() ? "" : " \"" + b.name + "\"") + "\n";
-        out += "  " + tr("file:      ") + fileLine + "\n";
-        out += "  " + tr("computed:  ") + bodyStatement(b.id, p) + "\n";
-        out += "  " + tr("difference:") + " m " + relative(p.mass, b.mass) + "  Ixx " + relative(p.inertia(0, 0), b.inertia.x()) +
-               "  Iyy " + relative(p.inertia(1, 1), b.inertia.y()) + "  Izz " + relative(p.inertia(2, 2), b.inertia.z()) + "\n";
-        out += "  " + tr("principal: ") + num(pa.moments.x()) + " " + num(pa.moments.y()) + " " + num(pa.moments.z()) +
-               tr(" kg·m²") + "\n";
+        out += fill(trStd("padrob", "body %1"), {std::to_string(b.id)}) + (b.name.empty() ? "" : " \"" + b.name + "\"") + "\n";
+        out += "  " + pad(fileLabel, labelWidth) + fileLine + "\n";
+        out += "  " + pad(computedLabel, labelWidth) + bodyStatement(b.id, p) + "\n";
+        out += "  " + pad(differenceLabel, labelWidth - 1) + " m " + relative(p.mass, b.mass) + "  Ixx " +
+               relative(p.inertia(0, 0), b.inertia.x()) + "  Iyy " + relative(p.inertia(1, 1), b.inertia.y()) + "  Izz " +
+               relative(p.inertia(2, 2), b.inertia.z()) + "\n";
+        out += "  " + pad(principalLabel, labelWidth) + num(pa.moments.x()) + " " + num(pa.moments.y()) + " " +
+               num(pa.moments.z()) + " kg·m²\n";
     }
     print(stdout, out);
     if (!write) return kOk;
@@ -294,8 +297,10 @@ int runInertia(const std::vector<std::string>& args)
         if (auto r = lineRange(updated, c.body->src.pos.line)) offset = columnOffset(updated, r->first, r->second, c.body->src.pos.column);
         std::string next = offset ? replaceBodyStatement(updated, *offset, bodyStatement(c.body->id, c.props)) : std::string();
         if (next.empty()) {
-            print(stderr, "padrob inertia: " + tr("cannot find body ") + std::to_string(c.body->id) +
-                              tr("'s B statement in the file; nothing written") + "\n");
+            print(stderr, "padrob inertia: " +
+                              fill(trStd("padrob", "cannot find body %1's B statement in the file; nothing written"),
+                                   {std::to_string(c.body->id)}) +
+                              "\n");
             return kModelErrors;
         }
         updated = std::move(next);
@@ -308,13 +313,13 @@ int runInertia(const std::vector<std::string>& args)
         same = same && b && b->name == c.body->name && std::abs(b->mass - c.props.mass) <= 1e-5 * c.props.mass;
     }
     if (!same) {
-        for (const solver::Diagnostic& d : check.diagnostics) print(stderr, d.format() + "\n");
-        print(stderr, "padrob inertia: " + tr("the updated model would not load as computed; nothing written") + "\n");
+        for (const solver::Diagnostic& d : check.diagnostics) printDiagnostic(stderr, d);
+        print(stderr, "padrob inertia: " + trStd("padrob", "the updated model would not load as computed; nothing written") + "\n");
         return kModelErrors;
     }
     const std::string backup = file + ".bak";
     if (!writeFile(backup, text)) {
-        print(stderr, "padrob inertia: " + tr("cannot write the backup '") + backup + tr("'; nothing written") + "\n");
+        print(stderr, "padrob inertia: " + fill(trStd("padrob", "cannot write the backup '%1'; nothing written"), {backup}) + "\n");
         return kUsage;
     }
     const std::string temp = file + ".tmp";
@@ -322,18 +327,18 @@ int runInertia(const std::vector<std::string>& args)
     const auto perms = std::filesystem::status(file, ec).permissions();
     if (!writeFile(temp, updated)) {
         std::filesystem::remove(temp, ec);
-        print(stderr, "padrob inertia: " + tr("cannot write '") + file + "'\n");
+        print(stderr, "padrob inertia: " + fill(trStd("padrob", "cannot write '%1'"), {file}) + "\n");
         return kUsage;
     }
     std::filesystem::permissions(temp, perms, ec);
     std::filesystem::rename(temp, file, ec);
     if (ec) {
         std::filesystem::remove(temp, ec);
-        print(stderr, "padrob inertia: " + tr("cannot write '") + file + "'\n");
+        print(stderr, "padrob inertia: " + fill(trStd("padrob", "cannot write '%1'"), {file}) + "\n");
         return kUsage;
     }
-    print(stdout, tr("Wrote ") + std::to_string(computed.size()) + tr(computed.size() == 1 ? " B line to " : " B lines to ") + file +
-                      tr(" (the old file is ") + backup + ")\n");
+    const int written = static_cast<int>(computed.size());
+    print(stdout, fill(trStd("padrob", "Wrote %n B line(s) to %1 (the old file is %2)", nullptr, written), {file, backup}) + "\n");
     return kOk;
 }
 

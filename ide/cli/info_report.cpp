@@ -1,8 +1,8 @@
 #include "ide/cli/info_report.h"
 
+#include "ide/cli/cli_io.h"
 #include "ide/cli/json_writer.h"
-
-#include <QCoreApplication>
+#include "ide/i18n/language.h"
 
 #include <algorithm>
 #include <charconv>
@@ -19,25 +19,13 @@ using solver::Topology;
 
 namespace {
 
-std::string tr(const char* s) { return QCoreApplication::translate("padrob-info", s).toStdString(); }
+using i18n::trStd;
 
-std::string num(double v, int digits = 6)
+/// `v` as the report shows it: 6 significant digits (ide::cli::num), ∞ for infinities.
+std::string shown(double v, int digits = 6)
 {
-    if (v == 0) return "0";
     if (std::isinf(v)) return v > 0 ? "∞" : "-∞";
-    char buf[64];
-    auto [p, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, digits);
-    return std::string(buf, p);
-}
-
-/// `s` padded with spaces to `width` characters (code points, not bytes), left-aligned
-/// (right-aligned when `right`).
-std::string pad(const std::string& s, std::size_t width, bool right = false)
-{
-    std::size_t chars = 0;
-    for (unsigned char c : s) chars += (c & 0xC0) != 0x80;
-    const std::string fill(chars < width ? width - chars : 0, ' ');
-    return right ? fill + s : s + fill;
+    return num(v, digits);
 }
 
 /// One table row: each cell padded to its width, separated by a space, trailing blanks trimmed.
@@ -49,9 +37,9 @@ std::string row(std::initializer_list<std::pair<std::string, int>> cells)
     return out + "\n";
 }
 
-std::string vec(const Eigen::Vector3d& v) { return num(v.x()) + " " + num(v.y()) + " " + num(v.z()); }
+std::string vec(const Eigen::Vector3d& v) { return shown(v.x()) + " " + shown(v.y()) + " " + shown(v.z()); }
 
-/// Role of each spec joint: "independent", "dependent" or "loop-closure".
+/// Role of each spec joint: "independent", "dependent" or "loop-closure" (the JSON's values).
 std::vector<std::string> roles(const LoadedModel& m)
 {
     std::vector<std::string> r(m.spec.joints.size(), "independent");
@@ -59,6 +47,25 @@ std::vector<std::string> roles(const LoadedModel& m)
     for (int j : t.dependent) r[static_cast<std::size_t>(j)] = "dependent";
     for (int j : t.loopJoints) r[static_cast<std::size_t>(j)] = "loop-closure";
     return r;
+}
+
+/// A role as the text report shows it, in the current language.
+std::string roleText(const std::string& role)
+{
+    if (role == "dependent") return trStd("padrob", "dependent", "role of a joint's coordinate");
+    if (role == "loop-closure") return trStd("padrob", "loop-closure", "role of a joint");
+    return trStd("padrob", "independent", "role of a joint's coordinate");
+}
+
+/// A joint type as the text report shows it, in the current language.
+std::string typeText(JointType t)
+{
+    switch (t) {
+    case JointType::Revolute: return trStd("padrob", "revolute", "joint type (T 0)");
+    case JointType::Actuator: return trStd("padrob", "actuator", "joint type (T 1)");
+    case JointType::Prismatic: return trStd("padrob", "prismatic", "joint type (T 2)");
+    }
+    return solver::jointTypeName(t);
 }
 
 const DriveSpec* driveOf(const LoadedModel& m, int jointId)
@@ -77,7 +84,7 @@ std::string jointIds(const LoadedModel& m, const std::vector<int>& indices)
 {
     std::string s;
     for (int j : indices) s += (s.empty() ? "" : ", ") + std::to_string(m.spec.joints[static_cast<std::size_t>(j)].id);
-    return s.empty() ? tr("none") : s;
+    return s.empty() ? trStd("padrob", "none") : s;
 }
 
 std::string driveText(const DriveSpec& d, JointType t)
@@ -87,9 +94,9 @@ std::string driveText(const DriveSpec& d, JointType t)
         auto h = d.hydraulic();
         const char* v = t == JointType::Revolute ? " rad/s" : " m/s";
         const char* f = t == JointType::Revolute ? " N·m" : " N";
-        s += " v " + num(h.vmax, 4) + "/" + num(h.vmin, 4) + v + ", F " + num(h.fmax, 4) + "/" + num(h.fmin, 4) + f;
+        s += " v " + shown(h.vmax, 4) + "/" + shown(h.vmin, 4) + v + ", F " + shown(h.fmax, 4) + "/" + shown(h.fmin, 4) + f;
     } else {
-        for (const auto& [k, v] : d.params) s += " " + k + " " + num(v, 4);
+        for (const auto& [k, v] : d.params) s += " " + k + " " + shown(v, 4);
     }
     return s;
 }
@@ -100,49 +107,58 @@ std::string infoText(const LoadedModel& m)
 {
     const Topology& t = *m.topology;
     std::string out;
-    out += tr("Model") + ": " + m.spec.file + "\n";
-    out += tr("Gravity") + ": " + vec(m.spec.gravity) + " m/s²\n\n";
+    out += fill(trStd("padrob", "Model: %1"), {m.spec.file}) + "\n";
+    out += fill(trStd("padrob", "Gravity: %1 m/s²"), {vec(m.spec.gravity)}) + "\n\n";
 
     std::size_t nBodies = t.bodyIds.size() - 1;
-    out += tr("Bodies") + " (" + std::to_string(nBodies) + " + " + tr("ground") + "), " + tr("total mass") + " " +
-           num(t.totalMass) + " kg\n";
-    out += row({{"id", 6}, {tr("name"), 22}, {tr("mass [kg]"), -12}, {tr("Ixx Iyy Izz [kg m²]"), 34}, {tr("centre of mass"), 0}});
+    out += fill(trStd("padrob", "Bodies (%1 + ground), total mass %2 kg"), {std::to_string(nBodies), shown(t.totalMass)}) + "\n";
+    out += row({{"id", 6},
+                {trStd("padrob", "name"), 22},
+                {trStd("padrob", "mass [kg]"), -12},
+                {trStd("padrob", "Ixx Iyy Izz [kg m²]"), 34},
+                {trStd("padrob", "centre of mass"), 0}});
     for (const BodySpec& b : m.spec.bodies) {
         if (b.id == 0) continue;
-        std::string mass = b.hasMass && b.mass > 0 ? num(b.mass) : tr("massless");
+        std::string mass = b.hasMass && b.mass > 0 ? shown(b.mass) : trStd("padrob", "massless");
         out += row({{std::to_string(b.id), 6}, {b.name, 22}, {mass, -12}, {vec(b.inertia), 34}, {vec(b.cg), 0}});
     }
-    out += "\n" + tr("Joints") + " (" + std::to_string(m.spec.joints.size()) + ")\n";
-    out += row({{"id", 5}, {tr("name"), 18}, {tr("type"), 10}, {"B1-B2", 7}, {tr("limits"), 22}, {tr("initial"), 9},
-                {tr("role"), 13}, {tr("drive"), 0}});
+    out += "\n" + fill(trStd("padrob", "Joints (%1)"), {std::to_string(m.spec.joints.size())}) + "\n";
+    out += row({{"id", 5},
+                {trStd("padrob", "name"), 18},
+                {trStd("padrob", "type"), 10},
+                {"B1-B2", 7},
+                {trStd("padrob", "limits"), 22},
+                {trStd("padrob", "initial"), 9},
+                {trStd("padrob", "role"), 13},
+                {trStd("padrob", "drive"), 0}});
     auto r = roles(m);
     for (std::size_t k = 0; k < m.spec.joints.size(); ++k) {
         const JointSpec& j = m.spec.joints[k];
-        std::string lim = (j.ll ? num(*j.ll) : "-∞") + " .. " + (j.ul ? num(*j.ul) : "∞") + " " + coordinateUnit(j.type);
-        if (!j.ll && !j.ul) lim = tr("none");
+        std::string lim = (j.ll ? shown(*j.ll) : "-∞") + " .. " + (j.ul ? shown(*j.ul) : "∞") + " " + coordinateUnit(j.type);
+        if (!j.ll && !j.ul) lim = trStd("padrob", "none");
         std::string bodies = std::to_string(j.side1.body) + "-" + std::to_string(j.side2.body);
         const DriveSpec* d = driveOf(m, j.id);
-        std::string q0 = k < t.q0.size() ? num(t.q0[k], 5) : "?";
-        out += row({{std::to_string(j.id), 5}, {j.name, 18}, {solver::jointTypeName(j.type), 10}, {bodies, 7}, {lim, 22},
-                    {q0, 9}, {r[k], 13}, {d ? driveText(*d, j.type) : tr("passive"), 0}});
+        std::string q0 = k < t.q0.size() ? shown(t.q0[k], 5) : "?";
+        out += row({{std::to_string(j.id), 5}, {j.name, 18}, {typeText(j.type), 10}, {bodies, 7}, {lim, 22},
+                    {q0, 9}, {roleText(r[k]), 13}, {d ? driveText(*d, j.type) : trStd("padrob", "passive"), 0}});
     }
 
-    out += "\n" + tr("Spanning tree (parent body <- joint <- body)") + ":\n";
+    out += "\n" + trStd("padrob", "Spanning tree (parent body <- joint <- body):") + "\n";
     for (int ji : t.treeJoints) {
         const JointSpec& j = m.spec.joints[static_cast<std::size_t>(ji)];
         bool rev = t.reversed[static_cast<std::size_t>(ji)];
         int parent = rev ? j.side2.body : j.side1.body, child = rev ? j.side1.body : j.side2.body;
-        out += "  " + std::to_string(parent) + " <- " + tr("joint") + " " + label(j.id, j.name) + " <- " + std::to_string(child) +
-               (rev ? "  (" + tr("written from B2 to B1") + ")" : std::string()) + "\n";
+        out += "  " + fill(trStd("padrob", "%1 <- joint %2 <- %3"), {std::to_string(parent), label(j.id, j.name), std::to_string(child)}) +
+               (rev ? "  (" + trStd("padrob", "written from B2 to B1") + ")" : std::string()) + "\n";
     }
-    out += tr("Chains") + ":\n";
+    out += trStd("padrob", "Chains:") + "\n";
     for (std::size_t c = 0; c < t.chains.size(); ++c) {
-        out += "  " + std::to_string(c + 1) + ": " + tr("joints") + " " + jointIds(m, t.chains[c]) + "\n";
+        out += "  " + fill(trStd("padrob", "%1: joints %2"), {std::to_string(c + 1), jointIds(m, t.chains[c])}) + "\n";
     }
-    out += tr("Loop-closure joints") + ": " + jointIds(m, t.loopJoints) + "\n";
-    out += tr("Degrees of freedom") + ": " + std::to_string(t.dof) + "\n";
-    out += "  " + tr("independent coordinates (joints)") + ": " + jointIds(m, t.independent) + "\n";
-    out += "  " + tr("dependent coordinates (joints)") + ": " + jointIds(m, t.dependent) + "\n";
+    out += fill(trStd("padrob", "Loop-closure joints: %1"), {jointIds(m, t.loopJoints)}) + "\n";
+    out += fill(trStd("padrob", "Degrees of freedom: %1"), {std::to_string(t.dof)}) + "\n";
+    out += "  " + fill(trStd("padrob", "independent coordinates (joints): %1"), {jointIds(m, t.independent)}) + "\n";
+    out += "  " + fill(trStd("padrob", "dependent coordinates (joints): %1"), {jointIds(m, t.dependent)}) + "\n";
     return out;
 }
 

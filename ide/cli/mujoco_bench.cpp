@@ -4,6 +4,8 @@
 
 #include "ide/cli/mujoco_bench.h"
 
+#include "ide/cli/cli_io.h"
+#include "ide/i18n/language.h"
 #include "solver/integrate/simulation.h"
 #include "solver/io/mjcf.h"
 #include "solver/kinematics/kinematics.h"
@@ -20,6 +22,8 @@
 namespace ide::cli {
 
 namespace {
+
+using i18n::trStd;
 
 struct ModelDeleter {
     void operator()(mjModel* m) const { mj_deleteModel(m); }
@@ -57,16 +61,12 @@ private:
     void (*m_previous)(const char*);
 };
 
-std::string fmt(const char* format, double v)
-{
-    char buf[48];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
+/// `v` as %g with `digits` significant digits, '.' whatever the locale.
+std::string fmt(double v, int digits = 6) { return num(v, digits); }
 
 std::string quoted(const std::string& name) { return name.empty() ? std::string() : " \"" + name + "\""; }
 
-std::string vec3(const double* v) { return fmt("%.6g", v[0]) + " " + fmt("%.6g", v[1]) + " " + fmt("%.6g", v[2]); }
+std::string vec3(const double* v) { return fmt(v[0]) + " " + fmt(v[1]) + " " + fmt(v[2]); }
 
 /// Loads MJCF text from memory (a one-file VFS). nullptr with `error` set on failure.
 ModelPtr loadFromMemory(const std::string& xml, std::string& error)
@@ -75,14 +75,14 @@ ModelPtr loadFromMemory(const std::string& xml, std::string& error)
     std::unique_ptr<mjVFS, VfsDeleter> vfs(new mjVFS);
     mj_defaultVFS(vfs.get());
     if (mj_makeEmptyFileVFS(vfs.get(), kName, static_cast<int>(xml.size())) != 0) {
-        error = "MuJoCo's virtual file system refused the MJCF";
+        error = trStd("padrob", "MuJoCo's virtual file system refused the MJCF");
         return nullptr;
     }
     const int file = mj_findFileVFS(vfs.get(), kName);
     std::memcpy(vfs->filedata[file], xml.data(), xml.size());
     char message[1024] = "";
     ModelPtr m(mj_loadXML(kName, vfs.get(), message, sizeof message));
-    if (!m) error = std::string("MuJoCo refused the exported MJCF: ") + message;
+    if (!m) error = fill(trStd("padrob", "MuJoCo refused the exported MJCF: %1"), {message});
     return m;
 }
 
@@ -110,7 +110,7 @@ bool runMujoco(const solver::Model& model, double dt, int steps, int runs, doubl
     mjModel* m = mp.get();
     DataPtr dp(mj_makeData(m));
     if (!dp) {
-        error = "MuJoCo could not allocate its data";
+        error = trStd("padrob", "MuJoCo could not allocate its data");
         return false;
     }
     mjData* d = dp.get();
@@ -122,7 +122,7 @@ bool runMujoco(const solver::Model& model, double dt, int steps, int runs, doubl
         mjBody[i] = mj_name2id(m, mjOBJ_BODY, names.body[i].c_str());
         const int joint = mj_name2id(m, mjOBJ_JOINT, names.joint[i].c_str());
         if (mjBody[i] < 0 || joint < 0) {
-            error = "MuJoCo's model has no body '" + names.body[i] + "' or joint '" + names.joint[i] + "'";
+            error = fill(trStd("padrob", "MuJoCo's model has no body '%1' or joint '%2'"), {names.body[i], names.joint[i]});
             return false;
         }
     }
@@ -138,7 +138,7 @@ bool runMujoco(const solver::Model& model, double dt, int steps, int runs, doubl
         std::string change = "body " + std::to_string(model.bodyId[i]) + quoted(model.bodyName[i]) + " (MJCF " +
                              names.body[i] + "):";
         if (p.placeholderMass) {
-            change += " mass " + fmt("%.6g", m->body_mass[b]) + " -> " + fmt("%.6g", p.mass) + " kg;";
+            change += " mass " + fmt(m->body_mass[b]) + " -> " + fmt(p.mass) + " kg;";
         }
         if (p.placeholderInertia) {
             change += " principal moments " + vec3(m->body_inertia + 3 * b) + " -> " + vec3(p.principal.data()) +
@@ -169,15 +169,15 @@ bool runMujoco(const solver::Model& model, double dt, int steps, int runs, doubl
         limited += std::isfinite(model.lower[i]) || std::isfinite(model.upper[i]);
     }
     if (driven > 0) {
-        out.notes.push_back("every joint passive in both: the model's " + std::to_string(driven) +
-                            " drive(s) are not exported");
+        out.notes.push_back(trStd("padrob", "every joint passive in both: the model's %n drive(s) are not exported", nullptr, driven));
     }
     if (limited > 0) {
-        out.notes.push_back("joint limits off in both (" + std::to_string(limited) + " joint(s) have them)");
+        out.notes.push_back(trStd("padrob", "joint limits off in both (%n joint(s) have them)", nullptr, limited));
     }
     if (!model.forces.empty()) {
-        out.notes.push_back("Padrob runs without the model's " + std::to_string(model.forces.size()) +
-                            " applied force(s) (F): they are not exported");
+        const int forces = static_cast<int>(model.forces.size());
+        out.notes.push_back(trStd("padrob", "Padrob runs without the model's %n applied force(s) (F): they are not exported",
+                                  nullptr, forces));
         padrobModel->forces.clear();
     }
     solver::SimulationOptions simOptions;
@@ -202,7 +202,7 @@ bool runMujoco(const solver::Model& model, double dt, int steps, int runs, doubl
     for (long k = 0; k <= n; ++k) {
         if (k > 0) {
             if (!sim.advanceTo(static_cast<double>(k) * dt, events, error)) {
-                error = "Padrob failed: " + error;
+                error = fill(trStd("padrob", "Padrob failed: %1"), {error});
                 return false;
             }
             mj_step(m, d);
@@ -215,10 +215,10 @@ bool runMujoco(const solver::Model& model, double dt, int steps, int runs, doubl
             if (distance > out.maxPositionError || !std::isfinite(distance)) out.maxPositionError = distance;
             if (!(distance <= tolerance)) {
                 out.agreementSeconds = static_cast<double>(k) * dt;
-                error = "MuJoCo and Padrob disagree: the centre of mass of body " + std::to_string(model.bodyId[i]) +
-                        quoted(model.bodyName[i]) + " is " + fmt("%.3g", distance) + " m apart at t = " +
-                        fmt("%g", static_cast<double>(k) * dt) + " s (tolerance " + fmt("%g", tolerance) +
-                        " m; Padrob " + vec3(p.data()) + ", MuJoCo " + vec3(q.data()) + ")";
+                error = fill(trStd("padrob", "MuJoCo and Padrob disagree: the centre of mass of body %1 is %2 m apart at "
+                                             "t = %3 s (tolerance %4 m; Padrob %5, MuJoCo %6)"),
+                             {std::to_string(model.bodyId[i]) + quoted(model.bodyName[i]), fmt(distance, 3),
+                              fmt(static_cast<double>(k) * dt), fmt(tolerance), vec3(p.data()), vec3(q.data())});
                 return false;
             }
         }
@@ -243,9 +243,9 @@ bool runMujoco(const solver::Model& model, double dt, int steps, int runs, doubl
     }
     for (int w = 0; w < mjNWARNING; ++w) {
         if (d->warning[w].number > 0) {
-            out.notes.push_back("MuJoCo warned " + std::to_string(d->warning[w].number) + " time(s): " +
-                                (warnings.messages().empty() ? std::string("warning ") + std::to_string(w)
-                                                             : warnings.messages().front()));
+            const int times = d->warning[w].number;
+            out.notes.push_back(fill(trStd("padrob", "MuJoCo warned %n time(s): %1", nullptr, times),
+                                     {warnings.messages().empty() ? "warning " + std::to_string(w) : warnings.messages().front()}));
         }
     }
     return true;

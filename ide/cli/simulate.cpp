@@ -16,7 +16,9 @@
 #include "solver/kinematics/kinematics.h"
 #include "solver/model/load.h"
 
-#include <QCoreApplication>
+#include "ide/i18n/diagnostic_text.h"
+#include "ide/i18n/language.h"
+
 #include <QFile>
 #include <QFileInfo>
 
@@ -34,9 +36,7 @@ namespace {
 
 constexpr int kOk = 0, kModelErrors = 1, kUsage = 2;
 
-std::string tr(const char* s) { return QCoreApplication::translate("padrob-simulate", s).toStdString(); }
-
-
+using i18n::trStd;
 
 namespace {
 
@@ -70,7 +70,7 @@ std::unique_ptr<trainer::StationEngine> replayStation(const solver::Model& m, co
             problem = "--profile: " + i.text().toStdString();
             return nullptr;
         }
-        printErr("padrob simulate: warning: " + i.text().toStdString() + "\n");
+        printErr("padrob simulate: " + fill(trStd("padrob", "warning: %1"), {i.text().toStdString()}) + "\n");
     }
     return engine;
 }
@@ -79,16 +79,11 @@ std::unique_ptr<trainer::StationEngine> replayStation(const solver::Model& m, co
 
 int usage(const std::string& message)
 {
-    return usageError("simulate", message, tr("Try 'padrob simulate --help'."));
+    return usageError("simulate", message);
 }
 
-/// A number as the user would write it back: 6 significant digits.
-std::string fmtNumber(double v)
-{
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
+/// A number as the user would write it back: 6 significant digits, '.'.
+std::string fmtNumber(double v) { return num(v, 6); }
 
 std::optional<long> toInteger(const std::string& s)
 {
@@ -134,32 +129,32 @@ std::optional<WeldSwitch> parseWeldSwitch(bool weld, const std::string& text, st
     if (!ts.empty() && ts[0] == '+') ++tb;
     auto [p, ec] = std::from_chars(tb, ts.data() + ts.size(), t);
     if (!a || !b || ts.empty() || ec != std::errc() || p != ts.data() + ts.size()) {
-        problem = std::string(w.option()) +
-                  (weld ? tr(" takes T:A:B: a time [s] and two body ids, to weld body B to body A (0 = the ground), "
-                             "e.g. 0.5:0:2; not '")
-                        : tr(" takes T:A:B: a time [s] and two body ids, to release the weld of body B to body A "
-                             "(0 = the ground), e.g. 1.5:0:2; not '")) +
-                  text + "'";
+        problem = fill(weld ? trStd("padrob", "--weld takes T:A:B: a time [s] and two body ids, to weld body B to body A "
+                                              "(0 = the ground), e.g. 0.5:0:2; not '%1'")
+                            : trStd("padrob", "--release takes T:A:B: a time [s] and two body ids, to release the weld of "
+                                              "body B to body A (0 = the ground), e.g. 1.5:0:2; not '%1'"),
+                       {text});
         return std::nullopt;
     }
     if (!std::isfinite(t) || t < 0) {
-        problem = w.prefix() + tr("the time must be a finite number of seconds ≥ 0 (from the start), not '") + ts + "'";
+        problem = w.prefix() + fill(trStd("padrob", "the time must be a finite number of seconds ≥ 0 (from the start), not '%1'"), {ts});
         return std::nullopt;
     }
     w.t = t;
     w.a = *a;
     w.b = *b;
     if (w.a == w.b) {
-        problem = w.prefix() + (weld ? tr("cannot weld a body to itself: give two different bodies A and B")
-                                     : tr("cannot release a body from itself: give the two bodies of a --weld"));
+        problem = w.prefix() + (weld ? trStd("padrob", "cannot weld a body to itself: give two different bodies A and B")
+                                     : trStd("padrob", "cannot release a body from itself: give the two bodies of a --weld"));
         return std::nullopt;
     }
     if (w.b == 0) {
+        const std::string swapped = ts + ":" + std::to_string(w.b) + ":" + std::to_string(w.a);
         problem = w.prefix() +
-                  (weld ? tr("the ground cannot be welded to a body: put the ground as A, '")
-                        : tr("the ground is never the welded body B: a weld to the ground is written with the ground "
-                             "as A, '")) +
-                  ts + ":" + std::to_string(w.b) + ":" + std::to_string(w.a) + "'";
+                  fill(weld ? trStd("padrob", "the ground cannot be welded to a body: put the ground as A, '%1'")
+                            : trStd("padrob", "the ground is never the welded body B: a weld to the ground is written "
+                                              "with the ground as A, '%1'"),
+                       {swapped});
         return std::nullopt;
     }
     return w;
@@ -169,7 +164,7 @@ std::optional<WeldSwitch> parseWeldSwitch(bool weld, const std::string& text, st
 
 std::string simulateHelp()
 {
-    return tr("Usage: padrob simulate MODEL --time T [OPTIONS]\n"
+    return trStd("padrob", "Usage: padrob simulate MODEL --time T [OPTIONS]\n"
               "\n"
               "Simulates the model for T seconds and writes its trajectory as CSV.\n"
               "\n"
@@ -246,26 +241,26 @@ int runSimulate(const std::vector<std::string>& args)
                                 a == "--weld" || a == "--release";
         if (takesValue) {
             auto v = value();
-            if (!v) return usage(a + tr(" needs a value"));
+            if (!v) return usage(fill(trStd("padrob", "%1 needs a value"), {a}));
             if (a == "--time") {
                 time = toNumber(*v);
-                if (!time || !(*time > 0)) return usage(tr("--time must be a positive number of seconds, not '") + *v + "'");
+                if (!time || !(*time > 0)) return usage(fill(trStd("padrob", "--time must be a positive number of seconds, not '%1'"), {*v}));
             } else if (a == "--dt") {
                 auto d = toNumber(*v);
-                if (!d || !(*d > 0)) return usage(tr("--dt must be a positive number of seconds, not '") + *v + "'");
+                if (!d || !(*d > 0)) return usage(fill(trStd("padrob", "--dt must be a positive number of seconds, not '%1'"), {*v}));
                 dt = *d;
             } else if (a == "--rtol") {
                 auto r = toNumber(*v);
-                if (!r || !(*r > 0) || *r >= 1) return usage(tr("--rtol must be a number between 0 and 1, not '") + *v + "'");
+                if (!r || !(*r > 0) || *r >= 1) return usage(fill(trStd("padrob", "--rtol must be a number between 0 and 1, not '%1'"), {*v}));
                 rtol = *r;
             } else if (a == "--every") {
                 auto n = toInteger(*v);
-                if (!n || *n < 1) return usage(tr("--every must be a whole number ≥ 1, not '") + *v + "'");
+                if (!n || *n < 1) return usage(fill(trStd("padrob", "--every must be a whole number ≥ 1, not '%1'"), {*v}));
                 every = *n;
             } else if (a == "--integrator") {
                 if (*v == "rk4") adaptive = false;
                 else if (*v == "adaptive") adaptive = true;
-                else return usage(tr("--integrator must be rk4 or adaptive, not '") + *v + "'");
+                else return usage(fill(trStd("padrob", "--integrator must be rk4 or adaptive, not '%1'"), {*v}));
             } else if (a == "--input") {
                 inputPath = *v;
             } else if (a == "--input-log") {
@@ -281,26 +276,29 @@ int runSimulate(const std::vector<std::string>& args)
                 switches.push_back(*w);
             } else {
                 const std::size_t eq = v->find('=');
-                if (eq == std::string::npos) return usage(a + tr(" takes J=VALUE (a joint id and a number), not '") + *v + "'");
+                if (eq == std::string::npos) {
+                    return usage(fill(trStd("padrob", "%1 takes J=VALUE (a joint id and a number), not '%2'"), {a, *v}));
+                }
                 (a == "--set" ? sets : rates).emplace_back(v->substr(0, eq), v->substr(eq + 1));
             }
             continue;
         }
-        if (a.size() > 1 && a[0] == '-') return usage(tr("unknown option '") + a + "'");
-        if (!modelPath.empty()) return usage(tr("give one model"));
+        if (a.size() > 1 && a[0] == '-') return usage(fill(trStd("padrob", "unknown option '%1'"), {a}));
+        if (!modelPath.empty()) return usage(trStd("padrob", "give one model"));
         modelPath = a;
     }
-    if (modelPath.empty()) return usage(tr("no model given"));
-    if (!time) return usage(tr("--time is required"));
-    if (!inputPath.empty() && !inputLogPath.empty()) return usage(tr("--input and --input-log cannot be combined"));
-    if (!profileArg.empty() && inputLogPath.empty()) return usage(tr("--profile goes with --input-log"));
-    if (dt > *time) return usage(tr("--dt is longer than --time"));
+    if (modelPath.empty()) return usage(trStd("padrob", "no model given"));
+    if (!time) return usage(trStd("padrob", "--time is required"));
+    if (!inputPath.empty() && !inputLogPath.empty()) return usage(trStd("padrob", "--input and --input-log cannot be combined"));
+    if (!profileArg.empty() && inputLogPath.empty()) return usage(trStd("padrob", "--profile goes with --input-log"));
+    if (dt > *time) return usage(trStd("padrob", "--dt is longer than --time"));
     const double steps = std::ceil(*time / dt - 1e-9);
-    if (steps > 1e9) return usage(tr("--time / --dt is more than 1e9 steps"));
+    if (steps > 1e9) return usage(trStd("padrob", "--time / --dt is more than 1e9 steps"));
     for (const WeldSwitch& w : switches) {
         if (w.t > *time) {
-            return usage(w.prefix() + tr("the time is after the end of the simulation (--time ") + fmtNumber(*time) +
-                         tr(" s): give a T between 0 and --time"));
+            return usage(w.prefix() + fill(trStd("padrob", "the time is after the end of the simulation (--time %1 s): "
+                                                           "give a T between 0 and --time"),
+                                           {fmtNumber(*time)}));
         }
     }
 
@@ -316,12 +314,12 @@ int runSimulate(const std::vector<std::string>& args)
             auto id = toInteger(js);
             auto v = toNumber(vs);
             if (!id || !v) {
-                usage(std::string(option) + tr(" takes J=VALUE (a joint id and a number), not '") + js + "=" + vs + "'");
+                usage(fill(trStd("padrob", "%1 takes J=VALUE (a joint id and a number), not '%2'"), {option, js + "=" + vs}));
                 return false;
             }
             const int j = m.jointIndex(static_cast<int>(*id));
             if (j < 0) {
-                usage(std::string(option) + tr(": the model has no joint ") + js);
+                usage(fill(trStd("padrob", "%1: the model has no joint %2"), {option, js}));
                 return false;
             }
             out.push_back({j, *v});
@@ -337,9 +335,9 @@ int runSimulate(const std::vector<std::string>& args)
             if (id == 0 || (id >= INT_MIN && id <= INT_MAX && m.bodyIndex(static_cast<int>(id)) >= 0)) continue;
             std::vector<int> ids(m.bodyId.begin(), m.bodyId.end());
             std::sort(ids.begin(), ids.end());
-            std::string list = tr("0 (the ground)");
+            std::string list = trStd("padrob", "0 (the ground)");
             for (int i : ids) list += ", " + std::to_string(i);
-            return usage(w.prefix() + tr("the model has no body ") + std::to_string(id) + tr("; its bodies are ") + list);
+            return usage(w.prefix() + fill(trStd("padrob", "the model has no body %1; its bodies are %2"), {std::to_string(id), list}));
         }
     }
     // applied in time order; at one time in command-line order
@@ -359,7 +357,7 @@ int runSimulate(const std::vector<std::string>& args)
             }
             solver::checkInputColumns(*inputs, drivenIds, jointIds, diags);
         }
-        for (const solver::Diagnostic& d : diags) printErr(d.format() + "\n");
+        for (const solver::Diagnostic& d : diags) printDiagnostic(stderr, d);
         if (!inputs || diags.hasErrors()) return kUsage;
         for (std::size_t c = 0; c < inputs->columnCount(); ++c) inputJoint.push_back(m.jointIndex(inputs->jointId(c)));
     }
@@ -379,7 +377,7 @@ int runSimulate(const std::vector<std::string>& args)
     // the output
     solver::CsvWriter out = outPath.empty() ? solver::CsvWriter() : solver::CsvWriter(outPath);
     if (!out.ok()) {
-        printErr("padrob simulate: " + out.errorString() + "\n");
+        printErr("padrob simulate: " + i18n::text(out.errorText()).toStdString() + "\n");
         return kUsage;
     }
     std::vector<int> joints(static_cast<std::size_t>(m.nb)), bodies(static_cast<std::size_t>(m.nb));
@@ -435,8 +433,8 @@ int runSimulate(const std::vector<std::string>& args)
         if (m.jointType[s.joint] == solver::JointType::Actuator) {
             auto a = m.lengthLaw[s.joint].angle(s.value);
             if (!a) {
-                return usage("--set " + std::to_string(m.jointId[s.joint]) + "=" + std::to_string(s.value) +
-                             tr(": the actuator cannot reach that length"));
+                return usage(fill(trStd("padrob", "--set %1: the actuator cannot reach that length"),
+                                  {std::to_string(m.jointId[s.joint]) + "=" + fmtNumber(s.value)}));
             }
             theta = *a;
         }
@@ -444,7 +442,7 @@ int runSimulate(const std::vector<std::string>& args)
     }
     for (const Assignment& r : rateList) {
         const double dqdtheta = m.coordinateRate(r.joint, sim.state().q[r.joint]);
-        if (dqdtheta == 0) return usage(tr("--rate: the joint is at a dead point; its rate cannot be set"));
+        if (dqdtheta == 0) return usage(trStd("padrob", "--rate: the joint is at a dead point; its rate cannot be set"));
         sim.setInitial(r.joint, sim.state().q[r.joint], r.value / dqdtheta);
     }
 
@@ -480,7 +478,9 @@ int runSimulate(const std::vector<std::string>& args)
     std::optional<solver::InputTable::Cursor> cursor;
     if (inputs) cursor.emplace(inputs->cursor());
     const long n = static_cast<long>(steps);
-    std::string error;
+    std::string error;        // the solver's message in English
+    solver::Text errorText;   // the same, translatable: what is printed
+    std::string errorPrefix;  // "--weld 'T:A:B': " before a weld's or release's error
     // Prints the events; on failure drops the output and prints the error. Returns ok.
     auto report = [&](bool ok) {
         // whole rows before each event line when both streams go to one terminal
@@ -489,7 +489,7 @@ int runSimulate(const std::vector<std::string>& args)
         events.clear();
         if (!ok) {
             out.abandon();
-            printErr("padrob simulate: " + error + "\n");
+            printErr("padrob simulate: " + errorPrefix + i18n::text(errorText).toStdString() + "\n");
         }
         return ok;
     };
@@ -503,8 +503,8 @@ int runSimulate(const std::vector<std::string>& args)
             const WeldSwitch& w = switches[nextSwitch++];
             const int a = w.a == 0 ? -1 : m.bodyIndex(static_cast<int>(w.a));
             const int b = m.bodyIndex(static_cast<int>(w.b));
-            ok = w.weld ? sim.weld(a, b, events, error) : sim.release(a, b, events, error);
-            if (!ok) error = w.prefix() + error;
+            ok = w.weld ? sim.weld(a, b, events, error, &errorText) : sim.release(a, b, events, error, &errorText);
+            if (!ok) errorPrefix = w.prefix();
         }
         return report(ok);
     };
@@ -526,12 +526,12 @@ int runSimulate(const std::vector<std::string>& args)
         // a weld or release inside the step: stop exactly there
         while (nextSwitch < switches.size() && switches[nextSwitch].t < next - tolerance) {
             const double at = switches[nextSwitch].t;
-            if (!report(sim.advanceTo(at, events, error)) || !applySwitches(at)) return kModelErrors;
+            if (!report(sim.advanceTo(at, events, error, &errorText)) || !applySwitches(at)) return kModelErrors;
         }
-        if (!report(sim.advanceTo(next, events, error))) return kModelErrors;
+        if (!report(sim.advanceTo(next, events, error, &errorText))) return kModelErrors;
     }
     if (!out.commit()) {
-        printErr("padrob simulate: " + out.errorString() + "\n");
+        printErr("padrob simulate: " + i18n::text(out.errorText()).toStdString() + "\n");
         return kUsage;
     }
     return kOk;

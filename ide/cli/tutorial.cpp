@@ -5,10 +5,10 @@
 
 #include "ide/cli/cli_io.h"
 #include "ide/cli/json_writer.h"
+#include "ide/i18n/language.h"
 #include "trainer/training/runner.h"
 #include "trainer/training/tutorial.h"
 
-#include <QCoreApplication>
 #include <QFile>
 
 #include <cstdio>
@@ -17,11 +17,11 @@ namespace ide::cli {
 
 namespace {
 
-std::string tr(const char* s) { return QCoreApplication::translate("padrob tutorial", s).toStdString(); }
+using i18n::trStd;
 
 std::string help()
 {
-    return tr("Usage: padrob tutorial FILE [--input LOG | --demo] [OPTIONS]\n"
+    return trStd("padrob", "Usage: padrob tutorial FILE [--input LOG | --demo] [OPTIONS]\n"
               "\n"
               "Checks a tutorial file (.tut) and, with --input or --demo, runs it without a window:\n"
               "the input log is replayed through the station profile into the simulation while the\n"
@@ -39,7 +39,8 @@ std::string help()
               "                        console and record them to OUT (a demonstration; see\n"
               "                        docs/training.md), and a chase camera to CAM, then print\n"
               "                        the result of that run\n"
-              "  --lang es|en          language of the tutorial's texts (default: en)\n"
+              "  --lang es|en          language of the tutorial's texts and of the messages\n"
+              "                        (default: the system's; an option of every command)\n"
               "  --json                print the result as one JSON object\n"
               "\n"
               "Without --input, --demo or --autopilot it only checks the tutorial and its model.\n"
@@ -50,14 +51,7 @@ std::string help()
 
 int usage(const std::string& message)
 {
-    return usageError("tutorial", message, tr("Try 'padrob tutorial --help'."));
-}
-
-std::string fixed(double v, int decimals)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    return buf;
+    return usageError("tutorial", message);
 }
 
 void printText(const trainer::Tutorial& t, const trainer::TutorialResult& r, const std::string& lang)
@@ -65,30 +59,35 @@ void printText(const trainer::Tutorial& t, const trainer::TutorialResult& r, con
     const trainer::Scoring& sc = t.scoring();
     std::string stars;
     for (int i = 0; i < 3; ++i) stars += i < r.stars ? "*" : "-";
-    std::string out = t.spec.id + " - " + t.title(lang) + ": " + (r.passed ? tr("PASSED") : tr("FAILED")) + " [" + stars +
-                      "] " + tr("score") + " " + fixed(r.score, 1) + "/100 (" + tr("pass mark") + " " + fixed(sc.pass, 0) +
-                      "), " + fixed(r.time, 2) + " s, " + std::to_string(r.goalsDone) + "/" +
-                      std::to_string(t.spec.goals.size()) + " " + tr("goals") + ", " + tr("end") + ": " + r.endReason + "\n";
+    std::string out = t.spec.id + " - " + t.title(lang) + ": " + (r.passed ? trStd("padrob", "PASSED") : trStd("padrob", "FAILED")) +
+                      " [" + stars + "] " +
+                      fill(trStd("padrob", "score %1/100 (pass mark %2), %3 s, %4/%5 goals, end: %6"),
+                           {fixed(r.score, 1), fixed(sc.pass, 0), fixed(r.time, 2), std::to_string(r.goalsDone),
+                            std::to_string(t.spec.goals.size()), r.endReason}) +
+                      "\n";
     for (const trainer::ScoreItem& i : r.breakdown) {
         std::string measure;
-        if (i.key == "time") measure = fixed(i.value, 1) + " s (" + tr("par") + " " + fixed(sc.parTime, 0) + " s, " + tr("limit") + " " + fixed(sc.timeLimit, 0) + " s)";
-        if (i.key == "path") measure = fixed(i.value, 0) + " % " + tr("efficient") + " (" + fixed(r.pathLength, 2) + " m, " + tr("ideal") + " " + fixed(r.idealLength, 2) + " m)";
-        if (i.key == "smooth") measure = tr("RMS jerk") + " " + fixed(i.value, 2) + " m/s3 (" + tr("zero points at") + " " + fixed(sc.jerkReference, 1) + ")";
-        if (i.key == "safety") measure = fixed(i.value, 1) + " " + tr("penalty points");
-        char line[256];
-        std::snprintf(line, sizeof line, "  %-12s %5.1f/%-5.1f %s\n", i.label().toStdString().c_str(), i.points, i.max, measure.c_str());
-        out += line;
+        if (i.key == "time") {
+            measure = fill(trStd("padrob", "%1 s (par %2 s, limit %3 s)"), {fixed(i.value, 1), fixed(sc.parTime, 0), fixed(sc.timeLimit, 0)});
+        }
+        if (i.key == "path") {
+            measure = fill(trStd("padrob", "%1 % efficient (%2 m, ideal %3 m)"), {fixed(i.value, 0), fixed(r.pathLength, 2), fixed(r.idealLength, 2)});
+        }
+        if (i.key == "smooth") {
+            measure = fill(trStd("padrob", "RMS jerk %1 m/s3 (zero points at %2)"), {fixed(i.value, 2), fixed(sc.jerkReference, 1)});
+        }
+        if (i.key == "safety") measure = fill(trStd("padrob", "%1 penalty points"), {fixed(i.value, 1)});
+        out += "  " + pad(i.label().toStdString(), 12) + " " + pad(fixed(i.points, 1), 5, true) + "/" + pad(fixed(i.max, 1), 5) + " " +
+               measure + "\n";
     }
-    out += tr("events:") + "\n";
+    out += trStd("padrob", "events:") + "\n";
     for (const trainer::TutorialEvent& e : r.events) {
-        char line[512];
-        std::snprintf(line, sizeof line, "  %9.3f s  %-13s %s%s\n", e.t, trainer::TutorialEvent::key(e.kind),
-                      e.text(&t, lang).toStdString().c_str(), e.penalty > 0 ? (" (-" + fixed(e.penalty, 1) + ")").c_str() : "");
-        out += line;
+        out += "  " + pad(fixed(e.t, 3), 9, true) + " s  " + pad(trainer::TutorialEvent::key(e.kind), 13) + " " +
+               e.text(&t, lang).toStdString() + (e.penalty > 0 ? " (-" + fixed(e.penalty, 1) + ")" : std::string()) + "\n";
     }
     const QStringList improve = r.improvements();
     if (!improve.isEmpty()) {
-        out += tr("to improve:") + "\n";
+        out += trStd("padrob", "to improve:") + "\n";
         for (const QString& s : improve) out += "  - " + s.toStdString() + "\n";
     }
     printOut(out);
@@ -155,7 +154,9 @@ void printJson(const trainer::Tutorial& t, const trainer::TutorialResult& r, con
 
 int runTutorial(const std::vector<std::string>& args)
 {
-    std::string file, input, profile, autopilot, record, camera, lang = "en";
+    std::string file, input, profile, autopilot, record, camera;
+    // the language of the tutorial's texts: the CLI's (the global option --lang, main.cpp)
+    const std::string lang = i18n::current().toStdString();
     bool demo = false, json = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
@@ -167,38 +168,41 @@ int runTutorial(const std::vector<std::string>& args)
         if (a == "-h" || a == "--help") {
             printOut(help());
             return kExitOk;
-        } else if (a == "--input" || a == "--profile" || a == "--autopilot" || a == "--record" || a == "--lang" || a == "--camera") {
+        } else if (a == "--input" || a == "--profile" || a == "--autopilot" || a == "--record" || a == "--camera") {
             std::string v;
-            if (!value(v)) return usage(a + tr(" needs a value"));
+            if (!value(v)) return usage(fill(trStd("padrob", "%1 needs a value"), {a}));
             (a == "--input" ? input : a == "--profile" ? profile : a == "--autopilot" ? autopilot : a == "--record" ? record
-                         : a == "--camera"                                                        ? camera
-                                                                                                  : lang) = v;
+                                                                                                  : camera) = v;
         } else if (a == "--demo") {
             demo = true;
         } else if (a == "--json") {
             json = true;
         } else if (!a.empty() && a[0] == '-') {
-            return usage(tr("unknown option '") + a + "'");
+            return usage(fill(trStd("padrob", "unknown option '%1'"), {a}));
         } else if (file.empty()) {
             file = a;
         } else {
-            return usage(tr("one tutorial file at a time"));
+            return usage(trStd("padrob", "one tutorial file at a time"));
         }
     }
-    if (file.empty()) return usage(tr("no tutorial file given"));
-    if (lang != "es" && lang != "en") return usage(tr("--lang is es or en"));
-    if (int(!input.empty()) + int(demo) + int(!autopilot.empty()) > 1) return usage(tr("--input, --demo and --autopilot exclude each other"));
-    if (autopilot.empty() != record.empty()) return usage(tr("--autopilot and --record go together"));
-    if (!camera.empty() && autopilot.empty()) return usage(tr("--camera goes with --autopilot"));
+    if (file.empty()) return usage(trStd("padrob", "no tutorial file given"));
+    if (int(!input.empty()) + int(demo) + int(!autopilot.empty()) > 1) {
+        return usage(trStd("padrob", "--input, --demo and --autopilot exclude each other"));
+    }
+    if (autopilot.empty() != record.empty()) return usage(trStd("padrob", "--autopilot and --record go together"));
+    if (!camera.empty() && autopilot.empty()) return usage(trStd("padrob", "--camera goes with --autopilot"));
 
     solver::Diagnostics diags(file);
     std::shared_ptr<const trainer::Tutorial> tut = trainer::loadTutorial(file, diags);
-    for (const solver::Diagnostic& d : diags) printErr(d.format() + "\n");
+    for (const solver::Diagnostic& d : diags) printDiagnostic(stderr, d);
     if (!tut) return kExitUsage;
 
     if (input.empty() && !demo && autopilot.empty()) {
-        printOut(tut->spec.id + " - " + tut->title(lang) + ": " + tr("OK") + " (" + std::to_string(tut->spec.goals.size()) + " " +
-                 tr("goals") + (tut->demoFile.empty() ? ", " + tr("no demonstration") : "") + ")\n");
+        const int goals = static_cast<int>(tut->spec.goals.size());
+        printOut(tut->spec.id + " - " + tut->title(lang) + ": " +
+                 (tut->demoFile.empty() ? trStd("padrob", "OK (%n goal(s), no demonstration)", nullptr, goals)
+                                        : trStd("padrob", "OK (%n goal(s))", nullptr, goals)) +
+                 "\n");
         return kExitOk;
     }
     trainer::StationProfile stationProfile;
@@ -229,7 +233,7 @@ int runTutorial(const std::vector<std::string>& args)
     } else {
         const std::string logPath = demo ? tut->demoFile : input;
         if (demo && logPath.empty()) {
-            printErr("padrob tutorial: " + tr("the tutorial has no usable demonstration (DEMO)") + "\n");
+            printErr("padrob tutorial: " + trStd("padrob", "the tutorial has no usable demonstration (DEMO)") + "\n");
             return kExitUsage;
         }
         auto log = std::make_shared<trainer::InputLog>();

@@ -7,15 +7,14 @@
 #include "ide/studio/app/main_window.h"
 #include "ide/studio/train/train_page.h"
 #include "ide/studio/view/viewport.h"
+#include "ide/i18n/language.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QElapsedTimer>
-#include <QLibraryInfo>
-#include <QLocale>
 #include <QSurfaceFormat>
-#include <QTranslator>
 
+#include <clocale>
 #include <cstdio>
 
 int main(int argc, char** argv)
@@ -24,24 +23,24 @@ int main(int argc, char** argv)
     sinceMain.start();
     QSurfaceFormat::setDefaultFormat(studio::Viewport::surfaceFormat());  // OpenGL 3.3 core, before the app
     QApplication app(argc, argv);
+    // Qt set the C library's locale from the system's (setlocale(LC_ALL, "")): keep its
+    // numbers in C, so that whatever formats or reads a number with the C library (the
+    // solver's messages, libraries reading files) uses '.' under es_CL too. What a person
+    // reads is formatted by QLocale in the chosen language (docs/i18n.md).
+    std::setlocale(LC_NUMERIC, "C");
     QApplication::setOrganizationName("Padrob");
     QApplication::setApplicationName("padrob-studio");
     QApplication::setApplicationVersion(PADROB_VERSION);
-    // the system's language (Spanish or English; the settings will choose it too), or
-    // --lang's (read before the parser, whose --help is translated)
+    // the language: --lang's (read before the parser, whose --help is translated), else
+    // the one chosen last (Settings ▸ Language, the kiosk's start screen), else the
+    // system's
+    QString requested;
     const QStringList args = QCoreApplication::arguments();
     for (qsizetype i = 1; i < args.size(); ++i) {
-        QString lang;
-        if (args[i] == QLatin1String("--lang") && i + 1 < args.size()) lang = args[i + 1];
-        else if (args[i].startsWith(QLatin1String("--lang="))) lang = args[i].mid(7);
-        if (lang == QLatin1String("es")) QLocale::setDefault(QLocale(QLocale::Spanish, QLocale::Spain));
-        else if (lang == QLatin1String("en")) QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+        if (args[i] == QLatin1String("--lang") && i + 1 < args.size()) requested = args[i + 1];
+        else if (args[i].startsWith(QLatin1String("--lang="))) requested = args[i].mid(7);
     }
-    QTranslator qtTranslator, translator;
-    if (qtTranslator.load(QLocale(), "qtbase", "_", QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
-        QApplication::installTranslator(&qtTranslator);
-    }
-    if (translator.load(QLocale(), "padrob", "_", ":/i18n")) QApplication::installTranslator(&translator);
+    i18n::install(i18n::startLanguage(requested));
 
     // the command line (after the translators: --help is translated)
     QCommandLineParser parser;

@@ -255,7 +255,9 @@ CollisionWorld::CollisionWorld(const ModelSpec& machineSpec, const Model& model,
             const MeshLoad load = loadTriangleMesh((dir / g.meshFile).string(), g.hasScale ? g.scale : 1.0);
             if (!load.mesh) {
                 diags.add(Severity::Warning, "collision-shape", g.src.pos,
-                          "G " + std::to_string(g.id) + " is left out of the clearance checks: " + load.error);
+                          trText("Diagnostics", "G %1 is left out of the clearance checks: %2")
+                              .with(std::to_string(g.id))
+                              .with(load.errorText));
                 return;
             }
             geom = meshGeometry(load.mesh->vertices, load.mesh->triangles);

@@ -45,19 +45,30 @@ std::string quoted(const std::string& name)
     return name.empty() ? std::string() : " \"" + name + "\"";
 }
 
-std::string jointLabel(const JointSpec& j)
+// "joint 3" or "joint 3 "boom""
+Text jointLabel(const JointSpec& j)
 {
-    return "joint " + std::to_string(j.id) + quoted(j.name);
+    return trText("Diagnostics", "joint %1").with(std::to_string(j.id) + quoted(j.name));
 }
 
-// "joints 1, 2 and 3"
-std::string jointList(const ModelSpec& spec, const std::vector<int>& joints)
+// "joint 1", "joints 1 and 2", "joints 1, 2 and 3"
+Text jointList(const ModelSpec& spec, const std::vector<int>& joints)
 {
-    std::string out = joints.size() == 1 ? "joint " : "joints ";
-    for (std::size_t i = 0; i < joints.size(); ++i) {
-        if (i > 0) out += i + 1 == joints.size() ? " and " : ", ";
-        out += std::to_string(spec.joints[joints[i]].id) + quoted(spec.joints[joints[i]].name);
-    }
+    auto item = [&](std::size_t i) {
+        return std::to_string(spec.joints[joints[i]].id) + quoted(spec.joints[joints[i]].name);
+    };
+    if (joints.size() == 1) return trText("Diagnostics", "joint %1").with(item(0));
+    std::string most;
+    for (std::size_t i = 0; i + 1 < joints.size(); ++i) most += (i > 0 ? ", " : "") + item(i);
+    return trText("Diagnostics", "joints %1 and %2").with(most).with(item(joints.size() - 1));
+}
+
+// "a, b, c": a list of translatable items
+Text joinList(const std::vector<Text>& items)
+{
+    if (items.empty()) return {};
+    Text out = items[0];
+    for (std::size_t i = 1; i < items.size(); ++i) out = trText("Diagnostics", "%1, %2").with(std::move(out)).with(items[i]);
     return out;
 }
 
@@ -83,10 +94,12 @@ void checkConnected(const ModelSpec& spec, const Topology& topo, const std::vect
     for (std::size_t b = 1; b < reached.size(); ++b) {
         if (reached[b]) continue;
         const BodySpec* body = bodyById(spec, topo.bodyIds[b]);
+        const Text who =
+            trText("Diagnostics", "body %1").with(std::to_string(topo.bodyIds[b]) + quoted(body ? body->name : ""));
         diags.error("body-not-connected", body ? body->src.pos : SourcePos{},
-                    "body " + std::to_string(topo.bodyIds[b]) + quoted(body ? body->name : "") +
-                        " is not connected to ground: no chain of joints leads from body 0 to it",
-                    "add a joint (C) that connects it to ground or to a connected body");
+                    trText("Diagnostics", "%1 is not connected to ground: no chain of joints leads from body 0 to it")
+                        .with(who),
+                    trText("Diagnostics", "add a joint (C) that connects it to ground or to a connected body"));
     }
 }
 
@@ -97,18 +110,19 @@ void analyzeActuator(const JointSpec& joint, const JointGeometry& geometry, Diag
                      double& q, double& theta)
 {
     const ActuatorLengthLaw law = geometry.lengthLaw();
-    const std::string who = "joint " + std::to_string(joint.id) + "'s actuator";
+    const Text who = trText("Diagnostics", "joint %1's actuator").with(std::to_string(joint.id));
 
     // constant length: CL1 or CL2 on the axis
     if (!(law.rho() > 1e-9 * std::max(law.c0, 1e-12))) {
         diags.error("actuator-constant-length", joint.src.where("CL1"),
-                    who + " keeps the same length " + num(law.length(0)) +
-                        " m whatever the joint angle: CL1 or CL2 lies on the joint axis A, so the "
-                        "actuator cannot turn the joint",
-                    "place CL1 (on body " + std::to_string(joint.side1.body) +
-                        ") and CL2 (on body " + std::to_string(joint.side2.body) +
-                        ") away from the joint axis, so that the actuator length changes as the "
-                        "joint turns");
+                    trText("Diagnostics", "%1 keeps the same length %2 m whatever the joint angle: CL1 or CL2 lies "
+                                          "on the joint axis A, so the actuator cannot turn the joint")
+                        .with(who)
+                        .with(num(law.length(0))),
+                    trText("Diagnostics", "place CL1 (on body %1) and CL2 (on body %2) away from the joint axis, so "
+                                          "that the actuator length changes as the joint turns")
+                        .with(std::to_string(joint.side1.body))
+                        .with(std::to_string(joint.side2.body)));
         q = joint.qi.value_or(law.length(0));
         theta = 0;
         return;
@@ -116,7 +130,6 @@ void analyzeActuator(const JointSpec& joint, const JointGeometry& geometry, Diag
 
     const double lmin = law.minLength(), lmax = law.maxLength();
     const double tol = 1e-9 * std::max(1.0, lmax);
-    const std::string range = "(" + num(lmin) + " m .. " + num(lmax) + " m)";
     auto reachable = [&](double v) { return v >= lmin - tol && v <= lmax + tol; };
 
     // LL, UL, QI within reach
@@ -126,16 +139,22 @@ void analyzeActuator(const JointSpec& joint, const JointGeometry& geometry, Diag
     };
     for (const Limit& lim : {Limit{"LL", joint.ll}, Limit{"UL", joint.ul}, Limit{"QI", joint.qi}}) {
         if (!lim.value || reachable(*lim.value)) continue;
-        std::string hint = "the actuator length |CL2 − CL1| goes from " + num(lmin) + " m to " +
-                           num(lmax) + " m as the joint turns; choose " + lim.key +
-                           " within that range, or check CL1, CL2 and the joint points P1, P2";
-        if (std::string_view(lim.key) == "QI") {
-            hint += " (a reachable QI is taken at the joint angle nearest to 0)";
-        }
+        Text hint = std::string_view(lim.key) == "QI"
+                        ? trText("Diagnostics", "the actuator length |CL2 − CL1| goes from %1 m to %2 m as the joint "
+                                                "turns; choose %3 within that range, or check CL1, CL2 and the joint "
+                                                "points P1, P2 (a reachable QI is taken at the joint angle nearest to 0)")
+                        : trText("Diagnostics", "the actuator length |CL2 − CL1| goes from %1 m to %2 m as the joint "
+                                                "turns; choose %3 within that range, or check CL1, CL2 and the joint "
+                                                "points P1, P2");
+        hint.arg(num(lmin)).arg(num(lmax)).arg(lim.key);
         diags.error("actuator-unreachable", joint.src.where(lim.key),
-                    std::string(lim.key) + " = " + num(*lim.value) + " m is beyond the reach of " +
-                        who + " " + range,
-                    hint);
+                    trText("Diagnostics", "%1 = %2 m is beyond the reach of %3 (%4 m .. %5 m)")
+                        .with(lim.key)
+                        .with(num(*lim.value))
+                        .with(who)
+                        .with(num(lmin))
+                        .with(num(lmax)),
+                    std::move(hint));
     }
 
     // the stroke: written limits, else the reachable range
@@ -152,24 +171,27 @@ void analyzeActuator(const JointSpec& joint, const JointGeometry& geometry, Diag
     struct Extremum {
         double length;
         double angle;
-        const char* which;
+        Text which;
         const char* limit;
         bool upper;
     };
-    for (const Extremum& e : {Extremum{lmax, law.angleOfMaxLength(), "longest", "UL", true},
-                              Extremum{lmin, law.angleOfMinLength(), "shortest", "LL", false}}) {
+    for (const Extremum& e :
+         {Extremum{lmax, law.angleOfMaxLength(), trText("Diagnostics", "longest"), "UL", true},
+          Extremum{lmin, law.angleOfMinLength(), trText("Diagnostics", "shortest"), "LL", false}}) {
         if (!(e.length > strokeLo + tol && e.length < strokeHi - tol)) continue;
         const bool unlimited = e.upper ? !joint.ul : !joint.ll;
-        std::string msg = who + " reaches a dead point inside its stroke: its length is " +
-                          e.which + " (" + num(e.length) + " m) at joint angle " + num(e.angle) +
-                          " rad";
-        msg += unlimited ? std::string(", and no ") + e.limit + " stops it before"
-                         : ", between LL and UL";
-        diags.warning(
-            "actuator-dead-point", joint.src.pos, msg,
-            std::string("the cylinder cannot drive the joint through that point (dL/dθ = 0 "
-                        "there); set ") +
-                e.limit + (e.upper ? " below " : " above ") + num(e.length) + " m");
+        Text msg = unlimited ? trText("Diagnostics", "%1 reaches a dead point inside its stroke: its length is %2 "
+                                                     "(%3 m) at joint angle %4 rad, and no %5 stops it before")
+                             : trText("Diagnostics", "%1 reaches a dead point inside its stroke: its length is %2 "
+                                                     "(%3 m) at joint angle %4 rad, between LL and UL");
+        msg.arg(who).arg(e.which).arg(num(e.length)).arg(num(e.angle));
+        if (unlimited) msg.arg(e.limit);
+        Text hint = e.upper ? trText("Diagnostics", "the cylinder cannot drive the joint through that point "
+                                                    "(dL/dθ = 0 there); set %1 below %2 m")
+                            : trText("Diagnostics", "the cylinder cannot drive the joint through that point "
+                                                    "(dL/dθ = 0 there); set %1 above %2 m");
+        hint.arg(e.limit).arg(num(e.length));
+        diags.warning("actuator-dead-point", joint.src.pos, std::move(msg), std::move(hint));
     }
 }
 
@@ -229,7 +251,7 @@ void reportUnsatisfiedLoops(const ModelSpec& spec, const Topology& topo,
             residual.segment<kClosureEquations>(kClosureEquations * k);
 
         // what is off: distance and angle parts
-        std::string detail;
+        std::vector<Text> detail;
         double gap = 0, angle = 0;
         if (geometry[c].type == JointType::Prismatic) {
             angle = rows.head<3>().norm();
@@ -240,15 +262,14 @@ void reportUnsatisfiedLoops(const ModelSpec& spec, const Topology& topo,
         }
         const bool prismatic = geometry[c].type == JointType::Prismatic;
         if (gap > kLoopFailure) {
-            detail += prismatic ? "P2 lies " + num(gap, 3) + " m off the sliding line through P1"
-                                : "P1 and P2 stay " + num(gap, 3) + " m apart";
+            detail.push_back(prismatic ? trText("Diagnostics", "P2 lies %1 m off the sliding line through P1")
+                                             .with(num(gap, 3))
+                                       : trText("Diagnostics", "P1 and P2 stay %1 m apart").with(num(gap, 3)));
         }
         if (angle > kLoopFailure) {
-            if (!detail.empty()) detail += ", ";
-            detail += prismatic ? "the joint frames are turned by about " +
-                                      num(std::asin(std::min(1.0, angle)), 3) + " rad"
-                                : "the axes A1 and A2 are " +
-                                      num(std::asin(std::min(1.0, angle)), 3) + " rad out of line";
+            const std::string rad = num(std::asin(std::min(1.0, angle)), 3);
+            detail.push_back(prismatic ? trText("Diagnostics", "the joint frames are turned by about %1 rad").with(rad)
+                                       : trText("Diagnostics", "the axes A1 and A2 are %1 rad out of line").with(rad));
         }
 
         // the independent coordinates that move this loop
@@ -259,19 +280,20 @@ void reportUnsatisfiedLoops(const ModelSpec& spec, const Topology& topo,
             }
         }
         std::sort(drivers.begin(), drivers.end());
-        std::string hint = "check the joint points P1, P2 and the link lengths of the loop";
-        if (!drivers.empty()) {
-            hint +=
-                ", and the QI of its independent coordinates (" + jointList(spec, drivers) + ")";
-        }
+        Text hint = drivers.empty()
+                        ? trText("Diagnostics", "check the joint points P1, P2 and the link lengths of the loop")
+                        : trText("Diagnostics", "check the joint points P1, P2 and the link lengths of the loop, and "
+                                                "the QI of its independent coordinates (%1)")
+                              .with(jointList(spec, drivers));
 
-        diags.error(
-            "loop-unsatisfiable", joint.src.pos,
-            "the loop closed by " + jointLabel(joint) +
-                " cannot be assembled at the initial configuration: its closure equations keep "
-                "a residual of " +
-                num(rows.norm(), 3) + (detail.empty() ? "" : " (" + detail + ")"),
-            hint);
+        Text message = detail.empty()
+                           ? trText("Diagnostics", "the loop closed by %1 cannot be assembled at the initial "
+                                                   "configuration: its closure equations keep a residual of %2")
+                           : trText("Diagnostics", "the loop closed by %1 cannot be assembled at the initial "
+                                                   "configuration: its closure equations keep a residual of %2 (%3)");
+        message.arg(jointLabel(joint)).arg(num(rows.norm(), 3));
+        if (!detail.empty()) message.arg(joinList(detail));
+        diags.error("loop-unsatisfiable", joint.src.pos, std::move(message), std::move(hint));
     }
 }
 
@@ -288,8 +310,7 @@ void checkMass(const ModelSpec& spec, const Topology& topo, const Eigen::MatrixX
     const double tol = kMassTolerance * std::max(1.0, all.eigenvalues().maxCoeff());
     if (all.eigenvalues().minCoeff() >= tol) return;
 
-    const std::string hint =
-        "give the bodies it moves a mass (B id m Ixx Iyy Izz), or remove the joint";
+    const Text hint = trText("Diagnostics", "give the bodies it moves a mass (B id m Ixx Iyy Izz), or remove the joint");
     auto jointOf = [&](Eigen::Index i) { return topo.treeJoints[independentCols[i]]; };
 
     // single joints that move nothing with mass
@@ -309,17 +330,21 @@ void checkMass(const ModelSpec& spec, const Topology& topo, const Eigen::MatrixX
                 carried.push_back(topo.treeJoints[r]);
         }
         std::sort(carried.begin(), carried.end());
-        std::string who = jointLabel(joint);
-        if (!carried.empty()) who += " and the loop it drives (" + jointList(spec, carried) + ")";
-        const std::string why =
-            joint.type == JointType::Prismatic
-                ? "the bodies it moves have no mass"
-                : "the bodies it moves have no mass, or only mass on its axis and no "
-                  "inertia about it";
-        diags.error("joint-moves-no-mass", joint.src.pos,
-                    who + (carried.empty() ? " moves" : " move") + " no mass: " + why +
-                        ", so the mass matrix is singular at the initial configuration",
-                    hint);
+        const Text why = joint.type == JointType::Prismatic
+                             ? trText("Diagnostics", "the bodies it moves have no mass")
+                             : trText("Diagnostics", "the bodies it moves have no mass, or only mass on its axis "
+                                                     "and no inertia about it");
+        Text message = carried.empty()
+                           ? trText("Diagnostics", "%1 moves no mass: %2, so the mass matrix is singular at the "
+                                                   "initial configuration")
+                                 .with(jointLabel(joint))
+                                 .with(why)
+                           : trText("Diagnostics", "%1 and the loop it drives (%2) move no mass: %3, so the mass "
+                                                   "matrix is singular at the initial configuration")
+                                 .with(jointLabel(joint))
+                                 .with(jointList(spec, carried))
+                                 .with(why);
+        diags.error("joint-moves-no-mass", joint.src.pos, std::move(message), hint);
     }
     if (rest.empty()) return;
 
@@ -342,22 +367,23 @@ void checkMass(const ModelSpec& spec, const Topology& topo, const Eigen::MatrixX
             joints.push_back(jointOf(rest[a]));
         }
         std::sort(joints.begin(), joints.end());
-        std::string rates;
+        std::vector<Text> rates;
         for (Eigen::Index a = 0; a < nr; ++a) {
             if (std::abs(v[a]) < 1e-9) continue;
-            if (!rates.empty()) rates += ", ";
-            rates +=
-                num(v[a], 3) + " for joint " + std::to_string(spec.joints[jointOf(rest[a])].id);
+            rates.push_back(trText("Diagnostics", "%1 for joint %2")
+                                .with(num(v[a], 3))
+                                .with(std::to_string(spec.joints[jointOf(rest[a])].id)));
         }
         for (int j : joints) {
             if (std::find(reported.begin(), reported.end(), j) != reported.end()) continue;
             reported.push_back(j);
-            diags.error(
-                "joint-moves-no-mass", spec.joints[j].src.pos,
-                jointList(spec, joints) + " together move no mass: the motion with rates " + rates +
-                    " leaves every body with mass at rest, so the mass matrix is singular at "
-                    "the initial configuration",
-                hint);
+            diags.error("joint-moves-no-mass", spec.joints[j].src.pos,
+                        trText("Diagnostics", "%1 together move no mass: the motion with rates %2 leaves every body "
+                                              "with mass at rest, so the mass matrix is singular at the initial "
+                                              "configuration")
+                            .with(jointList(spec, joints))
+                            .with(joinList(rates)),
+                        hint);
         }
     }
 }
@@ -497,10 +523,12 @@ std::optional<Topology> analyzeTopology(const ModelSpec& spec, Diagnostics& diag
             if (!none[static_cast<std::size_t>(j)]) continue;
             const JointSpec& joint = spec.joints[static_cast<std::size_t>(j)];
             diags.error("joint-moves-no-mass", joint.src.pos,
-                        jointLabel(joint) + " moves no mass: the bodies it moves have no mass, or only mass on "
-                                            "its axis and no inertia about it, so the mass matrix is singular "
-                                            "at the initial configuration",
-                        "give the bodies it moves a mass (B id m Ixx Iyy Izz), or remove the joint");
+                        trText("Diagnostics", "%1 moves no mass: %2, so the mass matrix is singular at the initial "
+                                              "configuration")
+                            .with(jointLabel(joint))
+                            .with(trText("Diagnostics", "the bodies it moves have no mass, or only mass on its axis "
+                                                        "and no inertia about it")),
+                        trText("Diagnostics", "give the bodies it moves a mass (B id m Ixx Iyy Izz), or remove the joint"));
         }
     } else if (nt > 0) {
         const Eigen::MatrixXd massTree = treeMassMatrix(topo, geometry, X_wb, inertia);

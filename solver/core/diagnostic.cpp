@@ -14,6 +14,49 @@ const char* severityName(Severity s)
     return "error";
 }
 
+Text& Text::arg(std::string value)
+{
+    m_args.push_back(plainText(std::move(value)));
+    return *this;
+}
+
+Text& Text::arg(Text phrase)
+{
+    m_args.push_back(std::move(phrase));
+    return *this;
+}
+
+Text plainText(std::string value)
+{
+    Text t;
+    t.m_value = std::move(value);
+    return t;
+}
+
+std::string Text::english() const
+{
+    return render([](const char*, const char* tmpl) { return std::string(tmpl); });
+}
+
+std::string Text::fill(const std::string& tmpl, const std::vector<std::string>& args)
+{
+    std::string out;
+    out.reserve(tmpl.size() + 16 * args.size());
+    for (std::size_t i = 0; i < tmpl.size(); ++i) {
+        const char c = tmpl[i];
+        if (c == '%' && i + 1 < tmpl.size()) {
+            const char n = tmpl[i + 1];
+            if (n >= '1' && n <= '9' && static_cast<std::size_t>(n - '1') < args.size()) {
+                out += args[static_cast<std::size_t>(n - '1')];
+                ++i;
+                continue;
+            }
+        }
+        out += c;
+    }
+    return out;
+}
+
 std::string Diagnostic::format() const
 {
     std::string out = file.empty() ? std::string("<model>") : file;
@@ -32,15 +75,24 @@ std::string Diagnostic::format() const
     return out;
 }
 
-Diagnostic& Diagnostics::error(std::string code, SourcePos pos, std::string message, std::string hint)
+Diagnostic& Diagnostics::error(std::string code, SourcePos pos, Text message, Text hint)
 {
     return add(Severity::Error, std::move(code), pos, std::move(message), std::move(hint));
 }
 
-Diagnostic& Diagnostics::warning(std::string code, SourcePos pos, std::string message,
-                                 std::string hint)
+Diagnostic& Diagnostics::warning(std::string code, SourcePos pos, Text message, Text hint)
 {
     return add(Severity::Warning, std::move(code), pos, std::move(message), std::move(hint));
+}
+
+Diagnostic& Diagnostics::add(Severity s, std::string code, SourcePos pos, Text message, Text hint)
+{
+    Diagnostic& d = add(s, std::move(code), pos, message.english(), hint.english());
+    if (&d != &m_sink) {
+        d.messageText = std::move(message);
+        d.hintText = std::move(hint);
+    }
+    return d;
 }
 
 Diagnostic& Diagnostics::add(Severity s, std::string code, SourcePos pos, std::string message,
@@ -50,14 +102,15 @@ Diagnostic& Diagnostics::add(Severity s, std::string code, SourcePos pos, std::s
     if (s == Severity::Warning) ++m_warnings;
     if (m_items.size() >= m_limit) {
         if (m_dropped++ == 0) {
-            m_items.push_back({Severity::Note, "too-many-diagnostics", m_file, pos,
-                               "too many problems; the rest are not listed",
-                               "fix the ones above first", {}});
+            Text message = trText("Diagnostics", "too many problems; the rest are not listed");
+            Text hint = trText("Diagnostics", "fix the ones above first");
+            m_items.push_back({Severity::Note, "too-many-diagnostics", m_file, pos, message.english(), hint.english(),
+                               message, hint});
         }
         m_sink = {};
         return m_sink;
     }
-    m_items.push_back({s, std::move(code), m_file, pos, std::move(message), std::move(hint), {}});
+    m_items.push_back({s, std::move(code), m_file, pos, std::move(message), std::move(hint), {}, {}});
     return m_items.back();
 }
 
@@ -73,9 +126,10 @@ void Diagnostics::sortByPosition()
 void Diagnostics::append(const Diagnostics& other)
 {
     for (const Diagnostic& d : other) {
-        Diagnostic& n = add(d.severity, d.code, d.pos, d.message, d.hint);
+        Diagnostic& n = add(d.severity, d.code, d.pos, std::string(d.message), std::string(d.hint));
         n.file = d.file;
-        n.args = d.args;
+        n.messageText = d.messageText;
+        n.hintText = d.hintText;
     }
 }
 

@@ -1,16 +1,79 @@
 #pragma once
 // Diagnostics: what the model layer tells a modeler about a model file.
 //
-// Every diagnostic has a stable code (used by tests and, in the GUI, by the
-// translation of its text), a severity, a position (file, line, column; 1-based,
-// columns counted in characters, i.e. Unicode code points), an English message
-// that says what is wrong and, where one exists, a hint that says how to fix it.
+// Every diagnostic has a stable code (used by tests), a severity, a position (file,
+// line, column; 1-based, columns counted in characters, i.e. Unicode code points), a
+// message that says what is wrong and, where one exists, a hint that says how to fix
+// it. Message and hint are kept twice: as English text (`message`, `hint`, what tests
+// and logs read) and as translatable Text (an English template with %1…%9 and its
+// arguments), which the front ends translate into the operator's language
+// (ide/i18n/diagnostic_text.h). The solver stays Qt-free: lupdate finds the templates
+// because every one is written as trText("Context", "template") (ide/CMakeLists.txt
+// makes lupdate read trText as QCoreApplication::translate).
 
 #include <cstddef>
 #include <string>
 #include <vector>
 
 namespace solver {
+
+/// A translatable text: a context and an English template with %1…%9, and its
+/// arguments, each a plain value (a name, a number as written) or a Text of its own
+/// (a phrase that is translated too). Built with trText(…).arg(…).
+class Text {
+public:
+    Text() = default;
+    /// `context` and `tmpl` must be string literals (they are kept as pointers).
+    Text(const char* context, const char* tmpl) : m_context(context), m_tmpl(tmpl) {}
+
+    /// Fills the lowest unused %N with a plain value (not translated).
+    Text& arg(std::string value);
+    Text& arg(const char* value) { return arg(std::string(value)); }
+    Text& arg(long long value) { return arg(std::to_string(value)); }
+    Text& arg(int value) { return arg(std::to_string(value)); }
+    Text& arg(std::size_t value) { return arg(std::to_string(value)); }
+    /// Fills the lowest unused %N with a phrase that is translated too.
+    Text& arg(Text phrase);
+    Text&& with(std::string value) && { arg(std::move(value)); return std::move(*this); }
+    Text&& with(Text phrase) && { arg(std::move(phrase)); return std::move(*this); }
+
+    bool empty() const { return m_tmpl == nullptr && m_value.empty(); }
+    const char* context() const { return m_context; }
+    /// The template; nullptr for a plain value.
+    const char* tmpl() const { return m_tmpl; }
+    /// A plain value's text.
+    const std::string& value() const { return m_value; }
+    const std::vector<Text>& args() const { return m_args; }
+
+    /// The text in English (the template filled with the English arguments).
+    std::string english() const;
+    /// The text in another language: `translate(context, tmpl)` gives each template's
+    /// translation (UTF-8), which is filled with the arguments (translated alike).
+    template <class Translate>
+    std::string render(const Translate& translate) const
+    {
+        if (!m_tmpl) return m_value;
+        std::vector<std::string> filled;
+        filled.reserve(m_args.size());
+        for (const Text& a : m_args) filled.push_back(a.render(translate));
+        return fill(translate(m_context, m_tmpl), filled);
+    }
+    /// Replaces %1…%9 in `tmpl` by `args` in one pass ("%%" stays; a missing argument
+    /// leaves its %N as written).
+    static std::string fill(const std::string& tmpl, const std::vector<std::string>& args);
+
+private:
+    friend Text plainText(std::string value);
+    const char* m_context = nullptr;
+    const char* m_tmpl = nullptr;
+    std::string m_value;
+    std::vector<Text> m_args;
+};
+
+/// A translatable text in `context` (a string literal; lupdate reads the call).
+inline Text trText(const char* context, const char* tmpl) { return Text(context, tmpl); }
+/// A plain value as a Text (shown as it is, in every language).
+Text plainText(std::string value);
 
 enum class Severity { Error, Warning, Note };
 
@@ -29,9 +92,10 @@ struct Diagnostic {
     std::string code;     ///< stable identifier, kebab-case, e.g. "decimal-comma"
     std::string file;     ///< file name as given by the caller
     SourcePos pos;
-    std::string message;  ///< what is wrong (English; the GUI translates by code)
-    std::string hint;     ///< how to fix it; may be empty
-    std::vector<std::string> args;  ///< the message's variable parts, for translation
+    std::string message;  ///< what is wrong, in English
+    std::string hint;     ///< how to fix it, in English; may be empty
+    Text messageText;     ///< the message, translatable (empty for an old-style English-only one)
+    Text hintText;        ///< the hint, translatable
 
     /// "file:line:col: error: message [hint]" — the format compilers use.
     std::string format() const;
@@ -50,10 +114,10 @@ public:
     const std::string& file() const { return m_file; }
     void setFile(std::string f) { m_file = std::move(f); }
 
-    Diagnostic& error(std::string code, SourcePos pos, std::string message, std::string hint = {});
-    Diagnostic& warning(std::string code, SourcePos pos, std::string message, std::string hint = {});
-    Diagnostic& add(Severity s, std::string code, SourcePos pos, std::string message,
-                    std::string hint = {});
+    /// A problem with a translatable message and hint (the English ones are derived).
+    Diagnostic& error(std::string code, SourcePos pos, Text message, Text hint = {});
+    Diagnostic& warning(std::string code, SourcePos pos, Text message, Text hint = {});
+    Diagnostic& add(Severity s, std::string code, SourcePos pos, Text message, Text hint = {});
 
     bool hasErrors() const { return m_errors > 0; }
     std::size_t errorCount() const { return m_errors; }
@@ -72,6 +136,9 @@ public:
     void append(const Diagnostics& other);
 
 private:
+    // stores one (English only; the Text overload adds the translatable texts)
+    Diagnostic& add(Severity s, std::string code, SourcePos pos, std::string message, std::string hint);
+
     std::string m_file;
     std::size_t m_limit;
     std::vector<Diagnostic> m_items;

@@ -12,11 +12,11 @@
 namespace solver {
 
 /// Reads `path` whole. On failure adds one "io-error" diagnostic (no position, the
-/// file named `path`) to `diags` and returns nullopt. `kind` names what the file
-/// should be, with its article ("a model", "an input"); `extension` its usual ending (".pad");
-/// `tooLargeHint` says what to do with a file over `maxBytes`.
-std::optional<std::string> readTextFile(const std::string& path, std::uintmax_t maxBytes, const std::string& kind,
-                                        const std::string& extension, const std::string& tooLargeHint,
+/// file named `path`) to `diags` and returns nullopt. `fileKind` names what the file
+/// should be, with its article (trText("Diagnostics", "a model file")); `extension` its
+/// usual ending (".pad"); `tooLargeHint` says what to do with a file over `maxBytes`.
+std::optional<std::string> readTextFile(const std::string& path, std::uintmax_t maxBytes, const Text& fileKind,
+                                        const std::string& extension, const Text& tooLargeHint,
                                         Diagnostics& diags);
 
 }  // namespace solver

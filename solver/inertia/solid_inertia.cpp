@@ -65,35 +65,45 @@ ShapeVolume prismVolume(const std::vector<double>& dims)
 
 ShapeVolume meshVolume(const GraphicSpec& g, const std::string& modelDir, Diagnostics& diags)
 {
-    const std::string who = "graphic " + std::to_string(g.id);
+    const Text who = trText("Diagnostics", "graphic %1").with(std::to_string(g.id));
     const SourcePos at = g.src.where("dims");
     const std::filesystem::path path = std::filesystem::path(modelDir) / g.meshFile;
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) {
-        diags.error("mesh-not-found", at, who + ": mesh file '" + g.meshFile + "' not found (looked for " + path.string() + ")",
-                    "mesh paths are relative to the model file's folder")
-            .args = {std::to_string(g.id), g.meshFile, path.string()};
+        diags.error("mesh-not-found", at,
+                    trText("Diagnostics", "%1: mesh file '%2' not found (looked for %3)")
+                        .with(who)
+                        .with(g.meshFile)
+                        .with(path.string()),
+                    trText("Diagnostics", "mesh paths are relative to the model file's folder"));
         return {};
     }
     MeshLoad load = loadTriangleMesh(path.string(), g.hasScale ? g.scale : 1.0);
     if (!load.mesh) {
-        diags.error("mesh-unreadable", at, who + ": mesh file '" + g.meshFile + "' cannot be read: " + load.error,
-                    "export the mesh again (STL, OBJ, PLY, …) or check that the file is not damaged")
-            .args = {std::to_string(g.id), g.meshFile, load.error};
+        diags.error("mesh-unreadable", at,
+                    trText("Diagnostics", "%1: mesh file '%2' cannot be read: %3")
+                        .with(who)
+                        .with(g.meshFile)
+                        .with(load.errorText),
+                    trText("Diagnostics", "export the mesh again (STL, OBJ, PLY, …) or check that the file is not damaged"));
         return {};
     }
     const TriangleMesh& mesh = *load.mesh;
     if (const int open = openEdgeCount(mesh); open > 0) {
-        diags.error("mesh-not-closed", at, who + ": the mesh is not closed: " + std::to_string(open) + " open edges",
-                    "a solid's surface must be watertight (every edge joins two triangles); close its holes in a mesh editor")
-            .args = {std::to_string(g.id), std::to_string(open)};
+        diags.error("mesh-not-closed", at,
+                    trText("Diagnostics", "%1: the mesh is not closed: %2 open edges")
+                        .with(who)
+                        .with(std::to_string(open)),
+                    trText("Diagnostics", "a solid's surface must be watertight (every edge joins two triangles); close "
+                                          "its holes in a mesh editor"));
         return {};
     }
     if (const int bad = misorientedEdgeCount(mesh); bad > 0) {
         diags.error("mesh-not-oriented", at,
-                    who + ": the mesh's faces are not consistently oriented: " + std::to_string(bad) + " edges",
-                    "recalculate the normals in a mesh editor so they all point outwards")
-            .args = {std::to_string(g.id), std::to_string(bad)};
+                    trText("Diagnostics", "%1: the mesh's faces are not consistently oriented: %2 edges")
+                        .with(who)
+                        .with(std::to_string(bad)),
+                    trText("Diagnostics", "recalculate the normals in a mesh editor so they all point outwards"));
         return {};
     }
     std::array<double, 10> in = meshVolumeIntegrals(mesh);
@@ -102,14 +112,15 @@ ShapeVolume meshVolume(const GraphicSpec& g, const std::string& modelDir, Diagno
     for (const Vector3d& v : mesh.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
     const double extent = (hi - lo).maxCoeff();
     if (!(std::abs(in[0]) > 1e-12 * extent * extent * extent) || !std::isfinite(in[0])) {
-        diags.error("mesh-no-volume", at, who + ": the mesh encloses no volume", "a solid needs a closed surface around a volume")
-            .args = {std::to_string(g.id)};
+        diags.error("mesh-no-volume", at, trText("Diagnostics", "%1: the mesh encloses no volume").with(who),
+                    trText("Diagnostics", "a solid needs a closed surface around a volume"));
         return {};
     }
     if (in[0] < 0) {
-        diags.warning("mesh-inverted", at, who + ": the mesh's normals point inwards (negative volume); its absolute value is used",
-                      "flip the normals in a mesh editor")
-            .args = {std::to_string(g.id)};
+        diags.warning("mesh-inverted", at,
+                      trText("Diagnostics", "%1: the mesh's normals point inwards (negative volume); its absolute value is used")
+                          .with(who),
+                      trText("Diagnostics", "flip the normals in a mesh editor"));
         for (double& v : in) v = -v;
     }
     Matrix3d s;
@@ -185,13 +196,15 @@ Eigen::Matrix3d shapeRotation(const GraphicSpec& g)
 MassProperties solidMassProperties(const GraphicSpec& g, const std::string& modelDir, Diagnostics& diags)
 {
     if (!g.mass && !g.rho) return {};
-    const std::string who = "graphic " + std::to_string(g.id);
+    const Text who = trText("Diagnostics", "graphic %1").with(std::to_string(g.id));
     if (g.mass && *g.mass < 0) {
-        diags.error("negative-mass", g.src.where("MASS"), who + ": MASS is negative", "a mass is ≥ 0, in kg");
+        diags.error("negative-mass", g.src.where("MASS"), trText("Diagnostics", "%1: MASS is negative").with(who),
+                    trText("Diagnostics", "a mass is ≥ 0, in kg"));
         return {};
     }
     if (g.rho && !(*g.rho > 0)) {
-        diags.error("not-positive", g.src.where("RHO"), who + ": RHO must be positive", "a density in kg/m³ (steel: 7850)");
+        diags.error("not-positive", g.src.where("RHO"), trText("Diagnostics", "%1: RHO must be positive").with(who),
+                    trText("Diagnostics", "a density in kg/m³ (steel: 7850)"));
         return {};
     }
     const ShapeVolume sv = shapeVolume(g, modelDir, diags);

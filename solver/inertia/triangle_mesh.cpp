@@ -79,26 +79,24 @@ void subexpressions(double w0, double w1, double w2, double& f1, double& f2, dou
 MeshLoad loadTriangleMesh(const std::string& path, double scale)
 {
     MeshLoad r;
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) {
-        r.error = "no such file";
+    auto fail = [&r](Text why) {
+        r.error = why.english();
+        r.errorText = std::move(why);
         return r;
-    }
+    };
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return fail(trText("Diagnostics", "no such file"));
     Assimp::Importer importer;
     const aiScene* scene = importer.ReadFile(
         path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure);
     if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode) {
-        r.error = importer.GetErrorString();
-        if (r.error.empty()) r.error = "the file holds no scene";
-        return r;
+        const std::string why = importer.GetErrorString();
+        return fail(why.empty() ? trText("Diagnostics", "the file holds no scene") : plainText(why));
     }
     TriangleMesh mesh;
     std::map<Eigen::Vector3d, int, PointLess> index;
     collect(*scene, *scene->mRootNode, aiMatrix4x4(), scale, index, mesh);
-    if (mesh.triangles.empty()) {
-        r.error = "the file holds no triangles";
-        return r;
-    }
+    if (mesh.triangles.empty()) return fail(trText("Diagnostics", "the file holds no triangles"));
     r.mesh = std::move(mesh);
     return r;
 }

@@ -5,6 +5,8 @@
 //
 // assimp's headers stay in triangle_mesh.cpp: nothing here exposes an assimp type.
 
+#include "solver/core/diagnostic.h"
+
 #include <Eigen/Core>
 
 #include <array>
@@ -25,6 +27,7 @@ struct TriangleMesh {
 struct MeshLoad {
     std::optional<TriangleMesh> mesh;  ///< set on success
     std::string error;                 ///< why it failed (English), when `mesh` is empty
+    Text errorText;                    ///< the same, translatable (assimp's own message is plain)
 };
 
 /// Loads every mesh of the file's scene (node transforms applied) with assimp, post-processing

@@ -330,6 +330,7 @@ public:
         m_initialised = true;
         m_failed = false;
         m_failMessage.clear();
+        m_failText = {};
         m_badComponent = -1;
         std::fill(m_rootInfo.begin(), m_rootInfo.end(), 0);
         ++m_stats.resets;
@@ -350,6 +351,7 @@ public:
             r.status = AdvanceStatus::Failed;
             r.t = m_t;
             r.message = m_failMessage;
+            r.messageText = m_failText;
             r.badComponent = m_badComponent;
             r.failureTime = m_failureTime;
             return r;
@@ -380,12 +382,14 @@ public:
             // y and time() stay those of the previous return: on failure ARKODE
             // reports the failing stage's time with the state from the step's start
             m_failed = true;
-            m_failMessage = failureMessage(flag, tret);
+            m_failText = failureMessage(flag, tret);
+            m_failMessage = m_failText.english();
             m_badComponent = isUserFunctionFailure(flag) ? m_failure.component : -1;
             m_failureTime = std::max(tret, m_t);
             r.status = AdvanceStatus::Failed;
             r.t = m_t;
             r.message = m_failMessage;
+            r.messageText = m_failText;
             r.badComponent = m_badComponent;
             r.failureTime = m_failureTime;
             return r;
@@ -454,40 +458,56 @@ private:
         m_failure = Failure{kind, t, component, value};
     }
 
-    std::string failureMessage(int flag, double tret) const
+    /// Why the last step failed: the flag's name and time, the cause when it was
+    /// OdeSystem's, and SUNDIALS' own message (English, plain) in brackets.
+    Text failureMessage(int flag, double tret) const
     {
-        std::string msg = m_backend->flagName(flag) + " at t = " + formatTime(tret) + " s";
+        Text cause;
         if (isUserFunctionFailure(flag)) {
             const Failure& f = m_failure;
-            const std::string at = " at t = " + formatTime(f.t) + " s";
+            const std::string at = formatTime(f.t);
             char value[40];
             std::snprintf(value, sizeof value, "%g", f.value);
             switch (f.kind) {
             case FailureKind::RhsFalse:
-                msg += ": the right-hand side reported a failure" + at;
+                cause = trText("Diagnostics", "the right-hand side reported a failure at t = %1 s").with(at);
                 break;
             case FailureKind::RhsNonFinite:
-                msg += ": the right-hand side gave a non-finite value in component " +
-                       std::to_string(f.component) + " (" + value + ")" + at;
+                cause = trText("Diagnostics", "the right-hand side gave a non-finite value in component %1 (%2) at t = %3 s")
+                            .with(std::to_string(f.component))
+                            .with(value)
+                            .with(at);
                 break;
             case FailureKind::RhsThrew:
-                msg += ": the right-hand side threw an exception" + at;
+                cause = trText("Diagnostics", "the right-hand side threw an exception at t = %1 s").with(at);
                 break;
             case FailureKind::RootsFalse:
-                msg += ": the event functions reported a failure" + at;
+                cause = trText("Diagnostics", "the event functions reported a failure at t = %1 s").with(at);
                 break;
             case FailureKind::RootsNonFinite:
-                msg += ": event function " + std::to_string(f.component) + " is not finite (" +
-                       value + ")" + at;
+                cause = trText("Diagnostics", "event function %1 is not finite (%2) at t = %3 s")
+                            .with(std::to_string(f.component))
+                            .with(value)
+                            .with(at);
                 break;
             case FailureKind::RootsThrew:
-                msg += ": the event functions threw an exception" + at;
+                cause = trText("Diagnostics", "the event functions threw an exception at t = %1 s").with(at);
                 break;
             case FailureKind::None: break;
             }
         }
-        if (m_sundialsMessage[0] != '\0') msg += std::string(" [") + m_sundialsMessage + "]";
-        return msg;
+        const std::string name = m_backend->flagName(flag), when = formatTime(tret);
+        const bool sundials = m_sundialsMessage[0] != '\0';
+        if (cause.empty()) {
+            if (!sundials) return trText("Diagnostics", "%1 at t = %2 s").with(name).with(when);
+            return trText("Diagnostics", "%1 at t = %2 s [%3]").with(name).with(when).with(m_sundialsMessage);
+        }
+        if (!sundials) return trText("Diagnostics", "%1 at t = %2 s: %3").with(name).with(when).with(std::move(cause));
+        return trText("Diagnostics", "%1 at t = %2 s: %3 [%4]")
+            .with(name)
+            .with(when)
+            .with(std::move(cause))
+            .with(m_sundialsMessage);
     }
 
     // ---- trampolines: SUNDIALS calls these with user_data = this ---------------
@@ -572,6 +592,7 @@ private:
     bool m_initialised = false;
     bool m_failed = false;
     std::string m_failMessage;
+    Text m_failText;  ///< m_failMessage, translatable
     int m_badComponent = -1;
     double m_failureTime = 0;
     long m_stepsSeen = 0;

@@ -33,6 +33,8 @@
 // Units: time t [s]; y and its tolerances in the system's own units.
 // Threads: one Integrator per thread; an Integrator and its OdeSystem are not shared.
 
+#include "solver/core/diagnostic.h"
+
 #include <memory>
 #include <span>
 #include <string>
@@ -118,6 +120,9 @@ struct AdvanceResult {
     /// the right-hand side gave a non-finite value in component 1 (nan) at t = 0.25 s
     /// [ARKODE: At t = 0.25, the right-hand side routine failed in an unrecoverable manner.]".
     std::string message;
+    /// Failed only: `message`, translatable (the flag name, numbers and SUNDIALS' own
+    /// text stay plain): messageText.english() == message.
+    Text messageText;
     /// Failed only: the state component whose derivative was not finite, or −1.
     int badComponent = -1;
     /// Failed only: the time SUNDIALS reports for the failure [s] (ARKODE: the

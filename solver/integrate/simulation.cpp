@@ -44,12 +44,20 @@ void evaluateAll(const Model& model, const State& state, Data& data)
     hybridDynamics(model, state, data);
 }
 
-std::string bodyLabel(const Model& m, int b)
+Text bodyLabelText(const Model& m, int b)
 {
-    if (b < 0) return "the ground";
-    std::string s = "body " + std::to_string(m.bodyId[b]);
-    if (!m.bodyName[b].empty()) s += " " + m.bodyName[b];
-    return s;
+    if (b < 0) return trText("Diagnostics", "the ground");
+    if (m.bodyName[b].empty()) return trText("Diagnostics", "body %1").with(std::to_string(m.bodyId[b]));
+    return trText("Diagnostics", "body %1 %2").with(std::to_string(m.bodyId[b])).with(m.bodyName[b]);
+}
+
+std::string bodyLabel(const Model& m, int b) { return bodyLabelText(m, b).english(); }
+
+/// Sets a failure's English `error` and, when asked for, its translatable `errorText`.
+void setError(Text text, std::string& error, Text* errorText)
+{
+    error = text.english();
+    if (errorText) *errorText = std::move(text);
 }
 
 /// The commanded rate of joint j's hydraulic drive in the modeler's coordinate.
@@ -645,23 +653,24 @@ void Simulation::applyModeRules(std::vector<SimulationEvent>& events)
 
 namespace {
 
-std::string lockMessage(double t)
+Text lockMessage(double t)
 {
-    return "the closed loops locked up at t = " + fmt(t) +
-           " s (a singular configuration: the loop-closure equations lost rank, so the "
-           "mechanism cannot move on there); drive it another way or change the geometry";
+    return trText("Diagnostics", "the closed loops locked up at t = %1 s (a singular configuration: the loop-closure "
+                                 "equations lost rank, so the mechanism cannot move on there); drive it another way or "
+                                 "change the geometry")
+        .with(fmt(t));
 }
 
 }  // namespace
 
-bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, std::string& error)
+bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, std::string& error, Text* errorText)
 {
     if (m_model->nb == 0) {
         m_state.t = tEnd;
         return true;
     }
     if (m_locked) {
-        error = lockMessage(m_state.t);
+        setError(lockMessage(m_state.t), error, errorText);
         return false;
     }
     const bool constrained = hasConstraints(*m_model, m_state);
@@ -669,8 +678,10 @@ bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, st
     while (true) {
         m_setJoints.clear();
         if (m_assemblyFailed) {
-            error = "the closed loops cannot be closed at t = " + fmt(m_state.t) +
-                    " s from the coordinates given: set coordinates the loops can reach";
+            setError(trText("Diagnostics", "the closed loops cannot be closed at t = %1 s from the coordinates given: "
+                                           "set coordinates the loops can reach")
+                         .with(fmt(m_state.t)),
+                     error, errorText);
             return false;
         }
         if (m_restart) {
@@ -679,7 +690,7 @@ bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, st
             eventCount += static_cast<int>(events.size() - before);
             if (m_locked) {
                 evaluate();
-                error = lockMessage(m_state.t);
+                setError(lockMessage(m_state.t), error, errorText);
                 return false;
             }
             packState();
@@ -694,14 +705,24 @@ bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, st
             for (int j = 0; joint < 0 && j < nb; ++j) {
                 if (!std::isfinite(m_y[j]) || !std::isfinite(m_y[nb + j])) joint = j;
             }
-            char t0[48];
-            std::snprintf(t0, sizeof t0, "%.6g", r.failureTime);
-            error = std::string("the simulation failed at t = ") + t0 + " s";
-            if (joint >= 0) {
-                error += ", joint " + std::to_string(m_model->jointId[joint]);
-                if (!m_model->jointName[joint].empty()) error += " (" + m_model->jointName[joint] + ")";
+            const std::string t0 = fmt(r.failureTime);
+            if (joint < 0) {
+                setError(trText("Diagnostics", "the simulation failed at t = %1 s: %2").with(t0).with(r.messageText),
+                         error, errorText);
+            } else if (m_model->jointName[joint].empty()) {
+                setError(trText("Diagnostics", "the simulation failed at t = %1 s, joint %2: %3")
+                             .with(t0)
+                             .with(std::to_string(m_model->jointId[joint]))
+                             .with(r.messageText),
+                         error, errorText);
+            } else {
+                setError(trText("Diagnostics", "the simulation failed at t = %1 s, joint %2 (%3): %4")
+                             .with(t0)
+                             .with(std::to_string(m_model->jointId[joint]))
+                             .with(m_model->jointName[joint])
+                             .with(r.messageText),
+                         error, errorText);
             }
-            error += ": " + r.message;
             return false;
         }
         m_state.t = r.t;
@@ -721,7 +742,7 @@ bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, st
                 e.t = m_state.t;
                 events.push_back(e);
                 m_locked = true;
-                error = lockMessage(m_state.t);
+                setError(lockMessage(m_state.t), error, errorText);
                 return false;
             }
             if (r.status == AdvanceStatus::Reached) {
@@ -736,12 +757,14 @@ bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, st
         eventCount += static_cast<int>(events.size() - before);
         if (m_locked) {
             evaluate();
-            error = lockMessage(m_state.t);
+            setError(lockMessage(m_state.t), error, errorText);
             return false;
         }
         if (eventCount > m_options.maxEventsPerAdvance) {
-            error = "more than " + std::to_string(m_options.maxEventsPerAdvance) + " events before t = " +
-                    fmt(tEnd) + " s: the joints keep switching (chattering)";
+            setError(trText("Diagnostics", "more than %1 events before t = %2 s: the joints keep switching (chattering)")
+                         .with(std::to_string(m_options.maxEventsPerAdvance))
+                         .with(fmt(tEnd)),
+                     error, errorText);
             return false;
         }
         packState();
@@ -763,21 +786,24 @@ bool inWeld(const State& s, int body)
 
 }  // namespace
 
-bool Simulation::weld(int a, int b, std::vector<SimulationEvent>& events, std::string& error)
+bool Simulation::weld(int a, int b, std::vector<SimulationEvent>& events, std::string& error, Text* errorText)
 {
     const Model& m = *m_model;
     if (b < 0 || b >= m.nb || a < -1 || a >= m.nb) {
-        error = "cannot weld: no such body";
+        setError(trText("Diagnostics", "cannot weld: no such body"), error, errorText);
         return false;
     }
     if (a == b) {
-        error = "cannot weld " + bodyLabel(m, b) + " to itself";
+        setError(trText("Diagnostics", "cannot weld %1 to itself").with(bodyLabelText(m, b)), error, errorText);
         return false;
     }
     for (int body : {a, b}) {
         if (body >= 0 && inWeld(m_state, body)) {
-            error = "cannot weld " + bodyLabel(m, b) + " to " + bodyLabel(m, a) + ": " + bodyLabel(m, body) +
-                    " is already welded (release that weld first)";
+            setError(trText("Diagnostics", "cannot weld %1 to %2: %3 is already welded (release that weld first)")
+                         .with(bodyLabelText(m, b))
+                         .with(bodyLabelText(m, a))
+                         .with(bodyLabelText(m, body)),
+                     error, errorText);
             return false;
         }
     }
@@ -802,15 +828,18 @@ bool Simulation::weld(int a, int b, std::vector<SimulationEvent>& events, std::s
     return true;
 }
 
-bool Simulation::release(int a, int b, std::vector<SimulationEvent>& events, std::string& error)
+bool Simulation::release(int a, int b, std::vector<SimulationEvent>& events, std::string& error, Text* errorText)
 {
     const Model& m = *m_model;
     auto it = std::find_if(m_state.welds.begin(), m_state.welds.end(),
                            [&](const Weld& w) { return w.bodyA == a && w.bodyB == b; });
     if (it == m_state.welds.end()) {
         const bool ok = b >= 0 && b < m.nb && a >= -1 && a < m.nb;
-        error = ok ? "cannot release: " + bodyLabel(m, b) + " is not welded to " + bodyLabel(m, a)
-                   : "cannot release: no such body";
+        setError(ok ? trText("Diagnostics", "cannot release: %1 is not welded to %2")
+                          .with(bodyLabelText(m, b))
+                          .with(bodyLabelText(m, a))
+                    : trText("Diagnostics", "cannot release: no such body"),
+                 error, errorText);
         return false;
     }
     m_state.welds.erase(it);

@@ -107,7 +107,13 @@ public:
     /// Integrates to time t (≥ current time). Events on the way are appended to
     /// `events`. Returns false with `error` set when the integration fails (a
     /// non-finite state names the time and the joint) or events chatter.
-    bool advanceTo(double t, std::vector<SimulationEvent>& events, std::string& error);
+    ///
+    /// Errors (here, weld() and release()) are given in English in `error` (what tests
+    /// and logs read) and, when `errorText` is given, as a translatable Text (context
+    /// "Diagnostics") with errorText->english() == error, which the front ends show in
+    /// the operator's language (i18n::text).
+    bool advanceTo(double t, std::vector<SimulationEvent>& events, std::string& error,
+                   Text* errorText = nullptr);
 
     /// Recomputes data() at the current state.
     void evaluate();
@@ -117,10 +123,12 @@ public:
     /// plastic impact. Appends a Weld event. Returns false with `error` set, and
     /// changes nothing, when a = b, a body is out of range, or either body (other
     /// than the ground) is already in a weld.
-    bool weld(int a, int b, std::vector<SimulationEvent>& events, std::string& error);
+    bool weld(int a, int b, std::vector<SimulationEvent>& events, std::string& error,
+              Text* errorText = nullptr);
     /// Releases the weld of body b to body a. Returns false with `error` set, and
     /// changes nothing, when there is no such weld. Appends a Release event.
-    bool release(int a, int b, std::vector<SimulationEvent>& events, std::string& error);
+    bool release(int a, int b, std::vector<SimulationEvent>& events, std::string& error,
+                 Text* errorText = nullptr);
     /// True after a LoopLocked event: advanceTo() fails until the simulation is rebuilt.
     bool locked() const { return m_locked; }
 

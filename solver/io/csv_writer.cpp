@@ -36,13 +36,13 @@ CsvWriter::CsvWriter(std::string path) : m_path(std::move(path))
 {
     namespace fs = std::filesystem;
     if (m_path.empty()) {
-        fail("no output file given");
+        fail(trText("Diagnostics", "no output file given"));
         return;
     }
     std::error_code ec;
     const fs::path target(m_path);
     if (fs::is_directory(target, ec)) {
-        fail("cannot write " + m_path + ": it is a folder");
+        fail(trText("Diagnostics", "cannot write %1: it is a folder").with(m_path));
         return;
     }
     // a fresh temporary file in the target's folder (a rename within one file system
@@ -66,7 +66,7 @@ CsvWriter::CsvWriter(std::string path) : m_path(std::move(path))
         err = errno;
         if (err != EEXIST) break;
     }
-    fail("cannot create " + m_path + ": " + errnoText(err));
+    fail(trText("Diagnostics", "cannot create %1: %2").with(m_path).with(errnoText(err)));
 }
 
 CsvWriter::~CsvWriter()
@@ -74,9 +74,12 @@ CsvWriter::~CsvWriter()
     if (!m_committed) abandon();
 }
 
-void CsvWriter::fail(std::string message)
+void CsvWriter::fail(Text message)
 {
-    if (m_error.empty()) m_error = std::move(message);
+    if (m_error.empty()) {
+        m_error = message.english();
+        m_errorText = std::move(message);
+    }
     abandon();
 }
 
@@ -99,8 +102,8 @@ void CsvWriter::flushLine()
     m_line += '\n';
     if (m_file && std::fwrite(m_line.data(), 1, m_line.size(), m_file) != m_line.size()) {
         const int err = errno;
-        fail("cannot write " + (toStdout() ? std::string("to standard output") : m_path) + ": " +
-             errnoText(err));
+        fail(toStdout() ? trText("Diagnostics", "cannot write to standard output: %1").with(errnoText(err))
+                        : trText("Diagnostics", "cannot write %1: %2").with(m_path).with(errnoText(err)));
     }
     m_line.clear();
 }
@@ -108,7 +111,7 @@ void CsvWriter::flushLine()
 void CsvWriter::writeHeader(std::span<const std::string> names)
 {
     if (!m_file || m_inRow != 0) {
-        if (m_inRow != 0) fail("the header was written in the middle of a row");
+        if (m_inRow != 0) fail(trText("Diagnostics", "the header was written in the middle of a row"));
         return;
     }
     m_line.clear();
@@ -141,8 +144,9 @@ void CsvWriter::endRow()
     if (!m_file) return;
     if (m_columns == 0) m_columns = m_inRow;
     if (m_inRow != m_columns) {
-        fail("a row has " + std::to_string(m_inRow) + " values; the header has " +
-             std::to_string(m_columns) + " columns");
+        fail(trText("Diagnostics", "a row has %1 values; the header has %2 columns")
+                 .with(std::to_string(m_inRow))
+                 .with(std::to_string(m_columns)));
         return;
     }
     m_inRow = 0;
@@ -161,16 +165,16 @@ bool CsvWriter::commit()
 {
     if (m_committed) return ok();
     if (!m_file) {
-        if (ok()) fail("the output was already closed");
+        if (ok()) fail(trText("Diagnostics", "the output was already closed"));
         return false;
     }
     if (m_inRow != 0) {
-        fail("the last row is not finished");
+        fail(trText("Diagnostics", "the last row is not finished"));
         return false;
     }
     if (toStdout()) {
         if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
-            fail("cannot write to standard output: " + errnoText(errno));
+            fail(trText("Diagnostics", "cannot write to standard output: %1").with(errnoText(errno)));
             return false;
         }
         m_file = nullptr;
@@ -183,13 +187,13 @@ bool CsvWriter::commit()
     m_file = nullptr;
     const bool closed = std::fclose(f) == 0;
     if (!written || !closed) {
-        fail("cannot write " + m_path + ": " + errnoText(written ? errno : err));
+        fail(trText("Diagnostics", "cannot write %1: %2").with(m_path).with(errnoText(written ? errno : err)));
         return false;
     }
     std::error_code ec;
     std::filesystem::rename(m_tmpPath, m_path, ec);
     if (ec) {
-        fail("cannot write " + m_path + ": " + ec.message());
+        fail(trText("Diagnostics", "cannot write %1: %2").with(m_path).with(ec.message()));
         return false;
     }
     m_tmpPath.clear();

@@ -16,8 +16,11 @@
 // To standard output, rows go out as they are written and commit() flushes.
 //
 // Errors (cannot create, write or rename) put the writer in a failed state: later
-// writes do nothing, commit() returns false, errorString() says why. No exceptions.
+// writes do nothing, commit() returns false, errorString() says why (errorText(), the
+// same translatable). No exceptions.
 // Writing a row does not allocate once the first row of the widest length is written.
+
+#include "solver/core/diagnostic.h"
 
 #include <cstdio>
 #include <span>
@@ -43,6 +46,8 @@ public:
     /// Why the writer failed, e.g. "cannot create out.csv: No such file or directory";
     /// empty while ok().
     const std::string& errorString() const { return m_error; }
+    /// The same, translatable (context "Diagnostics"): errorText().english() == errorString().
+    const Text& errorText() const { return m_errorText; }
     /// True when writing to standard output.
     bool toStdout() const { return m_path.empty(); }
     /// The target path (empty for standard output).
@@ -70,7 +75,7 @@ public:
     void abandon();
 
 private:
-    void fail(std::string message);
+    void fail(Text message);
     void appendNumber(double value);
     void flushLine();
 
@@ -79,6 +84,7 @@ private:
     std::FILE* m_file = nullptr;
     std::string m_line;  // the line being built (capacity reused)
     std::string m_error;
+    Text m_errorText;
     long long m_rows = 0;
     std::size_t m_columns = 0;      // from the header; 0 = no header yet
     std::size_t m_inRow = 0;        // values added to the current row

@@ -137,39 +137,44 @@ bool isBlankLine(std::string_view line)
 }
 
 /// Reads a field as a number; reports why not (with `label` naming the column).
-bool readValue(const Field& f, const std::string& label, SourcePos pos, Diagnostics& diags,
-               double& v)
+bool readValue(const Field& f, const Text& label, SourcePos pos, Diagnostics& diags, double& v)
 {
     if (f.unterminated) {
-        diags.error("unterminated-quote", pos, label + ": the value has no closing quote",
-                    "close the quote, or write the number without quotes");
+        diags.error("unterminated-quote", pos,
+                    trText("Diagnostics", "%1: the value has no closing quote").with(label),
+                    trText("Diagnostics", "close the quote, or write the number without quotes"));
         return false;
     }
     switch (readNumber(f.text, v)) {
     case NumberStatus::Ok:
         return true;
     case NumberStatus::Empty:
-        diags.error("empty-value", pos, label + ": no value",
-                    "write a number (0 for a closed valve)");
+        diags.error("empty-value", pos, trText("Diagnostics", "%1: no value").with(label),
+                    trText("Diagnostics", "write a number (0 for a closed valve)"));
         return false;
     case NumberStatus::DecimalComma: {
         std::string dotted = f.text;
         dotted[dotted.find(',')] = '.';
-        diags.error("decimal-comma", pos, label + ": '" + f.text + "' is not a number",
-                    "use '.' as the decimal separator: " + dotted);
+        diags.error("decimal-comma", pos,
+                    trText("Diagnostics", "%1: '%2' is not a number").with(label).with(f.text),
+                    trText("Diagnostics", "use '.' as the decimal separator: %1").with(dotted));
         return false;
     }
     case NumberStatus::NotFinite:
-        diags.error("not-finite", pos, label + ": '" + f.text + "' is not a finite number",
-                    "write a finite value; NaN and infinity are not allowed");
+        diags.error("not-finite", pos,
+                    trText("Diagnostics", "%1: '%2' is not a finite number").with(label).with(f.text),
+                    trText("Diagnostics", "write a finite value; NaN and infinity are not allowed"));
         return false;
     case NumberStatus::OutOfRange:
-        diags.error("out-of-range", pos, label + ": '" + f.text + "' is too large",
-                    "write a value that fits a double (below 1.8e308)");
+        diags.error("out-of-range", pos,
+                    trText("Diagnostics", "%1: '%2' is too large").with(label).with(f.text),
+                    trText("Diagnostics", "write a value that fits a double (below 1.8e308)"));
         return false;
     case NumberStatus::NotANumber:
-        diags.error("not-a-number", pos, label + ": '" + f.text + "' is not a number",
-                    "write a number in the C locale: '.' as the decimal point, e.g. -0.25 or 1e-3");
+        diags.error("not-a-number", pos,
+                    trText("Diagnostics", "%1: '%2' is not a number").with(label).with(f.text),
+                    trText("Diagnostics", "write a number in the C locale: '.' as the decimal point, "
+                                          "e.g. -0.25 or 1e-3"));
         return false;
     }
     return false;
@@ -234,9 +239,9 @@ std::optional<InputTable> InputTable::parse(std::string_view text, Diagnostics& 
         if (!isBlankLine(line)) { haveHeader = true; break; }
     }
     if (!haveHeader) {
-        diags.error(
-            "empty-file", {1, 1}, "the input file is empty",
-            "write a header naming the columns, then one row per time, e.g. t,u2 then 0,0.5");
+        diags.error("empty-file", {1, 1}, trText("Diagnostics", "the input file is empty"),
+                    trText("Diagnostics", "write a header naming the columns, then one row per time, "
+                                          "e.g. t,u2 then 0,0.5"));
         return std::nullopt;
     }
     const SourcePos headerPos{lineNo, 1};
@@ -257,23 +262,24 @@ std::optional<InputTable> InputTable::parse(std::string_view text, Diagnostics& 
         const Field& f = fields[k];
         const SourcePos pos{lineNo, f.column};
         if (f.unterminated) {
-            diags.error("unterminated-quote", pos, "the column name has no closing quote",
-                        "close the quote, or write the name without quotes");
+            diags.error("unterminated-quote", pos, trText("Diagnostics", "the column name has no closing quote"),
+                        trText("Diagnostics", "close the quote, or write the name without quotes"));
             continue;
         }
         if (f.text.empty()) {
             diags.error("empty-column-name", pos,
-                        "column " + std::to_string(k + 1) + " has no name",
-                        "name every column: t for the time, u<joint id> for a command (e.g. u2)");
+                        trText("Diagnostics", "column %1 has no name").with(std::to_string(k + 1)),
+                        trText("Diagnostics", "name every column: t for the time, u<joint id> for a "
+                                              "command (e.g. u2)"));
             continue;
         }
         const ColumnName c = classify(f.text);
         if (c.kind == ColumnName::Kind::Time) {
             if (timeField >= 0) {
                 diags.error("duplicate-column", pos,
-                            "column 't' appears twice (first at column " +
-                                std::to_string(timePos.column) + ")",
-                            "remove one of them");
+                            trText("Diagnostics", "column 't' appears twice (first at column %1)")
+                                .with(std::to_string(timePos.column)),
+                            trText("Diagnostics", "remove one of them"));
                 continue;
             }
             timeField = static_cast<int>(k);
@@ -284,10 +290,12 @@ std::optional<InputTable> InputTable::parse(std::string_view text, Diagnostics& 
             if (dup != table.m_jointIds.end()) {
                 const auto d = static_cast<std::size_t>(dup - table.m_jointIds.begin());
                 diags.error("duplicate-column", pos,
-                            "column '" + f.text + "' is joint " + std::to_string(c.joint) +
-                                "'s command again ('" + table.m_names[d] + "' at column " +
-                                std::to_string(table.m_namePos[d].column) + ")",
-                            "remove one of them");
+                            trText("Diagnostics", "column '%1' is joint %2's command again ('%3' at column %4)")
+                                .with(f.text)
+                                .with(std::to_string(c.joint))
+                                .with(table.m_names[d])
+                                .with(std::to_string(table.m_namePos[d].column)),
+                            trText("Diagnostics", "remove one of them"));
                 continue;
             }
             role[k] = static_cast<int>(table.m_jointIds.size());
@@ -295,14 +303,15 @@ std::optional<InputTable> InputTable::parse(std::string_view text, Diagnostics& 
             table.m_names.push_back(f.text);
             table.m_namePos.push_back(pos);
         } else {
-            diags.error("bad-column", pos, "'" + f.text + "' is not an input column name",
-                        "name the time column t and each command column u<joint id>, e.g. u2");
+            diags.error("bad-column", pos, trText("Diagnostics", "'%1' is not an input column name").with(f.text),
+                        trText("Diagnostics", "name the time column t and each command column u<joint id>, "
+                                              "e.g. u2"));
         }
     }
     if (timeField < 0) {
-        diags.error(
-            "missing-time-column", headerPos, "the header has no 't' column",
-            "the first line names the columns: t, then u<joint id> for each command, e.g. t,u2");
+        diags.error("missing-time-column", headerPos, trText("Diagnostics", "the header has no 't' column"),
+                    trText("Diagnostics", "the first line names the columns: t, then u<joint id> for each "
+                                          "command, e.g. t,u2"));
     }
     table.m_headerPos = headerPos;
 
@@ -319,19 +328,22 @@ std::optional<InputTable> InputTable::parse(std::string_view text, Diagnostics& 
         splitFields(line, sep, fields);
         if (fields.size() < nFields) {
             // at the end of the line, where the missing values would go
+            Text message = fields.size() == 1
+                               ? trText("Diagnostics", "this row has %1 value; the header names %2 columns")
+                               : trText("Diagnostics", "this row has %1 values; the header names %2 columns");
             diags.error("too-few-fields", {lineNo, columnAfter(line)},
-                        "this row has " + std::to_string(fields.size()) + " value" +
-                            (fields.size() == 1 ? "" : "s") + "; the header names " +
-                            std::to_string(nFields) + " columns",
-                        "give a value for every column (0 for a closed valve)");
+                        message.arg(std::to_string(fields.size())).arg(std::to_string(nFields)),
+                        trText("Diagnostics", "give a value for every column (0 for a closed valve)"));
         } else if (fields.size() > nFields) {
+            Text message = nFields == 1
+                               ? trText("Diagnostics", "this row has %1 values; the header names %2 column")
+                               : trText("Diagnostics", "this row has %1 values; the header names %2 columns");
             diags.error("too-many-fields", {lineNo, fields[nFields].column},
-                        "this row has " + std::to_string(fields.size()) +
-                            " values; the header names " + std::to_string(nFields) + " column" +
-                            (nFields == 1 ? "" : "s"),
-                        sep == ',' ? "one value per column; if ',' is a decimal separator here, "
-                                     "write '.' instead (0.5, not 0,5)"
-                                   : "one value per column, separated by " + sepName);
+                        message.arg(std::to_string(fields.size())).arg(std::to_string(nFields)),
+                        sep == ','
+                            ? trText("Diagnostics", "one value per column; if ',' is a decimal separator here, "
+                                                    "write '.' instead (0.5, not 0,5)")
+                            : trText("Diagnostics", "one value per column, separated by %1").with(sepName));
         }
         bool timeOk = false;
         double time = 0;
@@ -339,9 +351,10 @@ std::optional<InputTable> InputTable::parse(std::string_view text, Diagnostics& 
         for (std::size_t k = 0; k < n; ++k) {
             const Field& f = fields[k];
             const SourcePos pos{lineNo, f.column};
-            const std::string label = role[k] == -1 ? std::string("time")
-                                      : role[k] >= 0 ? "column '" + table.m_names[role[k]] + "'"
-                                                     : "column " + std::to_string(k + 1);
+            const Text label =
+                role[k] == -1  ? trText("Diagnostics", "time")
+                : role[k] >= 0 ? trText("Diagnostics", "column '%1'").with(table.m_names[role[k]])
+                               : trText("Diagnostics", "column %1").with(std::to_string(k + 1));
             double v = 0;
             if (!readValue(f, label, pos, diags, v)) continue;
             if (role[k] == -1) {
@@ -351,16 +364,22 @@ std::optional<InputTable> InputTable::parse(std::string_view text, Diagnostics& 
                     const std::string line0 = std::to_string(previousLine);
                     diags.error("time-not-increasing", pos,
                                 v == previousTime
-                                    ? "time " + f.text + " repeats the time of line " + line0
-                                    : "time " + f.text + " comes after time " + fmt(previousTime) +
-                                          " (line " + line0 + "); times must increase",
-                                "sort the rows by time, each time once");
+                                    ? trText("Diagnostics", "time %1 repeats the time of line %2")
+                                          .with(f.text)
+                                          .with(line0)
+                                    : trText("Diagnostics", "time %1 comes after time %2 (line %3); "
+                                                            "times must increase")
+                                          .with(f.text)
+                                          .with(fmt(previousTime))
+                                          .with(line0),
+                                trText("Diagnostics", "sort the rows by time, each time once"));
                 }
             } else if (role[k] >= 0) {
                 if (v < -1.0 || v > 1.0) {
-                    diags.error(
-                        "command-out-of-range", pos, label + ": " + f.text + " is outside [-1, 1]",
-                        "a command is a valve spool position (or joystick axis) from -1 to 1");
+                    diags.error("command-out-of-range", pos,
+                                trText("Diagnostics", "%1: %2 is outside [-1, 1]").with(label).with(f.text),
+                                trText("Diagnostics", "a command is a valve spool position (or joystick "
+                                                      "axis) from -1 to 1"));
                 }
                 rowValues[static_cast<std::size_t>(role[k])] = v;
             }
@@ -379,8 +398,8 @@ std::optional<InputTable> InputTable::parse(std::string_view text, Diagnostics& 
         std::fill(rowValues.begin(), rowValues.end(), 0.0);
     }
     if (rows == 0) {
-        diags.error("no-rows", headerPos, "the input file has a header but no rows",
-                    "add one row per time under the header, e.g. 0,0.5");
+        diags.error("no-rows", headerPos, trText("Diagnostics", "the input file has a header but no rows"),
+                    trText("Diagnostics", "add one row per time under the header, e.g. 0,0.5"));
     }
     if (diags.errorCount() > errorsBefore) return std::nullopt;
     return table;
@@ -391,8 +410,8 @@ std::optional<InputTable> InputTable::readFile(const std::string& path, Diagnost
     namespace fs = std::filesystem;
     if (diags.file().empty()) diags.setFile(path);
     std::optional<std::string> text =
-        readTextFile(path, kMaxInputFileBytes, "an input", ".csv",
-                     "split the session, or record the commands less often", diags);
+        readTextFile(path, kMaxInputFileBytes, trText("Diagnostics", "an input file"), ".csv",
+                     trText("Diagnostics", "split the session, or record the commands less often"), diags);
     if (!text) return std::nullopt;
     return parse(*text, diags);
 }
@@ -452,16 +471,19 @@ bool checkInputColumns(const InputTable& table, std::span<const int> drivenJoint
         if (!contains(jointIds, id)) {
             ok = false;
             diags.error("unknown-joint", table.columnPos(c),
-                        "column '" + name + "': the model has no joint " + std::to_string(id),
-                        driven.empty() ? "the model has no drives; remove the column"
-                                       : "the joints with a drive are " + drivenList);
+                        trText("Diagnostics", "column '%1': the model has no joint %2")
+                            .with(name)
+                            .with(std::to_string(id)),
+                        driven.empty()
+                            ? trText("Diagnostics", "the model has no drives; remove the column")
+                            : trText("Diagnostics", "the joints with a drive are %1").with(drivenList));
         } else if (!contains(drivenJoints, id)) {
             ok = false;
-            diags.error(
-                "no-drive", table.columnPos(c),
-                "column '" + name + "': joint " + std::to_string(id) + " has no drive",
-                "a command moves a drive: remove the column, or give the joint a drive (D " +
-                    std::to_string(id) + " …)");
+            diags.error("no-drive", table.columnPos(c),
+                        trText("Diagnostics", "column '%1': joint %2 has no drive").with(name).with(std::to_string(id)),
+                        trText("Diagnostics", "a command moves a drive: remove the column, or give the "
+                                              "joint a drive (D %1 …)")
+                            .with(std::to_string(id)));
         }
     }
     // the format has one column per drive (issue 3): a missing one is an error, so
@@ -476,9 +498,10 @@ bool checkInputColumns(const InputTable& table, std::span<const int> drivenJoint
     if (nMissing > 0) {
         ok = false;
         diags.error("missing-column", table.headerPos(),
-                    nMissing == 1 ? "no column for joint " + missing + "'s drive"
-                                  : "no columns for the drives of joints " + missing,
-                    "the table has one column u<joint id> per drive; write 0 in a column to keep that valve closed");
+                    nMissing == 1 ? trText("Diagnostics", "no column for joint %1's drive").with(missing)
+                                  : trText("Diagnostics", "no columns for the drives of joints %1").with(missing),
+                    trText("Diagnostics", "the table has one column u<joint id> per drive; write 0 in a "
+                                          "column to keep that valve closed"));
     }
     return ok;
 }

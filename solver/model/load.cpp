@@ -53,8 +53,9 @@ bool decode(std::string_view raw, std::string& out, Diagnostics& diags)
     for (std::size_t i = 0; i < raw.size(); ++i) {
         const auto c = static_cast<unsigned char>(raw[i]);
         if (c == 0) {
-            diags.error("binary-file", positionOf(raw, i), "this is not a text file (it contains a NUL byte here)",
-                        "a model is a text file (.pad); open the model, not a mesh, image or archive");
+            diags.error("binary-file", positionOf(raw, i),
+                        trText("Diagnostics", "this is not a text file (it contains a NUL byte here)"),
+                        trText("Diagnostics", "a model is a text file (.pad); open the model, not a mesh, image or archive"));
             return false;
         }
         if (i < sample && c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f' && c != '\v') ++controls;
@@ -62,9 +63,11 @@ bool decode(std::string_view raw, std::string& out, Diagnostics& diags)
     // (a few stray control characters in a short text are the lexer's to report, with
     // their positions; only many of them make a file binary)
     if (sample > 0 && controls >= 4 && controls * 20 > sample) {
-        diags.error("binary-file", {1, 1}, "this is not a text file (" + std::to_string(controls) +
-                        " control characters in its first " + std::to_string(sample) + " bytes)",
-                    "a model is a text file (.pad); open the model, not a mesh, image or archive");
+        diags.error("binary-file", {1, 1},
+                    trText("Diagnostics", "this is not a text file (%1 control characters in its first %2 bytes)")
+                        .with(std::to_string(controls))
+                        .with(std::to_string(sample)),
+                    trText("Diagnostics", "a model is a text file (.pad); open the model, not a mesh, image or archive"));
         return false;
     }
     std::size_t firstBad = std::string_view::npos;
@@ -84,11 +87,12 @@ bool decode(std::string_view raw, std::string& out, Diagnostics& diags)
         if (raw[i] == '\n') { ++bad.line; bad.column = 1; }
         else ++bad.column;
     }
+    char byte[3];
+    std::snprintf(byte, sizeof byte, "%02X", static_cast<unsigned char>(raw[firstBad]));
     diags.warning("not-utf8", bad,
-                  "the file is not UTF-8 (byte 0x" +
-                      [&] { char b[3]; std::snprintf(b, 3, "%02X", static_cast<unsigned char>(raw[firstBad])); return std::string(b); }() +
-                      " here); it was read as Latin-1 (ISO 8859-1)",
-                  "save the file as UTF-8 so every editor shows its accents the same way");
+                  trText("Diagnostics", "the file is not UTF-8 (byte 0x%1 here); it was read as Latin-1 (ISO 8859-1)")
+                      .with(byte),
+                  trText("Diagnostics", "save the file as UTF-8 so every editor shows its accents the same way"));
     out.clear();
     out.reserve(raw.size() + raw.size() / 8);
     for (char ch : raw) {
@@ -146,8 +150,9 @@ LoadedModel loadModelFile(const std::string& path)
 {
     Diagnostics diags(path);
     std::optional<std::string> text =
-        readTextFile(path, kMaxModelFileBytes, "a model", ".pad",
-                     "a model is a short text; put meshes in their own files (G … MESH \"file\")", diags);
+        readTextFile(path, kMaxModelFileBytes, trText("Diagnostics", "a model file"), ".pad",
+                     trText("Diagnostics", "a model is a short text; put meshes in their own files (G … MESH \"file\")"),
+                     diags);
     if (!text) {
         LoadedModel m;
         m.spec.file = path;

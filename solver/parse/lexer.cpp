@@ -129,9 +129,9 @@ std::vector<Token> tokenizeLine(std::string_view line, int lineNo, Diagnostics& 
     };
     auto controlError = [&](std::size_t at) {
         diags.error("control-character", posAt(at),
-                    "unexpected control character (code " +
-                        std::to_string(static_cast<unsigned char>(line[at])) + ")",
-                    "delete it; a model file is plain text");
+                    trText("Diagnostics", "unexpected control character (code %1)")
+                        .with(std::to_string(static_cast<unsigned char>(line[at]))),
+                    trText("Diagnostics", "delete it; a model file is plain text"));
     };
 
     while (i < n) {
@@ -166,8 +166,8 @@ std::vector<Token> tokenizeLine(std::string_view line, int lineNo, Diagnostics& 
                 ++i;
             }
             if (!closed) {
-                diags.error("unterminated-string", t.pos, "the string has no closing quote",
-                            "add '\"' at the end of the text");
+                diags.error("unterminated-string", t.pos, trText("Diagnostics", "the string has no closing quote"),
+                            trText("Diagnostics", "add '\"' at the end of the text"));
             }
             tokens.push_back(std::move(t));
             continue;

@@ -59,6 +59,17 @@ std::string closest(std::string_view word, const Range& candidates)
     return best;
 }
 
+/// "write <syntax>": the hint of a statement written wrong.
+Text write(std::string syntax)
+{
+    return trText("Diagnostics", "write %1").with(std::move(syntax));
+}
+
+Text didYouMean(std::string guess)
+{
+    return trText("Diagnostics", "did you mean '%1'?").with(std::move(guess));
+}
+
 /// How an option's arguments look.
 enum class Arg {
     Int,     ///< an id
@@ -72,9 +83,14 @@ enum class Arg {
 };
 
 struct OptionDef {
+    /// An option whose argument is shown as written (a syntax such as "x y z").
+    OptionDef(const char* k, Arg a, const char* syntax) : key(k), arg(a), what(plainText(syntax)) {}
+    /// An option whose argument is named by a translatable phrase.
+    OptionDef(const char* k, Arg a, Text w) : key(k), arg(a), what(std::move(w)) {}
+
     const char* key;
     Arg arg;
-    const char* what;  ///< what the argument is, for messages ("the lower limit")
+    Text what;  ///< what the argument is, for messages and syntax hints ("the lower limit")
 };
 
 struct OptionValue {
@@ -107,9 +123,10 @@ public:
         const Token& first = m_toks[0];
         if (!first.isWord()) {
             m_d.error("expected-keyword", first.pos,
-                      first.isString() ? "a statement cannot start with a string"
-                                       : "a statement starts with a keyword, not with the number " + first.text,
-                      "start the line with GRAVITY, B, C, D, F or G, or join it to the line above");
+                      first.isString()
+                          ? trText("Diagnostics", "a statement cannot start with a string")
+                          : trText("Diagnostics", "a statement starts with a keyword, not with the number %1").with(first.text),
+                      trText("Diagnostics", "start the line with GRAVITY, B, C, D, F or G, or join it to the line above"));
             closeJoint();
             return;
         }
@@ -127,11 +144,10 @@ public:
         else if (kw == "G") parseGraphic();
         else {
             std::string guess = closest(kw, kStatementKeywords);
-            std::string hint = guess.empty()
-                                   ? "statements are GRAVITY, RESTITUTION, B, C (with B1, B2, CL1), D, F and G; "
-                                     "comments start with // or #"
-                                   : "did you mean '" + guess + "'?";
-            m_d.error("unknown-keyword", first.pos, "unknown keyword '" + first.text + "'", hint);
+            m_d.error("unknown-keyword", first.pos, trText("Diagnostics", "unknown keyword '%1'").with(first.text),
+                      guess.empty() ? trText("Diagnostics", "statements are GRAVITY, RESTITUTION, B, C (with B1, B2, "
+                                                            "CL1), D, F and G; comments start with // or #")
+                                    : didYouMean(guess));
         }
     }
 
@@ -196,31 +212,31 @@ private:
     bool badNumberLike(const Token& t) const { return numberLike(t) || strayWord(t); }
 
     /// Reports why the number-like word `t` is not a number.
-    void badNumber(const Token& t, const std::string& context, bool& ok)
+    /// `context` says where (trText("Diagnostics", "body %1")).
+    void badNumber(const Token& t, const Text& context, bool& ok)
     {
         ok = false;
         std::string why = numberProblem(t.text);
         if (why == "decimal-comma") {
             std::string dotted = t.text;
             dotted[dotted.find(',')] = '.';
-            m_d.error("decimal-comma", t.pos, context + ": '" + t.text + "' is not a number",
-                      "use '.' as the decimal separator: " + dotted);
+            m_d.error("decimal-comma", t.pos, trText("Diagnostics", "%1: '%2' is not a number").with(context).with(t.text),
+                      trText("Diagnostics", "use '.' as the decimal separator: %1").with(dotted));
         } else if (why == "not-finite") {
-            m_d.error("not-finite", t.pos, context + ": '" + t.text + "' is not a finite number",
-                      "write a finite value; NaN and infinity are not allowed");
+            m_d.error("not-finite", t.pos, trText("Diagnostics", "%1: '%2' is not a finite number").with(context).with(t.text),
+                      trText("Diagnostics", "write a finite value; NaN and infinity are not allowed"));
         } else if (why == "out-of-range") {
-            m_d.error("number-out-of-range", t.pos, context + ": " + t.text + " is out of range",
-                      "a number must lie within ±1.7e308");
+            m_d.error("number-out-of-range", t.pos, trText("Diagnostics", "%1: %2 is out of range").with(context).with(t.text),
+                      trText("Diagnostics", "a number must lie within ±1.7e308"));
         } else {
-            m_d.error("not-a-number", t.pos, context + ": '" + t.text + "' is not a number",
-                      "numbers look like 12, -0.5, .2 or 1e-3");
+            m_d.error("not-a-number", t.pos, trText("Diagnostics", "%1: '%2' is not a number").with(context).with(t.text),
+                      trText("Diagnostics", "numbers look like 12, -0.5, .2 or 1e-3"));
         }
     }
 
     /// Reads one number. On a missing number reports "<context>: <what> is missing"
-    /// and consumes nothing.
-    std::optional<double> number(const std::string& context, const std::string& what, bool& ok,
-                                 const std::string& syntax)
+    /// with the hint `fix` (write(syntax)), and consumes nothing.
+    std::optional<double> number(const Text& context, const Text& what, bool& ok, const Text& fix)
     {
         if (!atEnd() && peek().isNumber()) return m_toks[m_i++].number;
         if (!atEnd() && badNumberLike(peek())) {
@@ -229,18 +245,19 @@ private:
         }
         ok = false;
         if (atEnd()) {
-            m_d.error("missing-number", here(), context + ": " + what + " is missing", "write " + syntax);
+            m_d.error("missing-number", here(), trText("Diagnostics", "%1: %2 is missing").with(context).with(what), fix);
         } else {
             m_d.error("missing-number", here(),
-                      context + ": expected " + what + ", found '" + peek().text + "'", "write " + syntax);
+                      trText("Diagnostics", "%1: expected %2, found '%3'").with(context).with(what).with(peek().text),
+                      fix);
         }
         return std::nullopt;
     }
 
     /// Reads `n` numbers into `out`; reports one diagnostic for the first problem.
     template <int N>
-    bool numbers(Eigen::Matrix<double, N, 1>& out, const std::string& context, const std::string& key,
-                 const std::string& syntax, bool& ok)
+    bool numbers(Eigen::Matrix<double, N, 1>& out, const Text& context, const std::string& key, const Text& fix,
+                 bool& ok)
     {
         for (int k = 0; k < N; ++k) {
             if (!atEnd() && peek().isNumber()) {
@@ -252,26 +269,30 @@ private:
                 continue;
             }
             ok = false;
-            std::string found = atEnd() ? "the line ends" : "found '" + peek().text + "'";
-            m_d.error("missing-number", here(),
-                      context + ": " + key + " needs " + std::to_string(N) + " numbers, " +
-                          (k == 0 ? found : "only " + std::to_string(k) + " given"),
-                      "write " + syntax);
+            Text message = k > 0     ? trText("Diagnostics", "%1: %2 needs %3 numbers, only %4 given")
+                           : atEnd() ? trText("Diagnostics", "%1: %2 needs %3 numbers, the line ends")
+                                     : trText("Diagnostics", "%1: %2 needs %3 numbers, found '%4'");
+            message.arg(context).arg(key).arg(N);
+            if (k > 0) message.arg(k);
+            else if (!atEnd()) message.arg(peek().text);
+            m_d.error("missing-number", here(), std::move(message), fix);
             return false;
         }
         return true;
     }
 
     /// Reads an id (0 … INT_MAX).
-    std::optional<int> readId(const std::string& context, const std::string& what, bool& ok,
-                              const std::string& syntax)
+    std::optional<int> readId(const Text& context, const Text& what, bool& ok, const Text& fix)
     {
         if (atEnd() || !numberLike(peek())) {
             ok = false;
             m_d.error("missing-id", here(),
-                      context + ": " + what + " is missing" +
-                          (atEnd() ? std::string() : ", found '" + peek().text + "'"),
-                      "write " + syntax);
+                      atEnd() ? trText("Diagnostics", "%1: %2 is missing").with(context).with(what)
+                              : trText("Diagnostics", "%1: %2 is missing, found '%3'")
+                                    .with(context)
+                                    .with(what)
+                                    .with(peek().text),
+                      fix);
             if (!atEnd() && strayWord(peek())) ++m_i;  // it stood in the id's place
             return std::nullopt;
         }
@@ -282,11 +303,13 @@ private:
         if (!digitsOnly) {
             ok = false;
             if (t.isNumber() && t.number < 0) {
-                m_d.error("bad-id", t.pos, context + ": " + what + " cannot be negative (" + t.text + ")",
-                          "ids are whole numbers 0, 1, 2, …");
+                m_d.error("bad-id", t.pos,
+                          trText("Diagnostics", "%1: %2 cannot be negative (%3)").with(context).with(what).with(t.text),
+                          trText("Diagnostics", "ids are whole numbers 0, 1, 2, …"));
             } else if (t.isNumber()) {
-                m_d.error("bad-id", t.pos, context + ": " + what + " must be a whole number, not " + t.text,
-                          "ids are whole numbers 0, 1, 2, …");
+                m_d.error("bad-id", t.pos,
+                          trText("Diagnostics", "%1: %2 must be a whole number, not %3").with(context).with(what).with(t.text),
+                          trText("Diagnostics", "ids are whole numbers 0, 1, 2, …"));
             } else {
                 badNumber(t, context, ok);
             }
@@ -296,22 +319,22 @@ private:
         auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
         if (ec != std::errc() || v > INT_MAX) {
             ok = false;
-            m_d.error("bad-id", t.pos, context + ": " + what + " " + t.text + " is too large",
-                      "ids go from 0 to " + std::to_string(INT_MAX));
+            m_d.error("bad-id", t.pos, trText("Diagnostics", "%1: %2 %3 is too large").with(context).with(what).with(t.text),
+                      trText("Diagnostics", "ids go from 0 to %1").with(std::to_string(INT_MAX)));
             return std::nullopt;
         }
         return static_cast<int>(v);
     }
 
     /// Parses a magnitude: number | SIN amp freq phase [offset] | TABLE T t v … | TABLE Q j q v …
-    bool magnitude(MagnitudeSpec& mag, const std::string& context, bool& ok)
+    bool magnitude(MagnitudeSpec& mag, const Text& context, bool& ok)
     {
-        const std::string syntax = "MAG value, MAG SIN amp freq phase [offset], "
-                                   "MAG TABLE T t1 v1 t2 v2 … or MAG TABLE Q joint q1 v1 …";
+        const Text fix = trText("Diagnostics", "write MAG value, MAG SIN amp freq phase [offset], "
+                                               "MAG TABLE T t1 v1 t2 v2 … or MAG TABLE Q joint q1 v1 …");
         mag.pos = here();
         if (!atEnd() && numberLike(peek())) {
             mag.kind = MagnitudeSpec::Kind::Constant;
-            auto v = number(context, "the magnitude", ok, syntax);
+            auto v = number(context, trText("Diagnostics", "the magnitude"), ok, fix);
             mag.value = v.value_or(0);
             return v.has_value();
         }
@@ -319,12 +342,12 @@ private:
             ++m_i;
             mag.kind = MagnitudeSpec::Kind::Sine;
             Eigen::Vector3d v;
-            if (!numbers<3>(v, context, "SIN", "SIN amplitude frequency[Hz] phase[rad] [offset]", ok)) return false;
+            if (!numbers<3>(v, context, "SIN", write("SIN amplitude frequency[Hz] phase[rad] [offset]"), ok)) return false;
             mag.amplitude = v[0];
             mag.frequency = v[1];
             mag.phase = v[2];
             if (!atEnd() && numberLike(peek())) {
-                auto off = number(context, "the offset", ok, syntax);
+                auto off = number(context, trText("Diagnostics", "the offset"), ok, fix);
                 mag.offset = off.value_or(0);
                 mag.hasOffset = true;
             }
@@ -340,13 +363,16 @@ private:
                 ++m_i;
                 mag.kind = MagnitudeSpec::Kind::TableJoint;
                 m_tableJointPos = here();
-                auto j = readId(context, "the joint of TABLE Q", ok, "TABLE Q joint q1 v1 q2 v2 …");
+                auto j = readId(context, trText("Diagnostics", "the joint of TABLE Q"), ok,
+                                write("TABLE Q joint q1 v1 q2 v2 …"));
                 if (!j) return false;
                 mag.joint = *j;
             } else {
                 ok = false;
-                m_d.error("bad-table", here(), context + ": TABLE must say T (by time) or Q (by a joint's coordinate)",
-                          "write TABLE T t1 v1 t2 v2 … or TABLE Q joint q1 v1 q2 v2 …");
+                m_d.error("bad-table", here(),
+                          trText("Diagnostics", "%1: TABLE must say T (by time) or Q (by a joint's coordinate)")
+                              .with(context),
+                          trText("Diagnostics", "write TABLE T t1 v1 t2 v2 … or TABLE Q joint q1 v1 q2 v2 …"));
                 // skip the table, so that its letter and numbers give no second diagnostic
                 if (!atEnd() && peek().isWord() && !isKey(peek())) ++m_i;
                 while (!atEnd() && numberLike(peek())) ++m_i;
@@ -356,15 +382,18 @@ private:
             std::vector<SourcePos> where;
             while (!atEnd() && numberLike(peek())) {
                 where.push_back(peek().pos);
-                auto v = number(context, "a table value", ok, syntax);
+                auto v = number(context, trText("Diagnostics", "a table value"), ok, fix);
                 vals.push_back(v.value_or(0));
             }
             if (vals.size() < 2 || vals.size() % 2 != 0) {
                 ok = false;
                 m_d.error("bad-table", vals.empty() ? here() : where.back(),
-                          context + ": a TABLE needs pairs of numbers (abscissa value), found " +
-                              std::to_string(vals.size()) + " number" + (vals.size() == 1 ? "" : "s"),
-                          "write TABLE T t1 v1 t2 v2 …");
+                          (vals.size() == 1
+                               ? trText("Diagnostics", "%1: a TABLE needs pairs of numbers (abscissa value), found %2 number")
+                               : trText("Diagnostics", "%1: a TABLE needs pairs of numbers (abscissa value), found %2 numbers"))
+                              .with(context)
+                              .with(std::to_string(vals.size())),
+                          write("TABLE T t1 v1 t2 v2 …"));
                 return false;
             }
             for (std::size_t k = 0; k + 1 < vals.size(); k += 2) mag.table.emplace_back(vals[k], vals[k + 1]);
@@ -372,9 +401,11 @@ private:
                 if (!(mag.table[k].first > mag.table[k - 1].first)) {
                     ok = false;
                     m_d.error("table-not-increasing", where[2 * k],
-                              context + ": table abscissae must increase (" + fmt(mag.table[k].first) +
-                                  " follows " + fmt(mag.table[k - 1].first) + ")",
-                              "sort the pairs by their first number and remove repeats");
+                              trText("Diagnostics", "%1: table abscissae must increase (%2 follows %3)")
+                                  .with(context)
+                                  .with(fmt(mag.table[k].first))
+                                  .with(fmt(mag.table[k - 1].first)),
+                              trText("Diagnostics", "sort the pairs by their first number and remove repeats"));
                     break;
                 }
             }
@@ -383,14 +414,14 @@ private:
         }
         ok = false;
         m_d.error("missing-number", here(),
-                  context + ": MAG needs a value" + (atEnd() ? std::string() : ", found '" + peek().text + "'"),
-                  "write " + syntax);
+                  atEnd() ? trText("Diagnostics", "%1: MAG needs a value").with(context)
+                          : trText("Diagnostics", "%1: MAG needs a value, found '%2'").with(context).with(peek().text),
+                  fix);
         return false;
     }
 
     /// Parses keyword options in any order until the line ends.
-    Options options(const std::vector<OptionDef>& defs, const std::string& context,
-                    const std::string& statementName, bool& ok)
+    Options options(const std::vector<OptionDef>& defs, const Text& context, const Text& statementName, bool& ok)
     {
         Options out;
         setKeys(defs);
@@ -413,15 +444,20 @@ private:
             if (!def) {
                 ok = false;
                 if (numberLike(t)) {
-                    m_d.error("extra-number", t.pos, context + ": unexpected number " + t.text,
-                              names.empty() ? "remove it" : "remove it, or put an option before it (" + listNames() + ")");
+                    m_d.error("extra-number", t.pos, trText("Diagnostics", "%1: unexpected number %2").with(context).with(t.text),
+                              names.empty() ? trText("Diagnostics", "remove it")
+                                            : trText("Diagnostics", "remove it, or put an option before it (%1)")
+                                                  .with(listNames()));
                 } else {
                     std::string guess = t.isWord() ? closest(t.text, names) : std::string();
                     m_d.error("unknown-option", t.pos,
-                              context + ": '" + t.text + "' is not an option of " + statementName,
-                              guess.empty() ? (names.empty() ? std::string("remove it")
-                                                             : "options are " + listNames())
-                                            : "did you mean '" + guess + "'?");
+                              trText("Diagnostics", "%1: '%2' is not an option of %3")
+                                  .with(context)
+                                  .with(t.text)
+                                  .with(statementName),
+                              !guess.empty()  ? didYouMean(guess)
+                              : names.empty() ? trText("Diagnostics", "remove it")
+                                              : trText("Diagnostics", "options are %1").with(listNames()));
                 }
                 ++m_i;
                 // skip to the next word, so one typo gives one diagnostic
@@ -434,16 +470,17 @@ private:
             val.valuePos = here();
             std::string key = def->key;
             bool dup = out.count(key) > 0;
-            const std::string syn = std::string(def->key) + " " + def->what;
+            const Text fix = trText("Diagnostics", "write %1 %2").with(key).with(def->what);
+            const Text what = trText("Diagnostics", "%1 after %2").with(def->what).with(key);
             switch (def->arg) {
             case Arg::Int: {
-                auto id = readId(context, std::string(def->what) + " after " + key, val.ok, syn);
+                auto id = readId(context, what, val.ok, fix);
                 val.id = id.value_or(0);
                 break;
             }
             case Arg::Num:
             case Arg::NumDeg: {
-                auto v = number(context, std::string(def->what) + " after " + key, val.ok, syn);
+                auto v = number(context, what, val.ok, fix);
                 val.num = v.value_or(0);
                 if (def->arg == Arg::NumDeg && !atEnd() && peek().is("DEG")) {
                     val.deg = true;
@@ -451,8 +488,8 @@ private:
                 }
                 break;
             }
-            case Arg::Vec3: numbers<3>(val.v, context, key, syn, val.ok); break;
-            case Arg::Num4: numbers<4>(val.v4, context, key, syn, val.ok); break;
+            case Arg::Vec3: numbers<3>(val.v, context, key, fix, val.ok); break;
+            case Arg::Num4: numbers<4>(val.v4, context, key, fix, val.ok); break;
             case Arg::Mag: magnitude(val.mag, context, val.ok); break;
             case Arg::Flag: break;
             case Arg::Str:
@@ -465,20 +502,22 @@ private:
                     const SourcePos at = peek().pos;
                     std::string words = m_toks[m_i++].text;
                     while (!atEnd() && peek().isWord() && !isKey(peek())) words += " " + m_toks[m_i++].text;
-                    m_d.error("missing-string", at, context + ": " + key + " needs a text in double quotes",
-                              "write " + key + " \"" + words + "\"");
+                    m_d.error("missing-string", at,
+                              trText("Diagnostics", "%1: %2 needs a text in double quotes").with(context).with(key),
+                              write(key + " \"" + words + "\""));
                 } else {
                     val.ok = false;
-                    m_d.error("missing-string", here(), context + ": " + key + " needs a text in double quotes",
-                              "write " + key + " \"text\"");
+                    m_d.error("missing-string", here(),
+                              trText("Diagnostics", "%1: %2 needs a text in double quotes").with(context).with(key),
+                              write(key + " \"text\""));
                 }
                 break;
             }
             if (!val.ok) ok = false;
             if (dup) {
                 ok = false;
-                m_d.error("duplicate-option", val.pos, context + ": " + key + " is given twice",
-                          "keep one " + key);
+                m_d.error("duplicate-option", val.pos, trText("Diagnostics", "%1: %2 is given twice").with(context).with(key),
+                          trText("Diagnostics", "keep one %1").with(key));
                 continue;
             }
             out.emplace(key, std::move(val));
@@ -486,13 +525,13 @@ private:
         return out;
     }
 
-    void requireOptions(const Options& opts, const std::vector<const char*>& keys, const std::string& context,
-                        const std::string& syntax, SourcePos pos, bool& ok)
+    void requireOptions(const Options& opts, const std::vector<const char*>& keys, const Text& context,
+                        const Text& fix, SourcePos pos, bool& ok)
     {
         for (const char* k : keys) {
             if (!opts.count(k)) {
                 ok = false;
-                m_d.error("missing-option", pos, context + ": " + k + " is missing", "write " + syntax);
+                m_d.error("missing-option", pos, trText("Diagnostics", "%1: %2 is missing").with(context).with(k), fix);
             }
         }
     }
@@ -508,12 +547,15 @@ private:
         SourcePos pos = m_toks[0].pos;
         bool ok = true;
         Eigen::Vector3d g;
-        bool read = numbers<3>(g, "GRAVITY", "GRAVITY", "GRAVITY gx gy gz (m/s², z is up)", ok);
-        options({}, "GRAVITY", "GRAVITY", ok);
+        const Text context = plainText("GRAVITY");
+        bool read = numbers<3>(g, context, "GRAVITY", trText("Diagnostics", "write GRAVITY gx gy gz (m/s², z is up)"), ok);
+        options({}, context, context, ok);
         if (m_spec.hasGravity) {
             m_d.error("duplicate-gravity", pos,
-                      "GRAVITY is given twice (first at line " + std::to_string(m_spec.gravityPos.line) + ")",
-                      "keep one GRAVITY statement");
+                      trText("Diagnostics", "%1 is given twice (first at line %2)")
+                          .with("GRAVITY")
+                          .with(std::to_string(m_spec.gravityPos.line)),
+                      trText("Diagnostics", "keep one %1 statement").with("GRAVITY"));
             return;
         }
         m_spec.hasGravity = true;
@@ -526,20 +568,24 @@ private:
         const SourcePos pos = m_toks[0].pos;
         bool ok = true;
         const SourcePos valuePos = here();
-        auto e = number("RESTITUTION", "the coefficient of restitution", ok, "RESTITUTION e (0 inelastic … 1 elastic)");
-        options({}, "RESTITUTION", "RESTITUTION", ok);
+        const Text context = plainText("RESTITUTION");
+        auto e = number(context, trText("Diagnostics", "the coefficient of restitution"), ok,
+                        trText("Diagnostics", "write RESTITUTION e (0 inelastic … 1 elastic)"));
+        options({}, context, context, ok);
         if (m_spec.hasRestitution) {
             m_d.error("duplicate-restitution", pos,
-                      "RESTITUTION is given twice (first at line " + std::to_string(m_spec.restitutionPos.line) + ")",
-                      "keep one RESTITUTION statement");
+                      trText("Diagnostics", "%1 is given twice (first at line %2)")
+                          .with("RESTITUTION")
+                          .with(std::to_string(m_spec.restitutionPos.line)),
+                      trText("Diagnostics", "keep one %1 statement").with("RESTITUTION"));
             return;
         }
         m_spec.hasRestitution = true;
         m_spec.restitutionPos = pos;
         if (!e) return;
         if (*e < 0 || *e > 1) {
-            m_d.error("bad-restitution", valuePos, "RESTITUTION " + fmt(*e) + " is outside 0 … 1",
-                      "0 stops a joint dead at its limit, 1 bounces it back at the same speed");
+            m_d.error("bad-restitution", valuePos, trText("Diagnostics", "RESTITUTION %1 is outside 0 … 1").with(fmt(*e)),
+                      trText("Diagnostics", "0 stops a joint dead at its limit, 1 bounces it back at the same speed"));
             return;
         }
         m_spec.restitution = *e;
@@ -551,13 +597,13 @@ private:
         BodySpec b;
         b.src.pos = m_toks[0].pos;
         bool ok = true;
-        auto id = readId("body", "the body id", ok, syntax);
+        auto id = readId(trText("Diagnostics", "body"), trText("Diagnostics", "the body id"), ok, write(syntax));
         if (!id) {
             b.src.complete = false;
             return;  // a body without an id cannot be referred to; nothing to keep
         }
         b.id = *id;
-        const std::string ctx = "body " + std::to_string(b.id);
+        const Text ctx = trText("Diagnostics", "body %1").with(std::to_string(b.id));
         const std::vector<OptionDef> defs = {{"CG", Arg::Vec3, "x y z"}, {"NAME", Arg::Str, "\"text\""}};
         setKeys(defs);
         // count the numbers after the id: 0 (massless), 4 or 7
@@ -574,11 +620,13 @@ private:
             ok = false;
             SourcePos at = count > 7 ? m_toks[first + 7].pos : m_toks[first + count - 1].pos;
             m_d.error(count > 7 ? "extra-number" : "missing-number", at,
-                      ctx + ": a body takes 0, 4 or 7 numbers after its id (m Ixx Iyy Izz [Ixy Iyz Ixz]), found " +
-                          std::to_string(count),
-                      count < 4 ? "give the mass and the three moments of inertia: " + syntax
-                                : count < 7 ? "give all three products of inertia Ixy Iyz Ixz, or none"
-                                            : "remove the extra numbers");
+                      trText("Diagnostics", "%1: a body takes 0, 4 or 7 numbers after its id (m Ixx Iyy Izz [Ixy Iyz "
+                                            "Ixz]), found %2")
+                          .with(ctx)
+                          .with(std::to_string(count)),
+                      count < 4   ? trText("Diagnostics", "give the mass and the three moments of inertia: %1").with(syntax)
+                      : count < 7 ? trText("Diagnostics", "give all three products of inertia Ixy Iyz Ixz, or none")
+                                  : trText("Diagnostics", "remove the extra numbers"));
             m_i += count;
         } else if (count > 0) {
             std::array<double, 7> v{};
@@ -598,7 +646,7 @@ private:
             b.src.at["I"] = m_toks[first + 1].pos;
             if (count == 7) b.src.at["Ixy"] = m_toks[first + 4].pos;
         }
-        Options opts = options(defs, ctx, "a body statement (B)", ok);
+        Options opts = options(defs, ctx, trText("Diagnostics", "a body statement (B)"), ok);
         recordPositions(b.src, opts);
         if (auto it = opts.find("CG"); it != opts.end()) {
             b.hasCg = true;
@@ -615,16 +663,16 @@ private:
         JointSpec j;
         j.src.pos = m_toks[0].pos;
         bool ok = true;
-        auto id = readId("joint", "the joint id", ok, syntax);
+        auto id = readId(trText("Diagnostics", "joint"), trText("Diagnostics", "the joint id"), ok, write(syntax));
         j.id = id.value_or(-1);
-        const std::string ctx = id ? "joint " + std::to_string(j.id) : std::string("joint");
-        Options opts = options({{"T", Arg::Num, "the joint type (0, 1 or 2)"},
-                                {"LL", Arg::NumDeg, "the lower limit"},
-                                {"UL", Arg::NumDeg, "the upper limit"},
-                                {"QI", Arg::NumDeg, "the initial coordinate"},
-                                {"VI", Arg::NumDeg, "the initial rate"},
+        const Text ctx = id ? trText("Diagnostics", "joint %1").with(std::to_string(j.id)) : trText("Diagnostics", "joint");
+        Options opts = options({{"T", Arg::Num, trText("Diagnostics", "the joint type (0, 1 or 2)")},
+                                {"LL", Arg::NumDeg, trText("Diagnostics", "the lower limit")},
+                                {"UL", Arg::NumDeg, trText("Diagnostics", "the upper limit")},
+                                {"QI", Arg::NumDeg, trText("Diagnostics", "the initial coordinate")},
+                                {"VI", Arg::NumDeg, trText("Diagnostics", "the initial rate")},
                                 {"NAME", Arg::Str, "\"text\""}},
-                               ctx, "a joint statement (C)", ok);
+                               ctx, trText("Diagnostics", "a joint statement (C)"), ok);
         recordPositions(j.src, opts);
         if (auto it = opts.find("T"); it != opts.end() && it->second.ok) {
             j.typeWritten = true;
@@ -635,8 +683,10 @@ private:
             else if (t == 2) j.type = JointType::Prismatic;
             else {
                 ok = false;
-                m_d.error("bad-joint-type", it->second.valuePos, ctx + ": there is no joint type T " + fmt(t),
-                          "use T 0 (revolute, the default), T 1 (pivoted linear actuator) or T 2 (prismatic)");
+                m_d.error("bad-joint-type", it->second.valuePos,
+                          trText("Diagnostics", "%1: there is no joint type T %2").with(ctx).with(fmt(t)),
+                          trText("Diagnostics", "use T 0 (revolute, the default), T 1 (pivoted linear actuator) or T 2 "
+                                                "(prismatic)"));
             }
         }
         auto take = [&](const char* key, std::optional<double>& out) {
@@ -647,11 +697,13 @@ private:
                 if (j.type != JointType::Revolute) {
                     ok = false;
                     m_d.error("deg-on-length", it->second.valuePos,
-                              ctx + ": DEG after " + key + ", but the coordinate of " +
-                                  (j.type == JointType::Actuator ? "a pivoted linear actuator (T 1)"
-                                                                 : "a prismatic joint (T 2)") +
-                                  " is a length",
-                              "remove DEG; give the value in metres");
+                              trText("Diagnostics", "%1: DEG after %2, but the coordinate of %3 is a length")
+                                  .with(ctx)
+                                  .with(key)
+                                  .with(j.type == JointType::Actuator
+                                            ? trText("Diagnostics", "a pivoted linear actuator (T 1)")
+                                            : trText("Diagnostics", "a prismatic joint (T 2)")),
+                              trText("Diagnostics", "remove DEG; give the value in metres"));
                 }
                 v *= kDegToRad;
             }
@@ -672,8 +724,9 @@ private:
     {
         if (m_joint < 0) {
             m_d.error("orphan-joint-line", kwTok.pos,
-                      upper(kwTok.text) + " must follow a joint statement (C)",
-                      "put it right after its joint's C line (blank and comment lines may come between)");
+                      trText("Diagnostics", "%1 must follow a joint statement (C)").with(upper(kwTok.text)),
+                      trText("Diagnostics", "put it right after its joint's C line (blank and comment lines may come "
+                                            "between)"));
             return nullptr;
         }
         return &m_spec.joints[static_cast<std::size_t>(m_joint)];
@@ -687,13 +740,15 @@ private:
         const std::string s = std::to_string(side);
         const std::string other = side == 1 ? "2" : "1";
         const std::string syntax = "B" + s + " body P" + s + " x y z A" + s + " x y z R" + s + " x y z";
-        const std::string ctx = "joint " + std::to_string(j->id) + ", B" + s;
+        const Text ctx = trText("Diagnostics", "joint %1, B%2").with(std::to_string(j->id)).with(s);
         JointSide& js = side == 1 ? j->side1 : j->side2;
         if (js.present) {
             m_d.error("duplicate-joint-line", kw.pos,
-                      "joint " + std::to_string(j->id) + " already has a B" + s + " line (line " +
-                          std::to_string(js.src.pos.line) + ")",
-                      "keep one B" + s + " line per joint");
+                      trText("Diagnostics", "joint %1 already has a B%2 line (line %3)")
+                          .with(std::to_string(j->id))
+                          .with(s)
+                          .with(std::to_string(js.src.pos.line)),
+                      trText("Diagnostics", "keep one B%1 line per joint").with(s));
             j->src.complete = false;
             return;
         }
@@ -714,17 +769,17 @@ private:
             if (m_toks[k].isWord() && (u == "P" + other || u == "A" + other || u == "R" + other)) {
                 ok = false;
                 m_d.error("wrong-side", m_toks[k].pos,
-                          ctx + ": " + u + " belongs on the B" + other + " line",
-                          "on the B" + s + " line write " + u.substr(0, 1) + s);
+                          trText("Diagnostics", "%1: %2 belongs on the B%3 line").with(ctx).with(u).with(other),
+                          trText("Diagnostics", "on the B%1 line write %2").with(s).with(u.substr(0, 1) + s));
                 m_toks[k].text = u.substr(0, 1) + s;  // read it as meant, to avoid a second message
             }
         }
         setKeys(defs);
         side_.src.at["B"] = here();
-        auto body = readId(ctx, "the body id", ok, syntax);
+        auto body = readId(ctx, trText("Diagnostics", "the body id"), ok, write(syntax));
         side_.body = body.value_or(-1);
-        Options opts = options(defs, ctx, "a B" + s + " line", ok);
-        requireOptions(opts, {kp.c_str(), ka.c_str(), kr.c_str()}, ctx, syntax, kw.pos, ok);
+        Options opts = options(defs, ctx, trText("Diagnostics", "a B%1 line").with(s), ok);
+        requireOptions(opts, {kp.c_str(), ka.c_str(), kr.c_str()}, ctx, write(syntax), kw.pos, ok);
         for (const auto& [k, v] : opts) side_.src.at[k.substr(0, 1)] = v.valuePos;
         if (auto it = opts.find(kp); it != opts.end()) side_.p = it->second.v;
         if (auto it = opts.find(ka); it != opts.end()) side_.a = it->second.v;
@@ -740,15 +795,16 @@ private:
         JointSpec* j = openJoint(kw);
         if (!j) return;
         m_i = 0;  // CL1 and CL2 are both options of this line
-        const std::string ctx = "joint " + std::to_string(j->id);
+        const Text ctx = trText("Diagnostics", "joint %1").with(std::to_string(j->id));
         bool ok = true;
         Options opts = options({{"CL1", Arg::Vec3, "x y z"}, {"CL2", Arg::Vec3, "x y z"}}, ctx,
-                               "a CL1/CL2 line", ok);
+                               trText("Diagnostics", "a CL1/CL2 line"), ok);
         for (const auto& [k, v] : opts) {
             bool have = j->src.at.count(k) > 0;
             if (have) {
                 ok = false;
-                m_d.error("duplicate-joint-line", v.pos, ctx + ": " + k + " is given twice", "keep one " + k);
+                m_d.error("duplicate-joint-line", v.pos, trText("Diagnostics", "%1: %2 is given twice").with(ctx).with(k),
+                          trText("Diagnostics", "keep one %1").with(k));
                 continue;
             }
             j->src.at[k] = v.valuePos;
@@ -764,46 +820,50 @@ private:
         d.src.pos = m_toks[0].pos;
         bool ok = true;
         const std::string syntax = "D joint HYD|MOTOR|PNEU|SERVO parameters…";
-        auto joint = readId("drive", "the joint id", ok, syntax);
+        auto joint = readId(trText("Diagnostics", "drive"), trText("Diagnostics", "the joint id"), ok, write(syntax));
         if (!joint) return;
         d.joint = *joint;
-        const std::string ctx = "drive on joint " + std::to_string(d.joint);
+        const Text ctx = trText("Diagnostics", "drive on joint %1").with(std::to_string(d.joint));
         if (atEnd() || !peek().isWord()) {
-            m_d.error("missing-drive-kind", here(), ctx + ": the drive kind is missing",
-                      "write HYD, MOTOR, PNEU or SERVO after the joint id");
+            m_d.error("missing-drive-kind", here(), trText("Diagnostics", "%1: the drive kind is missing").with(ctx),
+                      trText("Diagnostics", "write HYD, MOTOR, PNEU or SERVO after the joint id"));
             return;
         }
         const Token& kindTok = m_toks[m_i++];
         std::string kind = upper(kindTok.text);
         d.src.at["kind"] = kindTok.pos;
         std::vector<OptionDef> defs;
-        std::string kindSyntax;
+        Text kindFix;  // the hint for what the kind requires
+        const Text speed = trText("Diagnostics", "speed"), force = trText("Diagnostics", "force"),
+                   diameter = trText("Diagnostics", "diameter"), gain = trText("Diagnostics", "gain");
         if (kind == "HYD") {
             d.kind = DriveKind::Hydraulic;
-            defs = {{"VMAX", Arg::Num, "speed"},   {"VMIN", Arg::Num, "speed"},   {"FMAX", Arg::Num, "force"},
-                    {"FMIN", Arg::Num, "force"},   {"PUMP", Arg::Num, "cc/rev"},  {"RPM", Arg::Num, "rpm"},
-                    {"BORE", Arg::Num, "diameter"}, {"ROD", Arg::Num, "diameter"}, {"PRESSURE", Arg::Num, "Pa"}};
-            kindSyntax = "D j HYD VMAX v [VMIN v] [FMAX f] [FMIN f], or D j HYD PUMP cc RPM n BORE d ROD d PRESSURE Pa";
+            defs = {{"VMAX", Arg::Num, speed},   {"VMIN", Arg::Num, speed},   {"FMAX", Arg::Num, force},
+                    {"FMIN", Arg::Num, force},   {"PUMP", Arg::Num, "cc/rev"}, {"RPM", Arg::Num, "rpm"},
+                    {"BORE", Arg::Num, diameter}, {"ROD", Arg::Num, diameter}, {"PRESSURE", Arg::Num, "Pa"}};
+            kindFix = trText("Diagnostics", "write D j HYD VMAX v [VMIN v] [FMAX f] [FMIN f], or D j HYD PUMP cc RPM n "
+                                            "BORE d ROD d PRESSURE Pa");
         } else if (kind == "MOTOR") {
             d.kind = DriveKind::Motor;
-            defs = {{"T0", Arg::Num, "stall torque"}, {"W0", Arg::Num, "no-load speed"}};
-            kindSyntax = "D j MOTOR T0 torque W0 speed";
+            defs = {{"T0", Arg::Num, trText("Diagnostics", "stall torque")},
+                    {"W0", Arg::Num, trText("Diagnostics", "no-load speed")}};
+            kindFix = write("D j MOTOR T0 torque W0 speed");
         } else if (kind == "PNEU") {
             d.kind = DriveKind::Pneumatic;
-            defs = {{"F", Arg::Num, "force"}};
-            kindSyntax = "D j PNEU F force";
+            defs = {{"F", Arg::Num, force}};
+            kindFix = write("D j PNEU F force");
         } else if (kind == "SERVO") {
             d.kind = DriveKind::Servo;
-            defs = {{"KP", Arg::Num, "gain"}, {"KI", Arg::Num, "gain"}, {"KD", Arg::Num, "gain"},
-                    {"FMAX", Arg::Num, "force"}};
-            kindSyntax = "D j SERVO KP p KI i KD d [FMAX f]";
+            defs = {{"KP", Arg::Num, gain}, {"KI", Arg::Num, gain}, {"KD", Arg::Num, gain}, {"FMAX", Arg::Num, force}};
+            kindFix = write("D j SERVO KP p KI i KD d [FMAX f]");
         } else {
             std::string guess = closest(kind, std::array<std::string_view, 4>{"HYD", "MOTOR", "PNEU", "SERVO"});
-            m_d.error("unknown-drive-kind", kindTok.pos, ctx + ": unknown drive kind '" + kindTok.text + "'",
-                      guess.empty() ? "drive kinds are HYD, MOTOR, PNEU and SERVO" : "did you mean '" + guess + "'?");
+            m_d.error("unknown-drive-kind", kindTok.pos,
+                      trText("Diagnostics", "%1: unknown drive kind '%2'").with(ctx).with(kindTok.text),
+                      guess.empty() ? trText("Diagnostics", "drive kinds are HYD, MOTOR, PNEU and SERVO") : didYouMean(guess));
             return;
         }
-        Options opts = options(defs, ctx, "a " + kind + " drive", ok);
+        Options opts = options(defs, ctx, trText("Diagnostics", "a %1 drive").with(kind), ok);
         recordPositions(d.src, opts);
         // parameters in the order written
         std::vector<std::pair<SourcePos, std::string>> order;
@@ -821,49 +881,57 @@ private:
             if (hasV && nPump > 0) {
                 ok = false;
                 m_d.error("hyd-conflict", d.src.where(opts.count("PUMP") ? "PUMP" : "RPM"),
-                          ctx + ": give either VMAX/FMAX or the hydraulic data PUMP … PRESSURE, not both",
-                          "remove one of the two forms");
+                          trText("Diagnostics", "%1: give either VMAX/FMAX or the hydraulic data PUMP … PRESSURE, not both")
+                              .with(ctx),
+                          trText("Diagnostics", "remove one of the two forms"));
             } else if (nPump > 0) {
-                requireOptions(opts, {"PUMP", "RPM", "BORE", "ROD", "PRESSURE"}, ctx, kindSyntax, d.src.pos, ok);
+                requireOptions(opts, {"PUMP", "RPM", "BORE", "ROD", "PRESSURE"}, ctx, kindFix, d.src.pos, ok);
                 for (const char* k : {"VMIN", "FMAX", "FMIN"}) {
                     if (opts.count(k)) {
                         ok = false;
                         m_d.error("hyd-conflict", d.src.where(k),
-                                  ctx + ": " + k + " follows from the hydraulic data PUMP … PRESSURE",
-                                  std::string("remove ") + k + ", or give VMAX/VMIN/FMAX/FMIN instead of the pump data");
+                                  trText("Diagnostics", "%1: %2 follows from the hydraulic data PUMP … PRESSURE")
+                                      .with(ctx)
+                                      .with(k),
+                                  trText("Diagnostics", "remove %1, or give VMAX/VMIN/FMAX/FMIN instead of the pump data")
+                                      .with(k));
                     }
                 }
                 auto bore = opts.find("BORE"), rod = opts.find("ROD");
                 if (bore != opts.end() && rod != opts.end() && rod->second.num >= bore->second.num) {
                     ok = false;
                     m_d.error("rod-too-large", rod->second.valuePos,
-                              ctx + ": the rod (" + fmt(rod->second.num) + " m) is not thinner than the bore (" +
-                                  fmt(bore->second.num) + " m)",
-                              "ROD and BORE are diameters in metres; the rod must be thinner");
+                              trText("Diagnostics", "%1: the rod (%2 m) is not thinner than the bore (%3 m)")
+                                  .with(ctx)
+                                  .with(fmt(rod->second.num))
+                                  .with(fmt(bore->second.num)),
+                              trText("Diagnostics", "ROD and BORE are diameters in metres; the rod must be thinner"));
                 }
             } else if (!hasV) {
                 ok = false;
-                m_d.error("missing-option", d.src.pos, ctx + ": a hydraulic drive needs VMAX or the pump data",
-                          "write " + kindSyntax);
+                m_d.error("missing-option", d.src.pos,
+                          trText("Diagnostics", "%1: a hydraulic drive needs VMAX or the pump data").with(ctx), kindFix);
             }
         } else if (d.kind == DriveKind::Motor) {
-            requireOptions(opts, {"T0", "W0"}, ctx, kindSyntax, d.src.pos, ok);
+            requireOptions(opts, {"T0", "W0"}, ctx, kindFix, d.src.pos, ok);
         } else if (d.kind == DriveKind::Pneumatic) {
-            requireOptions(opts, {"F"}, ctx, kindSyntax, d.src.pos, ok);
+            requireOptions(opts, {"F"}, ctx, kindFix, d.src.pos, ok);
         } else {
-            requireOptions(opts, {"KP", "KI", "KD"}, ctx, kindSyntax, d.src.pos, ok);
+            requireOptions(opts, {"KP", "KI", "KD"}, ctx, kindFix, d.src.pos, ok);
         }
         // magnitudes that must be positive (gains and PNEU F may be zero or signed)
         for (const auto& [k, v] : opts) {
             bool mustBePositive = k != "KP" && k != "KI" && k != "KD" && k != "F";
             if (mustBePositive && v.ok && !(v.num > 0)) {
                 ok = false;
-                m_d.error("not-positive", v.valuePos, ctx + ": " + k + " must be positive, not " + fmt(v.num),
-                          "give its magnitude; the direction comes from the operator's command");
+                m_d.error("not-positive", v.valuePos,
+                          trText("Diagnostics", "%1: %2 must be positive, not %3").with(ctx).with(k).with(fmt(v.num)),
+                          trText("Diagnostics", "give its magnitude; the direction comes from the operator's command"));
             } else if (!mustBePositive && v.ok && v.num < 0 && k != "F") {
                 ok = false;
-                m_d.error("not-positive", v.valuePos, ctx + ": " + k + " cannot be negative (" + fmt(v.num) + ")",
-                          "gains are zero or positive");
+                m_d.error("not-positive", v.valuePos,
+                          trText("Diagnostics", "%1: %2 cannot be negative (%3)").with(ctx).with(k).with(fmt(v.num)),
+                          trText("Diagnostics", "gains are zero or positive"));
             }
         }
         d.src.complete = ok;
@@ -876,13 +944,13 @@ private:
         f.src.pos = m_toks[0].pos;
         bool ok = true;
         const std::string syntax = "F id POINT|TORQUE|JOINT|SPRING|AERO parameters…";
-        auto id = readId("force", "the force id", ok, syntax);
+        auto id = readId(trText("Diagnostics", "force"), trText("Diagnostics", "the force id"), ok, write(syntax));
         if (!id) return;
         f.id = *id;
-        const std::string ctx = "force " + std::to_string(f.id);
+        const Text ctx = trText("Diagnostics", "force %1").with(std::to_string(f.id));
         if (atEnd() || !peek().isWord()) {
-            m_d.error("missing-force-kind", here(), ctx + ": the force kind is missing",
-                      "write POINT, TORQUE, JOINT, SPRING or AERO after the force id");
+            m_d.error("missing-force-kind", here(), trText("Diagnostics", "%1: the force kind is missing").with(ctx),
+                      trText("Diagnostics", "write POINT, TORQUE, JOINT, SPRING or AERO after the force id"));
             return;
         }
         const Token& kindTok = m_toks[m_i++];
@@ -891,15 +959,16 @@ private:
         std::vector<OptionDef> defs;
         std::vector<const char*> required;
         std::string ksyn;
+        const Text body = trText("Diagnostics", "body"), coefficient = trText("Diagnostics", "coefficient");
         if (kind == "POINT") {
             f.kind = ForceKind::Point;
-            defs = {{"B", Arg::Int, "body"}, {"P", Arg::Vec3, "x y z"}, {"DIR", Arg::Vec3, "x y z"},
+            defs = {{"B", Arg::Int, body}, {"P", Arg::Vec3, "x y z"}, {"DIR", Arg::Vec3, "x y z"},
                     {"MAG", Arg::Mag, "spec"}, {"LOCAL", Arg::Flag, ""}};
             required = {"B", "P", "DIR", "MAG"};
             ksyn = "F id POINT B body P x y z DIR x y z MAG spec [LOCAL]";
         } else if (kind == "TORQUE") {
             f.kind = ForceKind::Torque;
-            defs = {{"B", Arg::Int, "body"}, {"DIR", Arg::Vec3, "x y z"}, {"MAG", Arg::Mag, "spec"},
+            defs = {{"B", Arg::Int, body}, {"DIR", Arg::Vec3, "x y z"}, {"MAG", Arg::Mag, "spec"},
                     {"LOCAL", Arg::Flag, ""}};
             required = {"B", "DIR", "MAG"};
             ksyn = "F id TORQUE B body DIR x y z MAG spec [LOCAL]";
@@ -908,32 +977,41 @@ private:
             defs = {{"MAG", Arg::Mag, "spec"}};
             setKeys(defs);
             f.src.at["JOINT"] = here();
-            auto j = readId(ctx, "the joint id", ok, "F id JOINT joint MAG spec");
+            auto j = readId(ctx, trText("Diagnostics", "the joint id"), ok, write("F id JOINT joint MAG spec"));
             f.joint = j.value_or(-1);
             required = {"MAG"};
             ksyn = "F id JOINT joint MAG spec";
         } else if (kind == "SPRING") {
             f.kind = ForceKind::Spring;
-            defs = {{"B1", Arg::Int, "body"}, {"P1", Arg::Vec3, "x y z"}, {"B2", Arg::Int, "body"},
-                    {"P2", Arg::Vec3, "x y z"}, {"K", Arg::Num, "stiffness"}, {"L0", Arg::Num, "length"},
-                    {"C", Arg::Num, "damping"}};
+            defs = {{"B1", Arg::Int, body},
+                    {"P1", Arg::Vec3, "x y z"},
+                    {"B2", Arg::Int, body},
+                    {"P2", Arg::Vec3, "x y z"},
+                    {"K", Arg::Num, trText("Diagnostics", "stiffness")},
+                    {"L0", Arg::Num, trText("Diagnostics", "length")},
+                    {"C", Arg::Num, trText("Diagnostics", "damping")}};
             required = {"B1", "P1", "B2", "P2", "K", "L0"};
             ksyn = "F id SPRING B1 i P1 x y z B2 k P2 x y z K k L0 l [C c]";
         } else if (kind == "AERO") {
             f.kind = ForceKind::Aero;
-            defs = {{"B", Arg::Int, "body"}, {"P", Arg::Vec3, "x y z"}, {"AREA", Arg::Num, "area"},
-                    {"CD", Arg::Num, "coefficient"}, {"CL", Arg::Num, "coefficient"}, {"RHO", Arg::Num, "density"}};
+            defs = {{"B", Arg::Int, body},
+                    {"P", Arg::Vec3, "x y z"},
+                    {"AREA", Arg::Num, trText("Diagnostics", "area")},
+                    {"CD", Arg::Num, coefficient},
+                    {"CL", Arg::Num, coefficient},
+                    {"RHO", Arg::Num, trText("Diagnostics", "density")}};
             required = {"B", "P", "AREA", "CD"};
             ksyn = "F id AERO B body P x y z AREA a CD c [CL c] [RHO r]";
         } else {
             std::string guess = closest(kind, std::array<std::string_view, 5>{"POINT", "TORQUE", "JOINT", "SPRING", "AERO"});
-            m_d.error("unknown-force-kind", kindTok.pos, ctx + ": unknown force kind '" + kindTok.text + "'",
-                      guess.empty() ? "force kinds are POINT, TORQUE, JOINT, SPRING and AERO"
-                                    : "did you mean '" + guess + "'?");
+            m_d.error("unknown-force-kind", kindTok.pos,
+                      trText("Diagnostics", "%1: unknown force kind '%2'").with(ctx).with(kindTok.text),
+                      guess.empty() ? trText("Diagnostics", "force kinds are POINT, TORQUE, JOINT, SPRING and AERO")
+                                    : didYouMean(guess));
             return;
         }
-        Options opts = options(defs, ctx, "a " + kind + " force", ok);
-        requireOptions(opts, required, ctx, ksyn, f.src.pos, ok);
+        Options opts = options(defs, ctx, trText("Diagnostics", "a %1 force").with(kind), ok);
+        requireOptions(opts, required, ctx, write(ksyn), f.src.pos, ok);
         recordPositions(f.src, opts);
         auto get = [&](const char* k) -> const OptionValue* {
             auto it = opts.find(k);
@@ -969,29 +1047,31 @@ private:
         bool ok = true;
         const std::string syntax = "G id B body SHAPE dimensions… [POS x y z] [AXIS x y z] [ROT ax ay az deg] "
                                    "[COLOR r g b] [MASS m | RHO density]";
-        auto id = readId("graphic", "the graphic id", ok, syntax);
+        auto id = readId(trText("Diagnostics", "graphic"), trText("Diagnostics", "the graphic id"), ok, write(syntax));
         if (!id) return;
         g.id = *id;
-        const std::string ctx = "graphic " + std::to_string(g.id);
+        const Text ctx = trText("Diagnostics", "graphic %1").with(std::to_string(g.id));
         if (atEnd() || !peek().is("B")) {
-            m_d.error("missing-option", here(), ctx + ": B body is missing after the id", "write " + syntax);
+            m_d.error("missing-option", here(), trText("Diagnostics", "%1: B body is missing after the id").with(ctx),
+                      write(syntax));
             return;
         }
         ++m_i;
         std::vector<OptionDef> defs = {{"POS", Arg::Vec3, "x y z"},    {"AXIS", Arg::Vec3, "x y z"},
                                        {"ROT", Arg::Num4, "ax ay az deg"}, {"COLOR", Arg::Vec3, "r g b"},
-                                       {"MASS", Arg::Num, "mass"},     {"RHO", Arg::Num, "density"},
-                                       {"SCALE", Arg::Num, "factor"}};
+                                       {"MASS", Arg::Num, trText("Diagnostics", "mass")},
+                                       {"RHO", Arg::Num, trText("Diagnostics", "density")},
+                                       {"SCALE", Arg::Num, trText("Diagnostics", "factor")}};
         // a word in the body id's place is a malformed id unless it is a shape
         setKeys({{"BOX", Arg::Flag, ""}, {"CYL", Arg::Flag, ""}, {"TUBE", Arg::Flag, ""},
                  {"SPHERE", Arg::Flag, ""}, {"CONE", Arg::Flag, ""}, {"ELLIPSOID", Arg::Flag, ""},
                  {"PRISM", Arg::Flag, ""}, {"MESH", Arg::Flag, ""}});
         g.src.at["B"] = here();
-        auto body = readId(ctx, "the body id", ok, syntax);
+        auto body = readId(ctx, trText("Diagnostics", "the body id"), ok, write(syntax));
         g.body = body.value_or(-1);
         if (atEnd() || !peek().isWord()) {
-            m_d.error("missing-shape", here(), ctx + ": the shape is missing",
-                      "write BOX, CYL, TUBE, SPHERE, CONE, ELLIPSOID, PRISM or MESH and its dimensions");
+            m_d.error("missing-shape", here(), trText("Diagnostics", "%1: the shape is missing").with(ctx),
+                      trText("Diagnostics", "write BOX, CYL, TUBE, SPHERE, CONE, ELLIPSOID, PRISM or MESH and its dimensions"));
             return;
         }
         const Token& shapeTok = m_toks[m_i++];
@@ -1016,9 +1096,9 @@ private:
             std::vector<std::string_view> names;
             for (const ShapeDef& s : shapes) names.push_back(s.key);
             std::string guess = closest(shape, names);
-            m_d.error("unknown-shape", shapeTok.pos, ctx + ": unknown shape '" + shapeTok.text + "'",
-                      guess.empty() ? "shapes are BOX, CYL, TUBE, SPHERE, CONE, ELLIPSOID, PRISM and MESH"
-                                    : "did you mean '" + guess + "'?");
+            m_d.error("unknown-shape", shapeTok.pos, trText("Diagnostics", "%1: unknown shape '%2'").with(ctx).with(shapeTok.text),
+                      guess.empty() ? trText("Diagnostics", "shapes are BOX, CYL, TUBE, SPHERE, CONE, ELLIPSOID, PRISM and MESH")
+                                    : didYouMean(guess));
             return;
         }
         g.shape = sd->kind;
@@ -1028,23 +1108,29 @@ private:
         g.src.at["dims"] = here();
         if (sd->n > 0) {
             for (int k = 0; k < sd->n; ++k) {
-                auto v = number(ctx, std::string(sd->key) + " dimension " + std::to_string(k + 1) + " of " +
-                                         std::to_string(sd->n) + " (" + sd->dims + ")",
-                                ok, dsyn);
+                auto v = number(ctx,
+                                trText("Diagnostics", "%1 dimension %2 of %3 (%4)")
+                                    .with(sd->key)
+                                    .with(std::to_string(k + 1))
+                                    .with(std::to_string(sd->n))
+                                    .with(sd->dims),
+                                ok, write(dsyn));
                 if (!v && !ok && (atEnd() || !numberLike(peek()))) break;
                 g.dims.push_back(v.value_or(0));
             }
         } else if (sd->kind == ShapeKind::Prism) {
             while (!atEnd() && badNumberLike(peek())) {
-                auto v = number(ctx, "a PRISM value", ok, dsyn);
+                auto v = number(ctx, trText("Diagnostics", "a PRISM value"), ok, write(dsyn));
                 g.dims.push_back(v.value_or(0));
             }
             if (g.dims.size() < 7 || g.dims.size() % 2 == 0) {
                 ok = false;
                 m_d.error("bad-prism", g.src.where("dims"),
-                          ctx + ": PRISM needs its height H and at least three x y vertices, found " +
-                              std::to_string(g.dims.size()) + " numbers",
-                          "write " + dsyn);
+                          trText("Diagnostics", "%1: PRISM needs its height H and at least three x y vertices, found %2 "
+                                                "numbers")
+                              .with(ctx)
+                              .with(std::to_string(g.dims.size())),
+                          write(dsyn));
             }
         } else {  // MESH
             if (!atEnd() && peek().isString()) {
@@ -1053,15 +1139,15 @@ private:
                 // a file name without quotes: one diagnostic, and the options after it are read
                 ok = false;
                 const Token& t = m_toks[m_i++];
-                m_d.error("missing-string", t.pos, ctx + ": the MESH file name must be in double quotes",
-                          "write MESH \"" + t.text + "\"");
+                m_d.error("missing-string", t.pos, trText("Diagnostics", "%1: the MESH file name must be in double quotes").with(ctx),
+                          write("MESH \"" + t.text + "\""));
             } else {
                 ok = false;
-                m_d.error("missing-string", here(), ctx + ": MESH needs a file name in double quotes",
-                          "write MESH \"meshes/part.stl\" (relative to the model file)");
+                m_d.error("missing-string", here(), trText("Diagnostics", "%1: MESH needs a file name in double quotes").with(ctx),
+                          trText("Diagnostics", "write MESH \"meshes/part.stl\" (relative to the model file)"));
             }
         }
-        Options opts = options(defs, ctx, "a graphic (G)", ok);
+        Options opts = options(defs, ctx, trText("Diagnostics", "a graphic (G)"), ok);
         recordPositions(g.src, opts);
         auto get = [&](const char* k) -> const OptionValue* {
             auto it = opts.find(k);
@@ -1076,8 +1162,8 @@ private:
         if (auto v = get("SCALE")) { g.scale = v->num; g.hasScale = true; }
         if (g.mass && g.rho) {
             ok = false;
-            m_d.error("mass-and-rho", g.src.where("RHO"), ctx + ": give MASS or RHO, not both",
-                      "MASS is the solid's mass in kg; RHO its density in kg/m³");
+            m_d.error("mass-and-rho", g.src.where("RHO"), trText("Diagnostics", "%1: give MASS or RHO, not both").with(ctx),
+                      trText("Diagnostics", "MASS is the solid's mass in kg; RHO its density in kg/m³"));
         }
         g.src.complete = ok;
         m_spec.graphics.push_back(std::move(g));

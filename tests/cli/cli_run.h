@@ -26,14 +26,21 @@ inline std::string slurp(const std::string& path)
     return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-/// Runs `padrob ARGS` in the source tree; captures stdout, stderr and the exit status.
-inline CliRun padrob(const std::string& args)
+/// The locale every test runs padrob in unless it says otherwise: C (English, '.'), with
+/// UTF-8 (Qt warns under plain C), and no LANGUAGE, so that a developer's Spanish
+/// locale does not change the output the tests compare.
+inline const char* const kCLocale = "LC_ALL=C.UTF-8 LANG=C.UTF-8";
+
+/// Runs `padrob ARGS` in the source tree with the environment variables `env` ("NAME=VALUE
+/// …", LANGUAGE removed); captures stdout, stderr and the exit status.
+inline CliRun padrobWith(const std::string& env, const std::string& args)
 {
     static int counter = 0;
     const auto dir = std::filesystem::temp_directory_path() / ("padrob_cli_test_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     const std::string errFile = (dir / ("err" + std::to_string(counter++))).string();
-    const std::string cmd = std::string("cd '") + PADROB_SOURCE_DIR + "' && '" + PADROB_CLI + "' " + args + " 2>'" + errFile + "'";
+    const std::string cmd = std::string("cd '") + PADROB_SOURCE_DIR + "' && env -u LANGUAGE -u LC_MESSAGES " + env + " '" +
+                            PADROB_CLI + "' " + args + " 2>'" + errFile + "'";
     CliRun r;
     FILE* p = popen(cmd.c_str(), "r");
     if (!p) return r;
@@ -46,6 +53,9 @@ inline CliRun padrob(const std::string& args)
     std::filesystem::remove(errFile);
     return r;
 }
+
+/// Runs `padrob ARGS` in the C locale (kCLocale): English messages.
+inline CliRun padrob(const std::string& args) { return padrobWith(kCLocale, args); }
 
 inline std::string writeTemp(const std::string& name, const std::string& text)
 {

@@ -250,6 +250,22 @@ TEST(CliSimulate, BadArgumentsExitTwoAndLeaveNoFile)
     }
 }
 
+TEST(CliSimulate, AnOutputThatCannotBeWrittenIsAUsageError)
+{
+    // the CSV writer's errors, printed from their translatable text: in English word for word
+    const auto dir = std::filesystem::temp_directory_path() / "padrob_sim_out_folder";
+    std::filesystem::create_directories(dir);
+    const CliRun folder = padrob("simulate models/pendulum.pad --time 0.1 --out '" + dir.string() + "'");
+    EXPECT_EQ(folder.status, 2) << folder.err;
+    EXPECT_EQ(folder.err, "padrob simulate: cannot write " + dir.string() + ": it is a folder\n");
+    EXPECT_EQ(folder.out, "");
+    const std::string missing = (dir / "no such folder" / "out.csv").string();
+    const CliRun create = padrob("simulate models/pendulum.pad --time 0.1 --out '" + missing + "'");
+    EXPECT_EQ(create.status, 2) << create.err;
+    EXPECT_EQ(create.err, "padrob simulate: cannot create " + missing + ": No such file or directory\n");
+    std::filesystem::remove_all(dir);
+}
+
 TEST(CliSimulate, ADivergingSimulationFailsWithoutOutput)
 {
     const std::string model = writeTemp("stiff.pad",

@@ -83,7 +83,7 @@ TEST(CliTutorial, InTheMillTheLinerSwungWithTheTelescopeOutHitsTheGrate)
     EXPECT_EQ(run.status, 1) << run.out << run.err;
     EXPECT_NE(run.out.find("hard-hit"), std::string::npos) << run.out;
     EXPECT_NE(run.out.find("la parrilla de descarga"), std::string::npos) << run.out;
-    EXPECT_NE(run.out.find("Montaje de la lainera en el molino SAG"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("Montaje de la coraza en el molino SAG"), std::string::npos) << run.out;
 }
 
 TEST(CliTutorial, CarelessRunsOfEveryStageFailWithTheirPenalties)

@@ -6,6 +6,10 @@
 
 #include "tests/studio/gui_test.h"
 #include "ide/studio/app/main_window.h"
+#include "ide/studio/dialogs/inertia_dialog.h"
+#include "ide/studio/plots/plot_panel.h"
+#include "ide/studio/tree/joint_sliders.h"
+#include "ide/i18n/language.h"
 #include "ide/studio/editor/code_editor.h"
 #include "ide/studio/editor/editor_panel.h"
 #include "ide/studio/sim/keyboard_input.h"
@@ -19,6 +23,12 @@
 #include "solver/integrate/simulation.h"
 
 #include <QDir>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QMainWindow>
+#include <QMenuBar>
+#include <QPushButton>
+#include <QStatusBar>
 #include <QFile>
 #include <QFileInfo>
 #include <QMessageBox>
@@ -80,6 +90,24 @@ QString readText(const QString& path)
     return f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : QString();
 }
 
+/// The titles of the window's menus, in order.
+QStringList menuTitles(const MainWindow& w)
+{
+    QStringList titles;
+    for (const QAction* a : w.menuBar()->actions()) titles << a->text();
+    return titles;
+}
+
+/// Settings ▸ Language ▸ `code`, as the user picks it.
+void chooseLanguage(MainWindow& w, const QString& code)
+{
+    auto* action = w.findChild<QAction*>("Language_" + code);
+    QVERIFY(action);
+    action->trigger();
+    QCOMPARE(i18n::current(), code);
+    studio::test::settle(100);  // the LanguageChange events are posted
+}
+
 }  // namespace
 
 class AppTest : public QObject {
@@ -93,6 +121,8 @@ private slots:
         // start clean: no settings, no recovery copies from an earlier run
         QSettings().clear();
         QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/recovery").removeRecursively();
+        // the tests below read English texts and '.' numbers, whatever the system's locale
+        QVERIFY(i18n::install("en"));
     }
 
     void opensTheLinerManipulatorWhenGivenNoModel()
@@ -112,6 +142,156 @@ private slots:
         QCOMPARE(w.workspace(), MainWindow::Workspace::Train);
         w.setWorkspace(MainWindow::Workspace::Model);
         QVERIFY(w.grab().save(screenshotPath("app_liner_manipulator.png")));
+    }
+
+    // Settings ▸ Language switches the running window between English and Spanish: menu
+    // titles, docks, workspaces, the tree and the status bar's numbers change at once
+    // (1,5 in Spanish), the choice is remembered, and model text keeps '.' whatever the
+    // language (a typed model parses, a decimal comma stays an error, the inertia
+    // calculator writes B lines with '.').
+    void theLanguageChangesWithoutARestart()
+    {
+        QVERIFY(i18n::install("en"));
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(openAndWait(w, modelPath("liner_manipulator.pad")));
+        auto* timeLabel = w.findChild<QLabel*>("TimeLabel");
+        auto* plotsDock = w.findChild<QDockWidget*>("PlotsDock");
+        auto* slidersDock = w.findChild<QDockWidget*>("JointSlidersDock");
+        QVERIFY(timeLabel && plotsDock && slidersDock);
+        QCOMPARE(menuTitles(w),
+                 QStringList({"&File", "&Edit", "&View", "&Simulation", "Se&ttings", "&Help"}));
+        QCOMPARE(plotsDock->windowTitle(), QStringLiteral("Plots"));
+        w.step();
+        QTRY_COMPARE(timeLabel->text(), QStringLiteral("t = 0.001 s"));
+        QCOMPARE(w.modelTree()->jointItem(2)->text(ModelTree::DetailsColumn), QStringLiteral("1.4 m … 1.617 m"));
+        QVERIFY(w.sliders()->sliderCount() > 0);
+        QVERIFY(w.sliders()->spinBox(0)->text().contains('.'));
+        // the languages are named in their own language, checkable, one checked
+        auto* es = w.findChild<QAction*>("Language_es");
+        auto* en = w.findChild<QAction*>("Language_en");
+        QVERIFY(es && en);
+        QCOMPARE(es->text(), QStringLiteral("Español"));
+        QCOMPARE(en->text(), QStringLiteral("English"));
+        QVERIFY(en->isChecked() && !es->isChecked());
+
+        chooseLanguage(w, "es");
+        QTRY_COMPARE(menuTitles(w),
+                     QStringList({"&Archivo", "&Editar", "&Ver", "&Simulación", "&Configuración", "Ay&uda"}));
+        QVERIFY(es->isChecked() && !en->isChecked());
+        QCOMPARE(es->text(), QStringLiteral("Español"));  // native names, not translated
+        QCOMPARE(en->text(), QStringLiteral("English"));
+        QCOMPARE(QSettings().value("ui/language").toString(), QStringLiteral("es"));
+        QCOMPARE(plotsDock->windowTitle(), QStringLiteral("Gráficos"));
+        QCOMPARE(slidersDock->windowTitle(), QStringLiteral("Articulaciones"));
+        QTRY_COMPARE(timeLabel->text(), QStringLiteral("t = 0,001 s"));  // a decimal comma
+        QCOMPARE(w.modelTree()->headerItem()->text(ModelTree::ElementColumn), QStringLiteral("Elemento"));
+        QCOMPARE(w.modelTree()->jointItem(2)->text(ModelTree::DetailsColumn), QStringLiteral("1,4 m … 1,617 m"));
+        QVERIFY2(w.sliders()->spinBox(0)->text().contains(','), qPrintable(w.sliders()->spinBox(0)->text()));
+        QCOMPARE(w.editor()->applyButton()->text(), QStringLiteral("Aplicar"));
+        QVERIFY(w.grab().save(screenshotPath("app_language_switched_es.png")));
+
+        // the model language keeps '.': a model applied now parses as before ...
+        const quint64 before = w.bundle()->serial;
+        QString text = readText(modelPath("pendulum.pad"));
+        w.editor()->setText(text);
+        w.editor()->apply();
+        QTRY_VERIFY_WITH_TIMEOUT(w.bundle()->serial != before, 10000);
+        QCOMPARE(w.editor()->errorCount(), 0);
+        QCOMPARE(w.bundle()->model->nb, 1);
+        // ... a decimal comma is still refused ...
+        w.editor()->setText(text.replace(QRegularExpression("\\nB 1 1\\.0"), "\nB 1 1,0"));
+        QTRY_VERIFY_WITH_TIMEOUT(!w.editor()->isChecking(), 10000);
+        QVERIFY(w.editor()->errorCount() > 0);
+        w.editor()->undo();
+        QTRY_VERIFY_WITH_TIMEOUT(!w.editor()->isChecking() && w.editor()->errorCount() == 0, 10000);
+        // ... and the inertia calculator writes its B line with '.'
+        QVERIFY(openAndWait(w, modelPath("excavator.pad")));
+        w.findChild<QAction*>("InertiaCalculatorAction")->trigger();
+        InertiaDialog* dialog = nullptr;
+        QTRY_VERIFY((dialog = w.findChild<InertiaDialog*>()) && dialog->isVisible());
+        QCOMPARE(dialog->windowTitle(), QStringLiteral("Calculadora de inercia"));
+        QVERIFY(dialog->result());
+        const QString bLine = dialog->computedBLine();
+        QVERIFY2(bLine.contains('.') && !bLine.section(" NAME", 0, 0).contains(','), qPrintable(bLine));
+        QVERIFY(dialog->grab().save(screenshotPath("app_inertia_dialog_es.png")));
+        const int line = dialog->bStatementLine();
+        dialog->replaceButton()->click();
+        QCOMPARE(w.editor()->editor()->document()->findBlockByNumber(line - 1).text().trimmed(), bLine.trimmed());
+        dialog->close();
+        QTRY_VERIFY_WITH_TIMEOUT(!w.editor()->isChecking(), 10000);
+        QCOMPARE(w.editor()->errorCount(), 0);
+
+        // and back to English, again without a restart
+        chooseLanguage(w, "en");
+        QTRY_COMPARE(menuTitles(w),
+                     QStringList({"&File", "&Edit", "&View", "&Simulation", "Se&ttings", "&Help"}));
+        QVERIFY(en->isChecked() && !es->isChecked());
+        QCOMPARE(QSettings().value("ui/language").toString(), QStringLiteral("en"));
+        QCOMPARE(plotsDock->windowTitle(), QStringLiteral("Plots"));
+        QTRY_COMPARE(timeLabel->text(), QStringLiteral("t = 0.000 s"));
+        QCOMPARE(w.modelTree()->headerItem()->text(ModelTree::ElementColumn), QStringLiteral("Element"));
+        QVERIFY(w.sliders()->spinBox(0)->text().contains('.'));
+    }
+
+    // The Model workspace with everything in it — the editor with a typed error, the
+    // problems, the tree, the sliders, the 3D view, two plots after a second of motion
+    // — in English and in Spanish, and the Spanish menus.
+    void theModelWorkspaceInBothLanguages()
+    {
+        QVERIFY(i18n::install("en"));
+        MainWindow w;
+        w.resize(1600, 1000);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(openAndWait(w, modelPath("liner_manipulator.pad")));
+        w.plots()->setSignalSelected("q:2", true);
+        w.plots()->setSignalSelected("f:2", true);
+        const int lift = w.bundle()->model->jointIndex(2);
+        w.runner()->setCommand(lift, 1.0);
+        w.run();
+        QTRY_VERIFY_WITH_TIMEOUT(w.runner()->latest() && w.runner()->latest()->t >= 1.0, 15000);
+        w.pause();
+        QTRY_VERIFY(!w.runner()->isRunning());
+        w.modelTree()->setCurrentItem(w.modelTree()->jointItem(2));
+        // a typed error: the problems list and the squiggle (the model applied stays)
+        CodeEditor* editor = w.editor()->editor();
+        editor->moveCursor(QTextCursor::End);
+        QTest::keyClick(editor, Qt::Key_Return);
+        QTest::keyClicks(editor, "C 99 QI 1,5");
+        QTRY_VERIFY_WITH_TIMEOUT(w.editor()->errorCount() > 0, 5000);
+        // room for the tree and the editor (the layout the earlier tests left is narrow)
+        auto* space = w.findChild<QMainWindow*>("ModelWorkspace");
+        space->resizeDocks({w.findChild<QDockWidget*>("ModelTreeDock"), w.findChild<QDockWidget*>("EditorDock")},
+                           {380, 560}, Qt::Horizontal);
+        space->resizeDocks({w.findChild<QDockWidget*>("PlotsDock")}, {330}, Qt::Vertical);
+        w.plots()->refresh();
+        studio::test::settle();
+        QVERIFY(w.grab().save(screenshotPath("app_model_workspace_en.png")));
+
+        chooseLanguage(w, "es");
+        w.plots()->refresh();
+        studio::test::settle();
+        QVERIFY(w.grab().save(screenshotPath("app_model_workspace_es.png")));
+        // the menus as they open (their accelerators, nothing clipped)
+        int k = 0;
+        for (QAction* a : w.menuBar()->actions()) {
+            QMenu* menu = a->menu();
+            menu->popup(w.mapToGlobal(QPoint(10 + 150 * k, 30)));
+            QTRY_VERIFY(menu->isVisible());
+            QVERIFY(menu->grab().save(screenshotPath(QStringLiteral("app_menu_%1_es.png").arg(k++))));
+            menu->close();
+        }
+        // Settings ▸ Language: the languages by their own names, the one in use checked
+        QMenu* languages = w.findChild<QMenu*>("LanguageMenu");
+        languages->popup(w.mapToGlobal(QPoint(600, 60)));
+        QTRY_VERIFY(languages->isVisible());
+        QVERIFY(languages->grab().save(screenshotPath("app_menu_language_es.png")));
+        languages->close();
+        w.setWorkspace(MainWindow::Workspace::Model);
+        chooseLanguage(w, "en");
+        w.editor()->undo();
     }
 
     void opensEveryBundledModel()
@@ -339,7 +519,7 @@ private slots:
             w.show();
             QVERIFY(QTest::qWaitForWindowExposed(&w));
             QVERIFY(openAndWait(w, modelPath("four_bar.pad")));
-            w.resize(1300, 900);
+            w.resize(1440, 900);  // wider than the Station workspace needs (its mapping table)
             w.close();
         }
         const QStringList recent = QSettings().value("recentFiles").toStringList();
@@ -348,7 +528,7 @@ private slots:
         MainWindow again;
         again.show();
         QVERIFY(QTest::qWaitForWindowExposed(&again));
-        QCOMPARE(again.size(), QSize(1300, 900));
+        QCOMPARE(again.size(), QSize(1440, 900));
         const QMenu* recentMenu = again.findChild<QMenu*>("RecentFilesMenu");
         QVERIFY(recentMenu);
         QVERIFY(!recentMenu->actions().isEmpty());

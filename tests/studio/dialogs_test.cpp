@@ -2,11 +2,13 @@
 // its closed form, live edits, the solver's errors, the B line handed to the editor as
 // one undo step, and a screenshot.
 
+#include "ide/i18n/language.h"
 #include "ide/studio/dialogs/b_statement.h"
 #include "ide/studio/dialogs/inertia_dialog.h"
 #include "ide/studio/model/model_bundle.h"
 
 #include <QComboBox>
+#include <QLabel>
 #include <QDir>
 #include <QFile>
 #include <QPlainTextEdit>
@@ -66,6 +68,7 @@ bool near(double a, double b, double tol = 1e-12) { return std::abs(a - b) <= to
 class DialogsTest : public QObject {
     Q_OBJECT
 private slots:
+    void initTestCase();
     void boxMatchesTheClosedForm();
     void editingTheDensityUpdatesLive();
     void negativeDensityShowsTheSolversError();
@@ -76,7 +79,11 @@ private slots:
     void applyBLineInsertsAfterTheLastBStatement();
     void bStatementKeepsNameAndComment();
     void screenshot();
+    void spanishAtRunTime();
 };
+
+// the tests read English texts and '.' numbers, whatever the system's locale
+void DialogsTest::initTestCase() { QVERIFY(i18n::install("en")); }
 
 void DialogsTest::boxMatchesTheClosedForm()
 {
@@ -305,6 +312,57 @@ void DialogsTest::screenshot()
     dialog.setBody(1);
     edit(dialog.solidsTable(), 0, InertiaDialog::ValueColumn, QStringLiteral("-1000"));
     QVERIFY(dialog.grab().save(dir + QStringLiteral("/inertia_dialog_error.png")));
+}
+
+// An open dialog changes language: its labels, headers and results (numbers with a
+// decimal comma in Spanish), while what is model text — the table's dimensions and
+// values, the B lines — keeps '.'; the edits in the table stay.
+void DialogsTest::spanishAtRunTime()
+{
+    Fixture fx;
+    InertiaDialog dialog(fx.bundle);
+    dialog.setBody(2);
+    dialog.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+    QTableWidget* t = dialog.solidsTable();
+    edit(t, 0, InertiaDialog::ValueColumn, QStringLiteral("7800.5"));  // an edit that must survive
+    QVERIFY(dialog.result());
+    const QString statement = dialog.computedStatement();
+    const QString bLine = dialog.computedBLine();
+    const QString dir = QStringLiteral(PADROB_SCREENSHOT_DIR);
+    QVERIFY(QDir().mkpath(dir));
+    QVERIFY(dialog.grab().save(dir + QStringLiteral("/inertia_dialog_en.png")));
+    auto massLabel = [&] {
+        for (QLabel* l : dialog.findChildren<QLabel*>())
+            if (l->text().endsWith(QLatin1String(" kg")) && l->textInteractionFlags() & Qt::TextSelectableByMouse) return l->text();
+        return QString();
+    };
+    QVERIFY2(massLabel().contains('.') && !massLabel().contains(','), qPrintable(massLabel()));
+
+    QVERIFY(i18n::install("es"));
+    QTRY_COMPARE(dialog.windowTitle(), QStringLiteral("Calculadora de inercia"));
+    QCOMPARE(t->horizontalHeaderItem(InertiaDialog::ShapeColumn)->text(), QStringLiteral("Forma"));
+    QCOMPARE(dialog.bodyCombo()->currentText(), QStringLiteral("B 2  arm (sólidos: 3)"));
+    QVERIFY2(massLabel().contains(',') && !massLabel().contains('.'), qPrintable(massLabel()));
+    // model text keeps '.': the table and the B lines are as they were
+    QCOMPARE(t->item(0, InertiaDialog::ValueColumn)->text(), QStringLiteral("7800.5"));
+    QCOMPARE(t->item(0, InertiaDialog::DimsColumn)->text(), QStringLiteral("0.05 0.6"));
+    QCOMPARE(dialog.computedStatement(), statement);
+    QCOMPARE(dialog.computedBLine(), bLine);
+    QVERIFY(!statement.contains(','));
+    QVERIFY(!t->item(0, InertiaDialog::MassColumn)->text().contains('.'));
+    QTest::qWait(100);  // (the layout, for the longer labels)
+    QVERIFY(dialog.grab().save(dir + QStringLiteral("/inertia_dialog_es.png")));
+    // an error, in Spanish
+    edit(t, 0, InertiaDialog::ValueColumn, QStringLiteral("-1000"));
+    QVERIFY(!dialog.result());
+    QVERIFY2(dialog.errorText().startsWith(QStringLiteral("Error: ")), qPrintable(dialog.errorText()));
+    QTest::qWait(100);
+    QVERIFY(dialog.grab().save(dir + QStringLiteral("/inertia_dialog_error_es.png")));
+
+    QVERIFY(i18n::install("en"));
+    QTRY_COMPARE(dialog.windowTitle(), QStringLiteral("Inertia calculator"));
+    QCOMPARE(t->horizontalHeaderItem(InertiaDialog::ShapeColumn)->text(), QStringLiteral("Shape"));
 }
 
 QTEST_MAIN(DialogsTest)

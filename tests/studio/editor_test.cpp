@@ -3,6 +3,8 @@
 // (save/saveAs/open, read-only folders, CRLF), the file watcher and recovery
 // copies. Real widgets on an X server (Xvfb under scripts/test.sh).
 
+#include "ide/i18n/diagnostic_text.h"
+#include "ide/i18n/language.h"
 #include "ide/studio/editor/code_editor.h"
 #include "ide/studio/editor/editor_panel.h"
 #include "ide/studio/editor/model_document.h"
@@ -134,6 +136,8 @@ private slots:
     void recoveryLeftByACrashIsListedAndRestored();
     void externalChangesAndDeletionAreSignalled();
 
+    void spanishAtRunTimeKeepsTheModelLanguage();
+
 private:
     QString m_screenshots;
 };
@@ -147,6 +151,8 @@ void EditorTest::initTestCase()
     m_screenshots = QStringLiteral(PADROB_SCREENSHOT_DIR);
     QVERIFY(QDir().mkpath(m_screenshots));
     QVERIFY(!pendulumText().isEmpty());
+    // the tests read English texts, whatever the system's locale
+    QVERIFY(i18n::install("en"));
 }
 
 void EditorTest::cleanup() { QToolTip::hideText(); }
@@ -851,6 +857,65 @@ void EditorTest::externalChangesAndDeletionAreSignalled()
     QVERIFY(writeAll(path, "GRAVITY 0 0 -9.81\n"));
     QVERIFY(spy.wait(3000));
     QCOMPARE(spy.last().at(1).toBool(), false);
+}
+
+
+// The editor changes language while it shows a refused model: the status line, the
+// problems list and the underline's tooltip in Spanish (the diagnostics in the current
+// language, i18n::message), while the model language stays the same: '.' is the decimal
+// point and a decimal comma an error in every language.
+void EditorTest::spanishAtRunTimeKeepsTheModelLanguage()
+{
+    EditorPanel panel;
+    panel.setCheckDelay(0);
+    panel.resize(900, 700);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    const QString pendulum = pendulumText();
+    panel.newModel(pendulum);
+    QVERIFY(waitChecked(panel));
+    QCOMPARE(panel.errorCount(), 0);
+    QString comma = pendulum;
+    comma.replace(QStringLiteral("\nB 1 1.0"), QStringLiteral("\nB 1 4,38325"));
+    panel.setText(comma);
+    QVERIFY(waitChecked(panel));
+    QVERIFY(panel.errorCount() >= 1);
+    panel.apply();
+    QVERIFY(panel.statusText().startsWith(QStringLiteral("Not applied")));
+    ProblemsView* problems = panel.problemsView();
+    QCOMPARE(problems->headerItem()->text(ProblemsView::MessageColumn), QStringLiteral("Message"));
+
+    QVERIFY(i18n::install("es"));
+    QTRY_COMPARE(problems->headerItem()->text(ProblemsView::MessageColumn), QStringLiteral("Mensaje"));
+    QVERIFY2(panel.statusText().startsWith(QStringLiteral("No aplicado")), qPrintable(panel.statusText()));
+    QCOMPARE(panel.applyButton()->text(), QStringLiteral("Aplicar"));
+    const solver::Diagnostic* d = findCode(panel.diagnostics(), "decimal-comma");
+    QVERIFY(d);
+    QTreeWidgetItem* item = nullptr;
+    for (int i = 0; i < problems->problemCount(); ++i) {
+        QTreeWidgetItem* it = problems->topLevelItem(i);
+        if (it->data(0, ProblemsView::CodeRole).toString() == QStringLiteral("decimal-comma")) item = it;
+    }
+    QVERIFY(item);
+    QCOMPARE(item->text(ProblemsView::MessageColumn), i18n::message(*d));
+    QCOMPARE(item->text(ProblemsView::HintColumn), i18n::hint(*d));
+    const int pos = panel.editor()->positionOf(d->pos.line, d->pos.column);
+    const QString tip = panel.editor()->diagnosticToolTipAt(pos + 1);
+    QVERIFY2(tip.contains(QStringLiteral("Error")) && tip.contains(i18n::message(*d).toHtmlEscaped()), qPrintable(tip));
+    QVERIFY(i18n::hint(*d).isEmpty() || tip.contains(QStringLiteral("Sugerencia:")));
+    QVERIFY(panel.grab().save(m_screenshots + QStringLiteral("/editor_decimal_comma_es.png")));
+    // the model language is the same in Spanish: '.' parses, ',' is still an error
+    panel.setText(pendulum);
+    QVERIFY(waitChecked(panel));
+    QCOMPARE(panel.errorCount(), 0);
+    QCOMPARE(panel.statusText(), QStringLiteral("Sin problemas"));
+    panel.setText(comma);
+    QVERIFY(waitChecked(panel));
+    QVERIFY(findCode(panel.diagnostics(), "decimal-comma"));
+
+    QVERIFY(i18n::install("en"));
+    QTRY_COMPARE(problems->headerItem()->text(ProblemsView::MessageColumn), QStringLiteral("Message"));
+    QCOMPARE(panel.applyButton()->text(), QStringLiteral("Apply"));
 }
 
 QTEST_MAIN(EditorTest)

@@ -2,11 +2,15 @@
 // synthetic snapshots, the window and downsampling, reset, CSV and PNG export, and a
 // panel following a running SimulationRunner (screenshots in PADROB_SCREENSHOT_DIR).
 
+#include "ide/i18n/language.h"
 #include "ide/studio/model/model_bundle.h"
 #include "ide/studio/plots/plot_panel.h"
 #include "ide/studio/sim/simulation_runner.h"
 #include "ide/studio/sim/snapshot.h"
+#include "tests/studio/gui_test.h"
 
+#include <QChart>
+#include <QChartView>
 #include <QDir>
 #include <QFile>
 #include <QImage>
@@ -88,6 +92,7 @@ private slots:
     void exportCsvReadsBack();
     void exportPngIsNotBlank();
     void followsRunner();
+    void spanishAtRunTimeKeepsTheCsvDecimalPoint();
 
 private:
     std::shared_ptr<const studio::ModelBundle> m_pendulum, m_liner;
@@ -95,6 +100,8 @@ private:
 
 void PlotsTest::initTestCase()
 {
+    // the tests read English texts, whatever the system's locale
+    QVERIFY(i18n::install("en"));
     m_pendulum = example(QStringLiteral("pendulum.pad"));
     m_liner = example(QStringLiteral("liner_manipulator.pad"));
     QVERIFY(m_pendulum);
@@ -333,6 +340,52 @@ void PlotsTest::followsRunner()
     QVERIFY(panel.sampleCount() <= 1);
     QTest::qWait(50);
     QCOMPARE(panel.sampleCount(), 1);  // the initial state, polled again
+}
+
+// The panel changes language while it plots: the list, the legends and the axes'
+// numbers (1,5) in Spanish, the history and the ticks kept; the CSV keeps '.'.
+void PlotsTest::spanishAtRunTimeKeepsTheCsvDecimalPoint()
+{
+    PlotPanel panel;
+    panel.resize(900, 600);
+    panel.setBundle(m_pendulum);
+    panel.setMinSampleInterval(0);
+    for (int k = 0; k < 300; ++k) panel.addSnapshot(pendulumAt(m_pendulum, 0.01 * k + 0.1 / 3));
+    panel.setSignalSelected(QStringLiteral("q:1"), true);
+    panel.setSignalSelected(QStringLiteral("energy"), true);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    panel.refresh();
+    QVERIFY(panel.grab().save(screenshotDir() + QStringLiteral("/plots_en.png")));
+
+    QVERIFY(i18n::install("es"));
+    QTRY_COMPARE(panel.series(QStringLiteral("energy"))->name(), QStringLiteral("energía mecánica [J]"));
+    QCOMPARE(panel.signalLabel(QStringLiteral("energy")), QStringLiteral("energía mecánica [J]"));
+    QCOMPARE(panel.selectedSignals(), (QStringList{QStringLiteral("q:1"), QStringLiteral("energy")}));
+    QCOMPARE(panel.sampleCount(), 300);
+    QCOMPARE(panel.chartCount(), 2);
+    for (QChartView* view : panel.findChildren<QChartView*>()) {
+        QVERIFY(view->chart()->localizeNumbers());
+        QCOMPARE(view->chart()->locale().decimalPoint(), QStringLiteral(","));
+    }
+    panel.refresh();
+    studio::test::settle(200);
+    QVERIFY(panel.grab().save(screenshotDir() + QStringLiteral("/plots_es.png")));
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("plots.csv"));
+    QVERIFY2(panel.exportCsv(path), qPrintable(panel.errorString()));
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QList<QByteArray> lines = f.readAll().split('\n');
+    QCOMPARE(QString::fromUtf8(lines[0]), QStringLiteral("t [s],C 1 pivot q [rad],energía mecánica [J]"));
+    const QList<QByteArray> cells = lines[1].split(',');
+    QCOMPARE(cells.size(), 3);
+    QCOMPARE(cells[0].toDouble(), 0.1 / 3);  // '.' and round-trip decimals, in every language
+    QCOMPARE(cells[1].toDouble(), std::sin(0.1 / 3));
+
+    QVERIFY(i18n::install("en"));
+    QTRY_COMPARE(panel.series(QStringLiteral("energy"))->name(), QStringLiteral("mechanical energy [J]"));
+    QCOMPARE(panel.findChildren<QChartView*>().front()->chart()->locale().decimalPoint(), QStringLiteral("."));
 }
 
 QTEST_MAIN(PlotsTest)

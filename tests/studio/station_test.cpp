@@ -3,7 +3,8 @@
 // refused with their reason), the devices list and the channel bars following a fake
 // device, the calibration wizard from rest to finish, the mapping table driving the
 // engine's commands, banks and the banner, serial consoles, record and replay, and
-// screenshots of the page and of each wizard page.
+// screenshots of the page and of each wizard page, in English and in Spanish; a switch
+// of language at run time re-words the page and its numbers take the decimal comma.
 //
 // The station is not started in most tests: post() then runs at once, and the test
 // steps the engine itself (call → update). One test runs a started station, as the
@@ -12,6 +13,7 @@
 #include "tests/studio/gui_test.h"
 #include "../trainer/fake_device.h"
 
+#include "ide/i18n/language.h"
 #include "ide/studio/station/calibration_wizard.h"
 #include "ide/studio/station/channel_bars.h"
 #include "ide/studio/station/curve_plot.h"
@@ -25,6 +27,8 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QGroupBox>
+#include <QHeaderView>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
@@ -195,6 +199,7 @@ QTreeWidgetItem* deviceRow(QTreeWidget* list, const QString& id)
 class StationTest : public QObject {
     Q_OBJECT
 private slots:
+    void initTestCase();
     void profileListShowsShippedAndUserAndLoadsOne();
     void defaultProfileWhenTheModelHasNone();
     void newSaveAndSaveAs();
@@ -216,10 +221,23 @@ private slots:
     void serialConsoleIsAddedAndRemoved();
     void recordAndReplay();
     void runningStationFollowsTheLever();
+    void languageSwitchesAtRunTime();
     void screenshots();
+    void cleanupTestCase();
 };
 
 // ---- profiles ------------------------------------------------------------------
+
+void StationTest::initTestCase()
+{
+    // the texts the tests compare are the English ones (whatever the system's language)
+    QVERIFY(i18n::install("en"));
+}
+
+void StationTest::cleanupTestCase()
+{
+    i18n::install("en");
+}
 
 void StationTest::profileListShowsShippedAndUserAndLoadsOne()
 {
@@ -604,7 +622,7 @@ void StationTest::wizardCapturesAndFinishes()
     QVERIFY(wizard->restText()->text().contains("Spread: 2"));
     wizard->addReading(40.0);  // after the capture: not counted
     QCOMPARE(wizard->capture().restCount(), 5);
-    QVERIFY(wizard->grab().save(screenshotPath("station_wizard_rest.png")));
+    QVERIFY(wizard->grab().save(screenshotPath("station_wizard_rest_en.png")));
 
     // page 2: the full travel
     wizard->next();
@@ -617,7 +635,7 @@ void StationTest::wizardCapturesAndFinishes()
     QCOMPARE(wizard->capture().seenMin(), -90.0);
     QCOMPARE(wizard->capture().seenMax(), 100.0);
     QCOMPARE(wizard->travelBar()->value(), 0.0);
-    QVERIFY(wizard->grab().save(screenshotPath("station_wizard_travel.png")));
+    QVERIFY(wizard->grab().save(screenshotPath("station_wizard_travel_en.png")));
 
     // page 3: settings
     wizard->next();
@@ -646,7 +664,7 @@ void StationTest::wizardCapturesAndFinishes()
     QCOMPARE(wizard->previewValue(), c.apply(51.0));
     QCOMPARE(wizard->previewValueBar()->value(), wizard->previewValue());
     QCOMPARE(wizard->curvePlot()->calibration(), c);
-    QVERIFY(wizard->grab().save(screenshotPath("station_wizard_settings.png")));
+    QVERIFY(wizard->grab().save(screenshotPath("station_wizard_settings_en.png")));
 
     QSignalSpy dirty(rig.page.get(), &StationPage::dirtyChanged);
     wizard->button(QWizard::FinishButton)->click();
@@ -707,7 +725,7 @@ void StationTest::wizardOnATrigger()
     QCOMPARE(c.rawMax, 990.0);
     QCOMPARE(c.apply(990.0), 1.0);
     QCOMPARE(c.apply(5.0), 0.0);
-    QVERIFY(wizard.grab().save(screenshotPath("station_wizard_trigger.png")));
+    QVERIFY(wizard.grab().save(screenshotPath("station_wizard_trigger_en.png")));
 }
 
 // ---- mapping and banks -------------------------------------------------------------
@@ -881,8 +899,7 @@ void StationTest::serialConsoleIsAddedAndRemoved()
         dialog.baudCombo()->setCurrentIndex(3);
         QCOMPARE(dialog.setting(), (trainer::DeviceSetting{"serial:/dev/ttyACM7", 57600}));
         dialog.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
-        QVERIFY(dialog.grab().save(screenshotPath("station_serial_dialog.png")));
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));  // (its screenshots: screenshots())
     }
     Rig rig;
     QVERIFY(rig.page->newProfile("Console"));
@@ -900,7 +917,7 @@ void StationTest::serialConsoleIsAddedAndRemoved()
     rig.page->resize(1500, 900);
     rig.page->show();
     QVERIFY(QTest::qWaitForWindowExposed(rig.page.get()));
-    QVERIFY(rig.page->grab().save(screenshotPath("station_page_serial.png")));
+    QVERIFY(rig.page->grab().save(screenshotPath("station_page_serial_en.png")));
     QVERIFY(rig.page->removeSelectedDevice());
     QVERIFY(rig.page->profile().devices.isEmpty());
     QVERIFY(rig.engineProfile().devices.isEmpty());
@@ -985,39 +1002,141 @@ void StationTest::runningStationFollowsTheLever()
 
 // ---- screenshots ------------------------------------------------------------------
 
-void StationTest::screenshots()
+// ---- the language at run time -----------------------------------------------------
+
+void StationTest::languageSwitchesAtRunTime()
 {
-    Rig rig(true, 6, 15, true);  // a gamepad as SDL shows it
-    QVERIFY(rig.page->loadProfile("Gamepad"));
+    Rig rig;
+    QVERIFY(rig.page->newProfile("Blank"));  // no calibrations: "not calibrated"
     rig.page->resize(1500, 900);
     rig.page->show();
     QVERIFY(QTest::qWaitForWindowExposed(rig.page.get()));
-    // the second bank, a few levers moved, one button held, one lever waiting
-    rig.press(trainer::gamepad::RightShoulder);
-    rig.pad->setAxis(0, 12000);
-    rig.pad->setAxis(1, -20000);
-    rig.pad->setAxis(4, 30000);
-    rig.pad->setButton(trainer::gamepad::A, true);
+    MappingTable* table = rig.page->mappingTable();
+    table->addMapping();
+    table->gainSpin(0)->setValue(1.25);
+    rig.pad->setAxis(0, 50);
     rig.step(5);
-    rig.pad->setAxis(2, 26000);  // moved after the switch: armed; held since: waits
-    rig.step(5);
-    trainer::ChannelCalibration c{-32100, 120, 32500, 0.08, 0.06};
-    c.captured = true;
-    rig.page->applyCalibration("gamepad", 0, c);
-    rig.step(5);
-    QTest::qWait(50);
-    QVERIFY(rig.page->grab().save(screenshotPath("station_page.png")));
+    studio::ChannelPanel* panel = rig.page->channelPanel();
+    auto* mappingBox = qobject_cast<QGroupBox*>(table->parentWidget());
+    QVERIFY(mappingBox);
+    QCOMPARE(mappingBox->title(), QStringLiteral("Valve mapping"));
+    QCOMPARE(rig.page->recordButton()->text(), QStringLiteral("Record input…"));
+    QCOMPARE(panel->flagLabel(0)->text(), QStringLiteral("not calibrated"));
+    QCOMPARE(panel->valueLabel(0)->text(), QStringLiteral("+0.50"));
+    QCOMPARE(table->table()->horizontalHeaderItem(MappingTable::BankColumn)->text(), QStringLiteral("Bank"));
+    QCOMPARE(deviceRow(rig.page->devicesList(), "sdl:0300fake")->text(StationPage::StatusColumn),
+             QStringLiteral("Connected"));
+    const QString gainEn = table->gainSpin(0)->text();
+    QVERIFY2(gainEn.contains('.'), qPrintable(gainEn));
 
-    // a device gone, a missing drive: the warnings
-    trainer::StationProfile odd = rig.page->profile();
-    odd.banks[0].mappings.append({"gamepad", 3, 42, 1.0, 1});
-    odd.name = "With problems";
-    QVERIFY(trainer::ProfileStore(rig.userRoot).save(rig.modelPath, odd, trainer::ProfileStore::SaveMode::CreateOnly));
-    rig.page->setModel(rig.modelPath, linerDrives(), "With problems");
-    rig.pad->setStatus(trainer::DeviceStatus::Disconnected);
-    rig.step(5);
-    QTest::qWait(50);
-    QVERIFY(rig.page->grab().save(screenshotPath("station_page_warnings.png")));
+    // to Spanish, without a restart: the texts, and numbers with a decimal comma
+    QVERIFY(i18n::install("es"));
+    studio::test::settle(100);
+    rig.step();
+    QCOMPARE(mappingBox->title(), QStringLiteral("Asignación de válvulas"));
+    QCOMPARE(rig.page->recordButton()->text(), QStringLiteral("Grabar entradas…"));
+    QCOMPARE(panel->flagLabel(0)->text(), QStringLiteral("sin calibrar"));
+    QCOMPARE(panel->valueLabel(0)->text(), QStringLiteral("+0,50"));
+    QCOMPARE(panel->calibrateButton(0)->text(), QStringLiteral("Calibrar…"));
+    QCOMPARE(table->table()->horizontalHeaderItem(MappingTable::BankColumn)->text(), QStringLiteral("Banco"));
+    QCOMPARE(deviceRow(rig.page->devicesList(), "sdl:0300fake")->text(StationPage::StatusColumn),
+             QStringLiteral("Conectado"));
+    QVERIFY2(rig.page->bankLabel()->text().startsWith(QStringLiteral("Banco")), qPrintable(rig.page->bankLabel()->text()));
+    const QString gainEs = table->gainSpin(0)->text();
+    QCOMPARE(gainEs, QString(gainEn).replace('.', ','));
+    // the spin box reads what it shows: a gain typed with a comma
+    QCOMPARE(table->gainSpin(0)->valueFromText(QStringLiteral("0,75")), 0.75);
+
+    // and back
+    QVERIFY(i18n::install("en"));
+    studio::test::settle(100);
+    rig.step();
+    QCOMPARE(mappingBox->title(), QStringLiteral("Valve mapping"));
+    QCOMPARE(panel->valueLabel(0)->text(), QStringLiteral("+0.50"));
+    QCOMPARE(table->gainSpin(0)->text(), gainEn);
+}
+
+// ---- screenshots ------------------------------------------------------------------
+
+void StationTest::screenshots()
+{
+    for (const QString& lang : QStringList{"en", "es"}) {
+        QVERIFY(i18n::install(lang));
+        const QString suffix = "_" + lang + ".png";
+        {
+            Rig rig(true, 6, 15, true);  // a gamepad as SDL shows it
+            QVERIFY(rig.page->loadProfile("Gamepad"));
+            rig.page->resize(1500, 900);
+            rig.page->show();
+            QVERIFY(QTest::qWaitForWindowExposed(rig.page.get()));
+            // the second bank, a few levers moved, one button held, one lever waiting
+            rig.press(trainer::gamepad::RightShoulder);
+            rig.pad->setAxis(0, 12000);
+            rig.pad->setAxis(1, -20000);
+            rig.pad->setAxis(4, 30000);
+            rig.pad->setButton(trainer::gamepad::A, true);
+            rig.step(5);
+            rig.pad->setAxis(2, 26000);  // moved after the switch: armed; held since: waits
+            rig.step(5);
+            trainer::ChannelCalibration c{-32100, 120, 32500, 0.08, 0.06};
+            c.captured = true;
+            rig.page->applyCalibration("gamepad", 0, c);
+            rig.step(5);
+            QTest::qWait(50);
+            QVERIFY(rig.page->grab().save(screenshotPath("station_page" + suffix)));
+
+            // the calibration wizard, each page
+            CalibrationWizard* wizard = rig.page->calibrate(1);
+            QVERIFY(wizard);
+            wizard->setLiveInput(false);
+            wizard->setRestReadings(5);
+            QVERIFY(QTest::qWaitForWindowExposed(wizard));
+            for (double raw : {-120.0, -80.0, -150.0, -100.0, -110.0}) wizard->addReading(raw);
+            QTest::qWait(50);
+            QVERIFY(wizard->grab().save(screenshotPath("station_wizard_rest" + suffix)));
+            wizard->next();
+            for (double raw : {-100.0, 9000.0, 31000.0, 12000.0, -30500.0, -4000.0}) wizard->addReading(raw);
+            QTest::qWait(50);
+            QVERIFY(wizard->grab().save(screenshotPath("station_wizard_travel" + suffix)));
+            wizard->next();
+            wizard->deadBandLowSpin()->setValue(6.5);
+            wizard->deadBandHighSpin()->setValue(6.5);
+            wizard->curveCombo()->setCurrentIndex(1);
+            wizard->exponentSpin()->setValue(2.5);
+            wizard->filterSpin()->setValue(12.5);
+            wizard->addReading(14000.0);
+            QTest::qWait(50);
+            QVERIFY(wizard->grab().save(screenshotPath("station_wizard_settings" + suffix)));
+            if (lang == QLatin1String("es")) {
+                // a decimal comma in the spin boxes and in the readings
+                QVERIFY2(wizard->exponentSpin()->text().contains(QStringLiteral("2,50")),
+                         qPrintable(wizard->exponentSpin()->text()));
+                QVERIFY2(wizard->filterSpin()->text().contains(QStringLiteral("12,5")),
+                         qPrintable(wizard->filterSpin()->text()));
+            }
+            wizard->reject();
+
+            // a device gone, a missing drive: the warnings
+            trainer::StationProfile odd = rig.page->profile();
+            odd.banks[0].mappings.append({"gamepad", 3, 42, 1.0, 1});
+            odd.name = "With problems";
+            QVERIFY(trainer::ProfileStore(rig.userRoot).save(rig.modelPath, odd, trainer::ProfileStore::SaveMode::CreateOnly));
+            rig.page->setModel(rig.modelPath, linerDrives(), "With problems");
+            rig.pad->setStatus(trainer::DeviceStatus::Disconnected);
+            rig.step(5);
+            QTest::qWait(50);
+            QVERIFY(rig.page->grab().save(screenshotPath("station_page_warnings" + suffix)));
+        }
+        {
+            studio::SerialConsoleDialog dialog;
+            dialog.portCombo()->setCurrentText("/dev/serial/by-id/usb-Padrob_DAQ_0042-if00");
+            dialog.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+            QTest::qWait(50);
+            QVERIFY(dialog.grab().save(screenshotPath("station_serial_dialog" + suffix)));
+        }
+    }
+    QVERIFY(i18n::install("en"));
 }
 
 QTEST_MAIN(StationTest)

@@ -6,6 +6,7 @@
 // train_<tutorial>_{start,hud,result}_{en,es}.png with the other screenshots.
 
 #include "tests/studio/gui_test.h"
+#include "ide/i18n/language.h"
 #include "ide/studio/app/main_window.h"
 #include "ide/studio/train/train_page.h"
 #include "ide/studio/train/tutorial_runner.h"
@@ -20,7 +21,6 @@
 #include <QStandardPaths>
 #include <QSurfaceFormat>
 #include <QTest>
-#include <QTranslator>
 
 #include <memory>
 
@@ -89,19 +89,15 @@ private slots:
 
     void english()
     {
-        QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+        QVERIFY(i18n::install("en"));
         shootEveryTutorial("en");
     }
 
     void spanish()
     {
-        QLocale::setDefault(QLocale(QLocale::Spanish, QLocale::Spain));
-        QTranslator translator;
-        const bool translated = translator.load(QLocale(), "padrob", "_", QStringLiteral(PADROB_QM_DIR));
-        if (translated) QApplication::installTranslator(&translator);
+        QVERIFY(i18n::install("es"));
         shootEveryTutorial("es");
-        if (translated) QApplication::removeTranslator(&translator);
-        QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+        QVERIFY(i18n::install("en"));
     }
 };
 

@@ -8,11 +8,15 @@
 // (operators, attempts, chart, CSV, adding an operator; records that cannot be opened:
 // the attempt goes to a pending file, imported at the next opening); the expert's
 // ghost beside a live attempt; a live attempt's recorded input saved as the stage's
-// demonstration replays headless to the same result. Screenshots of the start screen,
-// the HUD and the result, in English and in Spanish (every tutorial:
-// train_shots_test).
+// demonstration replays headless to the same result. The language at run time: the
+// course screen's "Español" / "English" (in kiosk mode too) re-word the course, the
+// start screen, the HUD and the result at once, numbers with the decimal comma in
+// Spanish. Screenshots of the course, the kiosk's course screen, the start screen, the
+// HUD, the result, the debrief and the records, in English and in Spanish (every
+// tutorial's start, HUD and result: train_shots_test).
 
 #include "tests/studio/gui_test.h"
+#include "ide/i18n/language.h"
 #include "ide/studio/app/main_window.h"
 #include "ide/studio/train/records_view.h"
 #include "ide/studio/train/train_page.h"
@@ -42,8 +46,8 @@
 #include <QTableWidget>
 #include <QTest>
 #include <QToolBar>
+#include <QRegularExpression>
 #include <QTemporaryDir>
-#include <QTranslator>
 
 #include <memory>
 
@@ -91,11 +95,15 @@ private slots:
         const QString db = trainer::records::RecordsDb::defaultSqlitePath();
         for (const char* suffix : {"", "-wal", "-shm"}) QFile::remove(db + suffix);
         QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/pending-attempts").removeRecursively();
-        QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+        QVERIFY(i18n::install("en"));
         openWindow();
     }
 
-    void cleanupTestCase() { m_window.reset(); }
+    void cleanupTestCase()
+    {
+        m_window.reset();
+        i18n::install("en");
+    }
 
     void courseListsTheTutorials()
     {
@@ -489,6 +497,15 @@ private slots:
         QVERIFY(!m_window->menuBar()->isVisible());
         m_window->setWorkspace(MainWindow::Workspace::Model);  // refused in kiosk mode
         QCOMPARE(m_window->workspace(), MainWindow::Workspace::Train);
+        // the languages, big enough for a finger
+        for (const char* code : {"es", "en"}) {
+            QPushButton* b = page()->languageButton(code);
+            QVERIFY(b);
+            QVERIFY(b->isVisible());
+            QVERIFY2(b->height() >= 56 && b->width() >= 150, qPrintable(QString("%1×%2").arg(b->width()).arg(b->height())));
+            QCOMPARE(b->text(), i18n::nativeName(code));
+            QCOMPARE(b->isChecked(), QLatin1String(code) == QLatin1String("en"));
+        }
         QVERIFY(m_window->grab().save(screenshotPath("train_kiosk_en.png")));
         // no PIN: the keys alone
         QTest::keyClick(page(), Qt::Key_F12, Qt::ControlModifier | Qt::ShiftModifier);
@@ -525,15 +542,83 @@ private slots:
         QVERIFY(page()->progressOf("T0").passed);
     }
 
+    void languageSwitchesAtRunTime()
+    {
+        // the course screen in English, T0 open in the background of an attempt later
+        page()->showCourse();
+        QPushButton* es = page()->languageButton("es");
+        QPushButton* en = page()->languageButton("en");
+        QVERIFY(es && en);
+        QVERIFY(es->isVisible() && en->isVisible());  // outside kiosk mode too
+        QVERIFY(en->isChecked() && !es->isChecked());
+        QCOMPARE(page()->courseTitle()->text(), QString("Training course"));
+        QVERIFY(page()->courseList()->item(0)->text().contains("Reach a target"));
+        // a click on "Español": everything at once, no restart
+        QTest::mouseClick(es, Qt::LeftButton);
+        QTRY_COMPARE(page()->courseTitle()->text(), QString("Curso de entrenamiento"));
+        QCOMPARE(i18n::current(), QString("es"));
+        QCOMPARE(TrainPage::language(), QString("es"));
+        QCOMPARE(QSettings().value("ui/language").toString(), QString("es"));  // remembered
+        QVERIFY(es->isChecked() && !en->isChecked());
+        QVERIFY2(page()->courseList()->item(0)->text().contains("Alcanzar un objetivo"),
+                 qPrintable(page()->courseList()->item(0)->text()));
+        QVERIFY(page()->courseList()->item(0)->text().contains("Nivel"));
+        // the start screen follows a switch while it is shown
+        QVERIFY(page()->openTutorial("T0"));
+        const QString titleEs = page()->startTitle()->text();
+        QVERIFY(titleEs.contains("Alcanzar un objetivo"));
+        i18n::switchTo("en");
+        QTRY_VERIFY(page()->startTitle()->text().contains("Reach a target"));
+        // the HUD: the goal's name and the numbers, in Spanish during the attempt
+        page()->startAttempt();
+        TutorialRunner* runner = m_window->tutorialRunner();
+        QTRY_VERIFY_WITH_TIMEOUT(runner->latest() && runner->latest()->snapshot->t > 0.5, 10000);
+        QTRY_VERIFY(page()->hud()->text().contains("Bring the claws to the green sphere"));
+        QVERIFY(page()->hud()->text().contains(QRegularExpression("Distance: \\d+\\.\\d\\d m")));
+        i18n::switchTo("es");
+        QTRY_VERIFY2(page()->hud()->text().contains("Lleve las garras a la esfera verde"), qPrintable(page()->hud()->text()));
+        const QString hud = page()->hud()->text();
+        QVERIFY2(hud.contains(QRegularExpression("Distancia: \\d+,\\d\\d m")), qPrintable(hud));
+        QVERIFY2(hud.contains(QRegularExpression("Tiempo: \\d+,\\d / 120 s")), qPrintable(hud));
+        // the result: the score's time with a decimal comma
+        page()->stopAttempt();
+        QTRY_VERIFY_WITH_TIMEOUT(page()->screen() == TrainPage::Screen::Result, 5000);
+        QVERIFY2(page()->resultHeading()->text() == QString("NO APROBADO"), qPrintable(page()->resultHeading()->text()));
+        QVERIFY2(page()->resultScore()->text().contains(QRegularExpression("\\d,\\d s")),
+                 qPrintable(page()->resultScore()->text()));
+        // and back to English, on the result screen
+        i18n::switchTo("en");
+        QTRY_COMPARE(page()->resultHeading()->text(), QString("NOT PASSED"));
+        QVERIFY2(page()->resultScore()->text().contains(QRegularExpression("\\d\\.\\d s")),
+                 qPrintable(page()->resultScore()->text()));
+        // the kiosk: its course screen has the buttons too, and they work there
+        page()->showCourse();
+        m_window->setKioskMode(true);
+        settle();
+        QVERIFY(es->isVisible());
+        QTest::mouseClick(es, Qt::LeftButton);
+        QTRY_COMPARE(page()->courseTitle()->text(), QString("Curso de entrenamiento"));
+        QTest::mouseClick(en, Qt::LeftButton);
+        QTRY_COMPARE(page()->courseTitle()->text(), QString("Training course"));
+        m_window->setKioskMode(false);
+        settle();
+    }
+
     void spanishScreens()
     {
         m_window.reset();
-        QLocale::setDefault(QLocale(QLocale::Spanish, QLocale::Spain));
-        QTranslator translator;
-        const bool translated = translator.load(QLocale(), "padrob", "_", QStringLiteral(PADROB_QM_DIR));
-        if (translated) QApplication::installTranslator(&translator);
+        QVERIFY(i18n::install("es"));
         openWindow();
+        page()->showCourse();
+        settle();
         QVERIFY(page()->courseList()->item(0)->text().contains("Alcanzar un objetivo"));
+        QVERIFY(m_window->grab().save(screenshotPath("train_course_es.png")));
+        m_window->setKioskMode(true);
+        settle(500);
+        QVERIFY(page()->languageButton("es")->isChecked());
+        QVERIFY(m_window->grab().save(screenshotPath("train_kiosk_es.png")));
+        m_window->setKioskMode(false);
+        settle(500);
         QVERIFY(page()->openTutorial("T0"));
         settle(500);
         QVERIFY(m_window->grab().save(screenshotPath("train_start_es.png")));
@@ -550,9 +635,17 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(page()->expertRun(), 60000);
         settle(500);
         QVERIFY(m_window->grab().save(screenshotPath("train_debrief_es.png")));
+        // the records: the guest's attempts (most made in English, worded in Spanish now)
+        page()->showRecords();
+        QVERIFY(page()->recordsView()->selectOperator("guest"));
+        QTableWidget* attempts = page()->recordsView()->attemptsTable();
+        QVERIFY(attempts->rowCount() >= 2);
+        attempts->setCurrentCell(attempts->rowCount() - 1, 0);  // the first attempt: in English
+        settle(500);
+        QVERIFY(m_window->grab().save(screenshotPath("train_records_es.png")));
+        page()->showCourse();
         m_window.reset();
-        if (translated) QApplication::removeTranslator(&translator);
-        QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+        QVERIFY(i18n::install("en"));
     }
 };
 

@@ -3,6 +3,7 @@
 // its crank against the closed-form solution, the liner's slew, a loop that cannot
 // close, and screenshots.
 
+#include "ide/i18n/language.h"
 #include "ide/studio/model/model_bundle.h"
 #include "ide/studio/tree/model_tree.h"
 #include "ide/studio/tree/joint_sliders.h"
@@ -12,6 +13,8 @@
 
 #include <QDir>
 #include <QDoubleSpinBox>
+#include <QLabel>
+#include <QPushButton>
 #include <QFile>
 #include <QSignalSpy>
 #include <QSlider>
@@ -111,6 +114,7 @@ B2 3 P2 0.125 0 0 A2 0 0 1 R2 1 0 0
 class TreeTest : public QObject {
     Q_OBJECT
 private slots:
+    void initTestCase();
     void fourBarTreeShowsLoopAndCoordinates();
     void linerTreeShowsJointsAndDrives();
     void selectingAJointEmitsTreeIndexAndLine();
@@ -124,7 +128,11 @@ private slots:
     void resetReturnsToTheInitialPose();
     void everyModelPosesAtItsSliderEnds();
     void screenshots();
+    void spanishAtRunTime();
 };
+
+// the tests read English texts and '.' numbers, whatever the system's locale
+void TreeTest::initTestCase() { QVERIFY(i18n::install("en")); }
 
 void TreeTest::fourBarTreeShowsLoopAndCoordinates()
 {
@@ -549,6 +557,57 @@ void TreeTest::screenshots()
     QVERIFY(QTest::qWaitForWindowExposed(&rocker));
     rocker.spinBox(0)->setValue(80.0);
     saveScreenshot(&rocker, QStringLiteral("sliders_loop_cannot_close.png"));
+}
+
+// The tree and the sliders change language while they are shown: texts, units and
+// numbers (1,4 m) in Spanish, the selection and the pose kept; and back to English.
+void TreeTest::spanishAtRunTime()
+{
+    const auto liner = loadModel("liner_manipulator.pad");
+    ModelTree tree;
+    tree.resize(1000, 760);
+    tree.setBundle(liner);
+    tree.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&tree));
+    tree.selectJoint(liner->model->jointIndex(2));
+    JointSliders sliders;
+    sliders.resize(560, 420);
+    sliders.setBundle(liner);
+    sliders.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&sliders));
+    sliders.spinBox(0)->setValue(30.0);
+    JointSliders rocker;
+    rocker.resize(560, 160);
+    rocker.setBundle(bundleOf(QString::fromLatin1(kDoubleRocker)));
+    rocker.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&rocker));
+    rocker.spinBox(0)->setValue(80.0);
+    QVERIFY2(rocker.status().startsWith(QStringLiteral("The loops cannot close with C 1 at 80.00°")), qPrintable(rocker.status()));
+
+    QVERIFY(i18n::install("es"));
+    QTRY_COMPARE(tree.headerItem()->text(ModelTree::ElementColumn), QStringLiteral("Elemento"));
+    QCOMPARE(tree.jointItem(2)->text(ModelTree::TypeColumn), QStringLiteral("actuador pivotado"));
+    QCOMPARE(tree.jointItem(2)->text(ModelTree::DetailsColumn), QStringLiteral("1,4 m … 1,617 m"));
+    QCOMPARE(tree.jointItem(4)->text(ModelTree::DetailsColumn), QStringLiteral("-65,0° … 65,0°"));
+    QCOMPARE(tree.jointItem(1)->text(ModelTree::DriveColumn), QStringLiteral("hidráulico 0,131 rad/s; alivio 54 kN·m"));
+    QCOMPARE(tree.bodyItem(1)->text(ModelTree::DetailsColumn), QStringLiteral("sin masa"));
+    QCOMPARE(tree.bodyItem(2)->text(ModelTree::DetailsColumn), QStringLiteral("306 kg"));
+    QVERIFY(tree.currentItem() && tree.currentItem()->data(0, ModelTree::IdRole).toInt() == 2);  // kept
+    QTRY_VERIFY2(sliders.spinBox(0)->text().startsWith(QLatin1String("30,00")), qPrintable(sliders.spinBox(0)->text()));
+    QCOMPARE(sliders.spinBox(0)->value(), 30.0);  // the pose stays
+    QCOMPARE(sliders.findChild<QPushButton*>()->text(), QStringLiteral("Restablecer postura"));
+    QVERIFY2(rocker.status().startsWith(QStringLiteral("Los lazos no pueden cerrarse con C 1 en 80,00°")),
+             qPrintable(rocker.status()));
+    QTest::qWait(100);  // (the layouts, for the longer texts)
+    saveScreenshot(&tree, QStringLiteral("tree_liner_manipulator_es.png"));
+    saveScreenshot(&sliders, QStringLiteral("sliders_liner_manipulator_es.png"));
+    saveScreenshot(&rocker, QStringLiteral("sliders_loop_cannot_close_es.png"));
+
+    QVERIFY(i18n::install("en"));
+    QTRY_COMPARE(tree.headerItem()->text(ModelTree::ElementColumn), QStringLiteral("Element"));
+    QCOMPARE(tree.jointItem(2)->text(ModelTree::DetailsColumn), QStringLiteral("1.4 m … 1.617 m"));
+    QTRY_VERIFY(sliders.spinBox(0)->text().startsWith(QLatin1String("30.00")));
+    QVERIFY(rocker.status().startsWith(QStringLiteral("The loops cannot close with C 1 at 80.00°")));
 }
 
 QTEST_MAIN(TreeTest)

@@ -3,6 +3,7 @@
 #include "solver/kinematics/kinematics.h"
 
 #include <QCoreApplication>
+#include <QLocale>
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +20,24 @@ struct Tr {
 double angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
 {
     return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+/// A measure as the operator reads it: in the locale of the language (1,25 in Spanish;
+/// i18n::install sets the default), without thousands separators.
+QString shown(double v, int decimals)
+{
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
+    return locale.toString(v, 'f', decimals);
+}
+
+/// A solver Text in the current language (as i18n::text, which the trainer library does
+/// not link: the catalogue's translation of each template, English without one).
+QString translated(const solver::Text& t)
+{
+    return QString::fromStdString(t.render([](const char* context, const char* tmpl) {
+        return QCoreApplication::translate(context, tmpl).toStdString();
+    }));
 }
 
 /// The largest angle of the rotation between two attitudes [rad].
@@ -85,7 +104,7 @@ QString TutorialEvent::text(const Tutorial* tutorial, const std::string& languag
         if (!worker && std::size_t(subject) < tutorial->spec.parts.size())
             d = QString::fromStdString(tutorial->spec.parts[std::size_t(subject)].name.in(language));
     }
-    const QString v = QString::number(value, 'f', 2);
+    const QString v = shown(value, 2);
     switch (kind) {
     case Kind::GoalDone: return Tr::tr("Goal \"%1\" done").arg(d);
     case Kind::Grasp: return Tr::tr("The load is in the claws");
@@ -97,11 +116,11 @@ QString TutorialEvent::text(const Tutorial* tutorial, const std::string& languag
     case Kind::NearMiss: return Tr::tr("Passed %1 m from %2").arg(v, d);
     case Kind::WorkerZone: return Tr::tr("Entered the safety zone of %1 (%2 m)").arg(d, v);
     case Kind::WorkerHit: return Tr::tr("Touched %1: the attempt ends").arg(d);
-    case Kind::Overload: return Tr::tr("Relief valve of %1 opened (%2 kN)").arg(d, QString::number(value / 1000.0, 'f', 1));
+    case Kind::Overload: return Tr::tr("Relief valve of %1 opened (%2 kN)").arg(d, shown(value / 1000.0, 1));
     case Kind::LimitBang: return Tr::tr("%1 hit its end stop at full speed").arg(d);
     case Kind::TimeUp: return Tr::tr("The time limit was reached");
     case Kind::InputEnded: return Tr::tr("The recorded input ended before the goals were done");
-    case Kind::SolverError: return Tr::tr("The simulation stopped: %1").arg(d);
+    case Kind::SolverError: return Tr::tr("The simulation stopped: %1").arg(detailText.empty() ? d : translated(detailText));
     case Kind::Aborted: return Tr::tr("The attempt was stopped");
     }
     return {};
@@ -208,10 +227,12 @@ bool TutorialSession::step()
     m_qdBefore.assign(m_sim->state().qd.data(), m_sim->state().qd.data() + m.nb);
     m_simEvents.clear();
     std::string error;
+    solver::Text errorText;
     ++m_step;
     const double next = double(m_step) * m_options.dt;
-    if (!m_sim->advanceTo(next, m_simEvents, error)) {
+    if (!m_sim->advanceTo(next, m_simEvents, error, &errorText)) {
         addEvent(TutorialEvent::Kind::SolverError, 0.0, 0.0, error);
+        m_result.events.back().detailText = std::move(errorText);
         end("solver-error", false);
         return false;
     }

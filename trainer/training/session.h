@@ -50,6 +50,9 @@ struct TutorialEvent {
     double penalty = 0.0;  ///< points taken
     std::string detail;    ///< goal id, shape, drive name (as in the model); a PART's or WORKER's English name
     int subject = -1;      ///< hits: the tutorial's PART touched; worker events: the WORKER (−1 none)
+    /// SolverError: the solver's message, translatable (`detail` is its English); text()
+    /// shows it in the current language. Empty for the other kinds and for events read back.
+    solver::Text detailText;
 
     static const char* key(Kind k);  ///< stable name, e.g. "hit" (files, JSON, records)
     static QString label(Kind k);    ///< translated, e.g. "Hit"

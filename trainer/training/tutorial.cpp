@@ -25,6 +25,9 @@ namespace {
 namespace fs = std::filesystem;
 using solver::Diagnostics;
 using solver::SourcePos;
+using solver::Text;
+using solver::plainText;
+using solver::trText;
 
 constexpr std::uintmax_t kMaxTutorialBytes = 1u << 20;
 
@@ -43,12 +46,13 @@ std::string resolvePath(const std::string& dir, const std::string& p)
     return path.lexically_normal().string();
 }
 
-void checkText(const LocalText& t, const std::string& what, Diagnostics& d)
+void checkText(const LocalText& t, const Text& what, Diagnostics& d)
 {
     for (const std::string& lang : kTutorialLanguages) {
         if (!t.byLanguage.count(lang)) {
-            d.error("missing-language", t.pos, what + " has no " + solver::parse::upper(lang) + " text",
-                    "add " + solver::parse::upper(lang) + " \"…\": every text is in Spanish and English");
+            const std::string language = solver::parse::upper(lang);
+            d.error("missing-language", t.pos, trText("Tutorials", "%1 has no %2 text").with(what).with(language),
+                    trText("Tutorials", "add %1 \"…\": every text is in Spanish and English").with(language));
         }
     }
 }
@@ -58,7 +62,9 @@ void copyErrors(const solver::LoadedModel& loaded, const std::string& file, Diag
 {
     for (const solver::Diagnostic& d : loaded.diagnostics) {
         if (d.severity != solver::Severity::Error) continue;
-        solver::Diagnostic& c = diags.error(d.code, d.pos, d.message, d.hint);
+        // keep the translatable form (an English-only diagnostic stays as it is)
+        solver::Diagnostic& c = diags.error(d.code, d.pos, d.messageText.empty() ? plainText(d.message) : d.messageText,
+                                            d.hintText.empty() ? plainText(d.hint) : d.hintText);
         c.file = d.file.empty() ? file : d.file;
     }
 }
@@ -75,8 +81,9 @@ std::optional<double> thetaOf(const solver::Model& m, int j, double value)
 std::shared_ptr<const Tutorial> loadTutorial(const std::string& path, Diagnostics& diags)
 {
     diags.setFile(path);
-    std::optional<std::string> text = solver::readTextFile(
-        path, kMaxTutorialBytes, "a tutorial", ".tut", "a tutorial is a short text file; check that this is one", diags);
+    std::optional<std::string> text =
+        solver::readTextFile(path, kMaxTutorialBytes, trText("Tutorials", "a tutorial file"), ".tut",
+                             trText("Tutorials", "a tutorial is a short text file; check that this is one"), diags);
     if (!text) return nullptr;
     return loadTutorialText(*text, path, diags);
 }
@@ -91,24 +98,31 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
     tut->directory = fs::absolute(fs::path(file)).parent_path().string();
 
     // texts: every one in every language
-    checkText(s.title, "the TITLE", diags);
-    if (s.title.empty()) diags.error("missing-statement", {1, 1}, "the tutorial has no TITLE", "add TITLE ES \"…\" EN \"…\"");
-    for (const LocalText& p : s.intro) checkText(p, "this INTRO", diags);
+    checkText(s.title, trText("Tutorials", "the TITLE"), diags);
+    if (s.title.empty()) {
+        diags.error("missing-statement", {1, 1}, trText("Tutorials", "the tutorial has no TITLE"),
+                    trText("Tutorials", "add TITLE ES \"…\" EN \"…\""));
+    }
+    for (const LocalText& p : s.intro) checkText(p, trText("Tutorials", "this INTRO"), diags);
     for (const Goal& g : s.goals) {
         if (g.name.empty()) {
-            diags.error("missing-name", g.pos, "goal '" + g.id + "' has no NAME",
-                        "add a NAME ES \"…\" EN \"…\" line after it: the HUD shows it");
+            diags.error("missing-name", g.pos, trText("Tutorials", "goal '%1' has no NAME").with(g.id),
+                        trText("Tutorials", "add a NAME ES \"…\" EN \"…\" line after it: the HUD shows it"));
         } else {
-            checkText(g.name, "goal '" + g.id + "''s NAME", diags);
+            checkText(g.name, trText("Tutorials", "goal '%1''s NAME").with(g.id), diags);
         }
     }
-    for (const Hint& h : s.hints) checkText(h.text, "this HINT", diags);
+    for (const Hint& h : s.hints) checkText(h.text, trText("Tutorials", "this HINT"), diags);
     for (const Part& p : s.parts) {
-        if (p.name.empty()) diags.error("missing-name", p.pos, "this PART has no NAME", "add a NAME ES \"…\" EN \"…\" line after it");
-        else checkText(p.name, "this PART's NAME", diags);
+        if (p.name.empty()) {
+            diags.error("missing-name", p.pos, trText("Tutorials", "this PART has no NAME"),
+                        trText("Tutorials", "add a NAME ES \"…\" EN \"…\" line after it"));
+        } else {
+            checkText(p.name, trText("Tutorials", "this PART's NAME"), diags);
+        }
     }
     for (const Worker& w : s.workers) {
-        if (!w.name.empty()) checkText(w.name, "this WORKER's NAME", diags);
+        if (!w.name.empty()) checkText(w.name, trText("Tutorials", "this WORKER's NAME"), diags);
     }
 
     // the model
@@ -116,15 +130,17 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
     solver::LoadedModel loaded = solver::loadModelFile(tut->modelFile);
     if (!loaded.ok()) {
         copyErrors(loaded, tut->modelFile, diags);
-        diags.error("model-errors", s.modelPos, "the model '" + s.modelPath + "' cannot be used (errors above)",
-                    "fix the model, or check the path: it is relative to the tutorial's folder");
+        diags.error("model-errors", s.modelPos,
+                    trText("Tutorials", "the model '%1' cannot be used (errors above)").with(s.modelPath),
+                    trText("Tutorials", "fix the model, or check the path: it is relative to the tutorial's folder"));
         return nullptr;
     }
     Diagnostics compileDiags(tut->modelFile);
     tut->model = solver::compileLoaded(loaded, compileDiags);
     if (!tut->model) {
         diags.append(compileDiags);
-        diags.error("model-errors", s.modelPos, "the model '" + s.modelPath + "' does not compile", "fix the model");
+        diags.error("model-errors", s.modelPos, trText("Tutorials", "the model '%1' does not compile").with(s.modelPath),
+                    trText("Tutorials", "fix the model"));
         return nullptr;
     }
     tut->modelSpec = std::make_shared<solver::ModelSpec>(std::move(loaded.spec));
@@ -136,26 +152,34 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
         solver::LoadedModel scene = solver::loadModelFile(tut->sceneFile);
         if (!scene.ok()) {
             copyErrors(scene, tut->sceneFile, diags);
-            diags.error("scene-errors", s.scenePos, "the scene '" + s.scenePath + "' cannot be used (errors above)",
-                        "fix the scene, or check the path: it is relative to the tutorial's folder");
+            diags.error("scene-errors", s.scenePos,
+                        trText("Tutorials", "the scene '%1' cannot be used (errors above)").with(s.scenePath),
+                        trText("Tutorials", "fix the scene, or check the path: it is relative to the tutorial's folder"));
         } else {
             tut->sceneSpec = std::make_shared<solver::ModelSpec>(std::move(scene.spec));
         }
     }
 
-    auto body = [&](int id, SourcePos pos, const std::string& what) {
+    // `keyword`: the statement that names the id (not translated)
+    auto body = [&](int id, SourcePos pos, const std::string& keyword) {
         const int b = id == 0 ? -1 : m.bodyIndex(id);
         if (b < 0) {
-            diags.error("unknown-body", pos, what + ": the model has no moving body " + std::to_string(id),
-                        "use a body id of '" + s.modelPath + "' (not the ground, 0)");
+            diags.error("unknown-body", pos,
+                        trText("Tutorials", "%1: the model has no moving body %2")
+                            .with(keyword)
+                            .with(std::to_string(id)),
+                        trText("Tutorials", "use a body id of '%1' (not the ground, 0)").with(s.modelPath));
         }
         return b;
     };
-    auto joint = [&](int id, SourcePos pos, const std::string& what) {
+    auto joint = [&](int id, SourcePos pos, const std::string& keyword) {
         const int j = m.jointIndex(id);
         if (j < 0) {
-            diags.error("unknown-joint", pos, what + ": the model has no joint " + std::to_string(id) + " in its tree",
-                        "use a joint id (C) of '" + s.modelPath + "'");
+            diags.error("unknown-joint", pos,
+                        trText("Tutorials", "%1: the model has no joint %2 in its tree")
+                            .with(keyword)
+                            .with(std::to_string(id)),
+                        trText("Tutorials", "use a joint id (C) of '%1'").with(s.modelPath));
         }
         return j;
     };
@@ -166,8 +190,8 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
         const int j = joint(id, s.drivesPos, "DRIVES");
         if (j < 0) continue;
         if (m.drive[j].type == solver::DriveType::None) {
-            diags.error("not-a-drive", s.drivesPos, "joint " + std::to_string(id) + " has no drive",
-                        "DRIVES lists joints with a D statement in the model");
+            diags.error("not-a-drive", s.drivesPos, trText("Tutorials", "joint %1 has no drive").with(std::to_string(id)),
+                        trText("Tutorials", "DRIVES lists joints with a D statement in the model"));
             continue;
         }
         tut->enabled[static_cast<std::size_t>(j)] = 1;
@@ -178,13 +202,19 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
         if (j < 0) continue;
         const std::optional<double> th = thetaOf(m, j, set.value);
         if (!th) {
-            diags.error("out-of-range", set.pos, "joint " + std::to_string(set.jointId) + "'s actuator cannot reach " + num(set.value),
-                        "give a length the joint's geometry allows");
+            diags.error("out-of-range", set.pos,
+                        trText("Tutorials", "joint %1's actuator cannot reach %2")
+                            .with(std::to_string(set.jointId))
+                            .with(num(set.value)),
+                        trText("Tutorials", "give a length the joint's geometry allows"));
             continue;
         }
         if (*th < m.lower[j] - 1e-9 || *th > m.upper[j] + 1e-9) {
-            diags.error("out-of-range", set.pos, "joint " + std::to_string(set.jointId) + "'s initial value " + num(set.value) + " is beyond its limits",
-                        "give a value between its LL and UL");
+            diags.error("out-of-range", set.pos,
+                        trText("Tutorials", "joint %1's initial value %2 is beyond its limits")
+                            .with(std::to_string(set.jointId))
+                            .with(num(set.value)),
+                        trText("Tutorials", "give a value between its LL and UL"));
             continue;
         }
         tut->initialTheta.emplace_back(j, *th);
@@ -195,10 +225,12 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
         tut->loadBody = body(g.loadBodyId, g.pos, "GRIP LOAD");
         tut->toolBody = body(g.toolBodyId, g.pos, "GRIP TOOL");
         if (tut->loadBody >= 0 && tut->loadBody == tut->toolBody) {
-            diags.error("grip-self", g.pos, "the load and the tool are the same body", "the tool grips another body");
+            diags.error("grip-self", g.pos, trText("Tutorials", "the load and the tool are the same body"),
+                        trText("Tutorials", "the tool grips another body"));
         }
         if (g.close.empty()) {
-            diags.error("missing-statement", g.pos, "GRIP has no CLAW", "add CLAW joint CLOSE value OPEN value lines after it");
+            diags.error("missing-statement", g.pos, trText("Tutorials", "GRIP has no CLAW"),
+                        trText("Tutorials", "add CLAW joint CLOSE value OPEN value lines after it"));
         }
         auto claws = [&](const std::vector<JointTarget>& list, std::vector<Tutorial::Target>& out) {
             for (const JointTarget& c : list) {
@@ -225,29 +257,41 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
             break;
         case Goal::Kind::Joint:
             if (goal.joints.empty()) {
-                diags.error("missing-statement", goal.pos, "goal '" + goal.id + "' has no JOINT line",
-                            "add JOINT id AT value TOL d lines after it");
+                diags.error("missing-statement", goal.pos, trText("Tutorials", "goal '%1' has no JOINT line").with(goal.id),
+                            trText("Tutorials", "add JOINT id AT value TOL d lines after it"));
             }
             for (const JointTarget& jt : goal.joints) {
                 const int j = joint(jt.jointId, jt.pos, "JOINT");
                 if (j < 0) continue;
                 const std::optional<double> th = thetaOf(m, j, jt.value);
                 if (!th || *th < m.lower[j] - 1e-9 || *th > m.upper[j] + 1e-9) {
-                    diags.error("unreachable-goal", jt.pos, "joint " + std::to_string(jt.jointId) + " cannot reach " + num(jt.value) + ": beyond its limits",
-                                "give a target between the joint's LL and UL");
+                    diags.error("unreachable-goal", jt.pos,
+                                trText("Tutorials", "joint %1 cannot reach %2: beyond its limits")
+                                    .with(std::to_string(jt.jointId))
+                                    .with(num(jt.value)),
+                                trText("Tutorials", "give a target between the joint's LL and UL"));
                     continue;
                 }
                 tut->goalJoints.back().push_back({j, jt.value, jt.tolerance});
             }
             break;
         case Goal::Kind::Grasp:
-            if (!g.present) diags.error("missing-grip", goal.pos, "a GRASP goal needs a GRIP statement", "add GRIP LOAD … TOOL … (docs/training.md)");
+            if (!g.present) {
+                diags.error("missing-grip", goal.pos, trText("Tutorials", "a GRASP goal needs a GRIP statement"),
+                            trText("Tutorials", "add GRIP LOAD … TOOL … (docs/training.md)"));
+            }
             grasped = true;
             break;
         case Goal::Kind::Place:
-            if (!g.present) diags.error("missing-grip", goal.pos, "a PLACE goal needs a GRIP statement", "add GRIP LOAD … TOOL … (docs/training.md)");
-            if (!grasped) diags.error("place-before-grasp", goal.pos, "goal '" + goal.id + "' places the load before any GRASP goal",
-                                      "put a GRASP goal before it");
+            if (!g.present) {
+                diags.error("missing-grip", goal.pos, trText("Tutorials", "a PLACE goal needs a GRIP statement"),
+                            trText("Tutorials", "add GRIP LOAD … TOOL … (docs/training.md)"));
+            }
+            if (!grasped) {
+                diags.error("place-before-grasp", goal.pos,
+                            trText("Tutorials", "goal '%1' places the load before any GRASP goal").with(goal.id),
+                            trText("Tutorials", "put a GRASP goal before it"));
+            }
             grasped = false;
             break;
         }
@@ -257,7 +301,11 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
         if (h.goal.empty()) continue;
         bool found = false;
         for (const Goal& goal : s.goals) found = found || goal.id == h.goal;
-        if (!found) diags.error("unknown-goal", h.text.pos, "HINT names goal '" + h.goal + "', which the tutorial does not have", "use a GOAL's id");
+        if (!found) {
+            diags.error("unknown-goal", h.text.pos,
+                        trText("Tutorials", "HINT names goal '%1', which the tutorial does not have").with(h.goal),
+                        trText("Tutorials", "use a GOAL's id"));
+        }
     }
     // tracked point
     if (s.track) {
@@ -279,14 +327,17 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
     for (const Worker& w : s.workers) {
         tut->workerShapes.emplace_back();
         if (!tut->sceneSpec) {
-            diags.error("missing-scene", w.pos, "WORKER needs a SCENE with the person's graphics", "add SCENE \"…\"");
+            diags.error("missing-scene", w.pos, trText("Tutorials", "WORKER needs a SCENE with the person's graphics"),
+                        trText("Tutorials", "add SCENE \"…\""));
             continue;
         }
         for (int id : w.graphicIds) {
             bool found = false;
             for (const solver::GraphicSpec& gr : tut->sceneSpec->graphics) found = found || gr.id == id;
             if (!found) {
-                diags.error("unknown-graphic", w.pos, "the scene has no graphic G " + std::to_string(id), "use the G ids of the person in the scene file");
+                diags.error("unknown-graphic", w.pos,
+                            trText("Tutorials", "the scene has no graphic G %1").with(std::to_string(id)),
+                            trText("Tutorials", "use the G ids of the person in the scene file"));
             } else {
                 tut->workerShapes.back().push_back(id);
             }
@@ -296,7 +347,8 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
     for (const Part& p : s.parts) {
         const solver::ModelSpec* spec = p.scene ? tut->sceneSpec.get() : tut->modelSpec.get();
         if (!spec) {
-            diags.error("missing-scene", p.pos, "PART SCENE needs a SCENE", "add SCENE \"…\", or write PART MODEL for the model's graphics");
+            diags.error("missing-scene", p.pos, trText("Tutorials", "PART SCENE needs a SCENE"),
+                        trText("Tutorials", "add SCENE \"…\", or write PART MODEL for the model's graphics"));
             continue;
         }
         for (int id : p.graphicIds) {
@@ -304,8 +356,10 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
             for (const solver::GraphicSpec& gr : spec->graphics) found = found || (gr.id == id && gr.body == 0);
             if (!found) {
                 diags.error("unknown-graphic", p.pos,
-                            std::string(p.scene ? "the scene" : "the model") + " has no ground graphic G " + std::to_string(id),
-                            "use the G ids (on body 0) of the part");
+                            (p.scene ? trText("Tutorials", "the scene has no ground graphic G %1")
+                                     : trText("Tutorials", "the model has no ground graphic G %1"))
+                                .with(std::to_string(id)),
+                            trText("Tutorials", "use the G ids (on body 0) of the part"));
             }
         }
     }
@@ -317,9 +371,11 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
         QList<ProfileIssue> issues;
         if (!ProfileStore().resolve(QString::fromStdString(tut->modelFile), which, drivesOf(m), tut->profile, issues)) {
             diags.error("bad-profile", s.profilePos,
-                        "the station profile '" + s.profile + "' cannot be used: " +
-                            (issues.isEmpty() ? std::string() : issues.first().text().toStdString()),
-                        "name one of the model's profiles or give a .json file relative to the tutorial");
+                        trText("Tutorials", "the station profile '%1' cannot be used: %2")
+                            .with(s.profile)
+                            .with(issues.isEmpty() ? std::string() : issues.first().text().toStdString()),
+                        trText("Tutorials", "name one of the model's profiles or give a .json file relative to the "
+                                            "tutorial"));
         }
     }
     if (diags.hasErrors()) return nullptr;
@@ -332,9 +388,12 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
                                         goal.tolerance, goal.align);
         if (!r.reachable) {
             diags.error("unreachable-goal", goal.pos,
-                        "goal '" + goal.id + "' cannot be reached with the enabled drives: the nearest pose misses it by " +
-                            num(r.positionError) + " m and " + num(r.angleError * 180.0 / std::numbers::pi) + "°",
-                        "move the target within reach, enable more DRIVES or widen TOL/ANGTOL");
+                        trText("Tutorials", "goal '%1' cannot be reached with the enabled drives: the nearest pose "
+                                            "misses it by %2 m and %3°")
+                            .with(goal.id)
+                            .with(num(r.positionError))
+                            .with(num(r.angleError * 180.0 / std::numbers::pi)),
+                        trText("Tutorials", "move the target within reach, enable more DRIVES or widen TOL/ANGTOL"));
         }
     }
     if (diags.hasErrors()) return nullptr;
@@ -345,8 +404,9 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
         InputLog log;
         QString error;
         if (!InputLog::load(QString::fromStdString(tut->demoFile), log, &error)) {
-            diags.warning("bad-demonstration", s.demoPos, "the demonstration cannot be used: " + error.toStdString(),
-                          "record it again (Train ▸ Record demonstration) or fix the path");
+            diags.warning("bad-demonstration", s.demoPos,
+                          trText("Tutorials", "the demonstration cannot be used: %1").with(error.toStdString()),
+                          trText("Tutorials", "record it again (Train ▸ Record demonstration) or fix the path"));
             tut->demoFile.clear();
         }
         if (!s.cameraPath.empty()) {
@@ -354,8 +414,11 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
             CameraPath camera;
             QString cameraError;
             if (!CameraPath::load(QString::fromStdString(tut->cameraFile), camera, &cameraError)) {
-                diags.warning("bad-camera-path", s.demoPos, "the demonstration's camera path cannot be used: " + cameraError.toStdString(),
-                              "record the demonstration again, or remove CAMERA: the viewer's own camera is used");
+                diags.warning("bad-camera-path", s.demoPos,
+                              trText("Tutorials", "the demonstration's camera path cannot be used: %1")
+                                  .with(cameraError.toStdString()),
+                              trText("Tutorials", "record the demonstration again, or remove CAMERA: the viewer's own "
+                                                  "camera is used"));
                 tut->cameraFile.clear();
             }
         }

@@ -16,6 +16,7 @@
 #include "ide/studio/view/scene_file.h"
 #include "ide/studio/view/viewport.h"
 #include "ide/studio/view/viewport_layout.h"
+#include "ide/i18n/language.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -25,12 +26,14 @@
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QDockWidget>
+#include <QEvent>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QInputDialog>
 #include <QLineEdit>
 #include <QLabel>
+#include <QLocale>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -73,6 +76,22 @@ QString docsDir()
 
 }  // namespace
 
+// The menus and actions whose texts retranslate() sets (built once by buildMenus()).
+struct MainWindow::MenuItems {
+    QMenu *file = nullptr, *examples = nullptr, *edit = nullptr, *view = nullptr, *camera = nullptr, *scene = nullptr,
+          *screens = nullptr, *simulation = nullptr, *speed = nullptr, *settings = nullptr, *language = nullptr,
+          *help = nullptr;
+    QAction *newModel = nullptr, *open = nullptr, *save = nullptr, *saveAs = nullptr, *quit = nullptr;
+    QAction *undo = nullptr, *redo = nullptr, *apply = nullptr, *inertia = nullptr;
+    QAction *fitAll = nullptr, *loadScene = nullptr, *noScene = nullptr, *frames = nullptr, *separate = nullptr;
+    QAction *keyboard = nullptr, *reference = nullptr, *about = nullptr;
+    std::vector<std::pair<QAction*, DisplayMode>> displayModes;
+    std::vector<std::pair<QAction*, QString>> cameras;  ///< with the camera's name (Viewport::cameraNames)
+    std::vector<std::pair<QAction*, int>> screenCounts;
+    std::vector<std::pair<QAction*, double>> speeds;
+    std::vector<std::pair<QAction*, QString>> languages;  ///< with the language's code
+};
+
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), m_runner(std::make_unique<SimulationRunner>()),
       m_tutorialRunner(std::make_unique<TutorialRunner>())
@@ -97,9 +116,13 @@ MainWindow::MainWindow(QWidget* parent)
 
     // status bar: simulated time, real-time factor and overruns, frame time, model
     m_timeLabel = new QLabel;
+    m_timeLabel->setObjectName("TimeLabel");
     m_rtLabel = new QLabel;
+    m_rtLabel->setObjectName("RealTimeLabel");
     m_frameLabel = new QLabel;
+    m_frameLabel->setObjectName("FrameLabel");
     m_modelLabel = new QLabel;
+    m_modelLabel->setObjectName("ModelLabel");
     statusBar()->addPermanentWidget(m_modelLabel);
     statusBar()->addPermanentWidget(m_timeLabel);
     statusBar()->addPermanentWidget(m_rtLabel);
@@ -108,17 +131,11 @@ MainWindow::MainWindow(QWidget* parent)
     // the records cannot be opened (training goes on without them)
     // (a normal status bar widget: the passing messages, e.g. the model applied, hide it
     // only while they last; it goes after two minutes)
-    QString recordsNote;
-    if (m_trainPage->importedPending() > 0)
-        recordsNote = tr("%n attempt(s) kept while the trainee records could not be written were added to them.",
-                         nullptr, m_trainPage->importedPending());
-    else if (!m_trainPage->records())
-        recordsNote = tr("The trainee records cannot be opened: %1").arg(m_trainPage->recordsProblem());
-    if (!recordsNote.isEmpty()) {
-        auto* note = new QLabel(recordsNote);
-        note->setObjectName("RecordsNote");
-        statusBar()->addWidget(note, 1);
-        QTimer::singleShot(120000, note, &QLabel::hide);
+    if (!recordsNoteText().isEmpty()) {
+        m_recordsNote = new QLabel(recordsNoteText());
+        m_recordsNote->setObjectName("RecordsNote");
+        statusBar()->addWidget(m_recordsNote, 1);
+        QTimer::singleShot(120000, m_recordsNote, &QLabel::hide);
     }
 
     // the keyboard is a station device like any other
@@ -170,7 +187,23 @@ MainWindow::MainWindow(QWidget* parent)
 
     resize(1600, 1000);
     restoreLayout();
-    updateTitle();
+    retranslate();
+}
+
+QString MainWindow::recordsNoteText() const
+{
+    if (m_trainPage->importedPending() > 0)
+        return tr("%n attempt(s) kept while the trainee records could not be written were added to them.", nullptr,
+                  m_trainPage->importedPending());
+    if (!m_trainPage->records()) return tr("The trainee records cannot be opened: %1").arg(m_trainPage->recordsProblem());
+    return {};
+}
+
+void MainWindow::updateModelLabel()
+{
+    if (!m_modelLabel) return;
+    const auto [errors, warnings] = m_problemCounts;
+    m_modelLabel->setText(errors < 0 ? QString() : EditorPanel::problemCounts(errors, warnings));
 }
 
 MainWindow::~MainWindow()
@@ -197,8 +230,9 @@ void MainWindow::buildWorkspaces()
     m_viewports = new ViewportLayout;
     m_modelSpace->setCentralWidget(m_viewports);
 
-    auto dock = [this](const QString& title, const QString& name, QWidget* widget, Qt::DockWidgetArea area) {
-        auto* d = new QDockWidget(title, m_modelSpace);
+    // (the texts: retranslate())
+    auto dock = [this](const QString& name, QWidget* widget, Qt::DockWidgetArea area) {
+        auto* d = new QDockWidget(m_modelSpace);
         d->setObjectName(name);
         d->setWidget(widget);
         m_modelSpace->addDockWidget(area, d);
@@ -209,14 +243,14 @@ void MainWindow::buildWorkspaces()
     m_sliders = new JointSliders;
     m_editor = new EditorPanel;
     m_plots = new PlotPanel;
-    QDockWidget* treeDock = dock(tr("Model"), "ModelTreeDock", m_tree, Qt::LeftDockWidgetArea);
-    QDockWidget* sliderDock = dock(tr("Joints"), "JointSlidersDock", m_sliders, Qt::LeftDockWidgetArea);
-    m_modelSpace->tabifyDockWidget(treeDock, sliderDock);
-    treeDock->raise();
-    QDockWidget* editorDock = dock(tr("Editor"), "EditorDock", m_editor, Qt::RightDockWidgetArea);
-    QDockWidget* plotsDock = dock(tr("Plots"), "PlotsDock", m_plots, Qt::BottomDockWidgetArea);
-    m_modelSpace->resizeDocks({treeDock, editorDock}, {320, 560}, Qt::Horizontal);
-    m_modelSpace->resizeDocks({plotsDock}, {240}, Qt::Vertical);
+    m_treeDock = dock("ModelTreeDock", m_tree, Qt::LeftDockWidgetArea);
+    m_sliderDock = dock("JointSlidersDock", m_sliders, Qt::LeftDockWidgetArea);
+    m_modelSpace->tabifyDockWidget(m_treeDock, m_sliderDock);
+    m_treeDock->raise();
+    m_editorDock = dock("EditorDock", m_editor, Qt::RightDockWidgetArea);
+    m_plotsDock = dock("PlotsDock", m_plots, Qt::BottomDockWidgetArea);
+    m_modelSpace->resizeDocks({m_treeDock, m_editorDock}, {320, 560}, Qt::Horizontal);
+    m_modelSpace->resizeDocks({m_plotsDock}, {240}, Qt::Vertical);
 
     m_workspaces->addWidget(m_modelSpace);
     m_workspaces->addWidget(m_stationPage);
@@ -225,16 +259,15 @@ void MainWindow::buildWorkspaces()
     setCentralWidget(m_workspaces);
 
     // the mode bar
-    auto* modes = new QToolBar(tr("Workspaces"));
+    auto* modes = new QToolBar;
     m_modeBar = modes;
     modes->setObjectName("WorkspaceBar");
     modes->setMovable(false);
     modes->setToolButtonStyle(Qt::ToolButtonTextOnly);
     addToolBar(Qt::LeftToolBarArea, modes);
     m_workspaceGroup = new QActionGroup(this);
-    const QStringList names{tr("Model"), tr("Station"), tr("Train")};
-    for (int i = 0; i < names.size(); ++i) {
-        QAction* a = modes->addAction(names[i]);
+    for (int i = 0; i < 3; ++i) {
+        QAction* a = modes->addAction(QString());
         a->setCheckable(true);
         a->setShortcut(QKeySequence(Qt::CTRL | Qt::Key(Qt::Key_1 + i)));
         m_workspaceGroup->addAction(a);
@@ -247,8 +280,8 @@ void MainWindow::buildWorkspaces()
     connect(m_editor, &EditorPanel::applied, this, [this](std::shared_ptr<const ModelBundle> b) { applyBundle(b); });
     connect(m_editor, &EditorPanel::modificationChanged, this, [this](bool) { updateTitle(); });
     connect(m_editor, &EditorPanel::diagnosticsChanged, this, [this](int errors, int warnings) {
-        m_modelLabel->setText(errors > 0 ? tr("%n error(s)", nullptr, errors) + (warnings > 0 ? ", " + tr("%n warning(s)", nullptr, warnings) : QString())
-                                         : (warnings > 0 ? tr("%n warning(s)", nullptr, warnings) : tr("no problems")));
+        m_problemCounts = {errors, warnings};
+        updateModelLabel();
     });
     connect(m_editor, &EditorPanel::fileChangedOnDisk, this, &MainWindow::onFileChangedOnDisk);
     connect(m_tree, &ModelTree::bodySelected, this, [this](int body) { m_viewports->setHighlight(body, -1); });
@@ -316,133 +349,239 @@ void MainWindow::requestLeaveKiosk()
 
 void MainWindow::buildMenus()
 {
+    m_items = std::make_unique<MenuItems>();
+    MenuItems& m = *m_items;
+    // (the texts: retranslate())
+
     // File
-    QMenu* file = menuBar()->addMenu(tr("&File"));
-    file->addAction(tr("&New"), QKeySequence::New, this, &MainWindow::newModel);
-    file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::openDialog);
-    file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
-    file->addAction(tr("Save &As…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
-    m_recentMenu = file->addMenu(tr("&Recent Files"));
+    m.file = menuBar()->addMenu(QString());
+    m.newModel = m.file->addAction(QString(), QKeySequence::New, this, &MainWindow::newModel);
+    m.open = m.file->addAction(QString(), QKeySequence::Open, this, &MainWindow::openDialog);
+    m.save = m.file->addAction(QString(), QKeySequence::Save, this, &MainWindow::save);
+    m.saveAs = m.file->addAction(QString(), QKeySequence::SaveAs, this, &MainWindow::saveAs);
+    m_recentMenu = m.file->addMenu(QString());
     m_recentMenu->setObjectName("RecentFilesMenu");
-    QMenu* examples = file->addMenu(tr("&Examples"));
+    m.examples = m.file->addMenu(QString());
     const QFileInfoList models = QDir(modelsDir()).entryInfoList({"*.pad"}, QDir::Files, QDir::Name);
     for (const QFileInfo& f : models) {
-        examples->addAction(f.completeBaseName(), this, [this, path = f.absoluteFilePath()] {
+        m.examples->addAction(f.completeBaseName(), this, [this, path = f.absoluteFilePath()] {
             if (maybeSave()) openFile(path);
         });
     }
-    file->addSeparator();
-    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+    m.file->addSeparator();
+    m.quit = m.file->addAction(QString(), QKeySequence::Quit, this, &QWidget::close);
     updateRecentMenu();
 
     // Edit
-    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-    edit->addAction(tr("&Undo"), QKeySequence::Undo, this, [this] { m_editor->undo(); });
-    edit->addAction(tr("&Redo"), QKeySequence::Redo, this, [this] { m_editor->redo(); });
-    edit->addSeparator();
-    edit->addAction(tr("&Apply Model"), QKeySequence(Qt::CTRL | Qt::Key_Return), this, [this] { m_editor->apply(); });
-    edit->addAction(tr("&Inertia Calculator…"), this, &MainWindow::showInertiaDialog);
+    m.edit = menuBar()->addMenu(QString());
+    m.undo = m.edit->addAction(QString(), QKeySequence::Undo, this, [this] { m_editor->undo(); });
+    m.redo = m.edit->addAction(QString(), QKeySequence::Redo, this, [this] { m_editor->redo(); });
+    m.edit->addSeparator();
+    m.apply = m.edit->addAction(QString(), QKeySequence(Qt::CTRL | Qt::Key_Return), this, [this] { m_editor->apply(); });
+    m.inertia = m.edit->addAction(QString(), this, &MainWindow::showInertiaDialog);
+    m.inertia->setObjectName("InertiaCalculatorAction");
 
     // View
-    QMenu* view = menuBar()->addMenu(tr("&View"));
+    m.view = menuBar()->addMenu(QString());
     auto* modes = new QActionGroup(this);
-    const std::pair<QString, DisplayMode> modeList[] = {{tr("&Schematic"), DisplayMode::Schematic},
-                                                        {tr("&Dressed"), DisplayMode::Dressed},
-                                                        {tr("&Both"), DisplayMode::Both}};
-    for (const auto& [name, mode] : modeList) {
-        QAction* a = view->addAction(name, this, [this, mode = mode] { m_viewports->setDisplayMode(mode); });
+    for (DisplayMode mode : {DisplayMode::Schematic, DisplayMode::Dressed, DisplayMode::Both}) {
+        QAction* a = m.view->addAction(QString(), this, [this, mode] { m_viewports->setDisplayMode(mode); });
         a->setCheckable(true);
         a->setChecked(mode == DisplayMode::Dressed);
         modes->addAction(a);
+        m.displayModes.emplace_back(a, mode);
     }
-    view->addSeparator();
-    QMenu* cameras = view->addMenu(tr("&Camera"));
+    m.view->addSeparator();
+    m.camera = m.view->addMenu(QString());
     for (const QString& name : Viewport::cameraNames()) {
-        cameras->addAction(Viewport::cameraLabel(name), this, [this, name] { m_viewports->setCamera(name); });
+        m.cameras.emplace_back(m.camera->addAction(QString(), this, [this, name] { m_viewports->setCamera(name); }), name);
     }
-    view->addAction(tr("&Fit All"), QKeySequence(Qt::Key_F), this, [this] { m_viewports->fitAll(); });
-    QMenu* scene = view->addMenu(tr("S&cene"));
-    scene->setObjectName("SceneMenu");
-    scene->addAction(tr("&Load…"), this, [this] {
+    m.fitAll = m.view->addAction(QString(), QKeySequence(Qt::Key_F), this, [this] { m_viewports->fitAll(); });
+    m.scene = m.view->addMenu(QString());
+    m.scene->setObjectName("SceneMenu");
+    m.loadScene = m.scene->addAction(QString(), this, [this] {
         const QString start = m_scenePath.isEmpty() ? scenesDir() : QFileInfo(m_scenePath).absolutePath();
         const QString path = QFileDialog::getOpenFileName(this, tr("Load Scene"), start,
                                                           tr("Padrob models (*.pad);;All files (*)"));
         if (!path.isEmpty()) loadScene(path);
     });
-    scene->addAction(tr("&None"), this, &MainWindow::clearScene);
-    QAction* frames = view->addAction(tr("Body &Frames"));
-    frames->setCheckable(true);
-    connect(frames, &QAction::toggled, this, [this](bool on) { m_viewports->setShowFrames(on); });
-    QMenu* screens = view->addMenu(tr("&Screens"));
+    m.noScene = m.scene->addAction(QString(), this, &MainWindow::clearScene);
+    m.frames = m.view->addAction(QString());
+    m.frames->setCheckable(true);
+    connect(m.frames, &QAction::toggled, this, [this](bool on) { m_viewports->setShowFrames(on); });
+    m.screens = m.view->addMenu(QString());
     auto* screenGroup = new QActionGroup(this);
     for (int n = 1; n <= 3; ++n) {
-        QAction* a = screens->addAction(tr("%n Screen(s)", nullptr, n), this, [this, n] {
+        QAction* a = m.screens->addAction(QString(), this, [this, n] {
             m_viewports->setSeparateWindows(false);
             m_viewports->setScreens(n);
         });
         a->setCheckable(true);
         a->setChecked(n == 1);
         screenGroup->addAction(a);
+        m.screenCounts.emplace_back(a, n);
     }
-    QAction* separate = screens->addAction(tr("Three &Windows (three monitors)"), this, [this] {
+    m.separate = m.screens->addAction(QString(), this, [this] {
         m_viewports->setScreens(3);
         m_viewports->setSeparateWindows(true);
     });
-    separate->setCheckable(true);
-    screenGroup->addAction(separate);
-    view->addSeparator();
-    for (QDockWidget* d : m_docks) view->addAction(d->toggleViewAction());
+    m.separate->setCheckable(true);
+    screenGroup->addAction(m.separate);
+    m.view->addSeparator();
+    for (QDockWidget* d : m_docks) m.view->addAction(d->toggleViewAction());  // (named after their docks)
 
     // Simulation
-    QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
-    m_runAction = sim->addAction(tr("&Run"), QKeySequence(Qt::Key_F5), this, &MainWindow::run);
-    m_pauseAction = sim->addAction(tr("&Pause"), QKeySequence(Qt::Key_F6), this, &MainWindow::pause);
-    m_stepAction = sim->addAction(tr("&Step"), QKeySequence(Qt::Key_F10), this, &MainWindow::step);
-    m_resetAction = sim->addAction(tr("R&eset"), QKeySequence(Qt::CTRL | Qt::Key_R), this, &MainWindow::reset);
+    m.simulation = menuBar()->addMenu(QString());
+    m_runAction = m.simulation->addAction(QString(), QKeySequence(Qt::Key_F5), this, &MainWindow::run);
+    m_pauseAction = m.simulation->addAction(QString(), QKeySequence(Qt::Key_F6), this, &MainWindow::pause);
+    m_stepAction = m.simulation->addAction(QString(), QKeySequence(Qt::Key_F10), this, &MainWindow::step);
+    m_resetAction = m.simulation->addAction(QString(), QKeySequence(Qt::CTRL | Qt::Key_R), this, &MainWindow::reset);
     m_pauseAction->setEnabled(false);
-    QMenu* speed = sim->addMenu(tr("S&peed"));
+    m.speed = m.simulation->addMenu(QString());
     m_speedGroup = new QActionGroup(this);
     for (double s : {0.1, 0.25, 0.5, 1.0, 2.0, 4.0}) {
-        QAction* a = speed->addAction(QStringLiteral("×%1").arg(QLocale().toString(s)), this, [this, s] { setSpeed(s); });
+        QAction* a = m.speed->addAction(QString(), this, [this, s] { setSpeed(s); });
         a->setCheckable(true);
         a->setChecked(s == 1.0);
         m_speedGroup->addAction(a);
+        m.speeds.emplace_back(a, s);
     }
-    sim->addSeparator();
-    sim->addAction(tr("&Keyboard Controls…"), this, [this] {
-        // what the station does with the keys: the profile's own keyboard mappings, or
-        // the pairs on the drives in order when the profile does not map the keyboard
-        QString text = "<table>";
-        const QStringList pairs = KeyboardInput::pairNames();
-        bool mapped = false;
-        if (const auto st = m_station->latest()) {
-            for (const trainer::MappingState& ms : st->mappings) {
-                if (ms.mapping.device != QLatin1String("keyboard") || ms.mapping.axis >= pairs.size()) continue;
-                mapped = true;
-                QString drive = tr("C %1").arg(ms.mapping.drive);
-                for (const trainer::DriveInfo& d : st->drives)
-                    if (d.jointId == ms.mapping.drive) drive = d.label();
-                const QString bank = ms.bank < 0 ? QString() : " (" + st->bankNames.value(ms.bank) + ")";
-                text += "<tr><td><b>" + pairs[ms.mapping.axis].toHtmlEscaped() + "</b></td><td>" +
-                        (ms.mapping.sign < 0 ? tr("reversed") + " " : QString()) + drive.toHtmlEscaped() +
-                        bank.toHtmlEscaped() + "</td></tr>";
-            }
-        }
-        if (!mapped) {
-            for (const KeyBinding& b : m_keyboard->bindings()) {
-                text += "<tr><td><b>" + b.keysText().toHtmlEscaped() + "</b></td><td>C " + QString::number(b.jointId) +
-                        " " + b.jointName.toHtmlEscaped() + "</td></tr>";
-            }
-        }
-        text += "</table>";
-        QMessageBox::information(this, tr("Keyboard Controls"),
-                                 tr("With the 3D view focused, hold a key to open a valve:") + "<br>" + text);
-    });
+    m.simulation->addSeparator();
+    m.keyboard = m.simulation->addAction(QString(), this, &MainWindow::showKeyboardControls);
+
+    // Settings ▸ Language: each language by its own name; the choice is remembered
+    // (i18n::switchTo) and every window changes language at once (retranslate())
+    m.settings = menuBar()->addMenu(QString());
+    m.settings->setObjectName("SettingsMenu");
+    m.language = m.settings->addMenu(QString());
+    m.language->setObjectName("LanguageMenu");
+    auto* languages = new QActionGroup(this);
+    languages->setExclusive(true);
+    for (const QString& code : i18n::languages()) {
+        QAction* a = m.language->addAction(i18n::nativeName(code), this, [code] { i18n::switchTo(code); });
+        a->setObjectName("Language_" + code);
+        a->setCheckable(true);
+        a->setChecked(code == i18n::current());
+        languages->addAction(a);
+        m.languages.emplace_back(a, code);
+    }
 
     // Help
-    QMenu* help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("Model &Language Reference"), QKeySequence::HelpContents, this, &MainWindow::showLanguageReference);
-    help->addAction(tr("&About Padrob Studio"), this, &MainWindow::showAbout);
+    m.help = menuBar()->addMenu(QString());
+    m.reference = m.help->addAction(QString(), QKeySequence::HelpContents, this, &MainWindow::showLanguageReference);
+    m.about = m.help->addAction(QString(), this, &MainWindow::showAbout);
+}
+
+void MainWindow::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange) {
+        // the new language's locale (i18n::install made it the default) for every child
+        // that has not set its own: spin boxes write 1,5 in Spanish
+        setLocale(QLocale());
+        retranslate();
+    }
+    QMainWindow::changeEvent(event);
+}
+
+void MainWindow::retranslate()
+{
+    // the workspaces and the docks
+    m_modeBar->setWindowTitle(tr("Workspaces"));
+    const QString workspaceNames[] = {tr("Model"), tr("Station"), tr("Train")};
+    for (int i = 0; i < m_workspaceActions.size(); ++i) m_workspaceActions[i]->setText(workspaceNames[i]);
+    m_treeDock->setWindowTitle(tr("Model"));
+    m_sliderDock->setWindowTitle(tr("Joints"));
+    m_editorDock->setWindowTitle(tr("Editor"));
+    m_plotsDock->setWindowTitle(tr("Plots"));
+
+    // the menus
+    MenuItems& m = *m_items;
+    m.file->setTitle(tr("&File"));
+    m.newModel->setText(tr("&New"));
+    m.open->setText(tr("&Open…"));
+    m.save->setText(tr("&Save"));
+    m.saveAs->setText(tr("Save &As…"));
+    m_recentMenu->setTitle(tr("&Recent Files"));
+    m.examples->setTitle(tr("&Examples"));
+    m.quit->setText(tr("&Quit"));
+    m.edit->setTitle(tr("&Edit"));
+    m.undo->setText(tr("&Undo"));
+    m.redo->setText(tr("&Redo"));
+    m.apply->setText(tr("&Apply Model"));
+    m.inertia->setText(tr("&Inertia Calculator…"));
+    m.view->setTitle(tr("&View"));
+    for (const auto& [action, mode] : m.displayModes) {
+        switch (mode) {
+        case DisplayMode::Schematic: action->setText(tr("&Schematic")); break;
+        case DisplayMode::Dressed: action->setText(tr("&Dressed")); break;
+        case DisplayMode::Both: action->setText(tr("&Both")); break;
+        }
+    }
+    m.camera->setTitle(tr("&Camera"));
+    for (const auto& [action, name] : m.cameras) action->setText(Viewport::cameraLabel(name));
+    m.fitAll->setText(tr("&Fit All"));
+    m.scene->setTitle(tr("S&cene"));
+    m.loadScene->setText(tr("&Load…"));
+    m.noScene->setText(tr("&None"));
+    m.frames->setText(tr("Body &Frames"));
+    m.screens->setTitle(tr("&Screens"));
+    for (const auto& [action, n] : m.screenCounts) action->setText(tr("%n Screen(s)", nullptr, n));
+    m.separate->setText(tr("Three &Windows (three monitors)"));
+    m.simulation->setTitle(tr("&Simulation"));
+    m_runAction->setText(tr("&Run"));
+    m_pauseAction->setText(tr("&Pause"));
+    m_stepAction->setText(tr("&Step"));
+    m_resetAction->setText(tr("R&eset"));
+    m.speed->setTitle(tr("S&peed"));
+    for (const auto& [action, s] : m.speeds) action->setText(QStringLiteral("×%1").arg(QLocale().toString(s)));
+    m.keyboard->setText(tr("&Keyboard Controls…"));
+    m.settings->setTitle(tr("Se&ttings"));
+    m.language->setTitle(tr("&Language"));
+    for (const auto& [action, code] : m.languages) action->setChecked(code == i18n::current());
+    m.help->setTitle(tr("&Help"));
+    m.reference->setText(tr("Model &Language Reference"));
+    m.about->setText(tr("&About Padrob Studio"));
+
+    // the status bar and the title (a passing message in the old language goes)
+    statusBar()->clearMessage();
+    if (m_recordsNote) m_recordsNote->setText(recordsNoteText());
+    updateModelLabel();
+    m_shownStep = -1;  // the time and the real-time factor again, in the new language
+    if (m_timeLabel) poll();
+    updateTitle();
+}
+
+void MainWindow::showKeyboardControls()
+{
+    // what the station does with the keys: the profile's own keyboard mappings, or
+    // the pairs on the drives in order when the profile does not map the keyboard
+    QString text = "<table>";
+    const QStringList pairs = KeyboardInput::pairNames();
+    bool mapped = false;
+    if (const auto st = m_station->latest()) {
+        for (const trainer::MappingState& ms : st->mappings) {
+            if (ms.mapping.device != QLatin1String("keyboard") || ms.mapping.axis >= pairs.size()) continue;
+            mapped = true;
+            QString drive = tr("C %1").arg(ms.mapping.drive);
+            for (const trainer::DriveInfo& d : st->drives)
+                if (d.jointId == ms.mapping.drive) drive = d.label();
+            if (ms.bank >= 0) drive = tr("%1 (%2)", "a drive and its bank").arg(drive, st->bankNames.value(ms.bank));
+            if (ms.mapping.sign < 0) drive = tr("%1, reversed", "a drive the key moves the other way").arg(drive);
+            text += "<tr><td><b>" + pairs[ms.mapping.axis].toHtmlEscaped() + "</b></td><td>" + drive.toHtmlEscaped() +
+                    "</td></tr>";
+        }
+    }
+    if (!mapped) {
+        for (const KeyBinding& b : m_keyboard->bindings()) {
+            const QString joint = b.jointName.isEmpty() ? tr("C %1").arg(b.jointId)
+                                                        : tr("C %1 %2").arg(QString::number(b.jointId), b.jointName);
+            text += "<tr><td><b>" + b.keysText().toHtmlEscaped() + "</b></td><td>" + joint.toHtmlEscaped() +
+                    "</td></tr>";
+        }
+    }
+    text += "</table>";
+    QMessageBox::information(this, tr("Keyboard Controls"),
+                             QStringLiteral("<p>%1</p>%2").arg(tr("With the 3D view focused, hold a key to open a valve:"), text));
 }
 
 // ---------------------------------------------------------------- files

@@ -12,6 +12,11 @@
 // tree, the joint sliders, the editor (with its problems list) and the plots; its
 // dock layout and the window geometry persist in QSettings, as do the recent files.
 //
+// Language: Settings ▸ Language ▸ Español / English (i18n::switchTo, remembered for the
+// next start) changes every text of the running window: each widget re-sets its texts
+// on QEvent::LanguageChange, and this window gives its children the new locale (numbers
+// read 1,5 in Spanish; model text keeps '.').
+//
 // Data flow: the editor checks the text as it is typed; "Apply" gives a ModelBundle
 // (only a model without errors) to the viewport, the tree, the sliders, the plots and
 // the solver thread (SimulationRunner), which restarts paused at the model's initial
@@ -24,6 +29,7 @@
 #include <QPointer>
 
 #include <memory>
+#include <utility>
 
 class QAction;
 class QActionGroup;
@@ -116,10 +122,20 @@ public:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    /// A language change (Settings ▸ Language, i18n::switchTo): the new locale for the
+    /// children, and every text of the window again (retranslate()).
+    void changeEvent(QEvent* event) override;
 
 private:
+    struct MenuItems;
     void buildWorkspaces();
     void buildMenus();
+    /// Sets every text of the window in the current language: menus, actions, docks,
+    /// workspaces, status bar, title (the parts set their own on the same event).
+    void retranslate();
+    QString recordsNoteText() const;
+    void updateModelLabel();
+    void showKeyboardControls();
     void applyBundle(std::shared_ptr<const ModelBundle> bundle);
     void poll();
     void updateHud();
@@ -166,6 +182,11 @@ private:
     JointSliders* m_sliders = nullptr;
     PlotPanel* m_plots = nullptr;
     QList<QDockWidget*> m_docks;
+    QDockWidget* m_treeDock = nullptr;
+    QDockWidget* m_sliderDock = nullptr;
+    QDockWidget* m_editorDock = nullptr;
+    QDockWidget* m_plotsDock = nullptr;
+    std::unique_ptr<MenuItems> m_items;
     QActionGroup* m_workspaceGroup = nullptr;
     QList<QAction*> m_workspaceActions;
 
@@ -180,6 +201,8 @@ private:
     QLabel* m_rtLabel = nullptr;
     QLabel* m_frameLabel = nullptr;
     QLabel* m_modelLabel = nullptr;
+    QLabel* m_recordsNote = nullptr;
+    std::pair<int, int> m_problemCounts{-1, 0};  ///< errors and warnings of the last check (−1: none yet)
     QTimer* m_pollTimer = nullptr;
     quint64 m_shownSerial = 0;
     long m_shownStep = -1;

@@ -1,12 +1,14 @@
 #include "ide/studio/dialogs/inertia_dialog.h"
 
 #include "ide/studio/dialogs/b_statement.h"
+#include "ide/i18n/diagnostic_text.h"
 #include "solver/model/validate.h"
 #include "solver/parse/parser.h"
 #include "solver/parse/writer.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QEvent>
 #include <QFile>
 #include <QFileInfo>
 #include <QFontDatabase>
@@ -16,6 +18,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLocale>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -31,7 +34,19 @@ namespace studio {
 
 namespace {
 
+// numbers in the table's model text and in B lines are the model language's ('.'); the
+// results a person reads are in the current locale (shown())
 QString num(double v) { return QString::fromStdString(solver::parse::formatNumber(v)); }
+
+/// A computed value as a person reads it: 6 significant digits in the current locale
+/// (1,5 in Spanish), without group separators.
+QString shown(double v)
+{
+    if (v == 0) return QStringLiteral("0");
+    QLocale l;
+    l.setNumberOptions(l.numberOptions() | QLocale::OmitGroupSeparator);
+    return l.toString(v, 'g', 6);
+}
 
 QString vec(const Eigen::Vector3d& v) { return QStringLiteral("%1 %2 %3").arg(num(v.x()), num(v.y()), num(v.z())); }
 
@@ -47,8 +62,11 @@ QString quotedString(const std::string& s)
 /// Signed relative difference in percent, "+1.25 %", or "n/a" when the file has 0.
 QString relative(double computed, double written)
 {
-    if (written == 0) return computed == 0 ? QStringLiteral("0 %") : InertiaDialog::tr("n/a (file: 0)");
-    return QStringLiteral("%1%2 %").arg(computed >= written ? QStringLiteral("+") : QString()).arg(100.0 * (computed - written) / std::abs(written), 0, 'f', 2);
+    if (written == 0) return computed == 0 ? InertiaDialog::tr("%1 %").arg(0) : InertiaDialog::tr("n/a (file: 0)");
+    QLocale l;
+    l.setNumberOptions(l.numberOptions() | QLocale::OmitGroupSeparator);
+    const QString value = l.toString(100.0 * (computed - written) / std::abs(written), 'f', 2);
+    return InertiaDialog::tr("%1 %").arg(computed >= written ? QStringLiteral("+") + value : value);
 }
 
 QTableWidgetItem* readOnly(const QString& text)
@@ -82,7 +100,7 @@ InertiaDialog::~InertiaDialog() = default;
 
 void InertiaDialog::build()
 {
-    setWindowTitle(tr("Inertia calculator"));
+    // (the texts: retranslate())
     if (!m_filePath.isEmpty()) m_modelDir = QFileInfo(m_filePath).absolutePath();
     // the file's text, until the editor's is given
     if (!m_filePath.isEmpty()) {
@@ -94,31 +112,24 @@ void InertiaDialog::build()
 
     auto* layout = new QVBoxLayout(this);
     auto* top = new QHBoxLayout;
-    top->addWidget(new QLabel(tr("Body:"), this));
+    m_bodyLabel = new QLabel(this);
+    top->addWidget(m_bodyLabel);
     m_body = new QComboBox(this);
     m_body->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    m_bodyLabel->setBuddy(m_body);
     top->addWidget(m_body);
     top->addStretch(1);
     layout->addLayout(top);
 
-    auto* note = new QLabel(tr("The solids of a body are its graphics (G) with MASS or RHO. Edits in this table only change "
-                               "this calculation: the G lines in the file are not changed. Only the body's B line can be "
-                               "written back, with the button below."),
-                            this);
-    note->setWordWrap(true);
-    QFont italic = note->font();
+    m_note = new QLabel(this);
+    m_note->setWordWrap(true);
+    QFont italic = m_note->font();
     italic.setItalic(true);
-    note->setFont(italic);
-    layout->addWidget(note);
+    m_note->setFont(italic);
+    layout->addWidget(m_note);
 
     m_table = new QTableWidget(0, ColumnCount, this);
-    m_table->setHorizontalHeaderLabels({tr("Graphic"), tr("Shape"), tr("Dimensions [m]"), tr("POS [m]"), tr("AXIS"),
-                                        tr("ROT [axis, °]"), tr("Density or mass"), tr("Value"), tr("Solid's mass [kg]")});
-    m_table->horizontalHeaderItem(ShapeColumn)->setToolTip(tr("BOX, CYL, TUBE, SPHERE, CONE, ELLIPSOID, PRISM or MESH"));
-    m_table->horizontalHeaderItem(DimsColumn)
-        ->setToolTip(tr("BOX X Y Z; CYL R L; TUBE RO RI L; SPHERE R; CONE R L; ELLIPSOID A B C; PRISM H x1 y1 x2 y2 …; "
-                        "MESH \"file\" [SCALE s]"));
-    m_table->horizontalHeaderItem(ValueColumn)->setToolTip(tr("RHO in kg/m³, or MASS in kg"));
+    for (int c = 0; c < ColumnCount; ++c) m_table->setHorizontalHeaderItem(c, new QTableWidgetItem);
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setStretchLastSection(true);
     layout->addWidget(m_table, 1);
@@ -130,11 +141,11 @@ void InertiaDialog::build()
     m_errors->hide();
     layout->addWidget(m_errors);
 
-    auto* results = new QGroupBox(tr("Computed (body axes, about the centre of mass)"), this);
-    auto* form = new QFormLayout(results);
-    m_mass = new QLabel(results);
-    m_com = new QLabel(results);
-    m_tensor = new QTableWidget(3, 3, results);
+    m_results = new QGroupBox(this);
+    auto* form = new QFormLayout(m_results);
+    m_mass = new QLabel(m_results);
+    m_com = new QLabel(m_results);
+    m_tensor = new QTableWidget(3, 3, m_results);
     m_tensor->setHorizontalHeaderLabels({QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("z")});
     m_tensor->setVerticalHeaderLabels({QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("z")});
     m_tensor->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -143,34 +154,37 @@ void InertiaDialog::build()
     m_tensor->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
     m_tensor->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_tensor->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    m_tensor->setToolTip(tr("I = [[Ixx Ixy Ixz] [Ixy Iyy Iyz] [Ixz Iyz Izz]], Ixy = −∫xy dm"));
-    m_principal = new QLabel(results);
-    m_difference = new QLabel(results);
+    m_principal = new QLabel(m_results);
+    m_difference = new QLabel(m_results);
     for (QLabel* l : {m_mass, m_com, m_principal, m_difference}) l->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    form->addRow(tr("Mass:"), m_mass);
-    form->addRow(tr("Centre of mass:"), m_com);
-    form->addRow(tr("Inertia tensor [kg·m²]:"), m_tensor);
-    form->addRow(tr("Principal moments:"), m_principal);
-    form->addRow(tr("Against the file:"), m_difference);
-    layout->addWidget(results);
+    const auto addRow = [](QFormLayout* f, QLabel*& label, QWidget* field) {
+        label = new QLabel(f->parentWidget());
+        label->setBuddy(field);
+        f->addRow(label, field);
+    };
+    addRow(form, m_massLabel, m_mass);
+    addRow(form, m_comLabel, m_com);
+    addRow(form, m_tensorLabel, m_tensor);
+    addRow(form, m_principalLabel, m_principal);
+    addRow(form, m_differenceLabel, m_difference);
+    layout->addWidget(m_results);
 
-    auto* lines = new QGroupBox(tr("B line"), this);
-    auto* linesForm = new QFormLayout(lines);
+    m_lines = new QGroupBox(this);
+    auto* linesForm = new QFormLayout(m_lines);
     const QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
-    m_fileB = new QLineEdit(lines);
-    m_computedB = new QLineEdit(lines);
+    m_fileB = new QLineEdit(m_lines);
+    m_computedB = new QLineEdit(m_lines);
     for (QLineEdit* e : {m_fileB, m_computedB}) {
         e->setReadOnly(true);
         e->setFont(mono);
         e->setMinimumWidth(480);
     }
-    linesForm->addRow(tr("In the file:"), m_fileB);
-    linesForm->addRow(tr("Computed:"), m_computedB);
-    layout->addWidget(lines);
+    addRow(linesForm, m_fileBLabel, m_fileB);
+    addRow(linesForm, m_computedBLabel, m_computedB);
+    layout->addWidget(m_lines);
 
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
-    m_replace = buttons->addButton(tr("Replace B line in editor"), QDialogButtonBox::ActionRole);
-    m_replace->setToolTip(tr("Writes the computed B line into the editor (one undo step); the G lines stay as they are"));
+    m_replace = buttons->addButton(QString(), QDialogButtonBox::ActionRole);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     connect(m_replace, &QPushButton::clicked, this, [this] {
         if (m_result) emit bLineReady(bodyId(), m_bLine, bStatementLine());
@@ -178,11 +192,86 @@ void InertiaDialog::build()
     layout->addWidget(buttons);
 
     connect(m_table, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* item) {
-        if (!m_loading && item->column() != MassColumn) recompute();
+        if (m_loading || item->column() == MassColumn) return;
+        m_table->resizeColumnToContents(item->column());  // a longer value stays readable
+        recompute();
     });
     connect(m_body, &QComboBox::currentIndexChanged, this, [this] { loadSolids(); });
+    retranslateStatic();
     fillBodies();
     resize(980, 720);
+}
+
+void InertiaDialog::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange && m_table) {
+        retranslateStatic();
+        // the bodies, the solids' labels and the results (the edits in the table stay)
+        for (int k = 0; k < m_body->count(); ++k) m_body->setItemText(k, bodyText(m_body->itemData(k).toInt()));
+        {
+            const QSignalBlocker block(m_table);
+            for (int r = 0; r < m_table->rowCount(); ++r) retranslateRow(r);
+        }
+        recompute();
+    } else if (event->type() == QEvent::LocaleChange && m_table) {
+        recompute();  // (the numbers a person reads)
+    }
+    QDialog::changeEvent(event);
+}
+
+void InertiaDialog::retranslateStatic()
+{
+    setWindowTitle(tr("Inertia calculator"));
+    m_bodyLabel->setText(tr("Body:"));
+    m_note->setText(tr("The solids of a body are its graphics (G) with MASS or RHO. Edits in this table only change "
+                       "this calculation: the G lines in the file are not changed. Only the body's B line can be "
+                       "written back, with the button below."));
+    const QStringList headers{tr("Graphic"), tr("Shape"), tr("Dimensions [m]"), tr("POS [m]"), tr("AXIS"),
+                              tr("ROT [axis, °]"), tr("Density or mass"), tr("Value"), tr("Solid's mass [kg]")};
+    for (int c = 0; c < ColumnCount; ++c) m_table->horizontalHeaderItem(c)->setText(headers[c]);
+    m_table->horizontalHeaderItem(ShapeColumn)->setToolTip(tr("BOX, CYL, TUBE, SPHERE, CONE, ELLIPSOID, PRISM or MESH"));
+    m_table->horizontalHeaderItem(DimsColumn)
+        ->setToolTip(tr("BOX X Y Z; CYL R L; TUBE RO RI L; SPHERE R; CONE R L; ELLIPSOID A B C; PRISM H x1 y1 x2 y2 …; "
+                        "MESH \"file\" [SCALE s]"));
+    m_table->horizontalHeaderItem(ValueColumn)->setToolTip(tr("RHO in kg/m³, or MASS in kg"));
+    m_results->setTitle(tr("Computed (body axes, about the centre of mass)"));
+    m_massLabel->setText(tr("Mass:"));
+    m_comLabel->setText(tr("Centre of mass:"));
+    m_tensorLabel->setText(tr("Inertia tensor [kg·m²]:"));
+    m_tensor->setToolTip(tr("I = [[Ixx Ixy Ixz] [Ixy Iyy Iyz] [Ixz Iyz Izz]], Ixy = −∫xy dm"));
+    m_principalLabel->setText(tr("Principal moments:"));
+    m_differenceLabel->setText(tr("Against the file:"));
+    m_lines->setTitle(tr("B line"));
+    m_fileBLabel->setText(tr("In the file:"));
+    m_computedBLabel->setText(tr("Computed:"));
+    m_replace->setText(tr("Replace B line in editor"));
+    m_replace->setToolTip(tr("Writes the computed B line into the editor (one undo step); the G lines stay as they are"));
+}
+
+QString InertiaDialog::bodyText(int id) const
+{
+    const solver::BodySpec* b = m_spec->body(id);
+    if (!b) return tr("B %1").arg(id);
+    int solids = 0;
+    for (const solver::GraphicSpec& g : m_spec->graphics) solids += g.body == b->id && (g.mass || g.rho);
+    const QString name = QString::fromStdString(b->name);
+    if (solids == 0)
+        return name.isEmpty() ? tr("B %1 (no solids)").arg(id) : tr("B %1  %2 (no solids)").arg(QString::number(id), name);
+    return name.isEmpty() ? tr("B %1 (solids: %2)").arg(id).arg(solids)
+                          : tr("B %1  %2 (solids: %3)").arg(QString::number(id), name, QString::number(solids));
+}
+
+void InertiaDialog::retranslateRow(int r)
+{
+    QTableWidgetItem* idItem = m_table->item(r, IdColumn);
+    const int g = idItem->data(Qt::UserRole).toInt();
+    idItem->setText(tr("G %1").arg(g));
+    const int line = idItem->data(LineRole).toInt();
+    idItem->setToolTip(line > 0 ? tr("line %1").arg(line) : QString());
+    if (auto* kind = qobject_cast<QComboBox*>(m_table->cellWidget(r, KindColumn))) {
+        kind->setItemText(0, tr("RHO [kg/m³]"));
+        kind->setItemText(1, tr("MASS [kg]"));
+    }
 }
 
 void InertiaDialog::setSourceText(const QString& text)
@@ -210,9 +299,7 @@ void InertiaDialog::fillBodies()
         if (b.id == 0) continue;
         int solids = 0;
         for (const solver::GraphicSpec& g : m_spec->graphics) solids += g.body == b.id && (g.mass || g.rho);
-        QString text = b.name.empty() ? tr("B %1").arg(b.id) : tr("B %1  %2").arg(b.id).arg(QString::fromStdString(b.name));
-        text = solids ? tr("%1 (solids: %2)").arg(text).arg(solids) : tr("%1 (no solids)").arg(text);
-        m_body->addItem(text, b.id);
+        m_body->addItem(bodyText(b.id), b.id);
         if (solids && first < 0) first = m_body->count() - 1;
     }
     m_body->setCurrentIndex(first >= 0 ? first : 0);
@@ -244,9 +331,9 @@ void InertiaDialog::loadSolids()
         if (g.body != id || id == 0 || (!g.mass && !g.rho)) continue;
         const int r = m_table->rowCount();
         m_table->insertRow(r);
-        auto* idItem = readOnly(tr("G %1").arg(g.id));
+        auto* idItem = readOnly(QString());
         idItem->setData(Qt::UserRole, g.id);
-        if (g.src.pos.valid()) idItem->setToolTip(tr("line %1").arg(g.src.pos.line));
+        idItem->setData(LineRole, g.src.pos.valid() ? g.src.pos.line : 0);
         m_table->setItem(r, IdColumn, idItem);
         m_table->setItem(r, ShapeColumn, new QTableWidgetItem(QString::fromLatin1(solver::shapeKeyword(g.shape))));
         QString dims;
@@ -264,13 +351,14 @@ void InertiaDialog::loadSolids()
         m_table->setItem(r, RotColumn,
                          new QTableWidgetItem(g.hasRot ? vec(g.rotAxis) + QLatin1Char(' ') + num(g.rotDeg) : QString()));
         auto* kind = new QComboBox(m_table);
-        kind->addItem(tr("RHO [kg/m³]"), QStringLiteral("RHO"));
-        kind->addItem(tr("MASS [kg]"), QStringLiteral("MASS"));
+        kind->addItem(QString(), QStringLiteral("RHO"));
+        kind->addItem(QString(), QStringLiteral("MASS"));
         kind->setCurrentIndex(g.rho ? 0 : 1);
         connect(kind, &QComboBox::currentIndexChanged, this, [this] { recompute(); });
         m_table->setCellWidget(r, KindColumn, kind);
         m_table->setItem(r, ValueColumn, new QTableWidgetItem(num(g.rho ? *g.rho : *g.mass)));
         m_table->setItem(r, MassColumn, readOnly(QString()));
+        retranslateRow(r);
     }
     m_table->resizeColumnsToContents();
     m_table->horizontalHeader()->setStretchLastSection(false);  // (again: resizing to contents undid it)
@@ -321,10 +409,11 @@ void InertiaDialog::recompute()
     std::vector<char> bad(static_cast<std::size_t>(m_table->rowCount()), 0);
     for (const solver::Diagnostic& d : diags) {
         const int row = d.pos.line - 2;
-        QString m = QString::fromStdString(d.message);
-        if (!d.hint.empty()) m += QStringLiteral(" — ") + QString::fromStdString(d.hint);
+        const QString message = i18n::message(d), hint = i18n::hint(d);
         if (d.severity == solver::Severity::Error && row >= 0 && row < m_table->rowCount()) bad[static_cast<std::size_t>(row)] = 1;
-        messages << (d.severity == solver::Severity::Error ? tr("Error: %1") : tr("Warning: %1")).arg(m);
+        const bool error = d.severity == solver::Severity::Error;
+        if (hint.isEmpty()) messages << (error ? tr("Error: %1") : tr("Warning: %1")).arg(message);
+        else messages << (error ? tr("Error: %1 — %2") : tr("Warning: %1 — %2")).arg(message, hint);
     }
     {
         const QSignalBlocker block(m_table);
@@ -335,7 +424,7 @@ void InertiaDialog::recompute()
                 if (QTableWidgetItem* item = m_table->item(r, c)) item->setBackground(isBad ? QColor(255, 220, 220) : QBrush());
             }
             const double sm = solidMass[static_cast<std::size_t>(r)];
-            m_table->item(r, MassColumn)->setText(std::isfinite(sm) && !diags.hasErrors() ? bstatement::number(sm) : QString());
+            m_table->item(r, MassColumn)->setText(std::isfinite(sm) && !diags.hasErrors() ? shown(sm) : QString());
         }
         m_loading = false;
     }
@@ -368,10 +457,11 @@ void InertiaDialog::showResult()
 {
     m_fileB->setText(m_fileLine);
     m_computedB->setText(m_bLine);
+    for (QLineEdit* e : {m_fileB, m_computedB}) e->setCursorPosition(0);  // the start of a long line: "B id m …"
     m_replace->setEnabled(m_result.has_value());
     for (int r = 0; r < 3; ++r) {
         for (int c = 0; c < 3; ++c) {
-            QString t = m_result ? bstatement::number(m_result->inertia(r, c)) : QStringLiteral("—");
+            QString t = m_result ? shown(m_result->inertia(r, c)) : QStringLiteral("—");
             if (!m_tensor->item(r, c)) m_tensor->setItem(r, c, new QTableWidgetItem);
             m_tensor->item(r, c)->setText(t);
             m_tensor->item(r, c)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
@@ -382,18 +472,18 @@ void InertiaDialog::showResult()
         return;
     }
     const solver::MassProperties& p = *m_result;
-    m_mass->setText(tr("%1 kg").arg(bstatement::number(p.mass)));
+    m_mass->setText(tr("%1 kg").arg(shown(p.mass)));
     m_com->setText(tr("(%1, %2, %3) m")
-                       .arg(bstatement::number(p.com.x()), bstatement::number(p.com.y()), bstatement::number(p.com.z())));
+                       .arg(shown(p.com.x()), shown(p.com.y()), shown(p.com.z())));
     const solver::PrincipalAxes pa = solver::principalAxes(p.inertia);
     m_principal->setText(tr("%1, %2, %3 kg·m²")
-                             .arg(bstatement::number(pa.moments.x()), bstatement::number(pa.moments.y()),
-                                  bstatement::number(pa.moments.z())));
+                             .arg(shown(pa.moments.x()), shown(pa.moments.y()),
+                                  shown(pa.moments.z())));
     QStringList axes;
     for (int c = 0; c < 3; ++c) {
         axes << tr("%1 kg·m² about (%2, %3, %4)")
-                    .arg(bstatement::number(pa.moments[c]), bstatement::number(pa.axes(0, c)), bstatement::number(pa.axes(1, c)),
-                         bstatement::number(pa.axes(2, c)));
+                    .arg(shown(pa.moments[c]), shown(pa.axes(0, c)), shown(pa.axes(1, c)),
+                         shown(pa.axes(2, c)));
     }
     m_principal->setToolTip(axes.join(QLatin1Char('\n')));
     const solver::BodySpec* body = m_spec->body(bodyId());

@@ -23,6 +23,7 @@
 #include <optional>
 
 class QComboBox;
+class QGroupBox;
 class QLabel;
 class QLineEdit;
 class QPlainTextEdit;
@@ -82,8 +83,16 @@ signals:
     /// B statement (−1: none, insert one).
     void bLineReady(int bodyId, const QString& bLine, int lineOfExistingBStatement);
 
+protected:
+    /// A language change: every label, header and result again (the table's edits stay).
+    void changeEvent(QEvent* event) override;
+
 private:
+    static constexpr int LineRole = Qt::UserRole + 1;  ///< of the Graphic column: the G statement's line
     void build();
+    void retranslateStatic();
+    void retranslateRow(int row);
+    QString bodyText(int id) const;
     void fillBodies();
     void loadSolids();
     void recompute();
@@ -101,6 +110,17 @@ private:
     std::optional<solver::MassProperties> m_result;
     QString m_statement, m_bLine, m_fileLine;
 
+    QLabel* m_bodyLabel = nullptr;
+    QLabel* m_note = nullptr;
+    QGroupBox* m_results = nullptr;
+    QGroupBox* m_lines = nullptr;
+    QLabel* m_massLabel = nullptr;
+    QLabel* m_comLabel = nullptr;
+    QLabel* m_tensorLabel = nullptr;
+    QLabel* m_principalLabel = nullptr;
+    QLabel* m_differenceLabel = nullptr;
+    QLabel* m_fileBLabel = nullptr;
+    QLabel* m_computedBLabel = nullptr;
     QComboBox* m_body = nullptr;
     QTableWidget* m_table = nullptr;
     QLabel* m_errors = nullptr;

@@ -178,7 +178,7 @@ bool CodeEditor::gutterToolTip(const QPoint& pos, QString& text) const
     const int block = at.blockNumber();
     QStringList tips;
     for (int i = 0; i < m_marks.size(); ++i) {
-        if (m_selections[i].cursor.block().blockNumber() == block) tips << m_marks[i].toolTip;
+        if (m_selections[i].cursor.block().blockNumber() == block) tips << diagnosticToolTip(m_diagnostics[m_marks[i].diagnostic]);
     }
     tips.removeDuplicates();
     text = tips.join(QString());
@@ -238,7 +238,7 @@ void CodeEditor::setDiagnostics(const std::vector<solver::Diagnostic>& diagnosti
         sel.format.setUnderlineStyle(QTextCharFormat::WaveUnderline);
         sel.format.setUnderlineColor(severityColor(d->severity));
         m_selections.append(sel);
-        m_marks.append({d->severity, diagnosticToolTip(*d)});
+        m_marks.append({d->severity, std::size_t(d - m_diagnostics.data())});
     }
     updateExtraSelections();
     m_gutter->update();
@@ -254,7 +254,7 @@ QString CodeEditor::diagnosticToolTipAt(int position) const
     for (int i = 0; i < m_marks.size(); ++i) {
         const QTextCursor& c = m_selections[i].cursor;
         const int a = c.selectionStart(), b = c.selectionEnd();
-        if (position >= a && (position < b || (a == b && position == a))) tips << m_marks[i].toolTip;
+        if (position >= a && (position < b || (a == b && position == a))) tips << diagnosticToolTip(m_diagnostics[m_marks[i].diagnostic]);
     }
     tips.removeDuplicates();
     return tips.join(QString());

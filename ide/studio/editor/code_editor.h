@@ -77,7 +77,7 @@ private:
     friend class LineNumberArea;
     struct Mark {  // one per underline: m_selections[i] is mark i's range
         solver::Severity severity;
-        QString toolTip;
+        std::size_t diagnostic;  // in m_diagnostics (its tooltip is made when shown: in the current language)
     };
 
     void paintGutter(QPaintEvent* event);

@@ -1,5 +1,7 @@
 #include "ide/studio/editor/diagnostic_text.h"
 
+#include "ide/i18n/diagnostic_text.h"
+
 #include <QCoreApplication>
 #include <QPainter>
 #include <QPixmap>
@@ -80,9 +82,9 @@ QIcon severityIcon(solver::Severity severity)
     return icons[0];
 }
 
-QString diagnosticMessage(const solver::Diagnostic& d) { return QString::fromStdString(d.message); }
+QString diagnosticMessage(const solver::Diagnostic& d) { return i18n::message(d); }
 
-QString diagnosticHint(const solver::Diagnostic& d) { return QString::fromStdString(d.hint); }
+QString diagnosticHint(const solver::Diagnostic& d) { return i18n::hint(d); }
 
 QString diagnosticLocation(const solver::Diagnostic& d)
 {

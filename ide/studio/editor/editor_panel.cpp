@@ -5,6 +5,7 @@
 #include "ide/studio/editor/model_checker.h"
 #include "ide/studio/editor/problems_view.h"
 
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -25,9 +26,8 @@ EditorPanel::EditorPanel(QWidget* parent) : QWidget(parent)
 
     m_status = new QLabel(this);
     m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_apply = new QPushButton(style()->standardIcon(QStyle::SP_DialogApplyButton), tr("Apply"), this);
     // (no shortcut here: the main window's Apply Model action has Ctrl+Return)
-    m_apply->setToolTip(tr("Use this model in the 3D view and the simulation"));
+    m_apply = new QPushButton(style()->standardIcon(QStyle::SP_DialogApplyButton), QString(), this);
 
     auto* bar = new QHBoxLayout;
     bar->setContentsMargins(4, 2, 4, 2);
@@ -74,7 +74,21 @@ EditorPanel::EditorPanel(QWidget* parent) : QWidget(parent)
         emit filePathChanged(path);
     });
 
+    retranslate();
     checkNow();
+}
+
+void EditorPanel::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange) retranslate();
+    QWidget::changeEvent(event);
+}
+
+void EditorPanel::retranslate()
+{
+    m_apply->setText(tr("Apply"));
+    m_apply->setToolTip(tr("Use this model in the 3D view and the simulation"));
+    updateStatus();
 }
 
 EditorPanel::~EditorPanel()
@@ -154,7 +168,7 @@ std::shared_ptr<const ModelBundle> EditorPanel::checkedBundle() const
 void EditorPanel::textChanged()
 {
     ++m_revision;
-    m_refusal.clear();
+    m_refusedErrors = -1;
     m_debounce->start();
     updateStatus();
 }
@@ -193,13 +207,11 @@ void EditorPanel::apply()
         return;
     }
     if (!m_checked) {
-        m_refusal = m_errors > 0
-                        ? tr("Not applied: the model has %n error(s). The model applied before stays in use.", nullptr, m_errors)
-                        : tr("Not applied: the model could not be compiled.");
+        m_refusedErrors = m_errors;
         updateStatus();
         return;
     }
-    m_refusal.clear();
+    m_refusedErrors = -1;
     m_lastGood = m_checked;
     updateStatus();
     emit applied(m_lastGood);
@@ -208,6 +220,15 @@ void EditorPanel::apply()
 // ---- status -------------------------------------------------------------------------------
 
 QString EditorPanel::statusText() const { return m_status->text(); }
+
+QString EditorPanel::problemCounts(int errors, int warnings)
+{
+    if (errors > 0 && warnings > 0)
+        return tr("%1, %n warning(s)", "the %1 is \"%n error(s)\"", warnings).arg(tr("%n error(s)", nullptr, errors));
+    if (errors > 0) return tr("%n error(s)", nullptr, errors);
+    if (warnings > 0) return tr("%n warning(s)", nullptr, warnings);
+    return tr("No problems");
+}
 
 void EditorPanel::setStatus(const QString& text, const QColor& color)
 {
@@ -222,8 +243,11 @@ void EditorPanel::updateStatus()
     const bool current = m_checkedRevision == m_revision;
     // with errors in the current text there is nothing to apply
     m_apply->setEnabled(!(current && m_errors > 0));
-    if (!m_refusal.isEmpty()) {
-        setStatus(m_refusal, severityColor(solver::Severity::Error));
+    if (m_refusedErrors >= 0) {
+        setStatus(m_refusedErrors > 0 ? tr("Not applied: the model has %n error(s). The model applied before stays in use.",
+                                           nullptr, m_refusedErrors)
+                                      : tr("Not applied: the model could not be compiled."),
+                  severityColor(solver::Severity::Error));
         return;
     }
     if (!current && m_requestedRevision == m_revision) {
@@ -234,10 +258,7 @@ void EditorPanel::updateStatus()
         setStatus(current ? tr("No problems") : QString(), QColor());
         return;
     }
-    QStringList parts;
-    if (m_errors > 0) parts << tr("%n error(s)", nullptr, m_errors);
-    if (m_warnings > 0) parts << tr("%n warning(s)", nullptr, m_warnings);
-    setStatus(parts.join(QStringLiteral(", ")),
+    setStatus(problemCounts(m_errors, m_warnings),
               severityColor(m_errors > 0 ? solver::Severity::Error : solver::Severity::Warning));
 }
 

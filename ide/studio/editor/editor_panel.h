@@ -93,6 +93,8 @@ public:
     std::shared_ptr<const ModelBundle> lastGood() const { return m_lastGood; }
     /// The status line shown next to the Apply button.
     QString statusText() const;
+    /// "2 errors, 1 warning", "1 warning", "No problems" in the current language.
+    static QString problemCounts(int errors, int warnings);
 
 public slots:
     /// Emits applied() for the current text if it has no errors (after its check
@@ -113,7 +115,12 @@ signals:
     /// Another program changed or deleted the open file: offer reload().
     void fileChangedOnDisk(const QString& path, bool deleted);
 
+protected:
+    /// A language change: the button and the status line again.
+    void changeEvent(QEvent* event) override;
+
 private:
+    void retranslate();
     void textChanged();
     void onChecked(quint64 revision, std::shared_ptr<const ModelBundle> bundle, const solver::Diagnostics& diags);
     void updateStatus();
@@ -136,7 +143,7 @@ private:
     std::vector<solver::Diagnostic> m_diagnostics;
     std::shared_ptr<const ModelBundle> m_checked;
     std::shared_ptr<const ModelBundle> m_lastGood;
-    QString m_refusal;  // why the last apply() did nothing (shown until the next check)
+    int m_refusedErrors = -1;  // the last apply() did nothing: the errors it found (0: not compiled), −1: not refused
 };
 
 }  // namespace studio

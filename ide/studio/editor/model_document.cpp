@@ -7,6 +7,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QLocale>
 #include <QFileSystemWatcher>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -128,7 +129,7 @@ bool ModelDocument::readFile(const QString& path, FileText& out, QString* errorM
     if (info.size() > qint64(solver::kMaxModelFileBytes)) {
         return fail(tr("“%1” is too large for a model file (%2 MB; at most %3 MB).")
                         .arg(shown)
-                        .arg(double(info.size()) / (1024.0 * 1024.0), 0, 'f', 1)
+                        .arg(QLocale().toString(double(info.size()) / (1024.0 * 1024.0), 'f', 1))
                         .arg(solver::kMaxModelFileBytes / (1024 * 1024)));
     }
     QFile file(path);

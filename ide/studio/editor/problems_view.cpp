@@ -2,7 +2,9 @@
 
 #include "ide/studio/editor/diagnostic_text.h"
 
+#include <QEvent>
 #include <QHeaderView>
+#include <QSignalBlocker>
 
 #include <algorithm>
 
@@ -11,7 +13,7 @@ namespace studio {
 ProblemsView::ProblemsView(QWidget* parent) : QTreeWidget(parent)
 {
     setColumnCount(3);
-    setHeaderLabels({tr("Line:col"), tr("Message"), tr("Hint")});
+    retranslate();
     setRootIsDecorated(false);
     setUniformRowHeights(true);
     setAlternatingRowColors(true);
@@ -25,11 +27,34 @@ ProblemsView::ProblemsView(QWidget* parent) : QTreeWidget(parent)
     connect(this, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem* item) { activate(item); });
 }
 
+void ProblemsView::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange) {
+        retranslate();
+        // the messages and hints in the new language, the same row current
+        const int current = currentItem() ? indexOfTopLevelItem(currentItem()) : -1;
+        fill();
+        if (current >= 0 && current < topLevelItemCount()) {
+            const QSignalBlocker block(this);
+            setCurrentItem(topLevelItem(current));
+        }
+    }
+    QTreeWidget::changeEvent(event);
+}
+
+void ProblemsView::retranslate() { setHeaderLabels({tr("Line:col"), tr("Message"), tr("Hint")}); }
+
 void ProblemsView::setDiagnostics(const std::vector<solver::Diagnostic>& diagnostics)
 {
+    m_diagnostics = diagnostics;
+    fill();
+}
+
+void ProblemsView::fill()
+{
     std::vector<const solver::Diagnostic*> sorted;
-    sorted.reserve(diagnostics.size());
-    for (const solver::Diagnostic& d : diagnostics) sorted.push_back(&d);
+    sorted.reserve(m_diagnostics.size());
+    for (const solver::Diagnostic& d : m_diagnostics) sorted.push_back(&d);
     std::stable_sort(sorted.begin(), sorted.end(), [](const solver::Diagnostic* a, const solver::Diagnostic* b) {
         if (a->pos.line != b->pos.line) return a->pos.line < b->pos.line;
         return a->pos.column < b->pos.column;

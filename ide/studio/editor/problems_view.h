@@ -31,8 +31,16 @@ signals:
     /// A problem was clicked or activated; line/column are 1-based (0: no position).
     void problemActivated(int line, int column);
 
+protected:
+    /// A language change: the headers and every problem again, in the new language.
+    void changeEvent(QEvent* event) override;
+
 private:
+    void retranslate();
+    void fill();
     void activate(QTreeWidgetItem* item);
+
+    std::vector<solver::Diagnostic> m_diagnostics;  // as given (shown sorted)
 };
 
 }  // namespace studio

@@ -5,14 +5,18 @@
 #include <QChart>
 #include <QChartView>
 #include <QDir>
+#include <QEvent>
 #include <QFileDialog>
 #include <QHBoxLayout>
+#include <QHeaderView>
 #include <QLabel>
 #include <QLegend>
 #include <QLineSeries>
+#include <QLocale>
 #include <QPixmap>
 #include <QPushButton>
 #include <QSaveFile>
+#include <QScrollArea>
 #include <QSplitter>
 #include <QTimer>
 #include <QTreeWidget>
@@ -31,6 +35,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr int kKeyRole = Qt::UserRole + 1;
+constexpr int kMinChartHeight = 190;  // [px] room for the legend, the plot and both axes' labels and titles
 
 /// A CSV field, quoted when it must be (RFC 4180).
 QByteArray csvField(const QString& text)
@@ -54,6 +59,7 @@ void appendNumber(QByteArray& out, double v)
 
 PlotPanel::PlotPanel(QWidget* parent) : QWidget(parent)
 {
+    // (the texts: retranslate())
     auto* split = new QSplitter(Qt::Horizontal, this);
 
     auto* side = new QWidget(split);
@@ -61,31 +67,37 @@ PlotPanel::PlotPanel(QWidget* parent) : QWidget(parent)
     sideLayout->setContentsMargins(0, 0, 0, 0);
     m_list = new QTreeWidget(side);
     m_list->setHeaderHidden(true);
-    m_list->setToolTip(tr("Tick the signals to plot; each unit gets its own chart."));
+    // a long signal name (in any language) scrolls instead of being cut
+    m_list->header()->setStretchLastSection(false);
+    m_list->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     sideLayout->addWidget(m_list, 1);
     auto* buttons = new QHBoxLayout;
-    auto* clearButton = new QPushButton(tr("Clear"), side);
-    clearButton->setToolTip(tr("Forget the samples plotted so far"));
-    auto* csvButton = new QPushButton(tr("CSV…"), side);
-    csvButton->setToolTip(tr("Export time and the ticked signals as CSV"));
-    auto* pngButton = new QPushButton(tr("PNG…"), side);
-    pngButton->setToolTip(tr("Save the charts as a PNG image"));
-    buttons->addWidget(clearButton);
-    buttons->addWidget(csvButton);
-    buttons->addWidget(pngButton);
+    m_clearButton = new QPushButton(side);
+    m_csvButton = new QPushButton(side);
+    m_pngButton = new QPushButton(side);
+    buttons->addWidget(m_clearButton);
+    buttons->addWidget(m_csvButton);
+    buttons->addWidget(m_pngButton);
     sideLayout->addLayout(buttons);
 
-    m_chartArea = new QWidget(split);
+    // the charts scroll when the panel is too short for all of them (a chart squeezed
+    // below kMinChartHeight elides its axes' labels)
+    auto* scroll = new QScrollArea(split);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_chartArea = new QWidget(scroll);
+    scroll->setWidget(m_chartArea);
     m_chartLayout = new QVBoxLayout(m_chartArea);
     m_chartLayout->setContentsMargins(0, 0, 0, 0);
     m_chartLayout->setSpacing(0);
-    m_placeholder = new QLabel(tr("Tick signals in the list to plot them against time."), m_chartArea);
+    m_placeholder = new QLabel(m_chartArea);
     m_placeholder->setAlignment(Qt::AlignCenter);
     m_placeholder->setWordWrap(true);
     m_chartLayout->addWidget(m_placeholder, 1);
 
     split->addWidget(side);
-    split->addWidget(m_chartArea);
+    split->addWidget(scroll);
     split->setStretchFactor(0, 0);
     split->setStretchFactor(1, 1);
     split->setSizes({260, 740});
@@ -104,12 +116,46 @@ PlotPanel::PlotPanel(QWidget* parent) : QWidget(parent)
     connect(m_pollTimer, &QTimer::timeout, this, &PlotPanel::poll);
 
     connect(m_list, &QTreeWidget::itemChanged, this, &PlotPanel::onItemChanged);
-    connect(clearButton, &QPushButton::clicked, this, [this] {
+    connect(m_clearButton, &QPushButton::clicked, this, [this] {
         clear();
         refresh();
     });
-    connect(csvButton, &QPushButton::clicked, this, &PlotPanel::exportCsvInteractive);
-    connect(pngButton, &QPushButton::clicked, this, &PlotPanel::exportPngInteractive);
+    connect(m_csvButton, &QPushButton::clicked, this, &PlotPanel::exportCsvInteractive);
+    connect(m_pngButton, &QPushButton::clicked, this, &PlotPanel::exportPngInteractive);
+    retranslate();
+}
+
+void PlotPanel::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange) {
+        retranslate();
+        // the list, the legends, the axes' titles and numbers in the new language (the
+        // history and the ticks stay)
+        rebuildList();
+        rebuildCharts();
+    }
+    QWidget::changeEvent(event);
+}
+
+void PlotPanel::retranslate()
+{
+    m_list->setToolTip(tr("Tick the signals to plot; each unit gets its own chart."));
+    m_clearButton->setText(tr("Clear"));
+    m_clearButton->setToolTip(tr("Forget the samples plotted so far"));
+    m_csvButton->setText(tr("CSV…"));
+    m_csvButton->setToolTip(tr("Export time and the ticked signals as CSV"));
+    m_pngButton->setText(tr("PNG…"));
+    m_pngButton->setToolTip(tr("Save the charts as a PNG image"));
+    m_placeholder->setText(tr("Tick signals in the list to plot them against time."));
+}
+
+QString PlotPanel::labelOf(const Signal& s) const
+{
+    if (s.kind == Kind::Energy) return tr("mechanical energy [J]");
+    const QString joint = s.jointName.isEmpty() ? tr("C %1").arg(s.jointId) : tr("C %1 %2").arg(s.jointId).arg(s.jointName);
+    // the symbols are the same in every language, but the drive's force
+    const QString symbol = s.kind == Kind::Force ? tr("F drive") : s.symbol;
+    return tr("%1 %2 [%3]", "a signal: the joint, the quantity's symbol, its unit").arg(joint, symbol, s.unit);
 }
 
 PlotPanel::~PlotPanel() = default;
@@ -129,7 +175,6 @@ void PlotPanel::setBundle(std::shared_ptr<const ModelBundle> bundle)
             const std::size_t k = std::size_t(i);
             const int id = m.jointId[k];
             const QString name = QString::fromStdString(m.jointName[k]);
-            const QString joint = name.isEmpty() ? tr("C %1").arg(id) : tr("C %1 %2").arg(id).arg(name);
             const bool turns = m.jointType[k] == solver::JointType::Revolute;
             const QString length = turns ? QStringLiteral("rad") : QStringLiteral("m");
             const QString rate = turns ? QStringLiteral("rad/s") : QStringLiteral("m/s");
@@ -140,12 +185,14 @@ void PlotPanel::setBundle(std::shared_ptr<const ModelBundle> bundle)
                 s.tree = i;
                 s.key = prefix + QLatin1Char(':') + QString::number(id);
                 s.unit = unit;
-                s.label = QStringLiteral("%1 %2 [%3]").arg(joint, symbol, unit);
+                s.symbol = symbol;
+                s.jointId = id;
+                s.jointName = name;
                 m_signals.push_back(s);
             };
             add(Kind::Q, QStringLiteral("q"), QStringLiteral("q"), length);
             add(Kind::Qd, QStringLiteral("qd"), QStringLiteral("dq/dt"), rate);
-            if (m.drive[k].type != solver::DriveType::None) add(Kind::Force, QStringLiteral("f"), tr("F drive"), force);
+            if (m.drive[k].type != solver::DriveType::None) add(Kind::Force, QStringLiteral("f"), QStringLiteral("F"), force);
             add(Kind::Ma, QStringLiteral("Ma"), QStringLiteral("M_A"), QStringLiteral("N m"));
             add(Kind::Mr, QStringLiteral("Mr"), QStringLiteral("M_R"), QStringLiteral("N m"));
             add(Kind::Mt, QStringLiteral("Mt"), QStringLiteral("M_T"), QStringLiteral("N m"));
@@ -157,7 +204,6 @@ void PlotPanel::setBundle(std::shared_ptr<const ModelBundle> bundle)
         e.kind = Kind::Energy;
         e.key = QStringLiteral("energy");
         e.unit = QStringLiteral("J");
-        e.label = tr("mechanical energy [J]");
         m_signals.push_back(e);
     }
     const QStringList before = m_selected;
@@ -266,7 +312,7 @@ int PlotPanel::indexOf(const QString& key) const
 QString PlotPanel::signalLabel(const QString& key) const
 {
     const int k = indexOf(key);
-    return k < 0 ? QString() : m_signals[std::size_t(k)].label;
+    return k < 0 ? QString() : labelOf(m_signals[std::size_t(k)]);
 }
 
 QString PlotPanel::signalUnit(const QString& key) const
@@ -337,7 +383,7 @@ void PlotPanel::rebuildList()
         }
         item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
         item->setData(0, kKeyRole, s.key);
-        item->setToolTip(0, s.label);
+        item->setToolTip(0, labelOf(s));
         item->setCheckState(0, m_selected.contains(s.key) ? Qt::Checked : Qt::Unchecked);
         if (group && m_selected.contains(s.key)) group->setExpanded(true);
     }
@@ -359,6 +405,12 @@ void PlotPanel::rebuildCharts()
             qchart->setAnimationOptions(QChart::NoAnimation);
             qchart->legend()->setAlignment(Qt::AlignTop);
             qchart->setMargins(QMargins(4, 4, 4, 4));
+            // the axes' numbers in the current locale (1,5 in Spanish), without group
+            // separators ("132.000 N" would read as 132 N next to model text)
+            QLocale locale;
+            locale.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);
+            qchart->setLocalizeNumbers(true);
+            qchart->setLocale(locale);
             c.x = new QValueAxis;
             c.x->setTitleText(tr("t [s]"));
             c.x->setLabelFormat(QStringLiteral("%.1f"));
@@ -368,13 +420,13 @@ void PlotPanel::rebuildCharts()
             qchart->addAxis(c.x, Qt::AlignBottom);
             qchart->addAxis(c.y, Qt::AlignLeft);
             c.view = new QChartView(qchart, m_chartArea);
-            c.view->setMinimumHeight(150);
+            c.view->setMinimumHeight(kMinChartHeight);
             m_chartLayout->addWidget(c.view, 1);
             m_charts.push_back(c);
             chart = m_charts.end() - 1;
         }
         auto* series = new QLineSeries;
-        series->setName(s.label);
+        series->setName(labelOf(s));
         chart->view->chart()->addSeries(series);
         series->attachAxis(chart->x);
         series->attachAxis(chart->y);
@@ -466,7 +518,7 @@ bool PlotPanel::exportCsv(const QString& path)
     for (const QString& key : m_selected) {
         const std::size_t k = std::size_t(indexOf(key));
         columns.push_back(k);
-        out += ',' + csvField(m_signals[k].label);
+        out += ',' + csvField(labelOf(m_signals[k]));
     }
     out += '\n';
     for (const Sample& s : m_samples) {

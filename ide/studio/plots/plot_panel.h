@@ -37,6 +37,7 @@ QT_BEGIN_NAMESPACE
 class QChartView;
 class QLabel;
 class QLineSeries;
+class QPushButton;
 class QTimer;
 class QTreeWidget;
 class QTreeWidgetItem;
@@ -102,12 +103,20 @@ signals:
     /// An export from the panel's own buttons failed (for the window to show).
     void exportFailed(const QString& message);
 
+protected:
+    /// A language change: the buttons, the list, the legends and the axes again (numbers
+    /// in the new locale); the history and the ticks stay.
+    void changeEvent(QEvent* event) override;
+
 private:
     enum class Kind { Q, Qd, Force, Ma, Mr, Mt, Fa, Fr, Ft, Energy };
     struct Signal {
-        QString key, label, unit;
+        QString key, unit;
+        QString symbol;  // "q", "dq/dt", "M_A"… (the same in every language)
         Kind kind = Kind::Q;
         int tree = -1;  // tree joint
+        int jointId = 0;
+        QString jointName;
     };
     struct Sample {
         double t = 0;
@@ -122,6 +131,9 @@ private:
         std::vector<QLineSeries*> series;
     };
 
+    void retranslate();
+    /// "C 2 LEVANTE PLUMA q [m]", "mechanical energy [J]" in the current language.
+    QString labelOf(const Signal& s) const;
     int indexOf(const QString& key) const;
     void rebuildList();
     void rebuildCharts();
@@ -150,6 +162,9 @@ private:
     QWidget* m_chartArea = nullptr;
     QVBoxLayout* m_chartLayout = nullptr;
     QLabel* m_placeholder = nullptr;
+    QPushButton* m_clearButton = nullptr;
+    QPushButton* m_csvButton = nullptr;
+    QPushButton* m_pngButton = nullptr;
 };
 
 }  // namespace studio

@@ -1,5 +1,6 @@
 #include "ide/studio/sim/simulation_runner.h"
 
+#include "ide/i18n/diagnostic_text.h"
 #include "solver/integrate/simulation.h"
 
 #include <QMetaObject>
@@ -194,7 +195,8 @@ private:
     std::vector<solver::SimulationEvent> m_events;  // since the last snapshot
     std::shared_ptr<const std::vector<solver::SimulationEvent>> m_eventLog;
     long m_eventCount = 0;
-    std::string m_error;
+    std::string m_error;         // why the simulation failed, in English (Snapshot::error)
+    solver::Text m_errorText;    // the same, translatable (shown to the user)
 
     // statistics
     std::vector<StepSample> m_stepSamples;  // ring
@@ -232,6 +234,7 @@ private:
         m_eventLog = std::make_shared<const std::vector<solver::SimulationEvent>>();
         m_eventCount = 0;
         m_error.clear();
+        m_errorText = {};
         clearStatistics();
         m_realTimeFactor = m_stepMicros = m_periodMicros = m_periodMaxMicros = 0;
         m_cpuLoad = -1;
@@ -309,7 +312,7 @@ private:
     {
         pullCommands();
         const double t0 = now();
-        const bool ok = m_sim->advanceTo(double(m_step + 1) * m_h, m_events, m_error);
+        const bool ok = m_sim->advanceTo(double(m_step + 1) * m_h, m_events, m_error, &m_errorText);
         const double t1 = now();
         if (!ok) {
             fail();
@@ -447,7 +450,7 @@ private:
             }
         }
         const QString message =
-            SimulationRunner::tr("The simulation stopped: %1").arg(QString::fromStdString(m_error));
+            SimulationRunner::tr("The simulation stopped: %1").arg(i18n::text(m_errorText));
         SimulationRunner* runner = &m_runner;
         const long generation = m_generation;
         QMetaObject::invokeMethod(

@@ -8,6 +8,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QEvent>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -38,9 +39,9 @@ public:
     }
 };
 
-QLabel* instruction(const QString& text, QWidget* parent)
+QLabel* instruction(QWidget* parent)
 {
-    auto* l = new QLabel(text, parent);
+    auto* l = new QLabel(parent);
     l->setWordWrap(true);
     QFont f = l->font();
     f.setPointSizeF(f.pointSizeF() * 1.15);
@@ -64,8 +65,16 @@ CalibrationWizard::CalibrationWizard(trainer::Station* station, const trainer::D
                                      QWidget* parent)
     : QWizard(parent), m_station(station), m_device(device), m_replay(replay), m_axis(axis), m_base(current)
 {
-    const QString axisName = axis >= 0 && axis < device.axes.size() ? device.axes[axis].name : tr("Axis %1").arg(axis);
-    setWindowTitle(tr("Calibrate %1 of %2").arg(axisName, device.name));
+    onLanguage([this] {
+        const QString axisName = m_axis >= 0 && m_axis < m_device.axes.size() ? m_device.axes[m_axis].name
+                                                                               : tr("Axis %1").arg(m_axis);
+        setWindowTitle(tr("Calibrate %1 of %2").arg(axisName, m_device.name));
+        // the wizard's own buttons, in the language whether or not Qt's catalogue is installed
+        setButtonText(QWizard::BackButton, tr("< &Back"));
+        setButtonText(QWizard::NextButton, tr("&Next >"));
+        setButtonText(QWizard::FinishButton, tr("&Finish"));
+        setButtonText(QWizard::CancelButton, tr("Cancel"));
+    });
     setWizardStyle(QWizard::ClassicStyle);
     setOption(QWizard::NoBackButtonOnStartPage);
     setPage(RestPage, buildRestPage());
@@ -104,13 +113,11 @@ double CalibrationWizard::nominalSpan() const
 QWizardPage* CalibrationWizard::buildRestPage()
 {
     auto* page = new FunctionPage;
-    page->setTitle(tr("Leave the lever at rest"));
     page->complete = [this] { return m_capture.restCount() >= m_restReadings; };
     page->enter = [this] { restartRest(); };
     auto* layout = new QVBoxLayout(page);
-    layout->addWidget(instruction(tr("Let go of the lever (or stick) and leave it where it rests by itself. Its "
-                                     "reading over the next moments is the centre of the channel."),
-                                  page));
+    auto* text = instruction(page);
+    layout->addWidget(text);
     m_connection[RestPage] = connectionLabel(page);
     layout->addWidget(m_connection[RestPage]);
     layout->addSpacing(8);
@@ -118,7 +125,6 @@ QWizardPage* CalibrationWizard::buildRestPage()
     m_restBar->setFixedHeight(22);
     layout->addWidget(m_restBar);
     m_restProgress = new QProgressBar(page);
-    m_restProgress->setFormat(tr("Capturing… %p%"));
     layout->addWidget(m_restProgress);
     m_restText = new QLabel(page);
     m_restText->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -128,8 +134,14 @@ QWizardPage* CalibrationWizard::buildRestPage()
     m_restNoise->setStyleSheet(QStringLiteral("color: %1").arg(amberColor().name()));
     m_restNoise->hide();
     layout->addWidget(m_restNoise);
-    auto* again = new QPushButton(tr("Capture again"), page);
-    again->setToolTip(tr("Forget these readings and capture the rest position anew"));
+    auto* again = new QPushButton(page);
+    onLanguage([page, text, again] {
+        page->setTitle(tr("Leave the lever at rest"));
+        text->setText(tr("Let go of the lever (or stick) and leave it where it rests by itself. Its reading over "
+                         "the next moments is the centre of the channel."));
+        again->setText(tr("Capture again"));
+        again->setToolTip(tr("Forget these readings and capture the rest position anew"));
+    });
     connect(again, &QPushButton::clicked, this, &CalibrationWizard::restartRest);
     auto* row = new QHBoxLayout;
     row->addWidget(again);
@@ -142,7 +154,6 @@ QWizardPage* CalibrationWizard::buildRestPage()
 QWizardPage* CalibrationWizard::buildTravelPage()
 {
     auto* page = new FunctionPage;
-    page->setTitle(tr("Move the lever to its full travel, both ways"));
     page->complete = [this] { return m_capture.complete(nominalSpan()); };
     page->enter = [this] {
         m_capture.startTravel();
@@ -150,16 +161,20 @@ QWizardPage* CalibrationWizard::buildTravelPage()
         showTravel();
     };
     auto* layout = new QVBoxLayout(page);
-    layout->addWidget(instruction(tr("Push the lever slowly all the way to one end, then all the way to the other, "
-                                     "and let it come back to rest. A lever that only moves one way (a trigger, a "
-                                     "pedal) is fine: move it to its end."),
-                                  page));
+    auto* text = instruction(page);
+    layout->addWidget(text);
     m_connection[TravelPage] = connectionLabel(page);
     layout->addWidget(m_connection[TravelPage]);
     layout->addSpacing(8);
     m_travelBar = new LevelBar(page);
     m_travelBar->setFixedHeight(28);
-    m_travelBar->setToolTip(tr("The reading now; the red marks are the farthest seen each way"));
+    onLanguage([this, page, text] {
+        page->setTitle(tr("Move the lever to its full travel, both ways"));
+        text->setText(tr("Push the lever slowly all the way to one end, then all the way to the other, and let it "
+                         "come back to rest. A lever that only moves one way (a trigger, a pedal) is fine: move it "
+                         "to its end."));
+        m_travelBar->setToolTip(tr("The reading now; the red marks are the farthest seen each way"));
+    });
     layout->addWidget(m_travelBar);
     m_travelText = new QLabel(page);
     m_travelText->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -174,7 +189,6 @@ QWizardPage* CalibrationWizard::buildTravelPage()
 QWizardPage* CalibrationWizard::buildSettingsPage()
 {
     auto* page = new FunctionPage;
-    page->setTitle(tr("Dead band, direction and response"));
     page->enter = [this] {
         m_phase = Phase::None;
         m_previewFilter.reset();
@@ -189,57 +203,73 @@ QWizardPage* CalibrationWizard::buildSettingsPage()
     left->addWidget(m_captured);
     auto* form = new QFormLayout;
     form->setFieldGrowthPolicy(QFormLayout::FieldsStayAtSizeHint);
-    auto percentSpin = [&](const QString& tip) {
+    auto percentSpin = [&] {
         auto* s = new QDoubleSpinBox(page);
         s->setRange(0.0, 100.0 * trainer::ChannelCalibration::kMaxDeadBand);
         s->setDecimals(1);
         s->setSingleStep(1.0);
         s->setSuffix(QStringLiteral(" %"));
-        s->setToolTip(tip);
         return s;
     };
-    m_deadLow = percentSpin(tr("Fraction of the travel below the centre where the output stays 0"));
-    m_deadHigh = percentSpin(tr("Fraction of the travel above the centre where the output stays 0"));
+    m_deadLow = percentSpin();
+    m_deadHigh = percentSpin();
     m_deadLow->setValue(100.0 * m_base.deadBandLow);
     m_deadHigh->setValue(100.0 * m_base.deadBandHigh);
-    form->addRow(tr("Dead band below centre:"), m_deadLow);
-    form->addRow(tr("Dead band above centre:"), m_deadHigh);
-    m_inverted = new QCheckBox(tr("Inverted"), page);
-    m_inverted->setToolTip(tr("Pushing the lever towards its maximum reading gives a negative command"));
+    form->addRow(QStringLiteral("-"), m_deadLow);
+    form->addRow(QStringLiteral("-"), m_deadHigh);
+    m_inverted = new QCheckBox(page);
     m_inverted->setChecked(m_base.inverted);
     form->addRow(QString(), m_inverted);
     m_curve = new QComboBox(page);
-    m_curve->addItem(tr("Linear"), int(trainer::ResponseCurve::Linear));
-    m_curve->addItem(tr("Exponential"), int(trainer::ResponseCurve::Exponential));
+    m_curve->addItem(QString(), int(trainer::ResponseCurve::Linear));
+    m_curve->addItem(QString(), int(trainer::ResponseCurve::Exponential));
     m_curve->setCurrentIndex(m_base.curve == trainer::ResponseCurve::Exponential ? 1 : 0);
-    m_curve->setToolTip(tr("Exponential: finer control near the centre"));
-    form->addRow(tr("Response:"), m_curve);
+    form->addRow(QStringLiteral("-"), m_curve);
     m_exponent = new QDoubleSpinBox(page);
     m_exponent->setRange(trainer::ChannelCalibration::kMinExponent, trainer::ChannelCalibration::kMaxExponent);
     m_exponent->setDecimals(2);
     m_exponent->setSingleStep(0.25);
     m_exponent->setValue(m_base.exponent);
-    m_exponent->setToolTip(tr("k of y = (e^(k·x) − 1)/(e^k − 1): larger is finer near the centre"));
-    form->addRow(tr("Curve parameter k:"), m_exponent);
+    form->addRow(QStringLiteral("-"), m_exponent);
     m_filter = new QDoubleSpinBox(page);
     m_filter->setRange(0.0, 200.0);
     m_filter->setDecimals(1);
     m_filter->setSingleStep(1.0);
-    m_filter->setSuffix(tr(" Hz"));
-    m_filter->setSpecialValueText(tr("off"));
     m_filter->setValue(m_base.filterHz);
-    m_filter->setToolTip(tr("Low-pass cutoff frequency against a noisy pot (0: no filter)"));
-    form->addRow(tr("Low-pass filter:"), m_filter);
+    form->addRow(QStringLiteral("-"), m_filter);
     left->addLayout(form);
 
-    auto* keep = new QGroupBox(tr("Keep this calibration for"), page);
+    auto* keep = new QGroupBox(page);
     auto* keepLayout = new QVBoxLayout(keep);
-    m_thisDevice = new QRadioButton(tr("This device only (%1)").arg(m_device.id), keep);
-    m_thisDevice->setToolTip(tr("Only this very device uses it"));
-    m_anyKind = new QRadioButton(tr("Any %1").arg(trainer::kindName(m_device.kind).toLower()), keep);
-    m_anyKind->setToolTip(tr("Every device of this kind uses it, so the profile works with another one of the same "
-                             "make (profile key “%1”)")
-                              .arg(trainer::kindKey(m_device.kind)));
+    m_thisDevice = new QRadioButton(keep);
+    m_anyKind = new QRadioButton(keep);
+    const auto label = [form](QWidget* field) { return qobject_cast<QLabel*>(form->labelForField(field)); };
+    onLanguage([=, this] {
+        page->setTitle(tr("Dead band, direction and response"));
+        m_deadLow->setToolTip(tr("Fraction of the travel below the centre where the output stays 0"));
+        m_deadHigh->setToolTip(tr("Fraction of the travel above the centre where the output stays 0"));
+        label(m_deadLow)->setText(tr("Dead band below centre:"));
+        label(m_deadHigh)->setText(tr("Dead band above centre:"));
+        m_inverted->setText(tr("Inverted"));
+        m_inverted->setToolTip(tr("Pushing the lever towards its maximum reading gives a negative command"));
+        m_curve->setItemText(0, tr("Linear"));
+        m_curve->setItemText(1, tr("Exponential"));
+        m_curve->setToolTip(tr("Exponential: finer control near the centre"));
+        label(m_curve)->setText(tr("Response:"));
+        m_exponent->setToolTip(tr("k of y = (e^(k·x) − 1)/(e^k − 1): larger is finer near the centre"));
+        label(m_exponent)->setText(tr("Curve parameter k:"));
+        m_filter->setSuffix(tr(" Hz"));
+        m_filter->setSpecialValueText(tr("off"));
+        m_filter->setToolTip(tr("Low-pass cutoff frequency against a noisy pot (0: no filter)"));
+        label(m_filter)->setText(tr("Low-pass filter:"));
+        keep->setTitle(tr("Keep this calibration for"));
+        m_thisDevice->setText(tr("This device only (%1)").arg(m_device.id));
+        m_thisDevice->setToolTip(tr("Only this very device uses it"));
+        m_anyKind->setText(tr("Any %1").arg(trainer::kindName(m_device.kind).toLower()));
+        m_anyKind->setToolTip(tr("Every device of this kind uses it, so the profile works with another one of the "
+                                 "same make (profile key “%1”)")
+                                  .arg(trainer::kindKey(m_device.kind)));
+    });
     auto* group = new QButtonGroup(keep);
     group->addButton(m_thisDevice);
     group->addButton(m_anyKind);
@@ -256,8 +286,12 @@ QWizardPage* CalibrationWizard::buildSettingsPage()
     m_previewRaw = new LevelBar(page);
     m_previewValue = new LevelBar(page);
     m_previewValue->setScale(-1.0, 0.0, 1.0);
-    bars->addRow(tr("Raw:"), m_previewRaw);
-    bars->addRow(tr("Calibrated:"), m_previewValue);
+    bars->addRow(QStringLiteral("-"), m_previewRaw);
+    bars->addRow(QStringLiteral("-"), m_previewValue);
+    onLanguage([bars, this] {
+        qobject_cast<QLabel*>(bars->labelForField(m_previewRaw))->setText(tr("Raw:"));
+        qobject_cast<QLabel*>(bars->labelForField(m_previewValue))->setText(tr("Calibrated:"));
+    });
     right->addLayout(bars);
     m_previewText = new QLabel(page);
     right->addWidget(m_previewText);
@@ -384,8 +418,8 @@ void CalibrationWizard::showRest()
         const double spread = m_capture.restSpread();
         const double span = nominalSpan();
         m_restText->setText(tr("Reading: %1    Centre: %2    Spread: %3 (%4 % of the travel)")
-                                .arg(formatRaw(m_last), QString::number(m_capture.centre(), 'g', 6), formatRaw(spread))
-                                .arg(span > 0 ? 100.0 * spread / span : 0.0, 0, 'f', 1));
+                                .arg(formatRaw(m_last), formatNumber(m_capture.centre()), formatRaw(spread),
+                                     QLocale().toString(span > 0 ? 100.0 * spread / span : 0.0, 'f', 1)));
         const bool noisy = span > 0 && spread > kNoisySpread * span;
         m_restNoise->setText(noisy ? tr("The reading moves while the lever rests: a noisy pot or a loose wire? A "
                                         "dead band or the low-pass filter will hide some of it.")
@@ -411,8 +445,7 @@ void CalibrationWizard::showTravel()
     m_travelBar->setValue(reading);
     m_travelBar->setMarks(seenLo, seenHi);
     m_travelText->setText(tr("Reading: %1    Centre: %2    Seen: %3 … %4")
-                              .arg(formatRaw(reading), QString::number(centre, 'g', 6), formatRaw(seenLo),
-                                   formatRaw(seenHi)));
+                              .arg(formatRaw(reading), formatNumber(centre), formatRaw(seenLo), formatRaw(seenHi)));
     QString why;
     const bool complete = m_capture.complete(nominalSpan(), &why);
     m_travelWhy->setText(complete ? tr("Enough travel seen. Keep moving to reach the very ends, then press Next.") : why);
@@ -425,7 +458,7 @@ void CalibrationWizard::showSettings()
     if (currentId() != SettingsPage) return;
     const trainer::ChannelCalibration c = calibration();
     QString captured = tr("Captured: minimum %1, centre %2, maximum %3.")
-                           .arg(formatRaw(c.rawMin), QString::number(c.rawCentre, 'g', 6), formatRaw(c.rawMax));
+                           .arg(formatRaw(c.rawMin), formatNumber(c.rawCentre), formatRaw(c.rawMax));
     if (c.rawCentre == c.rawMin || c.rawCentre == c.rawMax)
         captured += QLatin1Char(' ') + tr("One-sided: the output goes from 0 to 1.");
     m_captured->setText(captured);
@@ -454,6 +487,24 @@ void CalibrationWizard::settingsChanged()
         m_previewOutput = m_previewFilter.update(c.apply(m_last), c.filterHz, 1.0 / kRefreshHz);
     }
     showSettings();
+}
+
+void CalibrationWizard::onLanguage(std::function<void()> set)
+{
+    set();
+    m_texts.push_back(std::move(set));
+}
+
+void CalibrationWizard::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange) {
+        setLocale(QLocale());  // the spin boxes in the new locale (a window: its own)
+        for (const auto& set : m_texts) set();
+        showRest();
+        showTravel();
+        showSettings();
+    }
+    QWizard::changeEvent(event);
 }
 
 void CalibrationWizard::accept()

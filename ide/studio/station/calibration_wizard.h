@@ -12,6 +12,9 @@
 // Finish emits calibrationReady(); the Station page installs it (post → setCalibration)
 // and keeps it in its profile.
 //
+// Language: on QEvent::LanguageChange the pages' texts are set again and the numbers
+// follow the new locale (1,5 in Spanish; the spin boxes too).
+//
 // Readings: while liveInput() (the default) a timer reads the channel's raw value from
 // the station's newest state kRefreshHz times a second. Tests turn that off and feed
 // readings with addReading(); setRestReadings() shortens the rest capture.
@@ -22,7 +25,9 @@
 #include <QPointer>
 #include <QWizard>
 
+#include <functional>
 #include <limits>
+#include <vector>
 
 class QCheckBox;
 class QComboBox;
@@ -107,7 +112,13 @@ signals:
     /// Finish: keep `calibration` for (`deviceMatch`, `axis`).
     void calibrationReady(const QString& deviceMatch, int axis, const trainer::ChannelCalibration& calibration);
 
+protected:
+    /// QEvent::LanguageChange: every text again.
+    void changeEvent(QEvent* event) override;
+
 private:
+    /// Sets a text now and at every language change (`set` calls tr()).
+    void onLanguage(std::function<void()> set);
     QWizardPage* buildRestPage();
     QWizardPage* buildTravelPage();
     QWizardPage* buildSettingsPage();
@@ -131,6 +142,7 @@ private:
     double m_last = std::numeric_limits<double>::quiet_NaN();
     double m_previewOutput = 0.0;
     QTimer* m_timer = nullptr;
+    std::vector<std::function<void()>> m_texts;
 
     QLabel* m_connection[3] = {};
     QProgressBar* m_restProgress = nullptr;

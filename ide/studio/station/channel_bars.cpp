@@ -2,6 +2,7 @@
 
 #include "ide/studio/station/live_state.h"
 
+#include <QEvent>
 #include <QFontDatabase>
 #include <QGridLayout>
 #include <QLabel>
@@ -14,19 +15,38 @@
 
 namespace studio {
 
+namespace {
+
+/// The locale's numbers without group separators (a raw reading of 32767 is not "32.767").
+QLocale numbers()
+{
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
+    return locale;
+}
+
+}  // namespace
+
 QString formatRaw(double raw)
 {
     if (!std::isfinite(raw)) return QStringLiteral("—");
-    if (raw == std::round(raw) && std::abs(raw) < 1e7) return QString::number(qint64(raw));
-    return QString::number(raw, 'g', 4);
+    if (raw == std::round(raw) && std::abs(raw) < 1e7) return numbers().toString(qint64(raw));
+    return numbers().toString(raw, 'g', 4);
 }
 
 QString formatValue(double value)
 {
     if (!std::isfinite(value)) return QStringLiteral("—");
-    const QString s = QString::number(std::abs(value), 'f', 2);
-    if (s == QLatin1String("0.00")) return s;
+    const QLocale locale = numbers();
+    const QString s = locale.toString(std::abs(value), 'f', 2);
+    if (s == locale.toString(0.0, 'f', 2)) return s;
     return (value < 0 ? QStringLiteral("−") : QStringLiteral("+")) + s;
+}
+
+QString formatNumber(double value, int significant)
+{
+    if (!std::isfinite(value)) return QStringLiteral("—");
+    return numbers().toString(value, 'g', significant);
 }
 
 // ---- LevelBar ------------------------------------------------------------------
@@ -168,7 +188,7 @@ ChannelPanel::ChannelPanel(QWidget* parent) : QWidget(parent)
 {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    m_title = new QLabel(tr("No device selected"), this);
+    m_title = new QLabel(this);
     m_title->setWordWrap(true);
     layout->addWidget(m_title);
 
@@ -180,7 +200,7 @@ ChannelPanel::ChannelPanel(QWidget* parent) : QWidget(parent)
     m_grid->setColumnStretch(3, 1);
     layout->addWidget(m_body);
 
-    m_buttonsTitle = new QLabel(tr("Buttons"), this);
+    m_buttonsTitle = new QLabel(this);
     layout->addWidget(m_buttonsTitle);
     auto* lamps = new QWidget(this);
     m_lampGrid = new QGridLayout(lamps);
@@ -189,6 +209,23 @@ ChannelPanel::ChannelPanel(QWidget* parent) : QWidget(parent)
     layout->addWidget(lamps);
     layout->addStretch(1);
     m_buttonsTitle->hide();
+    retranslate();
+}
+
+void ChannelPanel::retranslate()
+{
+    m_buttonsTitle->setText(tr("Buttons"));
+    if (m_key.isEmpty()) m_title->setText(tr("No device selected"));
+}
+
+void ChannelPanel::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange) {
+        retranslate();
+        // the rows (headers, flags, buttons' tooltips) are made again at the next setDevice()
+        if (!m_key.isEmpty()) m_key = QStringLiteral("?");
+    }
+    QWidget::changeEvent(event);
 }
 
 void ChannelPanel::rebuild(const trainer::DeviceState* device)

@@ -102,7 +102,12 @@ signals:
     /// "Calibrate…" of channel `axis` was pressed.
     void calibrateRequested(int axis);
 
+protected:
+    /// QEvent::LanguageChange: the titles again; the rows at the next setDevice().
+    void changeEvent(QEvent* event) override;
+
 private:
+    void retranslate();
     struct Row {
         QLabel* name = nullptr;
         LevelBar* raw = nullptr;
@@ -124,9 +129,12 @@ private:
     QList<ButtonLamp*> m_lamps;
 };
 
-/// "512", "0.25", "−3.1e+04": a raw reading, integers without decimals.
+/// "512", "0.25", "-3.1e+04": a raw reading, integers without decimals (the locale's
+/// decimal separator: "0,25" in Spanish; never group separators).
 QString formatRaw(double raw);
-/// "+0.42", "−1.00", "0.00": a calibrated value.
+/// "+0.42", "−1.00", "0.00": a calibrated value (Spanish "+0,42").
 QString formatValue(double value);
+/// `value` with `significant` digits in the locale ("2.5", "2,5"), without group separators.
+QString formatNumber(double value, int significant = 6);
 
 }  // namespace studio

@@ -45,12 +45,17 @@ QComboBox* editableCombo(QWidget* parent)
     return c;
 }
 
+void setButtonSpinTexts(QSpinBox* s)
+{
+    s->setSpecialValueText(MappingTable::tr("none"));
+    s->setToolTip(MappingTable::tr("The button's number on that device (as the channel lamps show it)"));
+}
+
 QSpinBox* buttonSpin(QWidget* parent)
 {
     auto* s = new QSpinBox(parent);
     s->setRange(-1, kMaxButton);
-    s->setSpecialValueText(MappingTable::tr("none"));
-    s->setToolTip(MappingTable::tr("The button's number on that device (as the channel lamps show it)"));
+    setButtonSpinTexts(s);
     return s;
 }
 
@@ -62,15 +67,6 @@ MappingTable::MappingTable(QWidget* parent) : QWidget(parent)
     layout->setContentsMargins(0, 0, 0, 0);
 
     m_table = new QTableWidget(0, ColumnCount, this);
-    m_table->setHorizontalHeaderLabels({tr("Bank"), tr("Device"), tr("Axis"), tr("Drive"), tr("Gain"), tr("Sign"),
-                                        tr("Live")});
-    m_table->horizontalHeaderItem(DeviceColumn)
-        ->setToolTip(tr("A device id, or a kind (gamepad, joystick, serial, comedi, keyboard): the first connected "
-                        "device of that kind"));
-    m_table->horizontalHeaderItem(GainColumn)->setToolTip(tr("Command = gain × sign × calibrated value (0 … 10)"));
-    m_table->horizontalHeaderItem(LiveColumn)
-        ->setToolTip(tr("What the mapping gives its drive now; after a profile change, a bank switch or a "
-                        "reconnection it waits until the lever is back at the centre"));
     m_table->verticalHeader()->hide();
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
@@ -78,21 +74,20 @@ MappingTable::MappingTable(QWidget* parent) : QWidget(parent)
     QHeaderView* h = m_table->horizontalHeader();
     h->setSectionResizeMode(QHeaderView::Interactive);
     h->setSectionResizeMode(DriveColumn, QHeaderView::Stretch);
-    m_table->setColumnWidth(BankColumn, 100);
+    m_table->setColumnWidth(BankColumn, 110);
     m_table->setColumnWidth(DeviceColumn, 120);
     m_table->setColumnWidth(AxisColumn, 110);
-    m_table->setColumnWidth(GainColumn, 72);
-    m_table->setColumnWidth(SignColumn, 52);
-    m_table->setColumnWidth(LiveColumn, 160);
+    m_table->setColumnWidth(GainColumn, 80);
+    m_table->setColumnWidth(SignColumn, 60);
+    m_table->setColumnWidth(LiveColumn, 170);
     // room for a drive's name beside the fixed columns
-    m_table->setMinimumWidth(100 + 120 + 110 + 72 + 52 + 160 + 130);
+    m_table->setMinimumWidth(110 + 120 + 110 + 80 + 60 + 170 + 130);
     m_table->verticalHeader()->setDefaultSectionSize(m_table->verticalHeader()->defaultSectionSize() + 4);
     layout->addWidget(m_table, 3);
 
     auto* rowButtons = new QHBoxLayout;
-    auto* add = new QPushButton(tr("Add mapping"), this);
-    add->setToolTip(tr("A new row in the selected row's bank"));
-    m_removeMapping = new QPushButton(tr("Remove mapping"), this);
+    auto* add = new QPushButton(this);
+    m_removeMapping = new QPushButton(this);
     connect(add, &QPushButton::clicked, this, [this] { addMapping(); });
     connect(m_removeMapping, &QPushButton::clicked, this, [this] {
         if (m_table->currentRow() >= 0) removeMapping(m_table->currentRow());
@@ -102,27 +97,24 @@ MappingTable::MappingTable(QWidget* parent) : QWidget(parent)
     rowButtons->addStretch(1);
     layout->addLayout(rowButtons);
 
-    auto* banksTitle = new QLabel(tr("Banks"), this);
+    auto* banksTitle = new QLabel(this);
     QFont bold = banksTitle->font();
     bold.setBold(true);
     banksTitle->setFont(bold);
     layout->addSpacing(6);
     layout->addWidget(banksTitle);
-    auto* banksNote = new QLabel(tr("A device with fewer axes than the machine has drives switches between banks "
-                                    "of mappings with its buttons; the “Always” mappings act in every bank."),
-                                 this);
+    auto* banksNote = new QLabel(this);
     banksNote->setWordWrap(true);
     layout->addWidget(banksNote);
 
     m_banksTable = new QTableWidget(0, BankColumnCount, this);
-    m_banksTable->setHorizontalHeaderLabels({tr("Bank"), tr("Selected by device"), tr("Button")});
     m_banksTable->verticalHeader()->hide();
     m_banksTable->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_banksTable->setSelectionMode(QAbstractItemView::SingleSelection);
     m_banksTable->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
     m_banksTable->horizontalHeader()->setSectionResizeMode(BankNameColumn, QHeaderView::Stretch);
-    m_banksTable->setColumnWidth(SelectDeviceColumn, 180);
-    m_banksTable->setColumnWidth(SelectButtonColumn, 90);
+    m_banksTable->setColumnWidth(SelectDeviceColumn, 200);
+    m_banksTable->setColumnWidth(SelectButtonColumn, 100);
     m_banksTable->verticalHeader()->setDefaultSectionSize(m_banksTable->verticalHeader()->defaultSectionSize() + 4);
     layout->addWidget(m_banksTable, 1);
     connect(m_banksTable, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* item) {
@@ -133,9 +125,9 @@ MappingTable::MappingTable(QWidget* parent) : QWidget(parent)
     });
 
     auto* bankButtons = new QHBoxLayout;
-    auto* addBankButton = new QPushButton(tr("Add bank"), this);
-    m_renameBank = new QPushButton(tr("Rename bank"), this);
-    m_removeBank = new QPushButton(tr("Remove bank"), this);
+    auto* addBankButton = new QPushButton(this);
+    m_renameBank = new QPushButton(this);
+    m_removeBank = new QPushButton(this);
     connect(addBankButton, &QPushButton::clicked, this, [this] {
         const int b = addBank();
         m_banksTable->setCurrentCell(b, BankNameColumn);
@@ -152,10 +144,34 @@ MappingTable::MappingTable(QWidget* parent) : QWidget(parent)
     bankButtons->addWidget(m_renameBank);
     bankButtons->addWidget(m_removeBank);
     bankButtons->addStretch(1);
-    bankButtons->addWidget(new QLabel(tr("Next bank:"), this));
+    auto* nextLabel = new QLabel(this);
+    bankButtons->addWidget(nextLabel);
     m_nextDevice = editableCombo(this);
-    m_nextDevice->setToolTip(tr("The device whose button steps to the next bank"));
     m_nextButton = buttonSpin(this);
+    onLanguage([=, this] {
+        m_table->setHorizontalHeaderLabels({tr("Bank"), tr("Device"), tr("Axis"), tr("Drive"), tr("Gain"), tr("Sign"),
+                                            tr("Live")});
+        m_table->horizontalHeaderItem(DeviceColumn)
+            ->setToolTip(tr("A device id, or a kind (gamepad, joystick, serial, comedi, keyboard): the first "
+                            "connected device of that kind"));
+        m_table->horizontalHeaderItem(GainColumn)->setToolTip(tr("Command = gain × sign × calibrated value (0 … 10)"));
+        m_table->horizontalHeaderItem(LiveColumn)
+            ->setToolTip(tr("What the mapping gives its drive now; after a profile change, a bank switch or a "
+                            "reconnection it waits until the lever is back at the centre"));
+        add->setText(tr("Add mapping"));
+        add->setToolTip(tr("A new row in the selected row's bank"));
+        m_removeMapping->setText(tr("Remove mapping"));
+        banksTitle->setText(tr("Banks"));
+        banksNote->setText(tr("A device with fewer axes than the machine has drives switches between banks of "
+                              "mappings with its buttons; the “Always” mappings act in every bank."));
+        m_banksTable->setHorizontalHeaderLabels({tr("Bank"), tr("Selected by device"), tr("Button")});
+        addBankButton->setText(tr("Add bank"));
+        m_renameBank->setText(tr("Rename bank"));
+        m_removeBank->setText(tr("Remove bank"));
+        nextLabel->setText(tr("Next bank:"));
+        m_nextDevice->setToolTip(tr("The device whose button steps to the next bank"));
+        setButtonSpinTexts(m_nextButton);
+    });
     bankButtons->addWidget(m_nextDevice);
     bankButtons->addWidget(m_nextButton);
     layout->addLayout(bankButtons);
@@ -179,6 +195,24 @@ MappingTable::MappingTable(QWidget* parent) : QWidget(parent)
 }
 
 MappingTable::~MappingTable() = default;
+
+void MappingTable::onLanguage(std::function<void()> set)
+{
+    set();
+    m_texts.push_back(std::move(set));
+}
+
+void MappingTable::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange) {
+        for (const auto& set : m_texts) set();
+        // the cells (bank and axis names, "none", tooltips, the issues) made again; the
+        // live column at the next showState()
+        rebuildBanks();
+        rebuildRows();
+    }
+    QWidget::changeEvent(event);
+}
 
 void MappingTable::setDrives(const QList<trainer::DriveInfo>& drives)
 {

@@ -18,6 +18,7 @@
 #include <QWidget>
 
 #include <functional>
+#include <vector>
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -88,7 +89,13 @@ public:
 signals:
     void edited();
 
+protected:
+    /// QEvent::LanguageChange: headers, buttons and cells again.
+    void changeEvent(QEvent* event) override;
+
 private:
+    /// Sets a text now and at every language change (`set` calls tr()).
+    void onLanguage(std::function<void()> set);
     struct Row {
         int bank = -1;
         trainer::Mapping mapping;
@@ -123,6 +130,7 @@ private:
     QList<DeviceChoice> m_devices;
     QString m_devicesKey;
     std::function<bool(const QString&)> m_confirm;
+    std::vector<std::function<void()>> m_texts;
     bool m_filling = false;
 
     QTableWidget* m_table = nullptr;

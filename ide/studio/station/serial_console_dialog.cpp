@@ -2,6 +2,7 @@
 
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QEvent>
 #include <QFormLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -18,48 +19,68 @@ QList<int> SerialConsoleDialog::baudRates()
 
 SerialConsoleDialog::SerialConsoleDialog(QWidget* parent) : QDialog(parent)
 {
-    setWindowTitle(tr("Add serial console"));
     auto* layout = new QVBoxLayout(this);
-    auto* intro = new QLabel(tr("A replica console (levers on a DAQ box) on a serial port. The station opens it "
-                                "while this profile is in use, and tries again when it is unplugged."),
-                             this);
-    intro->setWordWrap(true);
-    layout->addWidget(intro);
+    m_intro = new QLabel(this);
+    m_intro->setWordWrap(true);
+    layout->addWidget(m_intro);
 
-    auto* form = new QFormLayout;
+    m_form = new QFormLayout;
     m_port = new QComboBox(this);
     m_port->setEditable(true);
     m_port->setInsertPolicy(QComboBox::NoInsert);
     m_port->setMinimumWidth(280);
-    for (const QSerialPortInfo& info : QSerialPortInfo::availablePorts()) {
-        QStringList about;
-        if (!info.description().isEmpty()) about << info.description();
-        if (!info.manufacturer().isEmpty()) about << info.manufacturer();
-        if (!info.serialNumber().isEmpty()) about << tr("serial number %1").arg(info.serialNumber());
-        m_port->addItem(info.systemLocation(), about.join(QStringLiteral(", ")));
-        m_port->setItemData(m_port->count() - 1, about.join(QStringLiteral(", ")), Qt::ToolTipRole);
-    }
-    m_port->lineEdit()->setPlaceholderText(tr("e.g. /dev/ttyACM0"));
-    m_port->setToolTip(tr("The port's name exactly as the profile will keep it (a /dev/serial/by-id/… link stays "
-                          "the same when the box is plugged elsewhere)"));
-    form->addRow(tr("Port:"), m_port);
+    for (const QSerialPortInfo& info : QSerialPortInfo::availablePorts()) m_port->addItem(info.systemLocation());
+    m_form->addRow(QStringLiteral("-"), m_port);
     m_about = new QLabel(this);
     m_about->setWordWrap(true);
-    form->addRow(QString(), m_about);
+    m_form->addRow(QString(), m_about);
     m_baud = new QComboBox(this);
     for (int rate : baudRates()) m_baud->addItem(QString::number(rate), rate);
     m_baud->setCurrentIndex(baudRates().indexOf(115200));
-    form->addRow(tr("Baud rate:"), m_baud);
-    layout->addLayout(form);
+    m_form->addRow(QStringLiteral("-"), m_baud);
+    layout->addLayout(m_form);
 
     m_buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
-    m_buttons->button(QDialogButtonBox::Ok)->setText(tr("Add"));
     connect(m_buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(m_buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     layout->addWidget(m_buttons);
 
     connect(m_port, &QComboBox::currentTextChanged, this, &SerialConsoleDialog::portChanged);
+    retranslate();
+}
+
+void SerialConsoleDialog::retranslate()
+{
+    setWindowTitle(tr("Add serial console"));
+    m_intro->setText(tr("A replica console (levers on a DAQ box) on a serial port. The station opens it while this "
+                        "profile is in use, and tries again when it is unplugged."));
+    // what each port is (its description, maker, serial number), as its data and tooltip
+    const QList<QSerialPortInfo> ports = QSerialPortInfo::availablePorts();
+    for (int i = 0; i < m_port->count(); ++i) {
+        QStringList about;
+        for (const QSerialPortInfo& info : ports) {
+            if (info.systemLocation() != m_port->itemText(i)) continue;
+            if (!info.description().isEmpty()) about << info.description();
+            if (!info.manufacturer().isEmpty()) about << info.manufacturer();
+            if (!info.serialNumber().isEmpty()) about << tr("serial number %1").arg(info.serialNumber());
+        }
+        m_port->setItemData(i, about.join(QStringLiteral(", ")));
+        m_port->setItemData(i, about.join(QStringLiteral(", ")), Qt::ToolTipRole);
+    }
+    m_port->lineEdit()->setPlaceholderText(tr("e.g. /dev/ttyACM0"));
+    m_port->setToolTip(tr("The port's name exactly as the profile will keep it (a /dev/serial/by-id/… link stays "
+                          "the same when the box is plugged elsewhere)"));
+    qobject_cast<QLabel*>(m_form->labelForField(m_port))->setText(tr("Port:"));
+    qobject_cast<QLabel*>(m_form->labelForField(m_baud))->setText(tr("Baud rate:"));
+    m_buttons->button(QDialogButtonBox::Ok)->setText(tr("Add"));
+    m_buttons->button(QDialogButtonBox::Cancel)->setText(tr("Cancel"));
     portChanged();
+}
+
+void SerialConsoleDialog::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange) retranslate();
+    QDialog::changeEvent(event);
 }
 
 void SerialConsoleDialog::portChanged()

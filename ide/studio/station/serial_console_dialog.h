@@ -11,6 +11,7 @@
 
 class QComboBox;
 class QDialogButtonBox;
+class QFormLayout;
 class QLabel;
 
 namespace studio {
@@ -33,9 +34,16 @@ public:
     /// 9600 … 921600.
     static QList<int> baudRates();
 
+protected:
+    /// QEvent::LanguageChange: retranslate().
+    void changeEvent(QEvent* event) override;
+
 private:
+    void retranslate();
     void portChanged();
 
+    QLabel* m_intro = nullptr;
+    QFormLayout* m_form = nullptr;
     QComboBox* m_port = nullptr;
     QComboBox* m_baud = nullptr;
     QLabel* m_about = nullptr;

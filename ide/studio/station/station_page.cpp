@@ -8,6 +8,7 @@
 #include "trainer/input/input_log.h"
 
 #include <QComboBox>
+#include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QPointer>
@@ -62,7 +63,7 @@ StationPage::StationPage(trainer::Station* station, QWidget* parent) : QWidget(p
     big.setPointSizeF(big.pointSizeF() * 1.45);
     big.setBold(true);
     m_bank->setFont(big);
-    m_bank->setToolTip(tr("The bank of mappings the operator's levers drive now"));
+    onLanguage([this] { m_bank->setToolTip(tr("The bank of mappings the operator's levers drive now")); });
     bannerLayout->addWidget(m_bank, 0, Qt::AlignTop);
     bannerLayout->addSpacing(24);
     m_warnings = new QLabel(m_banner);
@@ -78,14 +79,15 @@ StationPage::StationPage(trainer::Station* station, QWidget* parent) : QWidget(p
     auto* splitter = new QSplitter(Qt::Horizontal, this);
     splitter->setChildrenCollapsible(false);
     splitter->addWidget(buildDevices(splitter));
-    auto* mapping = new QGroupBox(tr("Valve mapping"), splitter);
+    auto* mapping = new QGroupBox(splitter);
+    onLanguage([mapping] { mapping->setTitle(tr("Valve mapping")); });
     auto* mappingLayout = new QVBoxLayout(mapping);
     m_mappings = new MappingTable(mapping);
     mappingLayout->addWidget(m_mappings);
     splitter->addWidget(mapping);
     splitter->setStretchFactor(0, 5);
     splitter->setStretchFactor(1, 6);
-    splitter->setSizes({560, 940});
+    splitter->setSizes({620, 880});  // the devices' status readable in Spanish too
     layout->addWidget(splitter, 1);
 
     m_mappings->setConfirm([this](const QString& question) { return ask(tr("Remove bank"), question); });
@@ -121,7 +123,7 @@ StationPage::~StationPage()
 void StationPage::buildProfileBar(QVBoxLayout* layout)
 {
     auto* bar = new QHBoxLayout;
-    auto* title = new QLabel(tr("Profile:"), this);
+    auto* title = new QLabel(this);
     QFont bold = title->font();
     bold.setBold(true);
     title->setFont(bold);
@@ -129,20 +131,29 @@ void StationPage::buildProfileBar(QVBoxLayout* layout)
     m_profiles = new QComboBox(this);
     m_profiles->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     m_profiles->setMinimumContentsLength(30);
-    m_profiles->setToolTip(tr("The station profiles of this model: yours, and those shipped with it"));
     connect(m_profiles, &QComboBox::activated, this, &StationPage::profileActivated);
     bar->addWidget(m_profiles);
-    m_new = new QPushButton(tr("New"), this);
-    m_new->setToolTip(tr("An empty profile with one bank"));
-    m_save = new QPushButton(tr("Save"), this);
-    m_save->setToolTip(tr("Save the profile under its name (a shipped profile is saved as your own copy)"));
-    m_saveAs = new QPushButton(tr("Save As…"), this);
-    m_delete = new QPushButton(tr("Delete"), this);
-    m_delete->setToolTip(tr("Delete this profile of yours (shipped profiles cannot be deleted)"));
-    m_import = new QPushButton(tr("Import…"), this);
-    m_import->setToolTip(tr("Add a profile file (from another station) to this model's profiles"));
-    m_export = new QPushButton(tr("Export…"), this);
-    m_export->setToolTip(tr("Write this profile to a file"));
+    m_new = new QPushButton(this);
+    m_save = new QPushButton(this);
+    m_saveAs = new QPushButton(this);
+    m_delete = new QPushButton(this);
+    m_import = new QPushButton(this);
+    m_export = new QPushButton(this);
+    onLanguage([this, title] {
+        title->setText(tr("Profile:"));
+        m_profiles->setToolTip(tr("The station profiles of this model: yours, and those shipped with it"));
+        m_new->setText(tr("New"));
+        m_new->setToolTip(tr("An empty profile with one bank"));
+        m_save->setText(tr("Save"));
+        m_save->setToolTip(tr("Save the profile under its name (a shipped profile is saved as your own copy)"));
+        m_saveAs->setText(tr("Save As…"));
+        m_delete->setText(tr("Delete"));
+        m_delete->setToolTip(tr("Delete this profile of yours (shipped profiles cannot be deleted)"));
+        m_import->setText(tr("Import…"));
+        m_import->setToolTip(tr("Add a profile file (from another station) to this model's profiles"));
+        m_export->setText(tr("Export…"));
+        m_export->setToolTip(tr("Write this profile to a file"));
+    });
     for (QPushButton* b : {m_new, m_save, m_saveAs, m_delete, m_import, m_export}) bar->addWidget(b);
     bar->addStretch(1);
     connect(m_new, &QPushButton::clicked, this, [this] { newProfile(); });
@@ -169,7 +180,9 @@ void StationPage::buildProfileBar(QVBoxLayout* layout)
     m_issues = new QListWidget(this);
     m_issues->setSelectionMode(QAbstractItemView::NoSelection);
     m_issues->setFocusPolicy(Qt::NoFocus);
-    m_issues->setToolTip(tr("Problems of this profile with this model: a mapping with a warning is ignored"));
+    onLanguage([this] {
+        m_issues->setToolTip(tr("Problems of this profile with this model: a mapping with a warning is ignored"));
+    });
     m_issues->hide();
     layout->addWidget(m_issues);
 }
@@ -180,12 +193,16 @@ QWidget* StationPage::buildDevices(QWidget* parent)
     auto* layout = new QVBoxLayout(left);
     layout->setContentsMargins(0, 0, 0, 0);
 
-    auto* devices = new QGroupBox(tr("Devices"), left);
+    auto* devices = new QGroupBox(left);
     auto* dl = new QVBoxLayout(devices);
     m_devices = new QTreeWidget(devices);
     m_devices->setColumnCount(DeviceColumnCount);
-    m_devices->setHeaderLabels({tr("Device"), tr("Status"), tr("Samples"), tr("Dropped")});
-    m_devices->headerItem()->setToolTip(DroppedColumn, tr("Readings dropped as corrupt (a serial line with a bad checksum…)"));
+    onLanguage([this, devices] {
+        devices->setTitle(tr("Devices"));
+        m_devices->setHeaderLabels({tr("Device"), tr("Status"), tr("Samples"), tr("Dropped")});
+        m_devices->headerItem()->setToolTip(DroppedColumn,
+                                            tr("Readings dropped as corrupt (a serial line with a bad checksum…)"));
+    });
     m_devices->setRootIsDecorated(false);
     m_devices->setAllColumnsShowFocus(true);
     m_devices->setTextElideMode(Qt::ElideMiddle);
@@ -194,8 +211,9 @@ QWidget* StationPage::buildDevices(QWidget* parent)
     header->setSectionResizeMode(QHeaderView::Interactive);
     header->setSectionResizeMode(StatusColumn, QHeaderView::Stretch);
     m_devices->setColumnWidth(NameColumn, 210);
-    m_devices->setColumnWidth(SamplesColumn, 66);
-    m_devices->setColumnWidth(DroppedColumn, 64);
+    // "Muestras", "Descartadas": the headers' width in any language
+    header->setSectionResizeMode(SamplesColumn, QHeaderView::ResizeToContents);
+    header->setSectionResizeMode(DroppedColumn, QHeaderView::ResizeToContents);
     const int lineHeight = m_devices->fontMetrics().height();
     m_devices->setMinimumHeight(5 * lineHeight);
     m_devices->setMaximumHeight(10 * lineHeight);
@@ -211,15 +229,19 @@ QWidget* StationPage::buildDevices(QWidget* parent)
     });
 
     auto* buttons = new QHBoxLayout;
-    m_addSerial = new QPushButton(tr("Add serial console…"), devices);
-    m_addSerial->setToolTip(tr("A replica console (DAQ box) on a serial port, kept in the profile"));
-    m_removeDevice = new QPushButton(tr("Remove"), devices);
-    m_removeDevice->setToolTip(tr("Remove the selected device from the profile (only devices the profile opens: "
-                                  "joysticks and gamepads are found by themselves)"));
+    m_addSerial = new QPushButton(devices);
+    m_removeDevice = new QPushButton(devices);
     m_record = new QPushButton(tr("Record input…"), devices);
-    m_record->setToolTip(tr("Write everything the devices read to an input log"));
     m_replay = new QPushButton(tr("Replay a log…"), devices);
-    m_replay->setToolTip(tr("Play a recorded input log: it drives the machine instead of the operator"));
+    onLanguage([this] {  // (the record and replay buttons' texts: updateButtons())
+        m_addSerial->setText(tr("Add serial console…"));
+        m_addSerial->setToolTip(tr("A replica console (DAQ box) on a serial port, kept in the profile"));
+        m_removeDevice->setText(tr("Remove"));
+        m_removeDevice->setToolTip(tr("Remove the selected device from the profile (only devices the profile opens: "
+                                      "joysticks and gamepads are found by themselves)"));
+        m_record->setToolTip(tr("Write everything the devices read to an input log"));
+        m_replay->setToolTip(tr("Play a recorded input log: it drives the machine instead of the operator"));
+    });
     connect(m_addSerial, &QPushButton::clicked, this, [this] { addSerialConsole(); });
     connect(m_removeDevice, &QPushButton::clicked, this, [this] { removeSelectedDevice(); });
     connect(m_record, &QPushButton::clicked, this, [this] { isRecording() ? stopRecording() : startRecording(); });
@@ -236,7 +258,8 @@ QWidget* StationPage::buildDevices(QWidget* parent)
     dl->addWidget(m_activity);
     layout->addWidget(devices, 0);
 
-    auto* channels = new QGroupBox(tr("Channels"), left);
+    auto* channels = new QGroupBox(left);
+    onLanguage([channels] { channels->setTitle(tr("Channels")); });
     auto* cl = new QVBoxLayout(channels);
     auto* scroll = new QScrollArea(channels);
     scroll->setWidgetResizable(true);
@@ -922,15 +945,23 @@ void StationPage::updateButtons()
 
 bool StationPage::ask(const QString& title, const QString& question)
 {
-    return QMessageBox::question(this, title, question, QMessageBox::Yes | QMessageBox::No, QMessageBox::No) ==
-           QMessageBox::Yes;
+    // (the buttons' words are ours: Qt's own catalogue may not be installed)
+    QMessageBox box(QMessageBox::Question, title, question, QMessageBox::Yes | QMessageBox::No, this);
+    box.setDefaultButton(QMessageBox::No);
+    box.button(QMessageBox::Yes)->setText(tr("Yes"));
+    box.button(QMessageBox::No)->setText(tr("No"));
+    return box.exec() == QMessageBox::Yes;
 }
 
 QString StationPage::askText(const QString& title, const QString& label, const QString& text)
 {
-    bool ok = false;
-    const QString answer = QInputDialog::getText(this, title, label, QLineEdit::Normal, text, &ok);
-    return ok ? answer : QString();
+    QInputDialog dialog(this);
+    dialog.setWindowTitle(title);
+    dialog.setLabelText(label);
+    dialog.setTextValue(text);
+    dialog.setOkButtonText(tr("OK"));
+    dialog.setCancelButtonText(tr("Cancel"));
+    return dialog.exec() == QDialog::Accepted ? dialog.textValue() : QString();
 }
 
 QString StationPage::askOpenFile(const QString& title, const QString& filter)
@@ -953,7 +984,9 @@ std::optional<trainer::DeviceSetting> StationPage::askSerialConsole()
 
 void StationPage::tell(const QString& title, const QString& message)
 {
-    QMessageBox::warning(this, title, message);
+    QMessageBox box(QMessageBox::Warning, title, message, QMessageBox::Ok, this);
+    box.button(QMessageBox::Ok)->setText(tr("OK"));
+    box.exec();
 }
 
 void StationPage::showEvent(QShowEvent* event)
@@ -967,6 +1000,32 @@ void StationPage::hideEvent(QHideEvent* event)
 {
     QWidget::hideEvent(event);
     m_timer->stop();
+}
+
+void StationPage::onLanguage(std::function<void()> set)
+{
+    set();
+    m_texts.push_back(std::move(set));
+}
+
+void StationPage::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange) retranslate();
+    QWidget::changeEvent(event);
+}
+
+void StationPage::retranslate()
+{
+    // the spin boxes (gain…) read and show numbers in the new locale
+    setLocale(QLocale());
+    for (const auto& set : m_texts) set();
+    fillCombo();
+    updateButtons();
+    // the lists shown from the state are made again: kinds, statuses, issues
+    m_devicesKey.clear();
+    m_issues->setProperty("key", QVariant());
+    // after the children (the channels, the mapping table) have taken the language too
+    QTimer::singleShot(0, this, &StationPage::refresh);
 }
 
 }  // namespace studio

@@ -24,6 +24,10 @@
 // profileChanged() tells the main window. The main window gives the engine the model's
 // drives (StationEngine::setDrives); the page only lists them.
 //
+// Language: on QEvent::LanguageChange every text is set again (onLanguage) and the
+// lists made from the state are made anew; numbers follow the locale (spin boxes too),
+// profiles on disk keep '.'.
+//
 // Questions (overwrite? discard? a name, a file) go through virtual hooks (ask(),
 // askText(), askOpenFile(), askSaveFile(), askSerialConsole(), tell()) that show
 // dialogs; tests override them with scripted answers.
@@ -36,6 +40,7 @@
 #include <QPointer>
 #include <QWidget>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -184,10 +189,15 @@ protected:
 
     void showEvent(QShowEvent* event) override;
     void hideEvent(QHideEvent* event) override;
+    /// QEvent::LanguageChange: retranslate().
+    void changeEvent(QEvent* event) override;
 
 private:
     enum class Origin { Unsaved, User, Shipped };
 
+    /// Sets a text now and at every language change (`set` calls tr()).
+    void onLanguage(std::function<void()> set);
+    void retranslate();
     void buildProfileBar(QVBoxLayout* layout);
     QWidget* buildDevices(QWidget* parent);
     void setCurrent(const trainer::StationProfile& profile, Origin origin, const QString& storedName, bool dirty);
@@ -232,6 +242,7 @@ private:
     QPointer<CalibrationWizard> m_wizard;
 
     QTimer* m_timer = nullptr;
+    std::vector<std::function<void()>> m_texts;  ///< onLanguage()
     QComboBox* m_profiles = nullptr;
     QPushButton* m_new = nullptr;
     QPushButton* m_save = nullptr;

@@ -1,7 +1,12 @@
 #include "ide/studio/train/records_view.h"
 
+#include "ide/i18n/language.h"
+#include "trainer/training/session.h"
+#include "trainer/training/tutorial.h"
+
 #include <QChart>
 #include <QChartView>
+#include <QEvent>
 #include <QFileDialog>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -48,10 +53,9 @@ QString statusText(rec::AttemptStatus s)
     return {};
 }
 
-QTableWidget* table(const QStringList& headers)
+QTableWidget* table(int columns)
 {
-    auto* t = new QTableWidget(0, int(headers.size()));
-    t->setHorizontalHeaderLabels(headers);
+    auto* t = new QTableWidget(0, columns);
     t->verticalHeader()->hide();
     t->setEditTriggers(QAbstractItemView::NoEditTriggers);
     t->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -74,10 +78,10 @@ RecordsView::RecordsView(QWidget* parent) : QWidget(parent)
 {
     setObjectName("RecordsView");
     // a trainer's desk view: smaller than the trainee's screens (the page's 14 pt)
-    setStyleSheet("QTableWidget, QListWidget, QLineEdit, QHeaderView::section { font-size: 11pt; }");
+    setStyleSheet("QTableWidget, QListWidget, QLineEdit, QHeaderView, QHeaderView::section { font-size: 11pt; }");
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(16, 12, 16, 12);
-    auto* title = new QLabel(tr("Trainee records"));
+    auto* title = new QLabel;
     title->setObjectName("TrainTitle");
     layout->addWidget(title);
     m_message = new QLabel;
@@ -92,20 +96,19 @@ RecordsView::RecordsView(QWidget* parent) : QWidget(parent)
     auto* left = new QWidget;
     auto* leftLayout = new QVBoxLayout(left);
     leftLayout->setContentsMargins(0, 0, 0, 0);
-    leftLayout->addWidget(new QLabel("<b>" + tr("Operators") + "</b>"));
-    m_operators = table({tr("Code"), tr("Name"), tr("Attempts"), tr("Passed"), tr("Last attempt")});
+    auto* operatorsTitle = new QLabel;
+    leftLayout->addWidget(operatorsTitle);
+    m_operators = table(5);
     m_operators->setObjectName("RecordsOperators");
     leftLayout->addWidget(m_operators, 1);
     auto* addRow = new QHBoxLayout;
     auto* addFields = new QHBoxLayout;
     m_newCode = new QLineEdit;
     m_newCode->setMinimumWidth(110);
-    m_newCode->setPlaceholderText(tr("code"));
     m_newCode->setObjectName("NewOperatorCode");
     m_newName = new QLineEdit;
-    m_newName->setPlaceholderText(tr("name"));
     m_newName->setObjectName("NewOperatorName");
-    m_add = new QPushButton(tr("Add operator"));
+    m_add = new QPushButton;
     m_add->setObjectName("AddOperatorButton");
     m_newName->setMinimumWidth(180);
     addFields->addWidget(m_newCode, 1);
@@ -114,7 +117,7 @@ RecordsView::RecordsView(QWidget* parent) : QWidget(parent)
     addRow->addWidget(m_add);
     leftLayout->addLayout(addFields);
     leftLayout->addLayout(addRow);
-    left->setMinimumWidth(420);
+    left->setMinimumWidth(520);
     split->addWidget(left);
 
     // the selected operator: attempts, the selected one's breakdown and events, the chart
@@ -123,25 +126,31 @@ RecordsView::RecordsView(QWidget* parent) : QWidget(parent)
     auto* topLayout = new QHBoxLayout(top);
     topLayout->setContentsMargins(0, 0, 0, 0);
     auto* attemptsBox = new QVBoxLayout;
-    attemptsBox->addWidget(new QLabel("<b>" + tr("Attempts (newest first)") + "</b>"));
-    m_attempts = table({tr("Started"), tr("Tutorial"), tr("Status"), tr("Score"), tr("Stars"), tr("Time [s]")});
+    auto* attemptsTitle = new QLabel;
+    attemptsBox->addWidget(attemptsTitle);
+    m_attempts = table(5);
     m_attempts->setObjectName("RecordsAttempts");
+    m_attempts->horizontalHeader()->setStretchLastSection(false);
+    // the tutorial takes what is left (elided, in full as a tooltip): the rest stays whole
+    m_attempts->horizontalHeader()->setSectionResizeMode(1, QHeaderView::Stretch);
     attemptsBox->addWidget(m_attempts, 1);
-    topLayout->addLayout(attemptsBox, 5);
+    topLayout->addLayout(attemptsBox, 2);
     auto* detail = new QVBoxLayout;
-    detail->addWidget(new QLabel("<b>" + tr("Breakdown") + "</b>"));
-    m_breakdown = table({tr("Measure"), tr("Value"), tr("Points"), tr("Of")});
+    auto* breakdownTitle = new QLabel;
+    detail->addWidget(breakdownTitle);
+    m_breakdown = table(4);
     m_breakdown->setObjectName("RecordsBreakdown");
     m_breakdown->setSelectionMode(QAbstractItemView::NoSelection);
     m_breakdown->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
     m_breakdown->horizontalHeader()->setStretchLastSection(false);
     detail->addWidget(m_breakdown, 1);
-    detail->addWidget(new QLabel("<b>" + tr("Events") + "</b>"));
+    auto* eventsTitle = new QLabel;
+    detail->addWidget(eventsTitle);
     m_events = new QListWidget;
     m_events->setObjectName("RecordsEvents");
     m_events->setWordWrap(true);
     detail->addWidget(m_events, 1);
-    topLayout->addLayout(detail, 3);
+    topLayout->addLayout(detail, 1);
     right->addWidget(top);
     m_chart = new QChartView;
     m_chart->setObjectName("RecordsChart");
@@ -153,15 +162,32 @@ RecordsView::RecordsView(QWidget* parent) : QWidget(parent)
     split->addWidget(right);
     split->setStretchFactor(0, 2);
     split->setStretchFactor(1, 4);
-    split->setSizes({560, 1100});
+    split->setSizes({520, 1140});  // the attempts' columns visible (Spanish too)
     layout->addWidget(split, 1);
 
     auto* buttons = new QHBoxLayout;
-    auto* back = new QPushButton(tr("Back to the course"));
+    auto* back = new QPushButton;
     back->setObjectName("RecordsBack");
-    auto* reload = new QPushButton(tr("Refresh"));
-    m_export = new QPushButton(tr("Export CSV…"));
+    auto* reload = new QPushButton;
+    m_export = new QPushButton;
     m_export->setObjectName("ExportCsvButton");
+    onLanguage([=, this] {
+        title->setText(tr("Trainee records"));
+        operatorsTitle->setText("<b>" + tr("Operators") + "</b>");
+        m_operators->setHorizontalHeaderLabels({tr("Code"), tr("Name"), tr("Attempts"), tr("Passed"), tr("Last attempt")});
+        m_newCode->setPlaceholderText(tr("code"));
+        m_newName->setPlaceholderText(tr("name"));
+        m_add->setText(tr("Add operator"));
+        attemptsTitle->setText("<b>" + tr("Attempts (newest first)") + "</b>");
+        m_attempts->setHorizontalHeaderLabels(
+            {tr("Started"), tr("Tutorial"), tr("Status"), tr("Score"), tr("Time [s]")});
+        breakdownTitle->setText("<b>" + tr("Breakdown") + "</b>");
+        m_breakdown->setHorizontalHeaderLabels({tr("Measure"), tr("Value"), tr("Points"), tr("Of")});
+        eventsTitle->setText("<b>" + tr("Events") + "</b>");
+        back->setText(tr("Back to the course"));
+        reload->setText(tr("Refresh"));
+        m_export->setText(tr("Export CSV…"));
+    });
     buttons->addWidget(back);
     buttons->addStretch();
     buttons->addWidget(reload);
@@ -201,10 +227,68 @@ void RecordsView::setRecords(trainer::records::RecordsDb* db, const QString& pro
     refresh();
 }
 
-void RecordsView::setTutorials(const QHash<QString, QString>& titles, const QHash<QString, double>& passMarks)
+void RecordsView::setTutorials(const QHash<QString, QString>& titles, const QHash<QString, double>& passMarks,
+                               const QHash<QString, std::shared_ptr<const trainer::Tutorial>>& tutorials)
 {
     m_titles = titles;
     m_passMarks = passMarks;
+    m_tutorials = tutorials;
+}
+
+void RecordsView::onLanguage(std::function<void()> set)
+{
+    set();
+    m_texts.push_back(std::move(set));
+}
+
+void RecordsView::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange) {
+        for (const auto& set : m_texts) set();
+        const int attempt = m_attempts->currentRow();
+        refresh();  // keeps the operator
+        if (attempt >= 0 && attempt < m_attempts->rowCount()) m_attempts->setCurrentCell(attempt, 0);
+    }
+    QWidget::changeEvent(event);
+}
+
+QString RecordsView::titleOf(const rec::Attempt& a) const
+{
+    const QString title = m_titles.value(a.tutorialId, a.tutorialTitle);
+    return title.isEmpty() ? a.tutorialId : a.tutorialId + " " + title;
+}
+
+QString RecordsView::eventText(const rec::Attempt& a, const rec::AttemptEvent& e) const
+{
+    // as the trainee read it, unless that was in another language: worded again from its kind
+    if (a.language == i18n::current()) return e.text;
+    using Kind = trainer::TutorialEvent::Kind;
+    trainer::TutorialEvent event;
+    bool known = false;
+    for (int k = 0; k <= int(Kind::Aborted) && !known; ++k) {
+        if (e.kind == QLatin1String(trainer::TutorialEvent::key(Kind(k)))) {
+            event.kind = Kind(k);
+            known = true;
+        }
+    }
+    if (!known) return e.text;
+    event.t = e.t;
+    event.value = std::isnan(e.value) ? 0.0 : e.value;
+    event.penalty = e.penalty;
+    event.detail = e.detail.toStdString();
+    // a part or a person is kept by its English name: the tutorial names it in the language
+    const trainer::Tutorial* t = m_tutorials.value(a.tutorialId).get();
+    if (t) {
+        const bool worker = event.kind == Kind::WorkerZone || event.kind == Kind::WorkerHit;
+        if (worker) {
+            for (std::size_t i = 0; i < t->spec.workers.size(); ++i)
+                if (t->spec.workers[i].name.in("en") == event.detail) event.subject = int(i);
+        } else {
+            for (std::size_t i = 0; i < t->spec.parts.size(); ++i)
+                if (t->spec.parts[i].name.in("en") == event.detail) event.subject = int(i);
+        }
+    }
+    return event.text(t, i18n::current().toStdString());
 }
 
 void RecordsView::refresh()
@@ -234,9 +318,10 @@ void RecordsView::refresh()
     for (int i = 0; i < m_progress.size(); ++i) {
         const rec::OperatorProgress& p = m_progress[i];
         m_operators->setItem(i, 0, cell(p.op.code));
-        m_operators->setItem(i, 1, cell(p.op.name));
-        m_operators->setItem(i, 2, cell(QString::number(p.attempts), true));
-        m_operators->setItem(i, 3, cell(QString::number(p.tutorialsPassed), true));
+        // the guest, made by Padrob, is named in the current language
+        m_operators->setItem(i, 1, cell(p.op.code == QLatin1String("guest") ? tr("Guest") : p.op.name));
+        m_operators->setItem(i, 2, cell(QLocale().toString(p.attempts), true));
+        m_operators->setItem(i, 3, cell(QLocale().toString(p.tutorialsPassed), true));
         m_operators->setItem(i, 4, cell(when(p.lastAttempt)));
         if (p.op.code == selected) select = i;
     }
@@ -263,14 +348,18 @@ void RecordsView::showOperator(int row)
     for (int i = 0; i < m_list.size(); ++i) {
         const rec::Attempt& a = m_list[i];
         const bool scored = a.status == rec::AttemptStatus::Finished || a.status == rec::AttemptStatus::Aborted;
+        // a finished attempt by its outcome (the column stays narrow enough for Spanish)
         QString status = statusText(a.status);
-        if (a.status == rec::AttemptStatus::Finished) status += a.passed ? " — " + tr("passed") : " — " + tr("not passed");
+        if (a.status == rec::AttemptStatus::Finished) status = a.passed ? tr("passed") : tr("not passed");
         m_attempts->setItem(i, 0, cell(when(a.started)));
-        m_attempts->setItem(i, 1, cell(a.tutorialTitle.isEmpty() ? a.tutorialId : a.tutorialId + " " + a.tutorialTitle));
+        m_attempts->setItem(i, 1, cell(titleOf(a)));
+        m_attempts->item(i, 1)->setToolTip(titleOf(a));
         m_attempts->setItem(i, 2, cell(status));
-        m_attempts->setItem(i, 3, cell(scored ? num(a.score, 0) : QString(), true));
-        m_attempts->setItem(i, 4, cell(scored ? QString(a.stars, QChar(0x2605)) : QString()));
-        m_attempts->setItem(i, 5, cell(scored ? num(a.durationS, 1) : QString(), true));
+        // the score and its stars in one cell ("91 ★★☆"; the numbers stay aligned)
+        QString stars;
+        for (int k = 0; k < 3; ++k) stars += k < a.stars ? QChar(0x2605) : QChar(0x2606);
+        m_attempts->setItem(i, 3, cell(scored ? num(a.score, 0) + QLatin1Char(' ') + stars : QString(), true));
+        m_attempts->setItem(i, 4, cell(scored ? num(a.durationS, 1) : QString(), true));
     }
     m_attempts->setCurrentCell(m_list.isEmpty() ? -1 : 0, 0);
     showAttempt(m_list.isEmpty() ? -1 : 0);
@@ -286,13 +375,17 @@ void RecordsView::showAttempt(int row)
     m_breakdown->setRowCount(int(a.breakdown.size()));
     for (int i = 0; i < a.breakdown.size(); ++i) {
         const rec::ScoreItem& s = a.breakdown[i];
-        m_breakdown->setItem(i, 0, cell(s.label.isEmpty() ? s.key : s.label));
+        // the criterion's name in the current language when it is one Padrob knows
+        trainer::ScoreItem known;
+        known.key = s.key.toStdString();
+        const QString label = known.label() != s.key ? known.label() : s.label.isEmpty() ? s.key : s.label;
+        m_breakdown->setItem(i, 0, cell(label));
         m_breakdown->setItem(i, 1, cell(num(s.value, 2), true));
         m_breakdown->setItem(i, 2, cell(num(s.points, 1), true));
         m_breakdown->setItem(i, 3, cell(s.maxPoints > 0 ? num(s.maxPoints, 0) : QString(), true));
     }
     for (const rec::AttemptEvent& e : a.events) {
-        QString text = tr("%1 s — %2").arg(num(e.t, 1), e.text);
+        QString text = tr("%1 s — %2").arg(num(e.t, 1), eventText(a, e));
         if (e.penalty > 0) text += " " + tr("(−%1)").arg(num(e.penalty, 0));
         m_events->addItem(text);
     }
@@ -303,15 +396,17 @@ void RecordsView::fillChart(const QList<trainer::records::Attempt>& attempts)
 {
     auto* chart = new QChart;
     chart->setAnimationOptions(QChart::NoAnimation);
+    chart->setLocalizeNumbers(true);
+    chart->setLocale(QLocale());
     chart->setTitle(tr("Score of each attempt"));
     chart->setMargins(QMargins(4, 4, 4, 4));
     auto* x = new QValueAxis;
     x->setTitleText(tr("attempt"));
-    x->setLabelFormat("%d");
+    x->setLabelFormat("%.0f");  // (QtCharts' localized labels take only 'f' formats)
     auto* y = new QValueAxis;
     y->setTitleText(tr("score"));
     y->setRange(0, 100);
-    y->setLabelFormat("%g");
+    y->setLabelFormat("%.0f");
     chart->addAxis(x, Qt::AlignBottom);
     chart->addAxis(y, Qt::AlignLeft);
     // the operator's attempts oldest first, numbered; one series per tutorial
@@ -323,8 +418,7 @@ void RecordsView::fillChart(const QList<trainer::records::Attempt>& attempts)
         QLineSeries*& s = byTutorial[a.tutorialId];
         if (!s) {
             s = new QLineSeries;
-            const QString title = m_titles.value(a.tutorialId, a.tutorialTitle);
-            s->setName(title.isEmpty() ? a.tutorialId : a.tutorialId + " " + title);
+            s->setName(titleOf(a));
             s->setPointsVisible(true);
         }
         s->append(n - k, a.score);

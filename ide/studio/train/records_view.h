@@ -11,11 +11,20 @@
 //  - Export CSV… (RecordsDb::exportCsv).
 // Without records (they could not be opened: locked, read-only, from a newer Padrob…)
 // it shows why; training goes on without them (attempts go to pending files).
+//
+// Language: on QEvent::LanguageChange every text is set again and the records are
+// shown anew; an attempt made in another language has its score items and events
+// worded again in the current one (from their keys; the tutorial's names when the
+// view has the tutorial). Numbers and dates follow the locale; the CSV keeps '.'.
 
 #include "trainer/records/records_db.h"
 
 #include <QHash>
 #include <QWidget>
+
+#include <functional>
+#include <memory>
+#include <vector>
 
 class QChartView;
 class QLabel;
@@ -23,6 +32,10 @@ class QLineEdit;
 class QListWidget;
 class QPushButton;
 class QTableWidget;
+
+namespace trainer {
+struct Tutorial;
+}
 
 namespace studio {
 
@@ -33,8 +46,10 @@ public:
 
     /// The records to show (nullptr: none, `problem` says why).
     void setRecords(trainer::records::RecordsDb* db, const QString& problem);
-    /// Tutorial titles and pass marks (by tutorial id), for the chart.
-    void setTutorials(const QHash<QString, QString>& titles, const QHash<QString, double>& passMarks);
+    /// Tutorial titles (in the UI's language) and pass marks (by tutorial id), for the
+    /// lists and the chart; the tutorials themselves name parts and people in events.
+    void setTutorials(const QHash<QString, QString>& titles, const QHash<QString, double>& passMarks,
+                      const QHash<QString, std::shared_ptr<const trainer::Tutorial>>& tutorials = {});
     /// Reads the records again, keeping the selected operator.
     void refresh();
     /// Selects an operator by code (its attempts and chart are shown); false when unknown.
@@ -58,7 +73,15 @@ signals:
     /// An operator was added (the course's operator list changes).
     void operatorsChanged();
 
+protected:
+    /// QEvent::LanguageChange: every text again, and the records shown anew.
+    void changeEvent(QEvent* event) override;
+
 private:
+    /// Sets a text now and at every language change.
+    void onLanguage(std::function<void()> set);
+    QString titleOf(const trainer::records::Attempt& a) const;
+    QString eventText(const trainer::records::Attempt& a, const trainer::records::AttemptEvent& e) const;
     void showOperator(int row);
     void showAttempt(int row);
     void fillChart(const QList<trainer::records::Attempt>& attempts);
@@ -67,6 +90,8 @@ private:
     QString m_problem;
     QHash<QString, QString> m_titles;
     QHash<QString, double> m_passMarks;
+    QHash<QString, std::shared_ptr<const trainer::Tutorial>> m_tutorials;
+    std::vector<std::function<void()>> m_texts;
     QList<trainer::records::OperatorProgress> m_progress;
     QList<trainer::records::Attempt> m_list;  ///< of the selected operator, newest first
 

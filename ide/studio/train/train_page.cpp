@@ -1,5 +1,6 @@
 #include "ide/studio/train/train_page.h"
 
+#include "ide/i18n/language.h"
 #include "ide/studio/train/records_view.h"
 #include "ide/studio/train/tutorial_runner.h"
 #include "ide/studio/view/viewport.h"
@@ -9,6 +10,7 @@
 #include <QChart>
 #include <QChartView>
 #include <QApplication>
+#include <QButtonGroup>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFileDialog>
@@ -17,6 +19,7 @@
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QDir>
+#include <QEvent>
 #include <QFile>
 #include <QFileInfo>
 #include <QFrame>
@@ -220,6 +223,8 @@ void TrainPage::askRecordsPin()
     dialog->setWindowTitle(tr("Trainee records"));
     dialog->setLabelText(tr("The trainer's PIN:"));
     dialog->setTextEchoMode(QLineEdit::Password);
+    dialog->setOkButtonText(tr("OK"));
+    dialog->setCancelButtonText(tr("Cancel"));
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &QInputDialog::textValueSelected, this, [this, pin](const QString& typed) {
         if (typed == pin) showRecords();
@@ -231,16 +236,24 @@ void TrainPage::showRecords()
 {
     leaveRun();
     m_current = -1;
-    QHash<QString, QString> titles;
-    QHash<QString, double> passMarks;
-    for (const Entry& e : m_entries) {
-        titles.insert(e.id, e.title);
-        if (e.tutorial) passMarks.insert(e.id, e.tutorial->scoring().pass);
-    }
-    m_recordsView->setTutorials(titles, passMarks);
+    giveRecordsTheTutorials();
     m_recordsView->setRecords(m_db.get(), m_recordsProblem);
     m_recordsView->selectOperator(m_operator.isEmpty() ? guestCode() : m_operator);
     setScreen(Screen::Records);
+}
+
+void TrainPage::giveRecordsTheTutorials()
+{
+    QHash<QString, QString> titles;
+    QHash<QString, double> passMarks;
+    QHash<QString, std::shared_ptr<const trainer::Tutorial>> tutorials;
+    for (const Entry& e : m_entries) {
+        titles.insert(e.id, e.title);
+        if (!e.tutorial) continue;
+        passMarks.insert(e.id, e.tutorial->scoring().pass);
+        tutorials.insert(e.id, e.tutorial);
+    }
+    m_recordsView->setTutorials(titles, passMarks, tutorials);
 }
 
 QStringList TrainPage::knownOperators() const
@@ -286,7 +299,7 @@ TrainPage::~TrainPage()
 
 QString TrainPage::language()
 {
-    return QLocale().language() == QLocale::Spanish ? QStringLiteral("es") : QStringLiteral("en");
+    return i18n::current();
 }
 
 QString TrainPage::defaultTutorialsDir()
@@ -300,7 +313,6 @@ void TrainPage::setTutorialsDir(const QString& dir)
 {
     m_dir = dir;
     m_entries.clear();
-    const std::string lang = language().toStdString();
     for (const QFileInfo& f : QDir(dir).entryInfoList({"*.tut"}, QDir::Files, QDir::Name)) {
         Entry e;
         e.path = f.absoluteFilePath();
@@ -309,7 +321,7 @@ void TrainPage::setTutorialsDir(const QString& dir)
         if (e.tutorial) {
             e.id = QString::fromStdString(e.tutorial->spec.id);
             e.level = e.tutorial->spec.level;
-            e.title = QString::fromStdString(e.tutorial->title(lang));
+            e.titleText = e.tutorial->spec.title;
         } else {
             // what it says about itself, for the list
             QFile file(e.path);
@@ -319,7 +331,7 @@ void TrainPage::setTutorialsDir(const QString& dir)
                     trainer::parseTutorial(file.readAll().toStdString(), e.path.toStdString(), ignored);
                 e.id = QString::fromStdString(spec.id);
                 e.level = spec.level;
-                e.title = QString::fromStdString(spec.title.in(lang));
+                e.titleText = spec.title;
             }
             for (const solver::Diagnostic& d : diags) {
                 if (d.severity == solver::Severity::Error) {
@@ -327,15 +339,23 @@ void TrainPage::setTutorialsDir(const QString& dir)
                     break;
                 }
             }
-            if (e.problem.isEmpty()) e.problem = tr("This tutorial cannot be loaded.");
         }
         if (e.id.isEmpty()) e.id = f.completeBaseName();
-        if (e.title.isEmpty()) e.title = f.completeBaseName();
         m_entries.push_back(std::move(e));
     }
     std::stable_sort(m_entries.begin(), m_entries.end(),
                      [](const Entry& a, const Entry& b) { return a.level < b.level; });
+    retitle();
     refreshCourse();
+}
+
+void TrainPage::retitle()
+{
+    const std::string lang = language().toStdString();
+    for (Entry& e : m_entries) {
+        e.title = QString::fromStdString(e.titleText.in(lang));
+        if (e.title.isEmpty()) e.title = QFileInfo(e.path).completeBaseName();
+    }
 }
 
 void TrainPage::setOperator(const QString& id)
@@ -403,6 +423,42 @@ void TrainPage::setScreen(Screen s)
     emit screenChanged(s);
 }
 
+void TrainPage::onLanguage(std::function<void()> set)
+{
+    set();
+    m_texts.push_back(std::move(set));
+}
+
+void TrainPage::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange) retranslate();
+    QWidget::changeEvent(event);
+}
+
+void TrainPage::retranslate()
+{
+    // (the children that are screens of their own, the records view, follow by themselves)
+    for (const auto& set : m_texts) set();
+    for (QPushButton* b : m_languageButtons) b->setChecked(b->objectName() == "LanguageButton_" + language());
+    retitle();
+    refreshCourse();
+    fillStart();
+    // the HUD, the hints and the demonstration's clock at the next poll, even paused
+    m_shownStep = -1;
+    m_hudText.clear();
+    m_hintText.clear();
+    m_warningText.clear();
+    if (m_screen == Screen::Attempt || m_screen == Screen::Start) poll();
+    if (m_lastRun) {
+        fillResult();
+        fillTimeline();
+        fillCharts();
+        fillComparison();
+        showReplaySample(m_replaySlider->value());
+    }
+    giveRecordsTheTutorials();  // the titles in the new language, before the view shows them again
+}
+
 // ---------------------------------------------------------------- course
 
 QWidget* TrainPage::buildCourse()
@@ -410,18 +466,42 @@ QWidget* TrainPage::buildCourse()
     auto* page = new QWidget;
     auto* layout = new QVBoxLayout(page);
     layout->setContentsMargins(24, 24, 24, 24);
-    auto* title = new QLabel(tr("Training course"));
-    title->setObjectName("TrainTitle");
-    layout->addWidget(title);
+    auto* top = new QHBoxLayout;
+    m_courseTitle = new QLabel;
+    m_courseTitle->setObjectName("TrainTitle");
+    onLanguage([this] { m_courseTitle->setText(tr("Training course")); });
+    top->addWidget(m_courseTitle, 1);
+    // the languages, each in its own name, big enough for a finger on the kiosk's screen
+    auto* languages = new QButtonGroup(page);
+    languages->setExclusive(true);
+    for (const QString& code : i18n::languages()) {
+        auto* b = new QPushButton(i18n::nativeName(code));
+        b->setObjectName("LanguageButton_" + code);
+        b->setCheckable(true);
+        b->setChecked(code == language());
+        b->setMinimumSize(190, 64);
+        b->setFocusPolicy(Qt::NoFocus);
+        b->setStyleSheet("QPushButton { font-size: 18pt; padding: 10px 26px; border: 2px solid #8a949e; "
+                         "border-radius: 8px; background: #f4f6f8; color: #1d2329; }"
+                         "QPushButton:checked { background: #1f6fc5; border-color: #1f6fc5; color: white; "
+                         "font-weight: bold; }");
+        languages->addButton(b);
+        connect(b, &QPushButton::clicked, this, [code] { i18n::switchTo(code); });
+        top->addWidget(b, 0, Qt::AlignVCenter);
+        m_languageButtons << b;
+    }
+    layout->addLayout(top);
     auto* opRow = new QHBoxLayout;
-    opRow->addWidget(new QLabel(tr("Operator:")));
+    auto* opLabel = new QLabel;
+    onLanguage([opLabel] { opLabel->setText(tr("Operator:")); });
+    opRow->addWidget(opLabel);
     m_operatorBox = new QComboBox;
     m_operatorBox->setObjectName("OperatorBox");
     m_operatorBox->setEditable(true);
     m_operatorBox->setMinimumWidth(240);
     m_operatorBox->addItems(knownOperators());
     m_operatorBox->setCurrentText(m_operator);
-    m_operatorBox->lineEdit()->setPlaceholderText(tr("name or number"));
+    onLanguage([this] { m_operatorBox->lineEdit()->setPlaceholderText(tr("name or number")); });
     connect(m_operatorBox->lineEdit(), &QLineEdit::editingFinished, this,
             [this] { setOperator(m_operatorBox->currentText()); });
     connect(m_operatorBox, &QComboBox::textActivated, this, [this](const QString& t) { setOperator(t); });
@@ -433,13 +513,17 @@ QWidget* TrainPage::buildCourse()
     m_courseList->setStyleSheet("QListWidget { font-size: 16pt; } QListWidget::item { padding: 10px; }");
     layout->addWidget(m_courseList, 1);
     auto* buttons = new QHBoxLayout;
-    m_recordsButton = new QPushButton(tr("Records"));
+    m_recordsButton = new QPushButton;
     m_recordsButton->setObjectName("RecordsButton");
-    m_recordsButton->setToolTip(tr("The trainee records: operators, attempts, progress (for the trainer)."));
+    onLanguage([this] {
+        m_recordsButton->setText(tr("Records"));
+        m_recordsButton->setToolTip(tr("The trainee records: operators, attempts, progress (for the trainer)."));
+    });
     connect(m_recordsButton, &QPushButton::clicked, this, &TrainPage::askRecordsPin);
     buttons->addWidget(m_recordsButton);
     buttons->addStretch();
-    m_openButton = new QPushButton(tr("Open"));
+    m_openButton = new QPushButton;
+    onLanguage([this] { m_openButton->setText(tr("Open")); });
     m_openButton->setEnabled(false);
     buttons->addWidget(m_openButton);
     layout->addLayout(buttons);
@@ -455,10 +539,19 @@ QWidget* TrainPage::buildCourse()
     return page;
 }
 
+QPushButton* TrainPage::languageButton(const QString& code) const
+{
+    for (QPushButton* b : m_languageButtons)
+        if (b->objectName() == "LanguageButton_" + code) return b;
+    return nullptr;
+}
+
 void TrainPage::refreshCourse()
 {
     if (!m_courseList) return;
     loadProgress();
+    const QString selected = m_courseList->currentItem() ? m_courseList->currentItem()->data(Qt::UserRole).toString()
+                                                         : QString();
     m_courseList->clear();
     for (std::size_t i = 0; i < m_entries.size(); ++i) {
         const Entry& e = m_entries[i];
@@ -466,10 +559,10 @@ void TrainPage::refreshCourse()
         QString text = tr("Level %1 — %2").arg(e.level).arg(e.title);
         auto* it = new QListWidgetItem;
         it->setData(Qt::UserRole, e.id);
-        if (!e.problem.isEmpty()) {
+        if (!e.tutorial || !e.problem.isEmpty()) {
             text += "   " + tr("(cannot be used)");
             it->setFlags(it->flags() & ~Qt::ItemIsEnabled);
-            it->setToolTip(e.problem);
+            it->setToolTip(e.problem.isEmpty() ? tr("This tutorial cannot be loaded.") : e.problem);
         } else if (isLocked(int(i))) {
             text += "   " + tr("(locked: pass the level before)");
             it->setFlags(it->flags() & ~Qt::ItemIsEnabled);
@@ -480,6 +573,7 @@ void TrainPage::refreshCourse()
         }
         it->setText(text);
         m_courseList->addItem(it);
+        if (!selected.isEmpty() && e.id == selected) m_courseList->setCurrentItem(it);
     }
 }
 
@@ -518,17 +612,8 @@ bool TrainPage::openTutorial(const QString& id)
     QString error;
     if (!trainer::tutorialProfile(t, {}, m_profile, &error)) m_profile = trainer::StationProfile{};
     loadDemonstration(t);
-    const std::string lang = language().toStdString();
-    m_startTitle->setText(QString::fromStdString(t.title(lang)));
-    QString intro;
-    for (const trainer::LocalText& p : t.spec.intro) intro += "<p>" + QString::fromStdString(p.in(lang)).toHtmlEscaped() + "</p>";
-    intro += "<p>" + tr("Time limit: %1 s. Pass mark: %2 of 100.")
-                         .arg(num(t.scoring().timeLimit, 0), num(t.scoring().pass, 0)) + "</p>";
-    m_startIntro->setText(intro);
-    m_demoNote->setText(m_demoWarning);
-    m_demoNote->setVisible(!m_demoWarning.isEmpty());
+    fillStart();
     m_watchButton->setEnabled(m_demoLog != nullptr);
-    m_watchButton->setToolTip(m_demoLog ? QString() : tr("This tutorial has no demonstration."));
     m_demoSlider->setRange(0, m_demoLog ? int(std::ceil((m_demoLog->duration() + TutorialRunner::kGrace) * 10)) : 0);
     m_demoSlider->setValue(0);
     m_demoTime->clear();
@@ -540,6 +625,30 @@ bool TrainPage::openTutorial(const QString& id)
     QTimer::singleShot(0, m_demoView, [v = m_demoView] { frameModelAndTargets(v); });
     setScreen(Screen::Start);
     return true;
+}
+
+QString TrainPage::unreadableDemoText() const
+{
+    if (m_demoUnreadable.isEmpty()) return {};
+    return tr("The demonstration chosen for this stage (%1) cannot be read: %2. The shipped demonstration is used.")
+        .arg(m_demoUnreadable.value(0), m_demoUnreadable.value(1));
+}
+
+void TrainPage::fillStart()
+{
+    const auto t = tutorial();
+    if (!t) return;
+    const std::string lang = language().toStdString();
+    m_startTitle->setText(QString::fromStdString(t->title(lang)));
+    QString intro;
+    for (const trainer::LocalText& p : t->spec.intro) intro += "<p>" + QString::fromStdString(p.in(lang)).toHtmlEscaped() + "</p>";
+    intro += "<p>" + tr("Time limit: %1 s. Pass mark: %2 of 100.")
+                         .arg(num(t->scoring().timeLimit, 0), num(t->scoring().pass, 0)) + "</p>";
+    m_startIntro->setText(intro);
+    m_demoWarning = unreadableDemoText();
+    m_demoNote->setText(m_demoWarning);
+    m_demoNote->setVisible(!m_demoWarning.isEmpty());
+    m_watchButton->setToolTip(m_demoLog ? QString() : tr("This tutorial has no demonstration."));
 }
 
 // ---------------------------------------------------------------- start and demonstration
@@ -557,6 +666,7 @@ void TrainPage::loadDemonstration(const trainer::Tutorial& t)
     m_demoLog.reset();
     m_demoFile.clear();
     m_demoWarning.clear();
+    m_demoUnreadable.clear();
     m_demoProfile = m_profile;
     // the stage's own demonstration, chosen by a trainer; else the shipped one
     const QString chosen = QSettings().value("trainer/demo/" + id).toString();
@@ -573,8 +683,8 @@ void TrainPage::loadDemonstration(const trainer::Tutorial& t)
             if (json.open(QIODevice::ReadOnly) && trainer::StationProfile::fromJson(json.readAll(), p, issues))
                 m_demoProfile = p;
         } else {
-            m_demoWarning = tr("The demonstration chosen for this stage (%1) cannot be read: %2. The shipped "
-                               "demonstration is used.").arg(chosen, error);
+            m_demoUnreadable = {chosen, error};
+            m_demoWarning = unreadableDemoText();
             qWarning("Train: %s", qPrintable(m_demoWarning));
         }
     }
@@ -707,11 +817,16 @@ QWidget* TrainPage::buildStart()
     m_startIntro->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     left->addWidget(m_startTitle);
     left->addWidget(m_startIntro, 1);
-    m_watchButton = new QPushButton(tr("Watch the demonstration"));
-    m_startButton = new QPushButton(tr("Start"));
+    m_watchButton = new QPushButton;
+    m_startButton = new QPushButton;
     m_startButton->setObjectName("StartButton");
     m_startButton->setStyleSheet("font-size: 18pt; font-weight: bold; padding: 10px 30px;");
-    auto* back = new QPushButton(tr("Back to the course"));
+    auto* back = new QPushButton;
+    onLanguage([this, back] {
+        m_watchButton->setText(tr("Watch the demonstration"));
+        m_startButton->setText(tr("Start"));
+        back->setText(tr("Back to the course"));
+    });
     left->addWidget(m_watchButton);
     left->addWidget(m_startButton);
     left->addWidget(back);
@@ -726,11 +841,18 @@ QWidget* TrainPage::buildStart()
     m_demoView->setMinimumSize(480, 360);
     right->addWidget(m_demoView, 1);
     auto* controls = new QHBoxLayout;
-    m_demoPlay = new QPushButton(tr("Pause"));
+    m_demoPlay = new QPushButton;
     m_demoPlay->setEnabled(false);
+    onLanguage([this] {
+        m_demoPlay->setText(m_demoRunning && !m_runner->isPaused() ? tr("Pause") : tr("Play"));
+    });
     m_demoSpeed = new QComboBox;
-    for (double s : kSpeeds) m_demoSpeed->addItem(QStringLiteral("×%1").arg(QLocale().toString(s)), s);
+    for (double s : kSpeeds) m_demoSpeed->addItem(QString(), s);
     m_demoSpeed->setCurrentIndex(2);
+    onLanguage([this] {  // ×0.25 or ×0,25
+        for (int i = 0; i < m_demoSpeed->count(); ++i)
+            m_demoSpeed->setItemText(i, QStringLiteral("×%1").arg(QLocale().toString(m_demoSpeed->itemData(i).toDouble())));
+    });
     m_demoSlider = new QSlider(Qt::Horizontal);
     m_demoSlider->setObjectName("DemoSlider");
     m_demoTime = new QLabel;
@@ -741,13 +863,18 @@ QWidget* TrainPage::buildStart()
     m_demoNote->hide();
     left->insertWidget(2, m_demoNote);
     controls->addWidget(m_demoPlay);
-    controls->addWidget(new QLabel(tr("Speed:")));
+    auto* speedLabel = new QLabel;
+    controls->addWidget(speedLabel);
     controls->addWidget(m_demoSpeed);
     controls->addWidget(m_demoSlider, 1);
     controls->addWidget(m_demoTime);
-    m_demoFollow = new QCheckBox(tr("Expert's camera"));
+    m_demoFollow = new QCheckBox;
     m_demoFollow->setObjectName("DemoFollowCamera");
-    m_demoFollow->setToolTip(tr("Look where the expert looked while recording (untick to move the view yourself)."));
+    onLanguage([this, speedLabel] {
+        speedLabel->setText(tr("Speed:"));
+        m_demoFollow->setText(tr("Expert's camera"));
+        m_demoFollow->setToolTip(tr("Look where the expert looked while recording (untick to move the view yourself)."));
+    });
     m_demoFollow->setChecked(true);
     m_demoFollow->setEnabled(false);
     controls->addWidget(m_demoFollow);
@@ -855,12 +982,11 @@ QWidget* TrainPage::buildAttempt()
 
     auto* bar = new QHBoxLayout;
     bar->setContentsMargins(12, 6, 12, 6);
-    auto* keys = new QLabel(tr("Esc or Stop ends the attempt."));
+    auto* keys = new QLabel;
     bar->addWidget(keys);
     bar->addStretch();
-    m_expertBox = new QCheckBox(tr("Show the expert"));
+    m_expertBox = new QCheckBox;
     m_expertBox->setObjectName("ShowExpert");
-    m_expertBox->setToolTip(tr("The demonstration runs beside the attempt, drawn translucent."));
     m_expertBox->setChecked(QSettings().value("trainer/showExpert", false).toBool());
     connect(m_expertBox, &QCheckBox::toggled, this, [this](bool on) {
         QSettings().setValue("trainer/showExpert", on);
@@ -871,19 +997,29 @@ QWidget* TrainPage::buildAttempt()
     });
     bar->addWidget(m_expertBox);
     bar->addSpacing(12);
-    bar->addWidget(new QLabel(tr("View:")));
+    auto* viewLabel = new QLabel;
+    bar->addWidget(viewLabel);
     m_cameraBox = new QComboBox;
     m_cameraBox->setObjectName("AttemptCamera");
-    for (const QString& name : Viewport::cameraNames()) m_cameraBox->addItem(Viewport::cameraLabel(name), name);
+    for (const QString& name : Viewport::cameraNames()) m_cameraBox->addItem(QString(), name);
     bar->addWidget(m_cameraBox);
     connect(m_cameraBox, &QComboBox::activated, this, [this](int i) {
         m_attemptView->setCamera(m_cameraBox->itemData(i).toString());
         if (m_cameraBox->itemData(i).toString() != QLatin1String("Operator seat")) frameModelAndTargets(m_attemptView);
         m_attemptView->setFocus();
     });
-    auto* stop = new QPushButton(tr("Stop"));
+    auto* stop = new QPushButton;
     stop->setObjectName("StopButton");
     bar->addWidget(stop);
+    onLanguage([this, keys, viewLabel, stop] {
+        keys->setText(tr("Esc or Stop ends the attempt."));
+        m_expertBox->setText(tr("Show the expert"));
+        m_expertBox->setToolTip(tr("The demonstration runs beside the attempt, drawn translucent."));
+        viewLabel->setText(tr("View:"));
+        for (int i = 0; i < m_cameraBox->count(); ++i)
+            m_cameraBox->setItemText(i, Viewport::cameraLabel(m_cameraBox->itemData(i).toString()));
+        stop->setText(tr("Stop"));
+    });
     layout->addLayout(bar);
     connect(stop, &QPushButton::clicked, this, &TrainPage::stopAttempt);
     auto* esc = new QShortcut(QKeySequence(Qt::Key_Escape), page);
@@ -1150,11 +1286,12 @@ void TrainPage::onFinished()
     const bool live = m_attemptLive;
     m_attemptLive = false;
     const trainer::TutorialResult& r = m_lastRun->result;
-    m_resultNote->clear();
+    m_unwritten.clear();
+    m_notRecorded = false;
+    m_madeDemonstration = false;
     if (m_attemptLog) {
-        if (!m_attemptLog->finish(r.events, r, r.endReason == "aborted"))
-            m_resultNote->setText(tr("The trainee records could not be written (%1); the attempt is kept and will "
-                                     "be added the next time they can.").arg(m_attemptLog->problem()));
+        m_notRecorded = !m_attemptLog->finish(r.events, r, r.endReason == "aborted");
+        if (m_notRecorded) m_unwritten = m_attemptLog->problem();
         m_attemptLog.reset();
     }
     if (!m_db) {
@@ -1178,7 +1315,9 @@ QWidget* TrainPage::buildResult()
     m_resultStars->setAlignment(Qt::AlignCenter);
     m_resultStars->setStyleSheet("font-size: 44px; color: #e6a700;");
     m_resultScore = new QLabel;
+    m_resultScore->setObjectName("ResultScore");
     m_resultScore->setAlignment(Qt::AlignCenter);
+    m_resultScore->setWordWrap(true);
     m_resultScore->setStyleSheet("font-size: 20pt;");
     layout->addWidget(m_resultHeading);
     layout->addWidget(m_resultStars);
@@ -1191,7 +1330,6 @@ QWidget* TrainPage::buildResult()
     auto* middle = new QHBoxLayout;
     m_breakdown = new QTableWidget(0, 4);
     m_breakdown->setObjectName("Breakdown");
-    m_breakdown->setHorizontalHeaderLabels({tr("Measure"), tr("Measured"), tr("Points"), tr("Of")});
     m_breakdown->verticalHeader()->hide();
     m_breakdown->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
     m_breakdown->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
@@ -1200,11 +1338,13 @@ QWidget* TrainPage::buildResult()
     m_breakdown->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_breakdown->setSelectionMode(QAbstractItemView::NoSelection);
     auto* left = new QVBoxLayout;
-    left->addWidget(new QLabel("<b>" + tr("Score") + "</b>"));
+    auto* scoreTitle = new QLabel;
+    left->addWidget(scoreTitle);
     left->addWidget(m_breakdown);
     middle->addLayout(left, 1);
     auto* right = new QVBoxLayout;
-    right->addWidget(new QLabel("<b>" + tr("What to improve") + "</b>"));
+    auto* improveTitle = new QLabel;
+    right->addWidget(improveTitle);
     m_improvements = new QListWidget;
     m_improvements->setObjectName("Improvements");
     m_improvements->setWordWrap(true);
@@ -1213,21 +1353,32 @@ QWidget* TrainPage::buildResult()
     middle->addLayout(right, 1);
     layout->addLayout(middle, 1);
     auto* buttons = new QHBoxLayout;
-    auto* course = new QPushButton(tr("Course"));
-    auto* retryButton = new QPushButton(tr("Retry"));
+    auto* course = new QPushButton;
+    auto* retryButton = new QPushButton;
     retryButton->setObjectName("RetryButton");
-    auto* debrief = new QPushButton(tr("Debrief"));
+    auto* debrief = new QPushButton;
     debrief->setObjectName("DebriefButton");
-    m_nextButton = new QPushButton(tr("Next stage"));
+    m_nextButton = new QPushButton;
     m_nextButton->setObjectName("NextButton");
     buttons->addWidget(course);
-    m_saveDemoButton = new QPushButton(tr("Save as demonstration…"));
+    m_saveDemoButton = new QPushButton;
     m_saveDemoButton->setObjectName("SaveDemoButton");
-    m_saveDemoButton->setToolTip(tr("Saves the operator's input of this attempt as an input log."));
-    m_useDemoButton = new QPushButton(tr("Use as this stage's demonstration"));
+    m_useDemoButton = new QPushButton;
     m_useDemoButton->setObjectName("UseDemoButton");
-    m_useDemoButton->setToolTip(tr("From now on the demonstration, the expert and the comparison of this stage "
-                                   "replay this attempt's input instead of the shipped one."));
+    onLanguage([=, this] {
+        m_breakdown->setHorizontalHeaderLabels({tr("Measure"), tr("Measured"), tr("Points"), tr("Of")});
+        scoreTitle->setText("<b>" + tr("Score") + "</b>");
+        improveTitle->setText("<b>" + tr("What to improve") + "</b>");
+        course->setText(tr("Course"));
+        retryButton->setText(tr("Retry"));
+        debrief->setText(tr("Debrief"));
+        m_nextButton->setText(tr("Next stage"));
+        m_saveDemoButton->setText(tr("Save as demonstration…"));
+        m_saveDemoButton->setToolTip(tr("Saves the operator's input of this attempt as an input log."));
+        m_useDemoButton->setText(tr("Use as this stage's demonstration"));
+        m_useDemoButton->setToolTip(tr("From now on the demonstration, the expert and the comparison of this stage "
+                                       "replay this attempt's input instead of the shipped one."));
+    });
     buttons->addWidget(m_saveDemoButton);
     buttons->addWidget(m_useDemoButton);
     connect(m_saveDemoButton, &QPushButton::clicked, this, [this] {
@@ -1242,8 +1393,12 @@ QWidget* TrainPage::buildResult()
     });
     connect(m_useDemoButton, &QPushButton::clicked, this, [this] {
         QString error;
-        if (useAsDemonstration({}, &error)) m_resultNote->setText(tr("This attempt is now the stage's demonstration."));
-        else QMessageBox::warning(this, tr("Use as this stage's demonstration"), error);
+        if (useAsDemonstration({}, &error)) {
+            m_madeDemonstration = true;
+            fillResult();
+        } else {
+            QMessageBox::warning(this, tr("Use as this stage's demonstration"), error);
+        }
     });
     buttons->addStretch();
     buttons->addWidget(retryButton);
@@ -1260,6 +1415,13 @@ QWidget* TrainPage::buildResult()
 void TrainPage::showResult()
 {
     if (!m_lastRun) return;
+    fillResult();
+    setScreen(Screen::Result);
+}
+
+void TrainPage::fillResult()
+{
+    if (!m_lastRun) return;
     const trainer::TutorialResult& r = m_lastRun->result;
     m_resultHeading->setText(r.passed ? tr("PASSED") : tr("NOT PASSED"));
     m_resultHeading->setStyleSheet(QStringLiteral("font-size: 40px; font-weight: bold; color: %1;")
@@ -1272,8 +1434,15 @@ void TrainPage::showResult()
     else if (r.endReason == "aborted") why = tr("The attempt was stopped.");
     else if (r.endReason == "input-ended") why = tr("The input ended before the goals were done.");
     else if (r.endReason == "solver-error") why = tr("The simulation failed.");
-    m_resultScore->setText(tr("Score %1 of 100 in %2 s").arg(num(r.score, 0), num(r.time, 1)) +
-                           (why.isEmpty() ? QString() : "\n" + why));
+    const QString score = tr("Score %1 of 100 in %2 s").arg(num(r.score, 0), num(r.time, 1));
+    m_resultScore->setText(why.isEmpty() ? score : score + QLatin1Char('\n') + why);
+    QString note;
+    if (m_notRecorded)
+        note = tr("The trainee records could not be written (%1); the attempt is kept and will be added the next "
+                  "time they can.").arg(m_unwritten);
+    else if (m_madeDemonstration)
+        note = tr("This attempt is now the stage's demonstration.");
+    m_resultNote->setText(note);
     m_breakdown->setRowCount(int(r.breakdown.size()));
     for (int i = 0; i < int(r.breakdown.size()); ++i) {
         const trainer::ScoreItem& s = r.breakdown[std::size_t(i)];
@@ -1298,7 +1467,6 @@ void TrainPage::showResult()
     const bool recorded = !m_recordedInput.isEmpty();
     m_saveDemoButton->setVisible(recorded && !m_kiosk);  // for trainers
     m_useDemoButton->setVisible(recorded && !m_kiosk);
-    setScreen(Screen::Result);
 }
 
 void TrainPage::retry()
@@ -1328,7 +1496,7 @@ QWidget* TrainPage::buildDebrief()
     m_replayView->setMinimumSize(400, 300);
     replay->addWidget(m_replayView, 1);
     auto* controls = new QHBoxLayout;
-    m_replayPlay = new QPushButton(tr("Play"));
+    m_replayPlay = new QPushButton;
     m_replaySlider = new QSlider(Qt::Horizontal);
     m_replaySlider->setObjectName("ReplaySlider");
     m_replayTime = new QLabel;
@@ -1351,15 +1519,16 @@ QWidget* TrainPage::buildDebrief()
     auto* side = new QWidget;
     auto* sideLayout = new QVBoxLayout(side);
     sideLayout->setContentsMargins(0, 0, 0, 0);
-    sideLayout->addWidget(new QLabel("<b>" + tr("Events") + "</b>"));
+    auto* eventsTitle = new QLabel;
+    sideLayout->addWidget(eventsTitle);
     m_timeline = new QListWidget;
     m_timeline->setObjectName("Timeline");
     m_timeline->setWordWrap(true);
     sideLayout->addWidget(m_timeline, 1);
-    sideLayout->addWidget(new QLabel("<b>" + tr("You and the expert") + "</b>"));
+    auto* expertTitle = new QLabel;
+    sideLayout->addWidget(expertTitle);
     m_comparison = new QTableWidget(5, 3);
     m_comparison->setObjectName("Comparison");
-    m_comparison->setHorizontalHeaderLabels({tr("Measure"), tr("You"), tr("Expert")});
     m_comparison->verticalHeader()->hide();
     m_comparison->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
     m_comparison->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
@@ -1368,8 +1537,15 @@ QWidget* TrainPage::buildDebrief()
     m_comparison->setSelectionMode(QAbstractItemView::NoSelection);
     m_comparison->setMinimumHeight(200);
     sideLayout->addWidget(m_comparison);
-    auto* back = new QPushButton(tr("Back to the result"));
+    auto* back = new QPushButton;
     sideLayout->addWidget(back);
+    onLanguage([=, this] {
+        m_replayPlay->setText(m_replayPlaying ? tr("Pause") : tr("Play"));
+        eventsTitle->setText("<b>" + tr("Events") + "</b>");
+        expertTitle->setText("<b>" + tr("You and the expert") + "</b>");
+        m_comparison->setHorizontalHeaderLabels({tr("Measure"), tr("You"), tr("Expert")});
+        back->setText(tr("Back to the result"));
+    });
     split->addWidget(side);
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 2);
@@ -1417,26 +1593,87 @@ void TrainPage::showReplaySample(int index)
     if (!m_replayPlaying) m_replayClock = s.t;
 }
 
+namespace {
+
+/// Labels with as many decimals as the ticks need ("%.1f": QtCharts' localized labels
+/// take only 'f' formats, not "%g").
+void decimalsForTicks(QValueAxis* axis)
+{
+    const double step = axis->tickCount() > 1 ? (axis->max() - axis->min()) / (axis->tickCount() - 1) : 1.0;
+    int decimals = 0;
+    while (decimals < 3 && std::abs(step * std::pow(10.0, decimals) - std::round(step * std::pow(10.0, decimals))) > 1e-6)
+        ++decimals;
+    axis->setLabelFormat(QStringLiteral("%.%1f").arg(decimals));
+}
+
+/// A chart of one series against the time, its numbers in the locale's format.
+QChart* makeChart(const QString& title, QLineSeries* series, const QString& yTitle, double yMin, double yMax, double tMax)
+{
+    auto* chart = new QChart;
+    chart->setAnimationOptions(QChart::NoAnimation);
+    chart->setLocalizeNumbers(true);
+    chart->setLocale(QLocale());
+    chart->setTitle(title);
+    chart->legend()->hide();
+    chart->addSeries(series);
+    auto* x = new QValueAxis;
+    x->setTitleText(QCoreApplication::translate("studio::TrainPage", "t [s]"));
+    x->setRange(0, std::max(1.0, tMax));
+    auto* y = new QValueAxis;
+    y->setTitleText(yTitle);
+    y->setRange(yMin, yMax);
+    x->applyNiceNumbers();
+    y->applyNiceNumbers();
+    decimalsForTicks(x);
+    decimalsForTicks(y);
+    chart->addAxis(x, Qt::AlignBottom);
+    chart->addAxis(y, Qt::AlignLeft);
+    series->attachAxis(x);
+    series->attachAxis(y);
+    chart->setMargins(QMargins(4, 4, 4, 4));
+    return chart;
+}
+
+}  // namespace
+
 void TrainPage::fillDebrief()
 {
-    const trainer::RunOutput& run = *m_lastRun;
-    const auto& samples = run.samples;
+    const auto& samples = m_lastRun->samples;
     m_replayPlaying = false;
     m_replayPlay->setText(tr("Play"));
     m_replaySlider->setRange(0, std::max(0, int(samples.size()) - 1));
     m_replaySlider->setValue(0);
     showReplaySample(0);
     QTimer::singleShot(0, m_replayView, [v = m_replayView] { frameModelAndTargets(v); });
+    fillTimeline();
+    fillCharts();
+    fillComparison();
+}
 
+void TrainPage::fillTimeline()
+{
+    if (!m_lastRun) return;
+    const auto t = tutorial();
+    const std::string lang = language().toStdString();
+    const int row = m_timeline->currentRow();
     m_timeline->clear();
-    for (const trainer::TutorialEvent& e : run.result.events) {
-        auto* it = new QListWidgetItem(tr("%1 s — %2").arg(num(e.t, 1), e.text()));
+    for (const trainer::TutorialEvent& e : m_lastRun->result.events) {
+        auto* it = new QListWidgetItem(tr("%1 s — %2").arg(num(e.t, 1), e.text(t.get(), lang)));
         it->setData(Qt::UserRole, e.t);
         m_timeline->addItem(it);
     }
-    if (run.result.events.empty()) m_timeline->addItem(tr("No events."));
+    if (m_lastRun->result.events.empty()) m_timeline->addItem(tr("No events."));
+    if (row >= 0 && row < m_timeline->count()) {
+        const QSignalBlocker block(m_timeline);
+        m_timeline->setCurrentRow(row);
+    }
+}
 
+void TrainPage::fillCharts()
+{
     // the most loaded drive's force, and the relief valves open, against time
+    if (!m_lastRun || !m_bundle) return;
+    const auto& samples = m_lastRun->samples;
     const solver::Model& m = *m_bundle->model;
     int joint = -1;
     double most = 0.0;
@@ -1446,30 +1683,6 @@ void TrainPage::fillDebrief()
                 most = std::abs(s.driveForce[j]);
                 joint = int(j);
             }
-    const auto makeChart = [](const QString& title, QLineSeries* series, const QString& yTitle, double yMin,
-                              double yMax, double tMax) {
-        auto* chart = new QChart;
-        chart->setAnimationOptions(QChart::NoAnimation);
-        chart->setTitle(title);
-        chart->legend()->hide();
-        chart->addSeries(series);
-        auto* x = new QValueAxis;
-        x->setTitleText(QCoreApplication::translate("studio::TrainPage", "t [s]"));
-        x->setRange(0, std::max(1.0, tMax));
-        auto* y = new QValueAxis;
-        y->setTitleText(yTitle);
-        y->setRange(yMin, yMax);
-        x->applyNiceNumbers();
-        y->applyNiceNumbers();
-        x->setLabelFormat("%g");
-        y->setLabelFormat("%g");
-        chart->addAxis(x, Qt::AlignBottom);
-        chart->addAxis(y, Qt::AlignLeft);
-        series->attachAxis(x);
-        series->attachAxis(y);
-        chart->setMargins(QMargins(4, 4, 4, 4));
-        return chart;
-    };
     const double tMax = samples.empty() ? 1.0 : samples.back().t;
     auto* force = new QLineSeries;
     double lo = 0.0, hi = 0.0;
@@ -1503,7 +1716,6 @@ void TrainPage::fillDebrief()
     old = m_reliefChart->chart();
     m_reliefChart->setChart(makeChart(tr("Relief valves open"), relief, tr("valves"), 0, reliefMax + 0.2, tMax));
     delete old;
-    fillComparison();
 }
 
 void TrainPage::computeExpert()

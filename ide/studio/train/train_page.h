@@ -23,6 +23,13 @@
 //  - Records: the trainer's view of the trainee records (RecordsView); in kiosk mode
 //    only after the PIN (QSettings "trainer/pin"), and not at all without one.
 //
+// Language (docs/glossary.md): the course screen has "Español" and "English" (big
+// enough for the kiosk's touch screen) that switch the whole application at once
+// (i18n::switchTo). On QEvent::LanguageChange every text is set again: the static ones
+// (onLanguage), the course with the tutorials' titles in the new language, the start
+// screen, the HUD's goal and hints, the result, the debrief and the records. Numbers
+// follow the locale (1,5 in Spanish); files for machines keep '.'.
+//
 // The expert's ghost: "Show the expert" during an attempt (off by default, remembered
 // in QSettings "trainer/showExpert") runs the demonstration in a second session beside
 // the attempt (TutorialRunner::setGhost) and draws it translucent (Viewport::setGhost).
@@ -48,6 +55,7 @@
 #include <QPointer>
 #include <QWidget>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -96,7 +104,7 @@ public:
     TrainPage(TutorialRunner* runner, trainer::Station* station, QWidget* parent = nullptr);
     ~TrainPage() override;
 
-    /// The language of tutorial texts: the UI's ("es" when the locale is Spanish, else "en").
+    /// The language of tutorial texts: the UI's (i18n::current(): "es" or "en").
     static QString language();
     /// resources/tutorials (installed: share/padrob/tutorials).
     static QString defaultTutorialsDir();
@@ -186,6 +194,11 @@ public:
     QSlider* demoSlider() const { return m_demoSlider; }
     QCheckBox* expertBox() const { return m_expertBox; }
     QPushButton* recordsButton() const { return m_recordsButton; }
+    /// The course screen's button that switches to language `code` ("es", "en"; nullptr: none).
+    QPushButton* languageButton(const QString& code) const;
+    QLabel* courseTitle() const { return m_courseTitle; }
+    QLabel* startTitle() const { return m_startTitle; }
+    QLabel* resultScore() const { return m_resultScore; }
 
 signals:
     /// An attempt with live commands began (the station's commands go to the runner) …
@@ -197,13 +210,16 @@ signals:
 protected:
     /// Esc in the attempt's 3D view ends the attempt (the view has the keyboard focus).
     bool eventFilter(QObject* watched, QEvent* event) override;
+    /// QEvent::LanguageChange: every text again, in the new language (retranslate()).
+    void changeEvent(QEvent* event) override;
 
 private:
     struct Entry {
         QString path;
         QString id;
         int level = 0;
-        QString title;
+        trainer::LocalText titleText;  ///< TITLE, in every language
+        QString title;                 ///< in language()
         QString problem;  ///< the first error ("" when it loaded)
         std::shared_ptr<const trainer::Tutorial> tutorial;
     };
@@ -213,7 +229,19 @@ private:
     QWidget* buildResult();
     QWidget* buildDebrief();
     void setScreen(Screen s);
+    /// Sets a text now and again at every language change (`set` calls tr()).
+    void onLanguage(std::function<void()> set);
+    void retranslate();
+    /// The entries' titles in language().
+    void retitle();
     void refreshCourse();
+    /// The open tutorial's title, intro and pass mark on the start screen.
+    void fillStart();
+    QString unreadableDemoText() const;
+    /// The result screen of m_lastRun (showResult() without changing screens).
+    void fillResult();
+    void fillTimeline();
+    void fillCharts();
     bool isLocked(int entry) const;
     int entryOf(const QString& id) const;
     void poll();
@@ -232,6 +260,8 @@ private:
     bool startRecording(const trainer::Tutorial& t);
     void stopRecording();
     void askRecordsPin();
+    /// The records view's tutorial titles (in language()) and pass marks.
+    void giveRecordsTheTutorials();
     /// A scene's attempt: turns the seat towards the first goal when it is out of view.
     void aimSeatAtFirstGoal(const trainer::Tutorial& t);
     QStringList knownOperators() const;
@@ -252,6 +282,7 @@ private:
     trainer::StationProfile m_recordingProfile;
     QString m_recordedInput;  ///< the last live attempt's, once stopped
     QString m_demoFile, m_demoWarning;
+    QStringList m_demoUnreadable;  ///< the chosen demonstration that cannot be read, and why
     trainer::StationProfile m_demoProfile;
     qint64 m_lastLogUpdate = 0;  ///< ms (steady)
     QString m_recordsProblem;
@@ -275,7 +306,10 @@ private:
 
     QStackedWidget* m_stack = nullptr;
     QTimer* m_timer = nullptr;
+    std::vector<std::function<void()>> m_texts;  ///< onLanguage()
     // course
+    QLabel* m_courseTitle = nullptr;
+    QList<QPushButton*> m_languageButtons;  ///< objectName "LanguageButton_<code>"
     QListWidget* m_courseList = nullptr;
     QComboBox* m_operatorBox = nullptr;
     QPushButton* m_openButton = nullptr;
@@ -312,6 +346,9 @@ private:
     QPushButton* m_nextButton = nullptr;
     QPushButton* m_saveDemoButton = nullptr;
     QPushButton* m_useDemoButton = nullptr;
+    bool m_notRecorded = false;       ///< the last attempt could not be written to the records …
+    QString m_unwritten;              ///< … why
+    bool m_madeDemonstration = false;  ///< the last attempt became the stage's demonstration
     // debrief
     Viewport* m_replayView = nullptr;
     QSlider* m_replaySlider = nullptr;

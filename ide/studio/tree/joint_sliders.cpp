@@ -5,6 +5,7 @@
 #include "solver/integrate/simulation.h"
 
 #include <QDoubleSpinBox>
+#include <QEvent>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -36,8 +37,7 @@ JointSliders::JointSliders(QWidget* parent) : QWidget(parent)
 {
     auto* outer = new QVBoxLayout(this);
     auto* top = new QHBoxLayout;
-    m_reset = new QPushButton(tr("Reset pose"), this);
-    m_reset->setToolTip(tr("Back to the model's initial coordinates"));
+    m_reset = new QPushButton(this);
     m_reset->setEnabled(false);
     connect(m_reset, &QPushButton::clicked, this, &JointSliders::reset);
     top->addWidget(m_reset);
@@ -53,7 +53,7 @@ JointSliders::JointSliders(QWidget* parent) : QWidget(parent)
     scroll->setWidget(m_rowsWidget);
     outer->addWidget(scroll, 1);
 
-    m_empty = new QLabel(tr("No model"), this);
+    m_empty = new QLabel(this);
     m_empty->setWordWrap(true);
     outer->addWidget(m_empty);
     m_status = new QLabel(this);
@@ -61,9 +61,45 @@ JointSliders::JointSliders(QWidget* parent) : QWidget(parent)
     m_status->setStyleSheet(QStringLiteral("color: #b00020"));
     m_status->hide();
     outer->addWidget(m_status);
+    retranslate();
 }
 
 JointSliders::~JointSliders() = default;
+
+void JointSliders::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange) retranslate();
+    QWidget::changeEvent(event);
+}
+
+void JointSliders::retranslate()
+{
+    m_reset->setText(tr("Reset pose"));
+    m_reset->setToolTip(tr("Back to the model's initial coordinates"));
+    m_empty->setText(m_bundle ? tr("The model has no degrees of freedom to pose.") : tr("No model"));
+    if (m_bundle) {
+        const solver::ModelSpec& spec = m_bundle->spec();
+        for (Row& row : m_rows) {
+            const solver::JointSpec& js = spec.joints[static_cast<std::size_t>(row.specIndex)];
+            row.label->setText(js.name.empty() ? tr("C %1").arg(js.id)
+                                               : tr("C %1  %2").arg(js.id).arg(QString::fromStdString(js.name)));
+            const QString tip = tr("%1, limits %2").arg(jointtext::typeName(js.type), jointtext::limits(js));
+            row.label->setToolTip(tip);
+            row.slider->setToolTip(tip);
+            row.spin->setToolTip(tip);
+            // the spin box writes its number in the locale it has (1,5 in Spanish)
+            row.spin->setLocale(QLocale());
+            row.spin->setSuffix(jointtext::isLength(js.type) ? tr(" m") : tr(" °"));
+        }
+    }
+    if (m_statusText) m_status->setText(m_statusText());
+}
+
+void JointSliders::setStatus(std::function<QString()> text)
+{
+    m_statusText = std::move(text);
+    m_status->setText(m_statusText ? m_statusText() : QString());
+}
 
 void JointSliders::setBundle(std::shared_ptr<const ModelBundle> bundle)
 {
@@ -71,7 +107,7 @@ void JointSliders::setBundle(std::shared_ptr<const ModelBundle> bundle)
     m_sim.reset();
     if (m_bundle) rebuildSimulation(nullptr);
     buildRows();
-    m_status->clear();
+    setStatus({});
     m_status->hide();
 }
 
@@ -177,7 +213,7 @@ void JointSliders::buildRows()
     m_rows.clear();
     m_reset->setEnabled(false);
     if (!m_bundle) {
-        m_empty->setText(tr("No model"));
+        retranslate();
         m_empty->show();
         return;
     }
@@ -188,6 +224,7 @@ void JointSliders::buildRows()
     for (int specIndex : topo.independent) {
         const solver::JointSpec& js = spec.joints[static_cast<std::size_t>(specIndex)];
         Row row;
+        row.specIndex = specIndex;
         row.jointId = js.id;
         row.joint = model.jointIndex(js.id);
         if (row.joint < 0) continue;
@@ -222,20 +259,16 @@ void JointSliders::buildRows()
         row.hi = hi;
 
         const int r = static_cast<int>(m_rows.size());
-        auto* label = new QLabel(js.name.empty() ? tr("C %1").arg(js.id) : tr("C %1  %2").arg(js.id).arg(QString::fromStdString(js.name)),
-                                 m_rowsWidget);
-        label->setToolTip(tr("%1, limits %2").arg(jointtext::typeName(js.type), jointtext::limits(js)));
+        // (the texts: retranslate())
+        row.label = new QLabel(m_rowsWidget);
         row.slider = new QSlider(Qt::Horizontal, m_rowsWidget);
         row.slider->setRange(0, kSliderSteps);
-        row.slider->setToolTip(label->toolTip());
         row.spin = new QDoubleSpinBox(m_rowsWidget);
         row.spin->setKeyboardTracking(false);
         row.spin->setDecimals(jointtext::isLength(js.type) ? 4 : 2);
-        row.spin->setSuffix(jointtext::isLength(js.type) ? tr(" m") : tr(" °"));
         row.spin->setRange(displayValue(row, lo), displayValue(row, hi));
         row.spin->setSingleStep(jointtext::isLength(js.type) ? std::max(1e-4, (hi - lo) / 100) : 1.0);
-        row.spin->setToolTip(label->toolTip());
-        m_grid->addWidget(label, r, 0);
+        m_grid->addWidget(row.label, r, 0);
         m_grid->addWidget(row.slider, r, 1);
         m_grid->addWidget(row.spin, r, 2);
         connect(row.slider, &QSlider::valueChanged, this, [this, r](int v) {
@@ -249,7 +282,7 @@ void JointSliders::buildRows()
         m_rows.push_back(row);
     }
     m_grid->setRowStretch(static_cast<int>(m_rows.size()), 1);
-    m_empty->setText(tr("The model has no degrees of freedom to pose."));
+    retranslate();
     m_empty->setVisible(m_rows.empty());
     m_reset->setEnabled(!m_rows.empty());
     showValues();
@@ -272,7 +305,9 @@ bool JointSliders::moveRow(int k, double q)
         const auto angle = m_sim->model().lengthLaw[static_cast<std::size_t>(row.joint)].angleNear(q, current, 1e-9);
         if (!angle) {
             ok = false;
-            m_status->setText(tr("C %1 cannot reach the length %2: kept the last pose.").arg(row.jointId).arg(jointtext::coordinate(row.type, q)));
+            setStatus([this, id = row.jointId, type = row.type, q] {
+                return tr("C %1 cannot reach the length %2: kept the last pose.").arg(id).arg(jointtext::coordinate(type, q));
+            });
         } else {
             theta = *angle;
         }
@@ -281,9 +316,11 @@ bool JointSliders::moveRow(int k, double q)
         ok = stepTo(row.joint, theta);
         if (!ok) {
             const double reached = m_sim->model().coordinate(row.joint, m_sim->state().q[row.joint]);
-            m_status->setText(tr("The loops cannot close with C %1 at %2: the pose stops at %3, the last one that closes.")
-                                  .arg(row.jointId)
-                                  .arg(jointtext::coordinate(row.type, q), jointtext::coordinate(row.type, reached)));
+            setStatus([this, id = row.jointId, type = row.type, q, reached] {
+                return tr("The loops cannot close with C %1 at %2: the pose stops at %3, the last one that closes.")
+                    .arg(id)
+                    .arg(jointtext::coordinate(type, q), jointtext::coordinate(type, reached));
+            });
         }
     }
     m_status->setVisible(!ok);
@@ -298,7 +335,7 @@ void JointSliders::reset()
 {
     if (!m_bundle) return;
     rebuildSimulation(nullptr);
-    m_status->clear();
+    setStatus({});
     m_status->hide();
     showValues();
     publish();

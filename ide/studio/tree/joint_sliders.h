@@ -20,6 +20,7 @@
 
 #include <QWidget>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -77,15 +78,25 @@ signals:
     /// The modeler's coordinate of every tree joint (rad or m; T 1: the length).
     void coordinatesChanged(const Eigen::VectorXd& q);
 
+protected:
+    /// A language change: every label, tooltip, unit and the status line again.
+    void changeEvent(QEvent* event) override;
+
 private:
     struct Row {
+        int specIndex = -1;  // in the spec's joints
         int joint = -1;      // tree index
         int jointId = 0;
         solver::JointType type = solver::JointType::Revolute;
         double lo = 0, hi = 0;  // SI
+        QLabel* label = nullptr;
         QSlider* slider = nullptr;
         QDoubleSpinBox* spin = nullptr;
     };
+
+    void retranslate();
+    /// The status line: `text` gives it in the current language ({}: none).
+    void setStatus(std::function<QString()> text);
 
     void buildRows();
     void rebuildSimulation(const Eigen::VectorXd* goodTheta);
@@ -104,6 +115,7 @@ private:
     QGridLayout* m_grid = nullptr;
     QLabel* m_empty = nullptr;
     QLabel* m_status = nullptr;
+    std::function<QString()> m_statusText;
     QPushButton* m_reset = nullptr;
 };
 

@@ -2,14 +2,20 @@
 // Texts about joints, drives and bodies that the model tree and the joint sliders
 // show a person: the joint type, limits and coordinates with their units (revolute
 // joints in degrees, T 1 and T 2 joints in metres), a drive's summary, a mass.
-// Every text goes through QCoreApplication::translate (context "studio::JointText").
-// Numbers use '.' as the decimal point, as the model language does.
+// Every text is translated (context "studio::JointText") when it is asked for, and its
+// numbers are written in the current locale (1,5 m in Spanish), without group separators
+// (a reader who also edits the model, where '.' is the decimal point, does not take
+// "2.500 kg" for two and a half). None of these texts goes into a model file.
 
 #include "solver/model/model_spec.h"
 
+#include <QLocale>
 #include <QString>
 
 namespace studio::jointtext {
+
+/// The current locale (QLocale()) without group separators: how these texts write numbers.
+QLocale locale();
 
 /// "revolute", "pivoted actuator" (T 1) or "prismatic" (T 2), translated.
 QString typeName(solver::JointType type);
@@ -21,7 +27,8 @@ inline bool isLength(solver::JointType type) { return type != solver::JointType:
 /// The unit a person reads the coordinate in: "°" for a revolute joint, "m" otherwise.
 QString unit(solver::JointType type);
 
-/// A coordinate (SI: rad or m) in the unit a person reads: "60.00°", "1.4640 m".
+/// A coordinate (SI: rad or m) in the unit a person reads: "60.00°", "1.4640 m"
+/// (Spanish: "60,00°", "1,4640 m").
 QString coordinate(solver::JointType type, double q);
 
 /// The joint's limits with units: "-65.0° … 65.0°", "0 … 0.9 m", "≥ 0.075 m",
@@ -35,7 +42,8 @@ QString drive(const solver::DriveSpec& drive, solver::JointType type);
 /// A body's mass: "0.2 kg", or "massless".
 QString mass(const solver::BodySpec& body);
 
-/// `v` with `digits` significant digits, no exponent for everyday magnitudes.
+/// `v` with `digits` significant digits, no exponent for everyday magnitudes, in the
+/// current locale.
 QString number(double v, int digits = 4);
 
 /// A force or torque with an SI prefix: "54 kN·m", "1.54 MN", "500 N".

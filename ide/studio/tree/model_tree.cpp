@@ -2,6 +2,7 @@
 
 #include "ide/studio/tree/joint_text.h"
 
+#include <QEvent>
 #include <QHeaderView>
 #include <QSignalBlocker>
 
@@ -20,7 +21,7 @@ bool contains(const std::vector<int>& v, int x) { return std::find(v.begin(), v.
 ModelTree::ModelTree(QWidget* parent) : QTreeWidget(parent)
 {
     setColumnCount(ColumnCount);
-    setHeaderLabels({tr("Element"), tr("Type"), tr("Role"), tr("Mass / limits"), tr("Drive")});
+    retranslate();
     setSelectionMode(QAbstractItemView::SingleSelection);
     setAlternatingRowColors(true);
     setUniformRowHeights(true);
@@ -31,6 +32,20 @@ ModelTree::ModelTree(QWidget* parent) : QTreeWidget(parent)
     connect(this, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem* item, int) {
         if (!m_syncing) emitFor(item);
     });
+}
+
+void ModelTree::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange) {
+        retranslate();
+        setBundle(m_bundle);  // every item's text again, in the new language (the selection stays)
+    }
+    QTreeWidget::changeEvent(event);
+}
+
+void ModelTree::retranslate()
+{
+    setHeaderLabels({tr("Element"), tr("Type"), tr("Role"), tr("Mass / limits"), tr("Drive")});
 }
 
 void ModelTree::setBundle(std::shared_ptr<const ModelBundle> bundle)
@@ -88,15 +103,14 @@ QTreeWidgetItem* ModelTree::addJoint(QTreeWidgetItem* parent, int specIndex)
         if (id == 0) return tr("ground");
         return b && !b->name.empty() ? tr("B %1 %2").arg(id).arg(fromStd(b->name)) : tr("B %1").arg(id);
     };
-    QString tip = tr("Joint %1 (%2), line %3\nbetween %4 and %5\nlimits: %6\ndrive: %7")
-                      .arg(j.id)
-                      .arg(jointtext::typeName(j.type))
-                      .arg(j.src.pos.line)
-                      .arg(bodyText(j.side1.body), bodyText(j.side2.body), jointtext::limits(j), driveText);
+    // the tooltip: whole lines, each translated on its own
+    QStringList tip{tr("Joint %1 (%2), line %3").arg(QString::number(j.id), jointtext::typeName(j.type), QString::number(j.src.pos.line)),
+                    tr("between %1 and %2").arg(bodyText(j.side1.body), bodyText(j.side2.body)),
+                    tr("limits: %1").arg(jointtext::limits(j)), tr("drive: %1").arg(driveText)};
     if (static_cast<std::size_t>(specIndex) < topo.q0.size()) {
-        tip += tr("\ninitial coordinate: %1").arg(jointtext::coordinate(j.type, topo.q0[static_cast<std::size_t>(specIndex)]));
+        tip << tr("initial coordinate: %1").arg(jointtext::coordinate(j.type, topo.q0[static_cast<std::size_t>(specIndex)]));
     }
-    for (int c = 0; c < ColumnCount; ++c) item->setToolTip(c, tip);
+    for (int c = 0; c < ColumnCount; ++c) item->setToolTip(c, tip.join(QLatin1Char('\n')));
     return item;
 }
 
@@ -130,14 +144,14 @@ void ModelTree::rebuild()
         item->setData(0, IdRole, b.id);
         item->setData(0, TreeIndexRole, model.bodyIndex(b.id));
         item->setData(0, LineRole, b.src.pos.line);
-        QString tip = tr("Body %1, line %2\nmass: %3").arg(b.id).arg(b.src.pos.line).arg(jointtext::mass(b));
+        QStringList tip{tr("Body %1, line %2").arg(b.id).arg(b.src.pos.line), tr("mass: %1").arg(jointtext::mass(b))};
         if (b.hasMass) {
-            tip += tr("\nIxx Iyy Izz: %1 %2 %3 kg·m²")
+            tip << tr("Ixx Iyy Izz: %1 %2 %3 kg·m²")
                        .arg(jointtext::number(b.inertia.x()), jointtext::number(b.inertia.y()), jointtext::number(b.inertia.z()));
         }
         const int ti = model.bodyIndex(b.id);
-        if (ti >= 0) tip += tr("\nmoved by joint C %1").arg(model.jointId[static_cast<std::size_t>(ti)]);
-        for (int c = 0; c < ColumnCount; ++c) item->setToolTip(c, tip);
+        if (ti >= 0) tip << tr("moved by joint C %1").arg(model.jointId[static_cast<std::size_t>(ti)]);
+        for (int c = 0; c < ColumnCount; ++c) item->setToolTip(c, tip.join(QLatin1Char('\n')));
     }
 
     // joints in file order

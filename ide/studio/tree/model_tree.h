@@ -65,7 +65,12 @@ signals:
     /// The line (1-based) of the selected element's statement.
     void sourceSelected(int line);
 
+protected:
+    /// A language change: the headers and every item again.
+    void changeEvent(QEvent* event) override;
+
 private:
+    void retranslate();
     void rebuild();
     void onCurrentItemChanged(QTreeWidgetItem* current);
     void emitFor(QTreeWidgetItem* item);

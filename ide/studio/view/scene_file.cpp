@@ -1,5 +1,6 @@
 #include "ide/studio/view/scene_file.h"
 
+#include "ide/i18n/diagnostic_text.h"
 #include "solver/model/load.h"
 
 #include <QCoreApplication>
@@ -44,7 +45,7 @@ SceneFile loadSceneFile(const QString& path)
                 lines << QStringLiteral("…");
                 break;
             }
-            lines << QString::fromStdString(d.format());
+            lines << QString::fromStdString(i18n::format(d));  // in the current language
         }
         out.error = QCoreApplication::translate("studio::SceneFile", "The scene %1 has errors:\n%2")
                         .arg(shown, lines.join(QLatin1Char('\n')));

@@ -1,5 +1,6 @@
 #include "ide/studio/view/scene_geometry.h"
 
+#include "ide/i18n/diagnostic_text.h"
 #include "solver/core/data.h"
 #include "solver/core/state.h"
 #include "solver/inertia/solid_inertia.h"
@@ -166,7 +167,7 @@ bool addGraphic(MeshBuilder& m, const solver::GraphicSpec& g, const QString& mod
             }
             why = load->mesh ? QCoreApplication::translate("studio::Viewport", "the file holds no triangles")
                              : QCoreApplication::translate("studio::Viewport", "it cannot be read: %1")
-                                   .arg(QString::fromStdString(load->error));
+                                   .arg(i18n::text(load->errorText));
         }
         problems << QCoreApplication::translate("studio::Viewport",
                                                 "Graphic %1 (body %2): mesh \"%3\" is drawn as a box: %4.")

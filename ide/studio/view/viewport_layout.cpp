@@ -1,5 +1,6 @@
 #include "ide/studio/view/viewport_layout.h"
 
+#include <QEvent>
 #include <QGuiApplication>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -19,10 +20,25 @@ ViewportLayout::ViewportLayout(QWidget* parent) : QWidget(parent)
     m_row = new QHBoxLayout(this);
     m_row->setContentsMargins(0, 0, 0, 0);
     m_row->setSpacing(0);
-    m_elsewhere = new QLabel(tr("The operator's screens are shown in separate windows."), this);
+    m_elsewhere = new QLabel(this);
     m_elsewhere->setAlignment(Qt::AlignCenter);
     m_elsewhere->hide();
     setScreens(1);
+    retranslate();
+}
+
+void ViewportLayout::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange) retranslate();
+    QWidget::changeEvent(event);
+}
+
+void ViewportLayout::retranslate()
+{
+    m_elsewhere->setText(tr("The operator's screens are shown in separate windows."));
+    const int count = static_cast<int>(m_windows.size());
+    for (int i = 0; i < count; ++i)
+        m_windows[static_cast<std::size_t>(i)]->setWindowTitle(tr("Operator screen %1 of %2").arg(i + 1).arg(count));
 }
 
 ViewportLayout::~ViewportLayout()
@@ -102,7 +118,6 @@ void ViewportLayout::placeViews()
     const int count = screens();
     for (int i = 0; i < count; ++i) {
         auto* window = new QWidget(this, Qt::Window);
-        window->setWindowTitle(tr("Operator screen %1 of %2").arg(i + 1).arg(count));
         auto* layout = new QHBoxLayout(window);
         layout->setContentsMargins(0, 0, 0, 0);
         Viewport* v = m_views[static_cast<std::size_t>(i)];
@@ -119,6 +134,7 @@ void ViewportLayout::placeViews()
             window->show();
         }
     }
+    retranslate();  // the windows' titles
 }
 
 void ViewportLayout::setBundle(std::shared_ptr<const ModelBundle> bundle)

@@ -68,7 +68,12 @@ signals:
     /// A problem drawing the model (reported once, by the first screen).
     void problem(const QString& message);
 
+protected:
+    /// A language change: the texts of this widget and of the separate windows again.
+    void changeEvent(QEvent* event) override;
+
 private:
+    void retranslate();
     Viewport* makeViewport(int index, int count);
     void placeViews();
 

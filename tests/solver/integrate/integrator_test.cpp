@@ -555,6 +555,13 @@ TEST_P(IntegratorAllMethods, ANanInTheRightHandSideFailsWithAMessage)
     EXPECT_NE(r.message.find("RHSFUNC"), std::string::npos) << r.message;
     EXPECT_NE(r.message.find("non-finite value in component 1 (nan) at t = 0.5"), std::string::npos)
         << r.message;
+    // the same, translatable: the flag and the time plain, the cause a phrase of its own
+    EXPECT_EQ(r.messageText.english(), r.message);
+    EXPECT_STREQ(r.messageText.context(), "Diagnostics");
+    ASSERT_GE(r.messageText.args().size(), 3u);
+    EXPECT_EQ(r.message.rfind(r.messageText.args()[0].value(), 0), 0u) << r.message;  // the flag's name
+    EXPECT_STREQ(r.messageText.args()[2].tmpl(),
+                 "the right-hand side gave a non-finite value in component %1 (%2) at t = %3 s");
     EXPECT_EQ(r.badComponent, 1);
     // time and state stay those of the last good output
     EXPECT_DOUBLE_EQ(r.t, 0.4);
@@ -568,6 +575,7 @@ TEST_P(IntegratorAllMethods, ANanInTheRightHandSideFailsWithAMessage)
     const AdvanceResult again = in.advanceTo(1.0, y);
     EXPECT_EQ(again.status, AdvanceStatus::Failed);
     EXPECT_EQ(again.message, r.message);
+    EXPECT_EQ(again.messageText.english(), r.message);
     double y0[2] = {1.0, 0.0};
     in.reset(0.0, y0);
     EXPECT_EQ(in.advanceTo(0.25, y).status, AdvanceStatus::Reached);
@@ -582,6 +590,7 @@ TEST_P(IntegratorAllMethods, ARightHandSideReportingFailureFails)
     const AdvanceResult r = in.advanceTo(1.0, y);
     ASSERT_EQ(r.status, AdvanceStatus::Failed);
     EXPECT_NE(r.message.find("reported a failure"), std::string::npos) << r.message;
+    EXPECT_EQ(r.messageText.english(), r.message);
     EXPECT_EQ(r.badComponent, -1);
 }
 
@@ -594,6 +603,7 @@ TEST_P(IntegratorAllMethods, AnExceptionInTheRightHandSideDoesNotCrossSundials)
     const AdvanceResult r = in.advanceTo(1.0, y);
     ASSERT_EQ(r.status, AdvanceStatus::Failed);
     EXPECT_NE(r.message.find("threw"), std::string::npos) << r.message;
+    EXPECT_EQ(r.messageText.english(), r.message);
 }
 
 TEST_P(IntegratorAllMethods, ANanInitialStateFails)
@@ -618,6 +628,7 @@ TEST_P(IntegratorAllMethods, TooManyStepsFails)
     const AdvanceResult r = in.advanceTo(10.0, y);
     ASSERT_EQ(r.status, AdvanceStatus::Failed);
     EXPECT_NE(r.message.find("TOO_MUCH_WORK"), std::string::npos) << r.message;
+    EXPECT_EQ(r.messageText.english(), r.message);  // no cause of the system's: flag, time, SUNDIALS' text
     EXPECT_EQ(r.t, 0.0);
     EXPECT_EQ(y[0], 1.0);  // not written
 }

@@ -285,6 +285,44 @@ F 1 SPRING B1 0 P1 0 0 -1 B2 1 P2 0 0 0 K 1e12 L0 1
     EXPECT_NE(err.find("joint 7 (slider)"), std::string::npos) << err;
 }
 
+TEST(Simulation, AFailureCarriesATranslatableTextOfItsEnglishMessage)
+{
+    // the diverging slider above: the simulation's sentence (time, joint) holds the
+    // integrator's cause as a phrase of its own
+    auto model = compileText(R"(
+B 1 1 0.1 0.1 0.1
+C 7 T 2 QI 0.1 NAME "slider"
+B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 1
+B2 1 P2 0 0 0 A2 1 0 0 R2 0 0 1
+F 1 SPRING B1 0 P1 0 0 -1 B2 1 P2 0 0 0 K 1e12 L0 1
+)");
+    ASSERT_TRUE(model);
+    Simulation sim(model, rk4(0.01));
+    std::vector<SimulationEvent> ev;
+    std::string err;
+    Text text;
+    EXPECT_FALSE(sim.advanceTo(100.0, ev, err, &text));
+    EXPECT_EQ(text.english(), err);
+    EXPECT_STREQ(text.context(), "Diagnostics");
+    EXPECT_STREQ(text.tmpl(), "the simulation failed at t = %1 s, joint %2 (%3): %4");
+    ASSERT_EQ(text.args().size(), 4u);
+    EXPECT_EQ(text.args()[1].value(), "7");
+    EXPECT_EQ(text.args()[2].value(), "slider");
+    const Text& cause = text.args()[3];
+    ASSERT_NE(cause.tmpl(), nullptr);  // a phrase, not a plain value
+    EXPECT_STREQ(cause.context(), "Diagnostics");
+    EXPECT_EQ(err.substr(err.size() - cause.english().size()), cause.english());
+    // every template translated, every plain value kept
+    const std::string marked = text.render([](const char*, const char* tmpl) { return "<" + std::string(tmpl) + ">"; });
+    EXPECT_EQ(marked.rfind("<the simulation failed at t = ", 0), 0u) << marked;
+    EXPECT_NE(marked.find("joint 7 (slider): <"), std::string::npos) << marked;
+    // a failed simulation keeps failing (the integrator stays failed) with the same text
+    std::string again;
+    Text againText;
+    EXPECT_FALSE(sim.advanceTo(100.0, ev, again, &againText));
+    EXPECT_EQ(againText.english(), again);
+}
+
 TEST(Simulation, RestitutionBouncesAJointOffItsLimit)
 {
     // a block falling 0.5 m onto the lower stop of a vertical slider

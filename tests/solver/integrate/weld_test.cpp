@@ -3,7 +3,8 @@
 // bodies at rest does not jump the state; a 4,500 kg liner welded to the liner
 // manipulator's claws raises the lift cylinder's force by its weight's moment about
 // the boom pivot over the cylinder's moment arm; the welded body moves with the
-// other; bad welds are refused and change nothing.
+// other; bad welds are refused and change nothing, and say why in English and as a
+// translatable Text.
 
 #include "solver/integrate/simulation.h"
 #include "solver/kinematics/kinematics.h"
@@ -132,6 +133,56 @@ TEST(Welds, BadWeldsAreRefusedAndChangeNothing)
     EXPECT_NEAR(sim.state().qd[m.jointIndex(3)], 0.0, 1e-12);
     ASSERT_TRUE(sim.advanceTo(0.2, ev, err)) << err;
     EXPECT_NEAR(sim.state().q[m.jointIndex(3)], 0.0, 1e-12);
+}
+
+TEST(Welds, BadWeldsCarryATranslatableTextOfTheirEnglishMessage)
+{
+    const auto model = test::compileText(kCarts, "carts.pad");
+    ASSERT_TRUE(model);
+    const Model& m = *model;
+    Simulation sim(model, rk4(1e-3));
+    const int c1 = m.bodyIndex(1), c2 = m.bodyIndex(2);
+    std::vector<SimulationEvent> ev;
+    std::string err;
+    Text text;
+    // every refusal: the Text (context "Diagnostics") says in English what `error` says
+    auto expectText = [&](const char* tmpl) {
+        EXPECT_FALSE(text.empty()) << err;
+        EXPECT_STREQ(text.context(), "Diagnostics");
+        EXPECT_STREQ(text.tmpl(), tmpl);
+        EXPECT_EQ(text.english(), err);
+        text = {};
+    };
+    EXPECT_FALSE(sim.weld(c1, c1, ev, err, &text));
+    EXPECT_EQ(err, "cannot weld body 1 cart 1 to itself");
+    expectText("cannot weld %1 to itself");
+    EXPECT_FALSE(sim.weld(c1, 17, ev, err, &text));
+    EXPECT_EQ(err, "cannot weld: no such body");
+    expectText("cannot weld: no such body");
+    EXPECT_FALSE(sim.release(c1, c2, ev, err, &text));
+    EXPECT_EQ(err, "cannot release: body 2 cart 2 is not welded to body 1 cart 1");
+    expectText("cannot release: %1 is not welded to %2");
+    EXPECT_FALSE(sim.release(-1, 17, ev, err, &text));
+    EXPECT_EQ(err, "cannot release: no such body");
+    expectText("cannot release: no such body");
+    ASSERT_TRUE(sim.weld(c1, c2, ev, err, &text)) << err;
+    EXPECT_TRUE(text.empty());  // untouched on success
+    EXPECT_FALSE(sim.weld(-1, c2, ev, err, &text));
+    EXPECT_EQ(err, "cannot weld body 2 cart 2 to the ground: body 2 cart 2 is already welded (release that weld first)");
+    const Text already = text;
+    expectText("cannot weld %1 to %2: %3 is already welded (release that weld first)");
+
+    // the bodies are phrases of their own, translated with the sentence (names stay)
+    const std::string es = already.render([](const char*, const char* tmpl) -> std::string {
+        const std::string t = tmpl;
+        if (t == "cannot weld %1 to %2: %3 is already welded (release that weld first)")
+            return "no se puede soldar %1 a %2: %3 ya está soldado (libere primero esa soldadura)";
+        if (t == "body %1 %2") return "cuerpo %1 %2";
+        if (t == "the ground") return "el suelo";
+        return t;
+    });
+    EXPECT_EQ(es, "no se puede soldar cuerpo 2 cart 2 a el suelo: cuerpo 2 cart 2 ya está soldado "
+                  "(libere primero esa soldadura)");
 }
 
 // ---------------------------------------------------------------- the liner
