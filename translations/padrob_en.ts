@@ -2236,9 +2236,9 @@
         <translation>Stopped</translation>
     </message>
     <message>
-        <location line="+17" />
-        <source>Goal "%1" done</source>
-        <translation>Goal "%1" done</translation>
+        <location line="+23" />
+        <source>Goal done: %1</source>
+        <translation>Goal done: %1</translation>
     </message>
     <message>
         <location line="+1" />
@@ -3482,7 +3482,10 @@
     <message numerus="yes">
         <location line="+1" />
         <source>each figure: the median of %n run(s) after a warm-up run, and the fastest – slowest run</source>
-        <translation><numerusform>each figure: the median of %n run after a warm-up run, and the fastest – slowest run</numerusform><numerusform>each figure: the median of %n runs after a warm-up run, and the fastest – slowest run</numerusform></translation>
+        <translation>
+            <numerusform>each figure: the median of %n run after a warm-up run, and the fastest – slowest run</numerusform>
+            <numerusform>each figure: the median of %n runs after a warm-up run, and the fastest – slowest run</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+6" />
@@ -3748,7 +3751,7 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
         <location line="+45" />
         <location filename="../ide/cli/export.cpp" line="+109" />
         <location filename="../ide/cli/simulate.cpp" line="+244" />
-        <location filename="../ide/cli/tutorial.cpp" line="+173" />
+        <location filename="../ide/cli/tutorial.cpp" line="+186" />
         <source>%1 needs a value</source>
         <translation>%1 needs a value</translation>
     </message>
@@ -4048,7 +4051,10 @@ Exit status 2 on a usage error or a file that cannot be read or written.
     <message numerus="yes">
         <location line="+4" />
         <source>Wrote %n B line(s) to %1 (the old file is %2)</source>
-        <translation><numerusform>Wrote %n B line to %1 (the old file is %2)</numerusform><numerusform>Wrote %n B lines to %1 (the old file is %2)</numerusform></translation>
+        <translation>
+            <numerusform>Wrote %n B line to %1 (the old file is %2)</numerusform>
+            <numerusform>Wrote %n B lines to %1 (the old file is %2)</numerusform>
+        </translation>
     </message>
     <message>
         <location filename="../ide/cli/info_report.cpp" line="+55" />
@@ -4319,7 +4325,10 @@ A model with errors is not described: its problems are printed as by
     <message numerus="yes">
         <location line="+35" />
         <source>%n warning(s)</source>
-        <translation><numerusform>%n warning</numerusform><numerusform>%n warnings</numerusform></translation>
+        <translation>
+            <numerusform>%n warning</numerusform>
+            <numerusform>%n warnings</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2" />
@@ -4334,7 +4343,10 @@ A model with errors is not described: its problems are printed as by
     <message numerus="yes">
         <location line="+2" />
         <source>%n error(s)</source>
-        <translation><numerusform>%n error</numerusform><numerusform>%n errors</numerusform></translation>
+        <translation>
+            <numerusform>%n error</numerusform>
+            <numerusform>%n errors</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+64" />
@@ -4380,17 +4392,26 @@ A model with errors is not described: its problems are printed as by
     <message numerus="yes">
         <location line="+47" />
         <source>every joint passive in both: the model's %n drive(s) are not exported</source>
-        <translation><numerusform>every joint passive in both: the model's %n drive is not exported</numerusform><numerusform>every joint passive in both: the model's %n drives are not exported</numerusform></translation>
+        <translation>
+            <numerusform>every joint passive in both: the model's %n drive is not exported</numerusform>
+            <numerusform>every joint passive in both: the model's %n drives are not exported</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <location line="+3" />
         <source>joint limits off in both (%n joint(s) have them)</source>
-        <translation><numerusform>joint limits off in both (%n joint has them)</numerusform><numerusform>joint limits off in both (%n joints have them)</numerusform></translation>
+        <translation>
+            <numerusform>joint limits off in both (%n joint has them)</numerusform>
+            <numerusform>joint limits off in both (%n joints have them)</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <location line="+4" />
         <source>Padrob runs without the model's %n applied force(s) (F): they are not exported</source>
-        <translation><numerusform>Padrob runs without the model's %n applied force (F): it is not exported</numerusform><numerusform>Padrob runs without the model's %n applied forces (F): they are not exported</numerusform></translation>
+        <translation>
+            <numerusform>Padrob runs without the model's %n applied force (F): it is not exported</numerusform>
+            <numerusform>Padrob runs without the model's %n applied forces (F): they are not exported</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+26" />
@@ -4405,7 +4426,10 @@ A model with errors is not described: its problems are printed as by
     <message numerus="yes">
         <location line="+29" />
         <source>MuJoCo warned %n time(s): %1</source>
-        <translation><numerusform>MuJoCo warned %n time: %1</numerusform><numerusform>MuJoCo warned %n times: %1</numerusform></translation>
+        <translation>
+            <numerusform>MuJoCo warned %n time: %1</numerusform>
+            <numerusform>MuJoCo warned %n times: %1</numerusform>
+        </translation>
     </message>
     <message>
         <location filename="../ide/cli/simulate.cpp" line="-177" />
@@ -4623,7 +4647,7 @@ Exit status: 0 success; 1 the model has errors or the simulation failed;
         <translation>--rate: the joint is at a dead point; its rate cannot be set</translation>
     </message>
     <message>
-        <location filename="../ide/cli/tutorial.cpp" line="-157" />
+        <location filename="../ide/cli/tutorial.cpp" line="-170" />
         <source>Usage: padrob tutorial FILE [--input LOG | --demo] [OPTIONS]
 
 Checks a tutorial file (.tut) and, with --input or --demo, runs it without a window:
@@ -4680,7 +4704,42 @@ Exit status: 0 the tutorial is fine (checked) or the run passed; 1 the run faile
 </translation>
     </message>
     <message>
-        <location line="+38" />
+        <location line="+36" />
+        <source>every goal done</source>
+        <translation>every goal done</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the time ran out</source>
+        <translation>the time ran out</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a hard hit</source>
+        <translation>a hard hit</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a worker was touched</source>
+        <translation>a worker was touched</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the input ended</source>
+        <translation>the input ended</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the simulation failed</source>
+        <translation>the simulation failed</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>stopped</source>
+        <translation>stopped</translation>
+    </message>
+    <message>
+        <location line="+9" />
         <source>PASSED</source>
         <translation>PASSED</translation>
     </message>
@@ -4752,12 +4811,18 @@ Exit status: 0 the tutorial is fine (checked) or the run passed; 1 the run faile
     <message numerus="yes">
         <location line="+10" />
         <source>OK (%n goal(s), no demonstration)</source>
-        <translation><numerusform>OK (%n goal, no demonstration)</numerusform><numerusform>OK (%n goals, no demonstration)</numerusform></translation>
+        <translation>
+            <numerusform>OK (%n goal, no demonstration)</numerusform>
+            <numerusform>OK (%n goals, no demonstration)</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <location line="+1" />
         <source>OK (%n goal(s))</source>
-        <translation><numerusform>OK (%n goal)</numerusform><numerusform>OK (%n goals)</numerusform></translation>
+        <translation>
+            <numerusform>OK (%n goal)</numerusform>
+            <numerusform>OK (%n goals)</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+32" />
@@ -5044,7 +5109,10 @@ Exit status: 0 the tutorial is fine (checked) or the run passed; 1 the run faile
     <message numerus="yes">
         <location line="+2" />
         <source>%1: %n channel(s)</source>
-        <translation><numerusform>%1: %n channel</numerusform><numerusform>%1: %n channels</numerusform></translation>
+        <translation>
+            <numerusform>%1: %n channel</numerusform>
+            <numerusform>%1: %n channels</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+1" />
@@ -5122,12 +5190,18 @@ Exit status: 0 the tutorial is fine (checked) or the run passed; 1 the run faile
         <location line="+137" />
         <source>%1, %n warning(s)</source>
         <comment>the %1 is "%n error(s)"</comment>
-        <translation><numerusform>%1, %n warning</numerusform><numerusform>%1, %n warnings</numerusform></translation>
+        <translation>
+            <numerusform>%1, %n warning</numerusform>
+            <numerusform>%1, %n warnings</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <location line="+20" />
         <source>Not applied: the model has %n error(s). The model applied before stays in use.</source>
-        <translation><numerusform>Not applied: the model has %n error. The model applied before stays in use.</numerusform><numerusform>Not applied: the model has %n errors. The model applied before stays in use.</numerusform></translation>
+        <translation>
+            <numerusform>Not applied: the model has %n error. The model applied before stays in use.</numerusform>
+            <numerusform>Not applied: the model has %n errors. The model applied before stays in use.</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2" />
@@ -5149,12 +5223,18 @@ Exit status: 0 the tutorial is fine (checked) or the run passed; 1 the run faile
         <location line="-31" />
         <location line="+1" />
         <source>%n error(s)</source>
-        <translation><numerusform>%n error</numerusform><numerusform>%n errors</numerusform></translation>
+        <translation>
+            <numerusform>%n error</numerusform>
+            <numerusform>%n errors</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <location line="+1" />
         <source>%n warning(s)</source>
-        <translation><numerusform>%n warning</numerusform><numerusform>%n warnings</numerusform></translation>
+        <translation>
+            <numerusform>%n warning</numerusform>
+            <numerusform>%n warnings</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -5177,7 +5257,10 @@ Exit status: 0 the tutorial is fine (checked) or the run passed; 1 the run faile
     <message numerus="yes">
         <location line="+21" />
         <source>The %n view(s) do not draw.</source>
-        <translation><numerusform>The view does not draw.</numerusform><numerusform>The %n views do not draw.</numerusform></translation>
+        <translation>
+            <numerusform>The view does not draw.</numerusform>
+            <numerusform>The %n views do not draw.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -5843,7 +5926,10 @@ Exit status: 0 the tutorial is fine (checked) or the run passed; 1 the run faile
     <message numerus="yes">
         <location line="+1" />
         <source>%n Screen(s)</source>
-        <translation><numerusform>%n Screen</numerusform><numerusform>%n Screens</numerusform></translation>
+        <translation>
+            <numerusform>%n Screen</numerusform>
+            <numerusform>%n Screens</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+1" />
@@ -5938,7 +6024,10 @@ Exit status: 0 the tutorial is fine (checked) or the run passed; 1 the run faile
     <message numerus="yes">
         <location line="-473" />
         <source>%n attempt(s) kept while the trainee records could not be written were added to them.</source>
-        <translation><numerusform>%n attempt kept while the trainee records could not be written was added to them.</numerusform><numerusform>%n attempts kept while the trainee records could not be written were added to them.</numerusform></translation>
+        <translation>
+            <numerusform>%n attempt kept while the trainee records could not be written was added to them.</numerusform>
+            <numerusform>%n attempts kept while the trainee records could not be written were added to them.</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2" />
@@ -6083,7 +6172,10 @@ Use Save As to choose another place.</translation>
     <message numerus="yes">
         <location line="+20" />
         <source>Model applied: %n bodies</source>
-        <translation><numerusform>Model applied: %n body</numerusform><numerusform>Model applied: %n bodies</numerusform></translation>
+        <translation>
+            <numerusform>Model applied: %n body</numerusform>
+            <numerusform>Model applied: %n bodies</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+28" />
@@ -6093,7 +6185,10 @@ Use Save As to choose another place.</translation>
     <message numerus="yes">
         <location line="+1" />
         <source>real time ×%1, %2 µs/step, %n overrun(s)</source>
-        <translation><numerusform>real time ×%1, %2 µs/step, %n overrun</numerusform><numerusform>real time ×%1, %2 µs/step, %n overruns</numerusform></translation>
+        <translation>
+            <numerusform>real time ×%1, %2 µs/step, %n overrun</numerusform>
+            <numerusform>real time ×%1, %2 µs/step, %n overruns</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+3" />
@@ -6302,7 +6397,10 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
     <message numerus="yes">
         <location line="+83" />
         <source>%n more button(s) of the profile also select this bank</source>
-        <translation><numerusform>%n more button of the profile also selects this bank</numerusform><numerusform>%n more buttons of the profile also select this bank</numerusform></translation>
+        <translation>
+            <numerusform>%n more button of the profile also selects this bank</numerusform>
+            <numerusform>%n more buttons of the profile also select this bank</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+160" />
@@ -6347,7 +6445,10 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
     <message numerus="yes">
         <location line="+79" />
         <source>Remove the bank “%1” and its %n mapping(s)?</source>
-        <translation><numerusform>Remove the bank “%1” and its %n mapping?</numerusform><numerusform>Remove the bank “%1” and its %n mappings?</numerusform></translation>
+        <translation>
+            <numerusform>Remove the bank “%1” and its %n mapping?</numerusform>
+            <numerusform>Remove the bank “%1” and its %n mappings?</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -7077,7 +7178,10 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
     <message numerus="yes">
         <location line="+7" />
         <source>%n graphic(s) on moving bodies of the scene are not drawn.</source>
-        <translation><numerusform>%n graphic on a moving body of the scene is not drawn.</numerusform><numerusform>%n graphics on moving bodies of the scene are not drawn.</numerusform></translation>
+        <translation>
+            <numerusform>%n graphic on a moving body of the scene is not drawn.</numerusform>
+            <numerusform>%n graphics on moving bodies of the scene are not drawn.</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -2236,9 +2236,9 @@
         <translation>Detenido</translation>
     </message>
     <message>
-        <location line="+17" />
-        <source>Goal "%1" done</source>
-        <translation>Objetivo "%1" cumplido</translation>
+        <location line="+23" />
+        <source>Goal done: %1</source>
+        <translation>Objetivo cumplido: %1</translation>
     </message>
     <message>
         <location line="+1" />
@@ -3482,7 +3482,10 @@
     <message numerus="yes">
         <location line="+1" />
         <source>each figure: the median of %n run(s) after a warm-up run, and the fastest – slowest run</source>
-        <translation><numerusform>cada cifra: la mediana de %n ejecución tras una de calentamiento, y la más rápida – la más lenta</numerusform><numerusform>cada cifra: la mediana de %n ejecuciones tras una de calentamiento, y la más rápida – la más lenta</numerusform></translation>
+        <translation>
+            <numerusform>cada cifra: la mediana de %n ejecución tras una de calentamiento, y la más rápida – la más lenta</numerusform>
+            <numerusform>cada cifra: la mediana de %n ejecuciones tras una de calentamiento, y la más rápida – la más lenta</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+6" />
@@ -3751,7 +3754,7 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
         <location line="+45" />
         <location filename="../ide/cli/export.cpp" line="+109" />
         <location filename="../ide/cli/simulate.cpp" line="+244" />
-        <location filename="../ide/cli/tutorial.cpp" line="+173" />
+        <location filename="../ide/cli/tutorial.cpp" line="+186" />
         <source>%1 needs a value</source>
         <translation>%1 necesita un valor</translation>
     </message>
@@ -4053,7 +4056,10 @@ escribir.
     <message numerus="yes">
         <location line="+4" />
         <source>Wrote %n B line(s) to %1 (the old file is %2)</source>
-        <translation><numerusform>Se escribió %n línea B en %1 (el archivo anterior es %2)</numerusform><numerusform>Se escribieron %n líneas B en %1 (el archivo anterior es %2)</numerusform></translation>
+        <translation>
+            <numerusform>Se escribió %n línea B en %1 (el archivo anterior es %2)</numerusform>
+            <numerusform>Se escribieron %n líneas B en %1 (el archivo anterior es %2)</numerusform>
+        </translation>
     </message>
     <message>
         <location filename="../ide/cli/info_report.cpp" line="+55" />
@@ -4332,7 +4338,10 @@ Un modelo con errores no se describe: sus problemas se informan como con
     <message numerus="yes">
         <location line="+35" />
         <source>%n warning(s)</source>
-        <translation><numerusform>%n advertencia</numerusform><numerusform>%n advertencias</numerusform></translation>
+        <translation>
+            <numerusform>%n advertencia</numerusform>
+            <numerusform>%n advertencias</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2" />
@@ -4347,7 +4356,10 @@ Un modelo con errores no se describe: sus problemas se informan como con
     <message numerus="yes">
         <location line="+2" />
         <source>%n error(s)</source>
-        <translation><numerusform>%n error</numerusform><numerusform>%n errores</numerusform></translation>
+        <translation>
+            <numerusform>%n error</numerusform>
+            <numerusform>%n errores</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+64" />
@@ -4393,17 +4405,26 @@ Un modelo con errores no se describe: sus problemas se informan como con
     <message numerus="yes">
         <location line="+47" />
         <source>every joint passive in both: the model's %n drive(s) are not exported</source>
-        <translation><numerusform>todas las articulaciones pasivas en ambos: %n accionamiento del modelo no se exporta</numerusform><numerusform>todas las articulaciones pasivas en ambos: los %n accionamientos del modelo no se exportan</numerusform></translation>
+        <translation>
+            <numerusform>todas las articulaciones pasivas en ambos: %n accionamiento del modelo no se exporta</numerusform>
+            <numerusform>todas las articulaciones pasivas en ambos: los %n accionamientos del modelo no se exportan</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <location line="+3" />
         <source>joint limits off in both (%n joint(s) have them)</source>
-        <translation><numerusform>límites de las articulaciones desactivados en ambos (%n articulación los tiene)</numerusform><numerusform>límites de las articulaciones desactivados en ambos (%n articulaciones los tienen)</numerusform></translation>
+        <translation>
+            <numerusform>límites de las articulaciones desactivados en ambos (%n articulación los tiene)</numerusform>
+            <numerusform>límites de las articulaciones desactivados en ambos (%n articulaciones los tienen)</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <location line="+4" />
         <source>Padrob runs without the model's %n applied force(s) (F): they are not exported</source>
-        <translation><numerusform>Padrob simula sin %n fuerza aplicada (F) del modelo: no se exporta</numerusform><numerusform>Padrob simula sin las %n fuerzas aplicadas (F) del modelo: no se exportan</numerusform></translation>
+        <translation>
+            <numerusform>Padrob simula sin %n fuerza aplicada (F) del modelo: no se exporta</numerusform>
+            <numerusform>Padrob simula sin las %n fuerzas aplicadas (F) del modelo: no se exportan</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+26" />
@@ -4418,7 +4439,10 @@ Un modelo con errores no se describe: sus problemas se informan como con
     <message numerus="yes">
         <location line="+29" />
         <source>MuJoCo warned %n time(s): %1</source>
-        <translation><numerusform>MuJoCo advirtió %n vez: %1</numerusform><numerusform>MuJoCo advirtió %n veces: %1</numerusform></translation>
+        <translation>
+            <numerusform>MuJoCo advirtió %n vez: %1</numerusform>
+            <numerusform>MuJoCo advirtió %n veces: %1</numerusform>
+        </translation>
     </message>
     <message>
         <location filename="../ide/cli/simulate.cpp" line="-177" />
@@ -4639,7 +4663,7 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o la simulación falló;
         <translation>--rate: la articulación está en un punto muerto; no se puede fijar su velocidad</translation>
     </message>
     <message>
-        <location filename="../ide/cli/tutorial.cpp" line="-157" />
+        <location filename="../ide/cli/tutorial.cpp" line="-170" />
         <source>Usage: padrob tutorial FILE [--input LOG | --demo] [OPTIONS]
 
 Checks a tutorial file (.tut) and, with --input or --demo, runs it without a window:
@@ -4699,7 +4723,42 @@ registro ilegible.
 </translation>
     </message>
     <message>
-        <location line="+38" />
+        <location line="+36" />
+        <source>every goal done</source>
+        <translation>todos los objetivos cumplidos</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the time ran out</source>
+        <translation>se acabó el tiempo</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a hard hit</source>
+        <translation>un golpe fuerte</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a worker was touched</source>
+        <translation>se tocó a un trabajador</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the input ended</source>
+        <translation>terminó la entrada</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the simulation failed</source>
+        <translation>falló la simulación</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>stopped</source>
+        <translation>detenido</translation>
+    </message>
+    <message>
+        <location line="+9" />
         <source>PASSED</source>
         <translation>APROBADO</translation>
     </message>
@@ -4771,12 +4830,18 @@ registro ilegible.
     <message numerus="yes">
         <location line="+10" />
         <source>OK (%n goal(s), no demonstration)</source>
-        <translation><numerusform>correcto (%n objetivo, sin demostración)</numerusform><numerusform>correcto (%n objetivos, sin demostración)</numerusform></translation>
+        <translation>
+            <numerusform>correcto (%n objetivo, sin demostración)</numerusform>
+            <numerusform>correcto (%n objetivos, sin demostración)</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <location line="+1" />
         <source>OK (%n goal(s))</source>
-        <translation><numerusform>correcto (%n objetivo)</numerusform><numerusform>correcto (%n objetivos)</numerusform></translation>
+        <translation>
+            <numerusform>correcto (%n objetivo)</numerusform>
+            <numerusform>correcto (%n objetivos)</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+32" />
@@ -5063,7 +5128,10 @@ registro ilegible.
     <message numerus="yes">
         <location line="+2" />
         <source>%1: %n channel(s)</source>
-        <translation><numerusform>%1: %n canal</numerusform><numerusform>%1: %n canales</numerusform></translation>
+        <translation>
+            <numerusform>%1: %n canal</numerusform>
+            <numerusform>%1: %n canales</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+1" />
@@ -5141,12 +5209,18 @@ registro ilegible.
         <location line="+137" />
         <source>%1, %n warning(s)</source>
         <comment>the %1 is "%n error(s)"</comment>
-        <translation><numerusform>%1, %n advertencia</numerusform><numerusform>%1, %n advertencias</numerusform></translation>
+        <translation>
+            <numerusform>%1, %n advertencia</numerusform>
+            <numerusform>%1, %n advertencias</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <location line="+20" />
         <source>Not applied: the model has %n error(s). The model applied before stays in use.</source>
-        <translation><numerusform>No aplicado: el modelo tiene %n error. El modelo aplicado antes sigue en uso.</numerusform><numerusform>No aplicado: el modelo tiene %n errores. El modelo aplicado antes sigue en uso.</numerusform></translation>
+        <translation>
+            <numerusform>No aplicado: el modelo tiene %n error. El modelo aplicado antes sigue en uso.</numerusform>
+            <numerusform>No aplicado: el modelo tiene %n errores. El modelo aplicado antes sigue en uso.</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2" />
@@ -5168,12 +5242,18 @@ registro ilegible.
         <location line="-31" />
         <location line="+1" />
         <source>%n error(s)</source>
-        <translation><numerusform>%n error</numerusform><numerusform>%n errores</numerusform></translation>
+        <translation>
+            <numerusform>%n error</numerusform>
+            <numerusform>%n errores</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <location line="+1" />
         <source>%n warning(s)</source>
-        <translation><numerusform>%n advertencia</numerusform><numerusform>%n advertencias</numerusform></translation>
+        <translation>
+            <numerusform>%n advertencia</numerusform>
+            <numerusform>%n advertencias</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -5196,7 +5276,10 @@ registro ilegible.
     <message numerus="yes">
         <location line="+21" />
         <source>The %n view(s) do not draw.</source>
-        <translation><numerusform>La vista no dibuja.</numerusform><numerusform>Las %n vistas no dibujan.</numerusform></translation>
+        <translation>
+            <numerusform>La vista no dibuja.</numerusform>
+            <numerusform>Las %n vistas no dibujan.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -5862,7 +5945,10 @@ registro ilegible.
     <message numerus="yes">
         <location line="+1" />
         <source>%n Screen(s)</source>
-        <translation><numerusform>%n pantalla</numerusform><numerusform>%n pantallas</numerusform></translation>
+        <translation>
+            <numerusform>%n pantalla</numerusform>
+            <numerusform>%n pantallas</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+1" />
@@ -5957,7 +6043,10 @@ registro ilegible.
     <message numerus="yes">
         <location line="-473" />
         <source>%n attempt(s) kept while the trainee records could not be written were added to them.</source>
-        <translation><numerusform>Se agregó a los registros de los aprendices %n intento guardado mientras no se podían escribir.</numerusform><numerusform>Se agregaron a los registros de los aprendices %n intentos guardados mientras no se podían escribir.</numerusform></translation>
+        <translation>
+            <numerusform>Se agregó a los registros de los aprendices %n intento guardado mientras no se podían escribir.</numerusform>
+            <numerusform>Se agregaron a los registros de los aprendices %n intentos guardados mientras no se podían escribir.</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2" />
@@ -6102,7 +6191,10 @@ Use Guardar como para elegir otro lugar.</translation>
     <message numerus="yes">
         <location line="+20" />
         <source>Model applied: %n bodies</source>
-        <translation><numerusform>Modelo aplicado: %n cuerpo</numerusform><numerusform>Modelo aplicado: %n cuerpos</numerusform></translation>
+        <translation>
+            <numerusform>Modelo aplicado: %n cuerpo</numerusform>
+            <numerusform>Modelo aplicado: %n cuerpos</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+28" />
@@ -6112,7 +6204,10 @@ Use Guardar como para elegir otro lugar.</translation>
     <message numerus="yes">
         <location line="+1" />
         <source>real time ×%1, %2 µs/step, %n overrun(s)</source>
-        <translation><numerusform>tiempo real ×%1; %2 µs/paso; %n paso atrasado</numerusform><numerusform>tiempo real ×%1; %2 µs/paso; %n pasos atrasados</numerusform></translation>
+        <translation>
+            <numerusform>tiempo real ×%1; %2 µs/paso; %n paso atrasado</numerusform>
+            <numerusform>tiempo real ×%1; %2 µs/paso; %n pasos atrasados</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+3" />
@@ -6321,7 +6416,10 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
     <message numerus="yes">
         <location line="+83" />
         <source>%n more button(s) of the profile also select this bank</source>
-        <translation><numerusform>%n botón más del perfil también selecciona este banco</numerusform><numerusform>%n botones más del perfil también seleccionan este banco</numerusform></translation>
+        <translation>
+            <numerusform>%n botón más del perfil también selecciona este banco</numerusform>
+            <numerusform>%n botones más del perfil también seleccionan este banco</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+160" />
@@ -6366,7 +6464,10 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
     <message numerus="yes">
         <location line="+79" />
         <source>Remove the bank “%1” and its %n mapping(s)?</source>
-        <translation><numerusform>¿Quitar el banco “%1” y su %n asignación?</numerusform><numerusform>¿Quitar el banco “%1” y sus %n asignaciones?</numerusform></translation>
+        <translation>
+            <numerusform>¿Quitar el banco “%1” y su %n asignación?</numerusform>
+            <numerusform>¿Quitar el banco “%1” y sus %n asignaciones?</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -7096,7 +7197,10 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
     <message numerus="yes">
         <location line="+7" />
         <source>%n graphic(s) on moving bodies of the scene are not drawn.</source>
-        <translation><numerusform>%n gráfico de un cuerpo móvil de la escena no se dibuja.</numerusform><numerusform>%n gráficos de cuerpos móviles de la escena no se dibujan.</numerusform></translation>
+        <translation>
+            <numerusform>%n gráfico de un cuerpo móvil de la escena no se dibuja.</numerusform>
+            <numerusform>%n gráficos de cuerpos móviles de la escena no se dibujan.</numerusform>
+        </translation>
     </message>
 </context>
 <context>

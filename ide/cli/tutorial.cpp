@@ -54,6 +54,19 @@ int usage(const std::string& message)
     return usageError("tutorial", message);
 }
 
+/// How the attempt ended, for a person (the JSON keeps the key).
+std::string endText(const std::string& reason)
+{
+    if (reason == "completed") return trStd("padrob", "every goal done");
+    if (reason == "time-up") return trStd("padrob", "the time ran out");
+    if (reason == "hard-hit") return trStd("padrob", "a hard hit");
+    if (reason == "worker-hit") return trStd("padrob", "a worker was touched");
+    if (reason == "input-ended") return trStd("padrob", "the input ended");
+    if (reason == "solver-error") return trStd("padrob", "the simulation failed");
+    if (reason == "aborted") return trStd("padrob", "stopped");
+    return reason;
+}
+
 void printText(const trainer::Tutorial& t, const trainer::TutorialResult& r, const std::string& lang)
 {
     const trainer::Scoring& sc = t.scoring();
@@ -63,7 +76,7 @@ void printText(const trainer::Tutorial& t, const trainer::TutorialResult& r, con
                       " [" + stars + "] " +
                       fill(trStd("padrob", "score %1/100 (pass mark %2), %3 s, %4/%5 goals, end: %6"),
                            {fixed(r.score, 1), fixed(sc.pass, 0), fixed(r.time, 2), std::to_string(r.goalsDone),
-                            std::to_string(t.spec.goals.size()), r.endReason}) +
+                            std::to_string(t.spec.goals.size()), endText(r.endReason) + " (" + r.endReason + ")"}) +
                       "\n";
     for (const trainer::ScoreItem& i : r.breakdown) {
         std::string measure;

@@ -104,9 +104,15 @@ QString TutorialEvent::text(const Tutorial* tutorial, const std::string& languag
         if (!worker && std::size_t(subject) < tutorial->spec.parts.size())
             d = QString::fromStdString(tutorial->spec.parts[std::size_t(subject)].name.in(language));
     }
+    if (tutorial && kind == Kind::GoalDone) {
+        // the goal as the HUD showed it (its NAME in the language), not its id
+        for (const Goal& g : tutorial->spec.goals) {
+            if (g.id == detail && !g.name.empty()) d = QString::fromStdString(g.name.in(language));
+        }
+    }
     const QString v = shown(value, 2);
     switch (kind) {
-    case Kind::GoalDone: return Tr::tr("Goal \"%1\" done").arg(d);
+    case Kind::GoalDone: return Tr::tr("Goal done: %1").arg(d);
     case Kind::Grasp: return Tr::tr("The load is in the claws");
     case Kind::MissedGrasp: return Tr::tr("The claws closed %1 m away from the grip").arg(v);
     case Kind::Release: return Tr::tr("The load was released");
