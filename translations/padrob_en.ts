@@ -1992,7 +1992,62 @@
         <translation>body %1 %2</translation>
     </message>
     <message>
-        <location line="+607" />
+        <location line="+25" />
+        <source>t=%1 s: %2 welded to %3</source>
+        <translation>t=%1 s: %2 welded to %3</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>t=%1 s: %2 released from %3</source>
+        <translation>t=%1 s: %2 released from %3</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>t=%1 s: the closed loops (closing joints %2) locked up: a singular configuration, the mechanism cannot move on</source>
+        <translation>t=%1 s: the closed loops (closing joints %2) locked up: a singular configuration, the mechanism cannot move on</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>t=%1 s: joint %2 hit its lower limit %3 %4</source>
+        <translation>t=%1 s: joint %2 hit its lower limit %3 %4</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>t=%1 s: joint %2 hit its upper limit %3 %4</source>
+        <translation>t=%1 s: joint %2 hit its upper limit %3 %4</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>t=%1 s: joint %2 left its lower limit %3 %4</source>
+        <translation>t=%1 s: joint %2 left its lower limit %3 %4</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>t=%1 s: joint %2 left its upper limit %3 %4</source>
+        <translation>t=%1 s: joint %2 left its upper limit %3 %4</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>t=%1 s: joint %2 relief valve opened extending at %3 %4</source>
+        <translation>t=%1 s: joint %2 relief valve opened extending at %3 %4</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>t=%1 s: joint %2 relief valve opened retracting at %3 %4</source>
+        <translation>t=%1 s: joint %2 relief valve opened retracting at %3 %4</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>t=%1 s: joint %2 relief valve closed extending</source>
+        <translation>t=%1 s: joint %2 relief valve closed extending</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>t=%1 s: joint %2 relief valve closed retracting</source>
+        <translation>t=%1 s: joint %2 relief valve closed retracting</translation>
+    </message>
+    <message>
+        <location line="+547" />
         <source>the closed loops locked up at t = %1 s (a singular configuration: the loop-closure equations lost rank, so the mechanism cannot move on there); drive it another way or change the geometry</source>
         <translation>the closed loops locked up at t = %1 s (a singular configuration: the loop-closure equations lost rank, so the mechanism cannot move on there); drive it another way or change the geometry</translation>
     </message>

@@ -1992,7 +1992,62 @@
         <translation>cuerpo %1 %2</translation>
     </message>
     <message>
-        <location line="+607" />
+        <location line="+25" />
+        <source>t=%1 s: %2 welded to %3</source>
+        <translation>t=%1 s: %2 soldado a %3</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>t=%1 s: %2 released from %3</source>
+        <translation>t=%1 s: %2 liberado de %3</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>t=%1 s: the closed loops (closing joints %2) locked up: a singular configuration, the mechanism cannot move on</source>
+        <translation>t=%1 s: los lazos cerrados (articulaciones de cierre %2) se trabaron: una configuración singular, el mecanismo no puede seguir moviéndose</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>t=%1 s: joint %2 hit its lower limit %3 %4</source>
+        <translation>t=%1 s: la articulación %2 llegó a su límite inferior %3 %4</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>t=%1 s: joint %2 hit its upper limit %3 %4</source>
+        <translation>t=%1 s: la articulación %2 llegó a su límite superior %3 %4</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>t=%1 s: joint %2 left its lower limit %3 %4</source>
+        <translation>t=%1 s: la articulación %2 dejó su límite inferior %3 %4</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>t=%1 s: joint %2 left its upper limit %3 %4</source>
+        <translation>t=%1 s: la articulación %2 dejó su límite superior %3 %4</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>t=%1 s: joint %2 relief valve opened extending at %3 %4</source>
+        <translation>t=%1 s: articulación %2: la válvula de alivio se abrió al extender, a %3 %4</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>t=%1 s: joint %2 relief valve opened retracting at %3 %4</source>
+        <translation>t=%1 s: articulación %2: la válvula de alivio se abrió al retraer, a %3 %4</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>t=%1 s: joint %2 relief valve closed extending</source>
+        <translation>t=%1 s: articulación %2: la válvula de alivio se cerró al extender</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>t=%1 s: joint %2 relief valve closed retracting</source>
+        <translation>t=%1 s: articulación %2: la válvula de alivio se cerró al retraer</translation>
+    </message>
+    <message>
+        <location line="+547" />
         <source>the closed loops locked up at t = %1 s (a singular configuration: the loop-closure equations lost rank, so the mechanism cannot move on there); drive it another way or change the geometry</source>
         <translation>los lazos cerrados se trabaron en t = %1 s (una configuración singular: las ecuaciones de cierre de los lazos perdieron rango, así que el mecanismo no puede seguir moviéndose desde ahí); accione el mecanismo de otra forma o cambie la geometría</translation>
     </message>

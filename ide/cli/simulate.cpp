@@ -485,7 +485,7 @@ int runSimulate(const std::vector<std::string>& args)
     auto report = [&](bool ok) {
         // whole rows before each event line when both streams go to one terminal
         if (!events.empty() && out.toStdout()) std::fflush(stdout);
-        for (const solver::SimulationEvent& e : events) printErr(e.describe(m) + "\n");
+        for (const solver::SimulationEvent& e : events) printErr(i18n::text(e.describeText(m)).toStdString() + "\n");
         events.clear();
         if (!ok) {
             out.abandon();

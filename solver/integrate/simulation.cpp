@@ -65,30 +65,32 @@ double commandRate(const Model& m, const State& s, int j) { return hydraulicComm
 
 }  // namespace
 
-std::string SimulationEvent::describe(const Model& model) const
+std::string SimulationEvent::describe(const Model& model) const { return describeText(model).english(); }
+
+Text SimulationEvent::describeText(const Model& model) const
 {
     char t0[32];
-    std::snprintf(t0, sizeof t0, "t=%.6f s: ", t);
-    const std::string when = t0;
+    std::snprintf(t0, sizeof t0, "%.6f", t);
     switch (kind) {
-    case Kind::Weld: return when + bodyLabel(model, body2) + " welded to " + bodyLabel(model, body);
-    case Kind::Release: return when + bodyLabel(model, body2) + " released from " + bodyLabel(model, body);
+    case Kind::Weld:
+        return trText("Diagnostics", "t=%1 s: %2 welded to %3").with(t0).with(bodyLabelText(model, body2)).with(bodyLabelText(model, body));
+    case Kind::Release:
+        return trText("Diagnostics", "t=%1 s: %2 released from %3").with(t0).with(bodyLabelText(model, body2)).with(bodyLabelText(model, body));
     case Kind::LoopLocked: {
         std::string joints;
         for (const CutJoint& c : model.cuts) {
             joints += (joints.empty() ? "" : ", ") + std::to_string(c.jointId);
             if (!c.name.empty()) joints += " " + c.name;
         }
-        return when + "the closed loops (closing joints " + joints +
-               ") locked up: a singular configuration, the mechanism cannot move on";
+        return trText("Diagnostics", "t=%1 s: the closed loops (closing joints %2) locked up: a singular "
+                                     "configuration, the mechanism cannot move on").with(t0).with(joints);
     }
     default: break;
     }
-    std::string who = "joint " + std::to_string(model.jointId[joint]);
+    std::string who = std::to_string(model.jointId[joint]);
     if (!model.jointName[joint].empty()) who += " " + model.jointName[joint];
     const char* unit = unitOf(model.jointType[joint]);
     const char* forceUnit = model.jointType[joint] == JointType::Revolute ? "N m" : "N";
-    std::string what;
     // side is on θ; for a T 1 joint whose length shrinks as its angle grows, the
     // lower limit on θ is the upper limit on the length the modeler wrote
     int written = side;
@@ -96,23 +98,27 @@ std::string SimulationEvent::describe(const Model& model) const
         const double limit = side < 0 ? model.lower[joint] : model.upper[joint];
         if (std::isfinite(limit) && model.coordinateRate(joint, limit) < 0) written = -side;
     }
+    const std::string v = fmt(value);
     switch (kind) {
     case Kind::LimitHit:
-        what = std::string("hit its ") + (written < 0 ? "lower" : "upper") + " limit " + fmt(value) + " " + unit;
-        break;
+        return (written < 0 ? trText("Diagnostics", "t=%1 s: joint %2 hit its lower limit %3 %4")
+                            : trText("Diagnostics", "t=%1 s: joint %2 hit its upper limit %3 %4"))
+            .with(t0).with(who).with(v).with(unit);
     case Kind::LimitLeave:
-        what = std::string("left its ") + (written < 0 ? "lower" : "upper") + " limit " + fmt(value) + " " + unit;
-        break;
+        return (written < 0 ? trText("Diagnostics", "t=%1 s: joint %2 left its lower limit %3 %4")
+                            : trText("Diagnostics", "t=%1 s: joint %2 left its upper limit %3 %4"))
+            .with(t0).with(who).with(v).with(unit);
     case Kind::ReliefOpen:
-        what = std::string("relief valve opened ") + (side > 0 ? "extending" : "retracting") + " at " + fmt(value) +
-               " " + forceUnit;
-        break;
+        return (side > 0 ? trText("Diagnostics", "t=%1 s: joint %2 relief valve opened extending at %3 %4")
+                         : trText("Diagnostics", "t=%1 s: joint %2 relief valve opened retracting at %3 %4"))
+            .with(t0).with(who).with(v).with(forceUnit);
     case Kind::ReliefClose:
-        what = std::string("relief valve closed ") + (side > 0 ? "extending" : "retracting");
-        break;
+        return (side > 0 ? trText("Diagnostics", "t=%1 s: joint %2 relief valve closed extending")
+                         : trText("Diagnostics", "t=%1 s: joint %2 relief valve closed retracting"))
+            .with(t0).with(who);
     default: break;
     }
-    return when + who + " " + what;
+    return plainText(t0);
 }
 
 /// The ODE y = [θ; θ̇; servo integral] (dim 3·nb) with the event functions of the

@@ -75,6 +75,8 @@ struct SimulationEvent {
 
     /// One line, e.g. "t=1.2345 s: joint 2 LEVANTE PLUMA hit its upper limit 1.617 m".
     std::string describe(const Model& model) const;
+    /// The same, translatable (describe() is its English).
+    Text describeText(const Model& model) const;
 };
 
 /// The longest adaptive step a Simulation takes unless told otherwise [s].
