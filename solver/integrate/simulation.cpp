@@ -51,8 +51,6 @@ Text bodyLabelText(const Model& m, int b)
     return trText("Diagnostics", "body %1 %2").with(std::to_string(m.bodyId[b])).with(m.bodyName[b]);
 }
 
-std::string bodyLabel(const Model& m, int b) { return bodyLabelText(m, b).english(); }
-
 /// Sets a failure's English `error` and, when asked for, its translatable `errorText`.
 void setError(Text text, std::string& error, Text* errorText)
 {
