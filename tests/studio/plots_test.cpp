@@ -323,7 +323,14 @@ void PlotsTest::followsRunner()
     runner.setCommand(m.jointIndex(3), -1.0);  // and back in
     QTest::qWait(1000);
     runner.pause();
-    QTest::qWait(100);
+    // the last snapshot reaches the panel through the event loop: on a loaded machine
+    // that can take longer than a fixed wait, so wait until the plot holds it
+    const auto lastLift = [&] {
+        panel.refresh();
+        const QLineSeries* s = panel.series(QStringLiteral("q:2"));
+        return s && s->count() > 0 ? s->at(s->count() - 1).y() : -1.0;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(qFuzzyCompare(lastLift(), runner.latest()->q[m.jointIndex(2)]), 5000);
     const int samples = panel.sampleCount();
     qInfo("%d samples over %.2f s simulated", samples, runner.latest()->t);
     QVERIFY(samples > 30);
