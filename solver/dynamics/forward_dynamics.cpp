@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <vector>
 
 namespace solver {
@@ -46,23 +47,34 @@ void forwardDynamics(const Model& model, const State& state, Data& data)
 
 namespace {
 
+/// Body i's spatial inertia about the world origin at the pose data.X_wb[i] (into
+/// data.Ib[i]); returns its centre of mass in the world.
+Vector3d bodyInertia(const Model& model, Data& data, int i)
+{
+    const Eigen::Isometry3d& X = data.X_wb[i];
+    const Matrix3d R = X.linear();
+    const Vector3d com = R * model.com[i] + X.translation();
+    Matrix3d ri;
+    ri.noalias() = R * model.inertia[i];
+    Matrix3d ic;
+    ic.noalias() = ri * R.transpose();
+    data.Ib[i] = rigidInertiaAt(model.mass[i], com, ic);
+    return com;
+}
+
 /// Pass 1: body inertias and bias forces about the world origin; per joint its drive
 /// force and whether its acceleration (prescribed) or its force (tauKnown) is known.
-void bodyTerms(const Model& model, const State& state, Data& data)
+/// Returns the number of free joints (θ̈ unknown).
+int bodyTerms(const Model& model, const State& state, Data& data, bool keepInertias = false)
 {
     const int nb = model.nb;
+    int nFree = 0;
 
     // 1. body inertias and bias forces about the world origin; known θ̈ or τ per joint
     for (int i = 0; i < nb; ++i) {
-        const Eigen::Isometry3d& X = data.X_wb[i];
-        const Matrix3d R = X.linear();
-        const Vector3d o = X.translation();
-        const Vector3d com = R * model.com[i] + o;
-        Matrix3d ri;
-        ri.noalias() = R * model.inertia[i];
-        Matrix3d ic;
-        ic.noalias() = ri * R.transpose();
-        data.Ib[i] = rigidInertiaAt(model.mass[i], com, ic);
+        const Vector3d o = data.X_wb[i].translation();
+        const Vector3d com =
+            keepInertias ? Vector3d(data.X_wb[i].linear() * model.com[i] + o) : bodyInertia(model, data, i);
 
         // p = v ×* I v − fext − gravity (fext is about the body origin o)
         Vector6d& p = data.pb[i];
@@ -72,8 +84,6 @@ void bodyTerms(const Model& model, const State& state, Data& data)
         const Vector3d fo = fe.tail<3>();
         p.head<3>() -= fe.head<3>() + o.cross(fo) + com.cross(fg);
         p.tail<3>() -= fo + fg;
-        data.Ib[i].toMatrix(data.IA[i]);
-        data.pA[i] = p;
 
         // the drive's force along θ; known acceleration or known force
         const CoordinateMap map = coordinateMap(model, i, state.q[i]);
@@ -86,8 +96,10 @@ void bodyTerms(const Model& model, const State& state, Data& data)
             data.tauKnown[i] = 0;
         } else {
             data.tauKnown[i] = data.tauDrive[i] + data.tauExt[i];
+            ++nFree;
         }
     }
+    return nFree;
 }
 
 /// Pass 4: with data.f holding each body's I a + p less the constraint loads on it,
@@ -129,11 +141,29 @@ void constrainedDynamics(const Model& model, const State& state, Data& data);
 
 }  // namespace
 
-void hybridDynamics(const Model& model, const State& state, Data& data)
+namespace {
+
+void hybridDynamicsFrom(const Model& model, const State& state, Data& data, DynamicsOutputs outputs, int nFree);
+
+}  // namespace
+
+void hybridDynamics(const Model& model, const State& state, Data& data, DynamicsOutputs outputs)
 {
     assert(sized(model, state, data));
+    hybridDynamicsFrom(model, state, data, outputs, bodyTerms(model, state, data));
+}
+
+void hybridDynamicsSamePositions(const Model& model, const State& state, Data& data)
+{
+    assert(sized(model, state, data) && !hasConstraints(model, state));
+    hybridDynamicsFrom(model, state, data, DynamicsOutputs::All, bodyTerms(model, state, data, true));
+}
+
+namespace {
+
+void hybridDynamicsFrom(const Model& model, const State& state, Data& data, DynamicsOutputs outputs, int nFree)
+{
     const int nb = model.nb;
-    bodyTerms(model, state, data);
     if (hasConstraints(model, state)) {
         constrainedDynamics(model, state, data);
         return;
@@ -141,9 +171,17 @@ void hybridDynamics(const Model& model, const State& state, Data& data)
     data.constraints.clear();
     data.constraintReactionWorld.clear();
     data.constraintReactionJoint.clear();
+    const bool all = outputs == DynamicsOutputs::All;
+    // every θ̈ known: no articulated inertias; with the forces asked for, the
+    // Newton–Euler passes alone (RNEA)
+    if (nFree == 0 && !all) return;
 
     // 2. articulated-body inertias and bias forces, leaves to root (RBDA table 7.1, §9.2)
-    for (int i = nb - 1; i >= 0; --i) {
+    for (int i = 0; i < nb && nFree > 0; ++i) {
+        data.Ib[i].toMatrix(data.IA[i]);
+        data.pA[i] = data.pb[i];
+    }
+    for (int i = nb - 1; i >= 0 && nFree > 0; --i) {
         const int lam = model.parent[i];
         const Vector6d& s = data.S[i];
         if (!data.prescribed[i]) {
@@ -178,13 +216,79 @@ void hybridDynamics(const Model& model, const State& state, Data& data)
         if (lam >= 0) a += data.a[lam];
         if (!data.prescribed[i]) data.qdd[i] = (data.uA[i] - data.U[i].dot(a)) / data.D[i];
         a += data.S[i] * data.qdd[i];
+        if (!all) continue;
         data.alpha[i] = a.head<3>();
         data.acc[i] = a.tail<3>() + data.alpha[i].cross(data.X_wb[i].translation()) +
                       data.omega[i].cross(data.vel[i]);
         data.f[i] = data.Ib[i] * a + data.pb[i];
     }
 
-    jointForces(model, state, data);
+    if (all) jointForces(model, state, data);
+}
+
+}  // namespace
+
+bool kinematicAccelerations(const Model& model, const State& state, Data& data)
+{
+    if (hasConstraints(model, state)) return false;
+    for (int i = 0; i < model.nb; ++i) {
+        if (!isPrescribed(model, state, i)) return false;
+    }
+    for (int i = 0; i < model.nb; ++i) data.qdd[i] = prescribedAcceleration(model, state, i);
+    return true;
+}
+
+void impulseResponse(const Model& model, const State& state, Data& data, const Eigen::VectorXd& prescribedJump,
+                     const Eigen::VectorXd& freeImpulse, Eigen::VectorXd& dqd, int alsoFree)
+{
+    const int nb = model.nb;
+    assert(prescribedJump.size() == nb && freeImpulse.size() == nb && dqd.size() == nb);
+    for (int i = 0; i < nb; ++i) {
+        bodyInertia(model, data, i);
+        data.Ib[i].toMatrix(data.IA[i]);
+        data.pA[i].setZero();
+        data.prescribed[i] = i != alsoFree && isPrescribed(model, state, i) ? 1 : 0;
+    }
+    // leaves to root: the articulated inertias, and the impulses the prescribed jumps
+    // and the free joints' impulses pass to the parents (no velocity terms, no gravity)
+    for (int i = nb - 1; i >= 0; --i) {
+        const int lam = model.parent[i];
+        const Vector6d& s = data.S[i];
+        if (!data.prescribed[i]) {
+            Vector6d& U = data.U[i];
+            U.noalias() = data.IA[i] * s;
+            const double D = s.dot(U);
+            const double u = freeImpulse[i] - s.dot(data.pA[i]);
+            data.D[i] = D;
+            data.uA[i] = u;
+            if (lam >= 0) {
+                data.pA[lam] += data.pA[i] + (u / D) * U;
+                data.IA[lam] += data.IA[i];
+                data.IA[lam].noalias() -= (U / D) * U.transpose();
+            }
+        } else if (lam >= 0) {
+            data.pA[lam] += data.pA[i];
+            data.pA[lam].noalias() += data.IA[i] * (s * prescribedJump[i]);
+            data.IA[lam] += data.IA[i];
+        }
+    }
+    // root to leaves: the velocity changes
+    for (int i = 0; i < nb; ++i) {
+        const int lam = model.parent[i];
+        Vector6d& dv = data.a[i];
+        if (lam >= 0) {
+            dv = data.a[lam];
+        } else {
+            dv.setZero();
+        }
+        double d = prescribedJump[i];
+        if (!data.prescribed[i]) {
+            d = (data.uA[i] - data.U[i].dot(dv)) / data.D[i];
+            if (!std::isfinite(d)) d = 0;  // a massless subtree: no response
+        }
+        dqd[i] = d;
+        dv += data.S[i] * d;
+    }
 }
 
 namespace {

@@ -46,6 +46,12 @@
 
 namespace solver {
 
+/// What hybridDynamics computes besides θ̈.
+enum class DynamicsOutputs {
+    All,            ///< θ̈, the body accelerations, the joint forces and reactions
+    Accelerations,  ///< θ̈ only (an integrator's stage): no reactions, no body accelerations
+};
+
 /// Sets data.fext and data.tauExt to zero (for callers without applied forces).
 void clearAppliedForces(Data& data);
 
@@ -58,6 +64,35 @@ void forwardDynamics(const Model& model, const State& state, Data& data);
 /// The same without the kinematics: data must hold forwardKinematics of `state`
 /// (e.g. forwardKinematics → applyForces → hybridDynamics, which computes the
 /// kinematics once).
-void hybridDynamics(const Model& model, const State& state, Data& data);
+///
+/// `outputs` = Accelerations leaves data.a/alpha/acc/f, tau, driveForce, limitForce and
+/// the reactions as they were (the constrained, dense path computes them anyway).
+void hybridDynamics(const Model& model, const State& state, Data& data,
+                    DynamicsOutputs outputs = DynamicsOutputs::All);
+
+/// hybridDynamics after a change of θ̇ (or of modes, commands, loads) only: data holds
+/// an evaluation at the same θ, whose body inertias are kept (velocityKinematics, then
+/// applyForces, then this). Without constraints only (the caller checks).
+void hybridDynamicsSamePositions(const Model& model, const State& state, Data& data);
+
+/// When every joint's acceleration is prescribed at `state` and there are no
+/// constraints, θ̈ follows from the drive laws alone (drives.h): writes it into
+/// data.qdd and returns true, without kinematics or dynamics. Otherwise returns false
+/// and changes nothing. (The liner manipulator with every valve closed: the stages of
+/// a step need no dynamics; the forces are found once per step for the events.)
+bool kinematicAccelerations(const Model& model, const State& state, Data& data);
+
+/// The rate change Δθ̇ (dim nb, written into `dqd`) of an unconstrained tree when the
+/// joints whose acceleration is prescribed at `state` jump by `prescribedJump` (read on
+/// those joints only) and the other, free joints receive the generalized impulse
+/// `freeImpulse` (read on the free joints only): M_FF Δθ̇_F = ι_F − M_FP Δθ̇_P, Δθ̇_P =
+/// the jump. The articulated-body algorithm with the velocity terms and gravity left
+/// out (RBDA §9.2 with impulses for forces): O(n), no allocation. Needs data to hold
+/// forwardKinematics of `state`; overwrites data's dynamics scratch (IA, pA, U, D, uA,
+/// a, Ib, prescribed). No constraints: the caller checks.
+/// `alsoFree` (≥ 0): that joint counts as free even where prescribed (a joint taking
+/// a limit's impulse).
+void impulseResponse(const Model& model, const State& state, Data& data, const Eigen::VectorXd& prescribedJump,
+                     const Eigen::VectorXd& freeImpulse, Eigen::VectorXd& dqd, int alsoFree = -1);
 
 }  // namespace solver

@@ -67,12 +67,6 @@ struct LinearSolverDeleter {
 using LinearSolverPtr =
     std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>, LinearSolverDeleter>;
 
-struct ButcherTableDeleter {
-    void operator()(ARKodeButcherTable b) const { ARKodeButcherTable_Free(b); }
-};
-using ButcherTablePtr =
-    std::unique_ptr<std::remove_pointer_t<ARKodeButcherTable>, ButcherTableDeleter>;
-
 struct ArkodeMemDeleter {
     void operator()(void* mem) const { ARKStepFree(&mem); }
 };
@@ -134,8 +128,7 @@ struct Callbacks {
     const char* (*lastError)(void* userData);
 };
 
-/// ARKODE ARKStep, explicit: classic RK4 with a fixed step, or Dormand–Prince 5(4)
-/// with error control.
+/// ARKODE ARKStep, explicit: Dormand–Prince 5(4) with error control.
 class ArkodeBackend final : public Backend {
 public:
     ArkodeBackend(SUNContext ctx, N_Vector y, const IntegratorOptions& opt, std::vector<int> dirs,
@@ -148,24 +141,9 @@ public:
         check(ARKStepSetErrHandlerFn(mem, cb.errorHandler, cb.userData), "ARKStepSetErrHandlerFn");
         check(ARKStepSetUserData(mem, cb.userData), "ARKStepSetUserData");
         check(ARKStepSetMaxNumSteps(mem, opt.maxSteps), "ARKStepSetMaxNumSteps");
-        if (opt.method == IntegrationMethod::Rk4Fixed) {
-            // the classic RK4 (not among 6.4's built-in tables); no embedding
-            sunrealtype c[4] = {0.0, 0.5, 0.5, 1.0};
-            sunrealtype a[16] = {0.0, 0.0, 0.0, 0.0,  //
-                                 0.5, 0.0, 0.0, 0.0,  //
-                                 0.0, 0.5, 0.0, 0.0,  //
-                                 0.0, 0.0, 1.0, 0.0};
-            sunrealtype b[4] = {1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0};
-            const ButcherTablePtr rk4(ARKodeButcherTable_Create(4, 4, 0, c, a, b, nullptr));
-            if (!rk4) throw std::runtime_error("ARKodeButcherTable_Create failed");
-            check(ARKStepSetTables(mem, 4, 0, nullptr, rk4.get()), "ARKStepSetTables");  // copies
-            check(ARKStepSetFixedStep(mem, opt.step), "ARKStepSetFixedStep");
-        } else {
-            check(ARKStepSStolerances(mem, opt.rtol, opt.atol), "ARKStepSStolerances");
-            if (opt.maxStep > 0) check(ARKStepSetMaxStep(mem, opt.maxStep), "ARKStepSetMaxStep");
-            check(ARKStepSetTableNum(mem, ARKODE_DIRK_NONE, ARKODE_DORMAND_PRINCE_7_4_5),
-                  "ARKStepSetTableNum");
-        }
+        check(ARKStepSStolerances(mem, opt.rtol, opt.atol), "ARKStepSStolerances");
+        if (opt.maxStep > 0) check(ARKStepSetMaxStep(mem, opt.maxStep), "ARKStepSetMaxStep");
+        check(ARKStepSetTableNum(mem, ARKODE_DIRK_NONE, ARKODE_DORMAND_PRINCE_7_4_5), "ARKStepSetTableNum");
         if (!dirs.empty()) {
             check(ARKStepRootInit(mem, static_cast<int>(dirs.size()), cb.roots), "ARKStepRootInit");
             check(ARKStepSetRootDirection(mem, dirs.data()), "ARKStepSetRootDirection");
@@ -300,6 +278,16 @@ public:
             dirs[static_cast<std::size_t>(i)] = d > 0 ? 1 : (d < 0 ? -1 : 0);
         }
 
+        m_dirs = dirs;
+        m_endEvaluation = system.evaluateAtStepEnds();
+        if (m_options.method == IntegrationMethod::Rk4Fixed) {
+            // the real-time integrator is written out here (see Rk4 below): no SUNDIALS
+            for (std::vector<double>* v : {&m_yt, &m_ya, &m_fa, &m_yb, &m_fb, &m_k2, &m_k3, &m_k4, &m_stage, &m_yi})
+                v->assign(static_cast<std::size_t>(m_n), 0.0);
+            for (std::vector<double>* v : {&m_gt, &m_gb, &m_glo, &m_ghi, &m_gmid})
+                v->assign(static_cast<std::size_t>(m_nroots), 0.0);
+            return;
+        }
         m_ctx = makeContext();
         m_y.reset(N_VNew_Serial(m_n, m_ctx.get()));
         if (!m_y) throw std::runtime_error("N_VNew_Serial failed");
@@ -315,9 +303,13 @@ public:
         }
     }
 
-    void reset(double t0, const double* y0)
+    void reset(double t0, const double* y0, const double* ydot0, const double* g0)
     {
         if (!std::isfinite(t0)) throw std::invalid_argument("Integrator::reset: t0 is not finite");
+        if (!m_backend) {
+            rk4Reset(t0, y0, ydot0, g0);
+            return;
+        }
         std::copy(y0, y0 + m_n, N_VGetArrayPointer(m_y.get()));
         m_sundialsMessage[0] = '\0';
         const int flag = m_backend->reinit(t0, m_y.get());
@@ -345,7 +337,6 @@ public:
             throw std::invalid_argument("Integrator::advanceTo: tout " + formatTime(tout) +
                                         " is behind the current time " + formatTime(m_t));
         }
-        double* yv = N_VGetArrayPointer(m_y.get());
         AdvanceResult r;
         if (m_failed) {
             r.status = AdvanceStatus::Failed;
@@ -356,6 +347,8 @@ public:
             r.failureTime = m_failureTime;
             return r;
         }
+        if (!m_backend) return rk4Advance(tout, y);
+        double* yv = N_VGetArrayPointer(m_y.get());
         // a step of a few ulps is refused by SUNDIALS (TOO_CLOSE); it changes nothing
         if (tout - m_t <= 4 * DBL_EPSILON * std::max(std::abs(tout), std::abs(m_t))) {
             m_t = tout;
@@ -382,7 +375,7 @@ public:
             // y and time() stay those of the previous return: on failure ARKODE
             // reports the failing stage's time with the state from the step's start
             m_failed = true;
-            m_failText = failureMessage(flag, tret);
+            m_failText = failureMessage(m_backend->flagName(flag), isUserFunctionFailure(flag), tret);
             m_failMessage = m_failText.english();
             m_badComponent = isUserFunctionFailure(flag) ? m_failure.component : -1;
             m_failureTime = std::max(tret, m_t);
@@ -460,10 +453,10 @@ private:
 
     /// Why the last step failed: the flag's name and time, the cause when it was
     /// OdeSystem's, and SUNDIALS' own message (English, plain) in brackets.
-    Text failureMessage(int flag, double tret) const
+    Text failureMessage(const std::string& name, bool userFunctionFailure, double tret) const
     {
         Text cause;
-        if (isUserFunctionFailure(flag)) {
+        if (userFunctionFailure) {
             const Failure& f = m_failure;
             const std::string at = formatTime(f.t);
             char value[40];
@@ -496,7 +489,7 @@ private:
             case FailureKind::None: break;
             }
         }
-        const std::string name = m_backend->flagName(flag), when = formatTime(tret);
+        const std::string when = formatTime(tret);
         const bool sundials = m_sundialsMessage[0] != '\0';
         if (cause.empty()) {
             if (!sundials) return trText("Diagnostics", "%1 at t = %2 s").with(name).with(when);
@@ -516,54 +509,366 @@ private:
     // then creeps towards that time until mxstep (measured: 276 000 evaluations and
     // CV_TOO_MUCH_WORK instead of the cause).
 
+    /// f(t, y) into ydot, checked; false (with m_failure set) on any failure.
+    bool callRhs(double t, const double* y, double* ydot)
+    {
+        ++m_stats.rhsEvals;
+        bool ok = false;
+        try {
+            ok = m_system.rhs(t, y, ydot);
+        } catch (...) {
+            recordFailure(FailureKind::RhsThrew, t);
+            return false;
+        }
+        if (!ok) {
+            recordFailure(FailureKind::RhsFalse, t);
+            return false;
+        }
+        return finiteRhs(t, ydot);
+    }
+
+    bool finiteRhs(double t, const double* ydot)
+    {
+        for (int i = 0; i < m_n; ++i) {
+            if (!std::isfinite(ydot[i])) {
+                recordFailure(FailureKind::RhsNonFinite, t, i, ydot[i]);
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /// g(t, y) into g, checked; false (with m_failure set) on any failure.
+    bool callRoots(double t, const double* y, double* g)
+    {
+        ++m_stats.rootEvals;
+        bool ok = false;
+        try {
+            ok = m_system.roots(t, y, g);
+        } catch (...) {
+            recordFailure(FailureKind::RootsThrew, t);
+            return false;
+        }
+        if (!ok) {
+            recordFailure(FailureKind::RootsFalse, t);
+            return false;
+        }
+        return finiteRoots(t, g);
+    }
+
+    bool finiteRoots(double t, const double* g)
+    {
+        for (int i = 0; i < m_nroots; ++i) {
+            if (!std::isfinite(g[i])) {
+                recordFailure(FailureKind::RootsNonFinite, t, i, g[i]);
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /// f and g at one state (OdeSystem::rhsAndRoots), checked.
+    bool callRhsAndRoots(double t, const double* y, double* ydot, double* g)
+    {
+        ++m_stats.rhsEvals;
+        if (m_nroots > 0) ++m_stats.rootEvals;
+        bool ok = false;
+        try {
+            ok = m_system.rhsAndRoots(t, y, ydot, g);
+        } catch (...) {
+            recordFailure(FailureKind::RhsThrew, t);
+            return false;
+        }
+        if (!ok) {
+            recordFailure(FailureKind::RhsFalse, t);
+            return false;
+        }
+        return finiteRhs(t, ydot) && finiteRoots(t, g);
+    }
+
     static int rhsTrampoline(sunrealtype t, N_Vector y, N_Vector ydot, void* userData)
     {
         auto* self = static_cast<Impl*>(userData);
-        ++self->m_stats.rhsEvals;
-        const double* yv = N_VGetArrayPointer(y);
-        double* yd = N_VGetArrayPointer(ydot);
-        bool ok = false;
-        try {
-            ok = self->m_system.rhs(t, yv, yd);
-        } catch (...) {
-            self->recordFailure(FailureKind::RhsThrew, t);
-            return -1;
-        }
-        if (!ok) {
-            self->recordFailure(FailureKind::RhsFalse, t);
-            return -1;
-        }
-        for (int i = 0; i < self->m_n; ++i) {
-            if (!std::isfinite(yd[i])) {
-                self->recordFailure(FailureKind::RhsNonFinite, t, i, yd[i]);
-                return -1;
-            }
-        }
-        return 0;
+        return self->callRhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot)) ? 0 : -1;
     }
 
     static int rootsTrampoline(sunrealtype t, N_Vector y, sunrealtype* g, void* userData)
     {
         auto* self = static_cast<Impl*>(userData);
-        ++self->m_stats.rootEvals;
-        bool ok = false;
-        try {
-            ok = self->m_system.roots(t, N_VGetArrayPointer(y), g);
-        } catch (...) {
-            self->recordFailure(FailureKind::RootsThrew, t);
-            return -1;
+        return self->callRoots(t, N_VGetArrayPointer(y), g) ? 0 : -1;
+    }
+
+    // ---- RK4 ------------------------------------------------------------------------
+    // The classic four-stage Runge–Kutta method with a fixed step, written out: for the
+    // real-time step of a machine of a few bodies ARKODE's general machinery (vector
+    // operations through function tables, its root-finding and interpolation
+    // bookkeeping, the extra evaluations around a reset) cost as much as the dynamics
+    // (docs/performance.md). The same behaviour as the ARKODE version it replaces:
+    //   - a step of options.step, shortened to end exactly at tout;
+    //   - events: g is evaluated at every step's end (together with f there, which is
+    //     the next step's first stage); a sign change in the allowed direction is
+    //     located by the Illinois method on the step's cubic Hermite interpolant (as
+    //     SUNDIALS does), to 100 ulps of t; the state there is returned with the
+    //     components that fired. The step already taken is kept: the next call goes on
+    //     from the root (further roots in the same step, or the interpolant up to an
+    //     earlier tout) without changing the grid of steps;
+    //   - a g_i exactly zero at the start of an interval does not fire until it has
+    //     left zero (a root just returned is not returned again).
+    // After reset(t, y, f, g) with f and g given, the first step needs no evaluation at
+    // its start: 3 evaluations of f and one of f and g together per step.
+
+    void rk4Reset(double t0, const double* y0, const double* ydot0, const double* g0)
+    {
+        std::copy(y0, y0 + m_n, m_ya.begin());
+        std::copy(y0, y0 + m_n, m_yt.begin());
+        m_ta = t0;
+        m_t = t0;
+        m_haveFa = ydot0 != nullptr;
+        if (m_haveFa) std::copy(ydot0, ydot0 + m_n, m_fa.begin());
+        m_haveGt = g0 != nullptr && m_nroots > 0;
+        if (m_haveGt) std::copy(g0, g0 + m_nroots, m_gt.begin());
+        m_pending = false;
+        m_initialised = true;
+        m_failed = false;
+        m_failMessage.clear();
+        m_failText = {};
+        m_badComponent = -1;
+        std::fill(m_rootInfo.begin(), m_rootInfo.end(), 0);
+        ++m_stats.resets;
+    }
+
+    /// The cubic Hermite interpolant of the pending step [m_ta, m_tb] at t, into out.
+    void hermite(double t, double* out) const
+    {
+        const double h = m_tb - m_ta;
+        const double s = (t - m_ta) / h;
+        const double s2 = s * s, s3 = s2 * s;
+        const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s;
+        const double h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
+        for (int i = 0; i < m_n; ++i) {
+            out[i] = h00 * m_ya[i] + h10 * h * m_fa[i] + h01 * m_yb[i] + h11 * h * m_fb[i];
         }
-        if (!ok) {
-            self->recordFailure(FailureKind::RootsFalse, t);
-            return -1;
+        if (t == m_tb) std::copy(m_yb.begin(), m_yb.end(), out);
+        if (t == m_ta) std::copy(m_ya.begin(), m_ya.end(), out);
+    }
+
+    /// Did g_i cross zero from lo to hi in the direction allowed? +1 rising, −1 falling, 0 not.
+    int crossing(int i, double lo, double hi) const
+    {
+        int c = 0;
+        if (lo < 0 && hi >= 0) c = +1;
+        if (lo > 0 && hi <= 0) c = -1;
+        const int dir = m_dirs[static_cast<std::size_t>(i)];
+        return dir == 0 || dir == c ? c : 0;
+    }
+
+    bool anyCrossing(const std::vector<double>& lo, const std::vector<double>& hi) const
+    {
+        for (int i = 0; i < m_nroots; ++i) {
+            if (crossing(i, lo[i], hi[i]) != 0) return true;
         }
-        for (int i = 0; i < self->m_nroots; ++i) {
-            if (!std::isfinite(g[i])) {
-                self->recordFailure(FailureKind::RootsNonFinite, t, i, g[i]);
-                return -1;
+        return false;
+    }
+
+    /// Fails the call: the message, the time, the component; y and time() untouched.
+    AdvanceResult rk4Fail(const char* name, bool userFunction, double when)
+    {
+        m_t = m_callStart;  // time() stays that of the last return (the steps taken are void)
+        m_failed = true;
+        m_failText = failureMessage(name, userFunction, when);
+        m_failMessage = m_failText.english();
+        m_badComponent = userFunction ? m_failure.component : -1;
+        m_failureTime = std::max(when, m_t);
+        AdvanceResult r;
+        r.status = AdvanceStatus::Failed;
+        r.t = m_t;
+        r.message = m_failMessage;
+        r.messageText = m_failText;
+        r.badComponent = m_badComponent;
+        r.failureTime = m_failureTime;
+        return r;
+    }
+
+    AdvanceResult rk4UserFailure()
+    {
+        const bool roots = m_failure.kind == FailureKind::RootsFalse || m_failure.kind == FailureKind::RootsNonFinite ||
+                           m_failure.kind == FailureKind::RootsThrew;
+        return rk4Fail(roots ? "RK4_RTFUNC_FAIL" : "RK4_RHSFUNC_FAIL", true, m_failure.t);
+    }
+
+    AdvanceResult rk4Advance(double tout, double* y)
+    {
+        AdvanceResult r;
+        // a step of a few ulps changes nothing
+        if (tout - m_t <= 4 * DBL_EPSILON * std::max(std::abs(tout), std::abs(m_t))) {
+            m_t = tout;
+            r.t = tout;
+            std::copy(m_yt.begin(), m_yt.end(), y);
+            return r;
+        }
+        m_failure = {};
+        std::fill(m_rootInfo.begin(), m_rootInfo.end(), 0);
+        m_callStart = m_t;
+        long steps = 0;
+        while (true) {
+            if (!m_pending) {
+                // a new step from (m_ta, m_ya) = (m_t, m_yt)
+                if (steps >= m_options.maxSteps) {
+                    return rk4Fail("RK4_TOO_MUCH_WORK", false, m_ta);
+                }
+                double h = m_options.step;
+                double tb = m_ta + h;
+                if (tb >= tout - 4 * DBL_EPSILON * std::abs(tout)) {
+                    tb = tout;
+                    h = tout - m_ta;
+                }
+                if (!m_haveFa || (m_nroots > 0 && !m_haveGt)) {
+                    const bool ok = m_nroots > 0 ? callRhsAndRoots(m_ta, m_ya.data(), m_fa.data(), m_gt.data())
+                                                 : callRhs(m_ta, m_ya.data(), m_fa.data());
+                    if (!ok) return rk4UserFailure();
+                    m_haveFa = true;
+                    m_haveGt = m_nroots > 0;
+                }
+                const double* ya = m_ya.data();
+                const double* k1 = m_fa.data();
+                double* st = m_stage.data();
+                for (int i = 0; i < m_n; ++i) st[i] = ya[i] + 0.5 * h * k1[i];
+                if (!callRhs(m_ta + 0.5 * h, st, m_k2.data())) return rk4UserFailure();
+                const double* k2 = m_k2.data();
+                for (int i = 0; i < m_n; ++i) st[i] = ya[i] + 0.5 * h * k2[i];
+                if (!callRhs(m_ta + 0.5 * h, st, m_k3.data())) return rk4UserFailure();
+                const double* k3 = m_k3.data();
+                for (int i = 0; i < m_n; ++i) st[i] = ya[i] + h * k3[i];
+                if (!callRhs(tb, st, m_k4.data())) return rk4UserFailure();
+                const double* k4 = m_k4.data();
+                for (int i = 0; i < m_n; ++i) m_yb[i] = ya[i] + h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+                m_tb = tb;
+                ++steps;
+                ++m_stats.steps;
+                // f there (the next step's first stage) with g, when there are events
+                m_haveFb = false;
+                if (m_nroots > 0 || m_endEvaluation) {
+                    if (!callRhsAndRoots(tb, m_yb.data(), m_fb.data(), m_gb.data())) return rk4UserFailure();
+                    m_haveFb = true;
+                }
+                m_pending = true;
+            }
+
+            // the pending step [m_ta, m_tb], returned up to m_t (g there: m_gt)
+            const double tEnd = std::min(m_tb, tout);
+            if (m_nroots > 0) {
+                if (tEnd == m_tb) {
+                    m_ghi = m_gb;
+                } else {
+                    if (!ensureFb()) return rk4UserFailure();
+                    hermite(tEnd, m_yi.data());
+                    if (!callRoots(tEnd, m_yi.data(), m_ghi.data())) return rk4UserFailure();
+                }
+                if (anyCrossing(m_gt, m_ghi)) {
+                    if (!ensureFb()) return rk4UserFailure();
+                    return rk4Root(tEnd, y);
+                }
+            }
+            if (tEnd < m_tb) {
+                // tout inside the step (after a root): the interpolant there
+                if (!ensureFb()) return rk4UserFailure();
+                hermite(tout, m_yt.data());
+                if (m_nroots > 0) m_gt = m_ghi;
+                m_t = tout;
+                r.t = tout;
+                std::copy(m_yt.begin(), m_yt.end(), y);
+                return r;
+            }
+            // the step is done: the next one starts at its end
+            m_ta = m_tb;
+            m_t = m_tb;
+            std::swap(m_ya, m_yb);
+            m_yt = m_ya;
+            m_haveFa = m_haveFb;
+            if (m_haveFa) std::swap(m_fa, m_fb);
+            if (m_nroots > 0) m_gt = m_gb;
+            m_haveGt = m_nroots > 0;
+            m_pending = false;
+            if (m_tb == tout) {
+                r.t = tout;
+                std::copy(m_yt.begin(), m_yt.end(), y);
+                return r;
             }
         }
-        return 0;
+    }
+
+    /// f at the pending step's end, for the interpolant (evaluated when not yet known).
+    bool ensureFb()
+    {
+        if (m_haveFb) return true;
+        if (!callRhs(m_tb, m_yb.data(), m_fb.data())) return false;
+        m_haveFb = true;
+        return true;
+    }
+
+    /// A root of g between m_t (g = m_gt) and tHi (g = m_ghi) on the interpolant: the
+    /// Illinois method (SUNDIALS' arkRootfind/cvRootfind), to 100 ulps of t.
+    AdvanceResult rk4Root(double tHi, double* y)
+    {
+        double tlo = m_t, thi = tHi;
+        m_glo = m_gt;
+        const double ttol = 100 * DBL_EPSILON * (std::abs(m_tb) + std::abs(m_tb - m_ta));
+        double alpha = 1;
+        int sidePrev = 0;
+        for (int iter = 0; iter < 200 && thi - tlo > ttol; ++iter) {
+            // the component whose (secant) root comes first
+            int imax = -1;
+            double best = -1;
+            for (int i = 0; i < m_nroots; ++i) {
+                if (crossing(i, m_glo[i], m_ghi[i]) == 0) continue;
+                const double frac = std::abs(m_ghi[i] / (m_ghi[i] - alpha * m_glo[i]));
+                if (frac > best) {
+                    best = frac;
+                    imax = i;
+                }
+            }
+            double tmid = thi - (thi - tlo) * m_ghi[imax] / (m_ghi[imax] - alpha * m_glo[imax]);
+            if (!(tmid > tlo + 0.5 * ttol)) tmid = tlo + 0.5 * ttol;
+            if (!(tmid < thi - 0.5 * ttol)) tmid = thi - 0.5 * ttol;
+            hermite(tmid, m_yi.data());
+            if (!callRoots(tmid, m_yi.data(), m_gmid.data())) return rk4UserFailure();
+            int side = 0;
+            if (anyCrossing(m_glo, m_gmid)) {
+                thi = tmid;
+                m_ghi = m_gmid;
+                side = 1;
+            } else {
+                tlo = tmid;
+                m_glo = m_gmid;
+                side = 2;
+            }
+            if (side == sidePrev) {
+                alpha = side == 2 ? alpha * 2 : alpha * 0.5;
+            } else {
+                alpha = 1;
+            }
+            sidePrev = side;
+        }
+        for (int i = 0; i < m_nroots; ++i) m_rootInfo[static_cast<std::size_t>(i)] = crossing(i, m_glo[i], m_ghi[i]);
+        hermite(thi, m_yt.data());
+        m_gt = m_ghi;
+        m_t = thi;
+        if (thi == m_tb) {
+            // the root is the step's end: the step is done there
+            m_ta = m_tb;
+            std::swap(m_ya, m_yb);
+            m_haveFa = m_haveFb;
+            if (m_haveFa) std::swap(m_fa, m_fb);
+            m_haveGt = true;
+            m_pending = false;
+        }
+        ++m_stats.rootReturns;
+        AdvanceResult r;
+        r.status = AdvanceStatus::Root;
+        r.t = thi;
+        r.rootsFired = std::span<const int>(m_rootInfo);
+        std::copy(m_yt.begin(), m_yt.end(), y);
+        return r;
     }
 
     /// Keeps the last error message instead of printing it; warnings are dropped.
@@ -585,6 +890,16 @@ private:
     IntegratorOptions m_options;
     int m_n;
     int m_nroots;
+    std::vector<int> m_dirs;  ///< per event function: +1 rising only, −1 falling only, 0 both
+
+    // RK4 (no SUNDIALS): the state at m_t; the step [m_ta, m_tb] (pending: taken, and
+    // returned only up to m_t); its ends' states and derivatives; g at m_t and at m_tb
+    std::vector<double> m_yt, m_ya, m_fa, m_yb, m_fb, m_k2, m_k3, m_k4, m_stage, m_yi;
+    std::vector<double> m_gt, m_gb, m_glo, m_ghi, m_gmid;
+    double m_ta = 0, m_tb = 0;
+    double m_callStart = 0;  ///< m_t when advanceTo() was called
+    bool m_haveFa = false, m_haveFb = false, m_haveGt = false, m_pending = false;
+    bool m_endEvaluation = false;  ///< OdeSystem::evaluateAtStepEnds()
     IntegratorStats m_stats;
     std::vector<int> m_rootInfo;  ///< dim m_nroots; what AdvanceResult::rootsFired views
 
@@ -614,9 +929,9 @@ Integrator::~Integrator() = default;
 Integrator::Integrator(Integrator&&) noexcept = default;
 Integrator& Integrator::operator=(Integrator&&) noexcept = default;
 
-void Integrator::reset(double t0, const double* y0)
+void Integrator::reset(double t0, const double* y0, const double* ydot0, const double* g0)
 {
-    m_impl->reset(t0, y0);
+    m_impl->reset(t0, y0, ydot0, g0);
 }
 AdvanceResult Integrator::advanceTo(double tout, double* y)
 {

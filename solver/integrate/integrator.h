@@ -6,8 +6,13 @@
 //
 // Methods (IntegrationMethod):
 //   Rk4Fixed       the real-time integrator: classic 4-stage Runge–Kutta with a
-//                  fixed step (ARKODE ARKStep, explicit, custom Butcher table):
-//                  4 evaluations of f per step, 5 when reset() every step.
+//                  fixed step, written out in integrator.cpp (no SUNDIALS: its
+//                  general machinery cost as much as a small machine's dynamics;
+//                  docs/performance.md), with the same events as below (Illinois on
+//                  the step's cubic Hermite interpolant). 4 evaluations of f per
+//                  step, f and g evaluated together at the step's end when there are
+//                  events (OdeSystem::rhsAndRoots), 3 more per step when reset() is
+//                  given f and g.
 //   Adaptive       the accuracy integrator for the (non-stiff) multibody equations:
 //                  ARKODE ARKStep explicit, Dormand–Prince 5(4), error-controlled
 //                  by rtol/atol. A one-step method restarts for free after an event
@@ -68,6 +73,19 @@ public:
         (void)g;
         return true;
     }
+
+    /// f and g at one state, for a system that computes both from the same work (the
+    /// RK4 integrator asks for both at every step's end). The default calls rhs, then roots.
+    virtual bool rhsAndRoots(double t, const double* y, double* ydot, double* g)
+    {
+        return rhs(t, y, ydot) && roots(t, y, g);
+    }
+
+    /// True when the RK4 integrator should evaluate f at every step's end through
+    /// rhsAndRoots even without event functions (a system that keeps that evaluation for
+    /// its own use, as Simulation does for its outputs). It is then also the next step's
+    /// first stage.
+    virtual bool evaluateAtStepEnds() const { return false; }
 
     /// Which crossings of g_i to report: +1 only rising (g_i goes from − to +),
     /// −1 only falling, 0 both (the default). Read once, by the Integrator constructor.
@@ -153,7 +171,11 @@ public:
     /// (see top of file). Clears a previous failure. Cheap for Rk4Fixed and Adaptive
     /// (one f evaluation); AdaptiveStiff restarts its multistep history. A y0 that is
     /// not finite is not checked here: the next advanceTo() fails.
-    void reset(double t0, const double* y0);
+    ///
+    /// `ydot0` and `g0`, when given, are f(t0, y0) and g(t0, y0) (dim size() and
+    /// rootCount()), which the caller has already computed: RK4 takes them instead of
+    /// evaluating them again; the SUNDIALS methods ignore them.
+    void reset(double t0, const double* y0, const double* ydot0 = nullptr, const double* g0 = nullptr);
 
     /// Integrates from the current time to tout [s] (>= time(), finite), stopping
     /// exactly at tout (never stepping past it, so inputs read per output step are

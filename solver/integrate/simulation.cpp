@@ -140,25 +140,58 @@ public:
     int size() const override { return 3 * m_model.nb; }
     int rootCount() const override { return m_needRoots ? kRootsPerJoint * m_model.nb + 1 : 0; }
     int rootDirection(int) const override { return -1; }
+    bool evaluateAtStepEnds() const override { return true; }  // the outputs (takeEvaluation)
 
+    /// An integrator's stage: θ̈ only (no reactions); with every joint's acceleration
+    /// prescribed, from the drive laws alone.
     bool rhs(double t, const double* y, double* ydot) override
     {
         load(t, y);
-        evaluateAll(m_model, m_work, m_data);
-        const int nb = m_model.nb;
-        for (int j = 0; j < nb; ++j) {
-            ydot[j] = m_work.qd[j];
-            ydot[nb + j] = m_data.qdd[j];
-            ydot[2 * nb + j] = servoError(m_model, m_work, j);
+        m_fullValid = false;
+        if (!kinematicAccelerations(m_model, m_work, m_data)) {
+            forwardKinematics(m_model, m_work, m_data);
+            applyForces(m_model, m_work, m_data);
+            hybridDynamics(m_model, m_work, m_data, DynamicsOutputs::Accelerations);
         }
+        derivative(m_model, m_work, m_data, ydot);
         return true;
     }
 
     bool roots(double t, const double* y, double* g) override
     {
-        load(t, y);
-        evaluateAll(m_model, m_work, m_data);
+        full(t, y);
         eventFunctions(m_model, m_work, m_data, m_limits, expectedRank, g);
+        return true;
+    }
+
+    bool rhsAndRoots(double t, const double* y, double* ydot, double* g) override
+    {
+        full(t, y);
+        derivative(m_model, m_work, m_data, ydot);
+        if (rootCount() > 0) eventFunctions(m_model, m_work, m_data, m_limits, expectedRank, g);
+        return true;
+    }
+
+    /// y' at a state whose θ̈ `data` holds.
+    static void derivative(const Model& model, const State& s, const Data& data, double* ydot)
+    {
+        const int nb = model.nb;
+        for (int j = 0; j < nb; ++j) {
+            ydot[j] = s.qd[j];
+            ydot[nb + j] = data.qdd[j];
+            ydot[2 * nb + j] = servoError(model, s, j);
+        }
+    }
+
+    /// Hands over the whole evaluation (kinematics, dynamics, reactions) of the state
+    /// (t, y) when the last thing this system did was to evaluate exactly there (the
+    /// RK4 step's end), swapping it into `out`; false otherwise.
+    bool takeEvaluation(double t, const double* y, Data& out)
+    {
+        if (!m_fullValid || t != m_fullT) return false;
+        if (!std::equal(y, y + size(), m_fullY.begin())) return false;
+        std::swap(out, m_data);
+        m_fullValid = false;
         return true;
     }
 
@@ -225,6 +258,19 @@ private:
     Data m_data;
     bool m_limits;
     bool m_needRoots = false;
+    // the last whole evaluation (roots, rhsAndRoots) and where it was
+    bool m_fullValid = false;
+    double m_fullT = 0;
+    std::vector<double> m_fullY = std::vector<double>(static_cast<std::size_t>(3 * m_model.nb), 0.0);
+
+    void full(double t, const double* y)
+    {
+        load(t, y);
+        evaluateAll(m_model, m_work, m_data);
+        m_fullValid = true;
+        m_fullT = t;
+        std::copy(y, y + size(), m_fullY.begin());
+    }
 
     void load(double t, const double* y)
     {
@@ -269,6 +315,12 @@ Simulation::Simulation(std::shared_ptr<const Model> model, const SimulationOptio
       m_data(*m_model),
       m_y(static_cast<std::size_t>(3 * m_model->nb), 0.0)
 {
+    const auto nb = static_cast<std::size_t>(m_model->nb);
+    m_g.assign(kRootsPerJoint * nb + 1, 0.0);
+    m_fired.assign(m_g.size(), 0);
+    m_ydot.assign(3 * nb, 0.0);
+    for (Eigen::VectorXd* v : {&m_qdBefore, &m_jump, &m_impulse, &m_dqd}) v->setZero(m_model->nb);
+    m_positionsAt.setConstant(m_model->nb, std::numeric_limits<double>::quiet_NaN());  // none yet
     if (!m_options.limits) {
         for (LimitState& l : m_state.limit) l = LimitState::Free;
     }
@@ -328,7 +380,20 @@ void Simulation::setInitial(int joint, double theta, double thetaDot)
     evaluate();
 }
 
-void Simulation::evaluate() { evaluateAll(*m_model, m_state, m_data); }
+void Simulation::evaluate()
+{
+    const Model& m = *m_model;
+    // at the positions m_data was last evaluated at (the rules after a new command only
+    // change rates) the position terms are kept: kinematics, body inertias
+    if (!hasConstraints(m, m_state) && m_positionsAt == m_state.q) {
+        velocityKinematics(m, m_state.qd, m_data);
+        applyForces(m, m_state, m_data);
+        hybridDynamicsSamePositions(m, m_state, m_data);
+    } else {
+        evaluateAll(m, m_state, m_data);
+    }
+    m_positionsAt = m_state.q;
+}
 
 void Simulation::packState()
 {
@@ -476,18 +541,33 @@ void Simulation::prescribeRates()
     // the prescribed joints take their rates at once; the free joints receive the
     // impulse that this takes (momentum along the free coordinates is conserved):
     // M_FF Δθ̇_F = −M_FP Δθ̇_P
-    Eigen::VectorXd jump = Eigen::VectorXd::Zero(m.nb);
-    std::vector<int> free;
-    bool any = false;
+    Eigen::VectorXd& jump = m_jump;
+    bool any = false, anyFree = false;
     for (int j = 0; j < m.nb; ++j) {
+        jump[j] = 0;
         if (!isPrescribed(m, m_state, j)) {
-            free.push_back(j);
+            anyFree = true;
             continue;
         }
         const double rate = prescribedRate(m, m_state, j);
         jump[j] = rate - m_state.qd[j];
         m_state.qd[j] = rate;
         any = any || jump[j] != 0;
+    }
+    if (!hasConstraints(m, m_state)) {
+        // a tree: the articulated-body algorithm with impulses, O(n), no allocation
+        if (!any || !anyFree) return;
+        forwardKinematics(m, m_state, m_data);
+        m_impulse.setZero();
+        impulseResponse(m, m_state, m_data, jump, m_impulse, m_dqd);
+        for (int j = 0; j < m.nb; ++j) {
+            if (!isPrescribed(m, m_state, j)) m_state.qd[j] += m_dqd[j];
+        }
+        return;
+    }
+    std::vector<int> free;
+    for (int j = 0; j < m.nb; ++j) {
+        if (!isPrescribed(m, m_state, j)) free.push_back(j);
     }
     // with constraints the rates must also satisfy them (after a weld, a projection)
     bool violated = false;
@@ -508,12 +588,21 @@ void Simulation::hitLimit(int j, int side)
     if (side * into > 0) {
         // the generalized impulse p along θ_j that turns θ̇_j into −e·θ̇_j, the other
         // prescribed joints held: Δθ̇ = p·r with r = M_FF⁻¹ e_j (j counted free)
-        std::vector<int> free;
-        for (int k = 0; k < m.nb; ++k) {
-            if (k == j || !isPrescribed(m, m_state, k)) free.push_back(k);
+        Eigen::VectorXd& r = m_dqd;
+        if (!hasConstraints(m, m_state)) {
+            forwardKinematics(m, m_state, m_data);
+            m_jump.setZero();
+            m_impulse.setZero();
+            m_impulse[j] = 1;
+            impulseResponse(m, m_state, m_data, m_jump, m_impulse, r, j);
+        } else {
+            std::vector<int> free;
+            for (int k = 0; k < m.nb; ++k) {
+                if (k == j || !isPrescribed(m, m_state, k)) free.push_back(k);
+            }
+            r = freeResponse(massMatrixNow(), free, Eigen::VectorXd::Unit(m.nb, j), constraintJacobianNow(),
+                             Eigen::VectorXd::Zero(m.nb));
         }
-        const Eigen::VectorXd r = freeResponse(massMatrixNow(), free, Eigen::VectorXd::Unit(m.nb, j),
-                                               constraintJacobianNow(), Eigen::VectorXd::Zero(m.nb));
         if (r[j] > 0) m_state.qd += (-(1.0 + m.restitution) * into / r[j]) * r;
     }
     if (m.restitution == 0 || side * m_state.qd[j] >= 0) {
@@ -567,17 +656,18 @@ void Simulation::handleRoots(std::span<const int> fired, std::vector<SimulationE
     }
 }
 
-void Simulation::applyModeRules(std::vector<SimulationEvent>& events)
+bool Simulation::applyModeRules(std::vector<SimulationEvent>& events)
 {
     const Model& m = *m_model;
     // settle: a mode whose event function is already negative switches now
     // (at the start, after an event, after a command); a few rounds at most
     constexpr double tol = 1e-12;
-    std::vector<double> g(static_cast<std::size_t>(kRootsPerJoint * m.nb + 1));
+    std::vector<double>& g = m_g;
     // a relief valve that opens now opens before the commanded rate is reached: the
     // joint keeps the rate it had when the rules were applied, and so do the joints
     // that its rate jump would have pushed
-    const Eigen::VectorXd qdBefore = m_state.qd;
+    const Eigen::VectorXd& qdBefore = m_qdBefore;
+    m_qdBefore = m_state.qd;
     for (int round = 0; round < 8; ++round) {
         bool changed = false;
         // a hydraulic joint on a limit leaves it when its command turns it away
@@ -621,7 +711,8 @@ void Simulation::applyModeRules(std::vector<SimulationEvent>& events)
         m_expectedRank = m_data.constraintRank;
         m_system->expectedRank = m_expectedRank;
         System::eventFunctions(m, m_state, m_data, m_options.limits, m_expectedRank, g.data());
-        std::vector<int> fired(g.size(), 0);
+        std::vector<int>& fired = m_fired;
+        std::fill(fired.begin(), fired.end(), 0);
         bool any = false;
         for (std::size_t i = 0; i < g.size(); ++i) {
             const int j = static_cast<int>(i) / kRootsPerJoint;
@@ -643,7 +734,7 @@ void Simulation::applyModeRules(std::vector<SimulationEvent>& events)
         if (any) {
             const std::size_t first = events.size();
             handleRoots(fired, events);
-            if (m_locked) return;
+            if (m_locked) return false;
             // the rates return to where they were, and the next round prescribes the
             // still-closed valves' rates again (with their impulses) from there
             for (std::size_t e = first; e < events.size(); ++e) {
@@ -651,8 +742,12 @@ void Simulation::applyModeRules(std::vector<SimulationEvent>& events)
             }
             changed = true;
         }
-        if (!changed) return;
+        if (!changed) {
+            System::derivative(m, m_state, m_data, m_ydot.data());
+            return true;
+        }
     }
+    return false;
 }
 
 namespace {
@@ -690,7 +785,7 @@ bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, st
         }
         if (m_restart) {
             const std::size_t before = events.size();
-            applyModeRules(events);
+            const bool settled = applyModeRules(events);
             eventCount += static_cast<int>(events.size() - before);
             if (m_locked) {
                 evaluate();
@@ -698,7 +793,7 @@ bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, st
                 return false;
             }
             packState();
-            m_integrator->reset(m_state.t, m_y.data());
+            resetIntegrator(settled);
             m_restart = false;
         }
         if (!(tEnd > m_state.t)) break;
@@ -757,7 +852,8 @@ bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, st
         if (r.status == AdvanceStatus::Reached) break;
         const std::size_t before = events.size();
         handleRoots(r.rootsFired, events);
-        if (!m_locked) applyModeRules(events);
+        bool settled = false;
+        if (!m_locked) settled = applyModeRules(events);
         eventCount += static_cast<int>(events.size() - before);
         if (m_locked) {
             evaluate();
@@ -772,10 +868,26 @@ bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, st
             return false;
         }
         packState();
+        resetIntegrator(settled);
+    }
+    // the integrator's last evaluation was the step's end, where we are: take it
+    if (m_system->takeEvaluation(m_state.t, m_y.data(), m_data)) {
+        m_positionsAt = m_state.q;
+    } else {
+        evaluate();
+    }
+    return true;
+}
+
+void Simulation::resetIntegrator(bool settled)
+{
+    // the mode rules' last evaluation is f and g here (without constraints: with them
+    // the rank the rules found may truncate differently from the integrator's)
+    if (settled && !hasConstraints(*m_model, m_state)) {
+        m_integrator->reset(m_state.t, m_y.data(), m_ydot.data(), m_system->rootCount() > 0 ? m_g.data() : nullptr);
+    } else {
         m_integrator->reset(m_state.t, m_y.data());
     }
-    evaluate();
-    return true;
 }
 
 namespace {

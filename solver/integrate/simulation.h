@@ -150,8 +150,24 @@ private:
     std::vector<int> m_setJoints;  // joints setInitial() set since the last step
     bool m_assemblyFailed = false;  // the loops could not be closed at the initial state
 
-    void applyModeRules(std::vector<SimulationEvent>& events);
+    // scratch of the mode rules and the rate jumps, sized once (the step loop of an
+    // unconstrained model allocates nothing, even with a new command every step)
+    std::vector<double> m_g;      // event functions (4 per joint + the loop lock)
+    std::vector<int> m_fired;     // per event function: fired in this round
+    std::vector<double> m_ydot;   // y' at the state the rules settled on
+    Eigen::VectorXd m_qdBefore, m_jump, m_impulse, m_dqd;
+    /// θ of m_data's position terms (kinematics, body inertias) as the last evaluate()
+    /// left them: evaluate() at the same θ only updates the rates' terms. Every other
+    /// writer of m_data's kinematics works at m_state.q, so a changed θ is seen here.
+    Eigen::VectorXd m_positionsAt;
+
+    /// Returns true when m_data, m_g and m_ydot hold the evaluation of the state it
+    /// settled on (false: a mode changed after the last evaluation, or a loop locked).
+    bool applyModeRules(std::vector<SimulationEvent>& events);
     void handleRoots(std::span<const int> fired, std::vector<SimulationEvent>& events);
+    /// Restarts the integrator at the current state; `settled`: applyModeRules' last
+    /// evaluation is of this state (f and g are then handed over, not evaluated again).
+    void resetIntegrator(bool settled);
     void hitLimit(int joint, int side);
     void prescribeRates();
     Eigen::MatrixXd massMatrixNow();  ///< M at the current positions (events only: allocates)

@@ -67,6 +67,24 @@ void forwardKinematics(const Model& model, const Eigen::VectorXd& q, const Eigen
     }
 }
 
+void velocityKinematics(const Model& model, const Eigen::VectorXd& qd, Data& data)
+{
+    const int nb = model.nb;
+    assert(qd.size() == nb);
+    for (int i = 0; i < nb; ++i) {
+        const int p = model.parent[i];
+        const Vector6d vj = data.S[i] * qd[i];
+        if (p < 0) {
+            data.v[i] = vj;
+        } else {
+            data.v[i] = data.v[p] + vj;
+        }
+        data.c[i] = crossMotion(data.v[i], vj);
+        data.omega[i] = data.v[i].head<3>();
+        data.vel[i] = data.v[i].tail<3>() + data.omega[i].cross(data.X_wb[i].translation());
+    }
+}
+
 void forwardKinematics(const Model& model, const State& state, Data& data)
 {
     forwardKinematics(model, state.q, state.qd, data);

@@ -32,6 +32,10 @@ void forwardKinematics(const Model& model, const Eigen::VectorXd& q, const Eigen
 /// forwardKinematics(model, state.q, state.qd, data).
 void forwardKinematics(const Model& model, const State& state, Data& data);
 
+/// Velocities only, with the positions of the last forwardKinematics on `data` (the same
+/// θ, new θ̇, as after a rate jump): fills data.v, omega, vel and c.
+void velocityKinematics(const Model& model, const Eigen::VectorXd& qd, Data& data);
+
 /// Accelerations for θ̈ = qdd (dim nb) [rad/s^2 or m/s^2]: fills data.a, alpha and acc.
 /// Requires forwardKinematics on the same state first.
 void bodyAccelerations(const Model& model, const Eigen::VectorXd& qdd, Data& data);

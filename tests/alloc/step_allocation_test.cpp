@@ -6,11 +6,13 @@
 #include "solver/dynamics/forward_dynamics.h"
 #include "solver/integrate/simulation.h"
 #include "solver/kinematics/kinematics.h"
+#include "solver/model/generate.h"
 #include "solver/model/load.h"
 
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <cstdlib>
 #include <new>
 
@@ -84,4 +86,67 @@ TEST(StepAllocation, Rk4StepsWithEventFunctionsAllocateNothing)
     for (int k = 2; k <= 500; ++k) ASSERT_TRUE(sim.advanceTo(0.005 * k, events, error));
     EXPECT_EQ(g_allocations - before, 0) << "allocations in 499 output steps of 5 ms (2,495 RK4 steps)";
     EXPECT_GT(sim.state().q[model->jointIndex(3)], 0.2);
+}
+
+namespace {
+
+std::shared_ptr<const solver::Model> fromText(const std::string& text)
+{
+    solver::LoadedModel loaded = solver::loadModelText(text, "generated.pad");
+    EXPECT_TRUE(loaded.ok());
+    solver::Diagnostics d;
+    return solver::compileLoaded(loaded, d);
+}
+
+/// Steps of 1 ms with every drive's command changed before every step (a sine per
+/// drive, as an operator's sticks); returns the allocations counted over `steps` steps
+/// after a warm-up second.
+long commandedStepAllocations(const std::shared_ptr<const solver::Model>& model, int steps, int* events)
+{
+    solver::Simulation sim(model, solver::SimulationOptions{});
+    std::vector<solver::SimulationEvent> ev;
+    ev.reserve(100000);
+    std::string error;
+    auto command = [&](int k) {
+        for (int j = 0; j < model->nb; ++j) {
+            if (model->drive[j].type != solver::DriveType::None)
+                sim.setCommand(j, 0.8 * std::sin(2 * M_PI * 0.5 * k * 1e-3 + j));
+        }
+    };
+    for (int k = 1; k <= 1000; ++k) {
+        command(k);
+        EXPECT_TRUE(sim.advanceTo(k * 1e-3, ev, error)) << error;
+    }
+    const std::size_t eventsBefore = ev.size();
+    const long before = g_allocations;
+    for (int k = 1001; k <= 1000 + steps; ++k) {
+        command(k);
+        if (!sim.advanceTo(k * 1e-3, ev, error)) {
+            ADD_FAILURE() << error;
+            break;
+        }
+    }
+    const long counted = g_allocations - before;
+    *events = static_cast<int>(ev.size() - eventsBefore);
+    return counted;
+}
+
+}  // namespace
+
+TEST(StepAllocation, ANewCommandEveryStepAllocatesNothing)
+{
+    // the liner manipulator: every joint hydraulic, each step restarts after a new command
+    int events = 0;
+    EXPECT_EQ(commandedStepAllocations(liner(), 2000, &events), 0) << "2000 RK4 steps with new commands";
+}
+
+TEST(StepAllocation, ImpulsesOnFreeJointsAllocateNothing)
+{
+    // a chain with passive joints between the drives: every new command gives the free
+    // joints an impulse (the articulated-body algorithm with impulses), and the passive
+    // joints hit and leave their limits
+    int events = 0;
+    EXPECT_EQ(commandedStepAllocations(fromText(solver::chainModelText(30)), 2000, &events), 0)
+        << "2000 RK4 steps of a 30-link chain";
+    EXPECT_GT(events, 0) << "the limits were to be hit on the way";
 }

@@ -1,7 +1,9 @@
 #include "solver/dynamics/forward_dynamics.h"
 
 #include "solver/compile/compile.h"
+#include "solver/dynamics/applied_forces.h"
 #include "solver/dynamics/drives.h"
+#include "solver/dynamics/mass_matrix.h"
 #include "solver/kinematics/kinematics.h"
 #include "solver/parse/writer.h"
 #include "tests/solver/dynamics/random_states.h"
@@ -269,6 +271,72 @@ TEST(ForwardDynamics, KnownForcesAndPrescribedAccelerationsAreHonoured)
             const Eigen::Matrix3d R = d.X_wj[i].linear();
             EXPECT_TRUE((R * r.tail<3>()).isApprox(d.reactionWorld[i].tail<3>(), 1e-12));
         }
+    }
+}
+
+TEST(ForwardDynamics, AStageEvaluationGivesTheSameAccelerations)
+{
+    // DynamicsOutputs::Accelerations (an integrator's stage) and the kinematic shortcut
+    // with every joint prescribed give θ̈ bit for bit as the whole evaluation does
+    const auto base = test::compileText(test::kZooModel);
+    ASSERT_TRUE(base);
+    std::mt19937 rng(43);
+    int shortcuts = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        const Model m = test::withRandomDrives(*base, rng);
+        State s = test::randomState(m, rng);
+        if (trial % 4 == 0) {
+            for (LimitState& l : s.limit) l = LimitState::AtUpper;  // every joint held
+        }
+        Data whole(m), stage(m);
+        forwardDynamics(m, s, whole);
+        if (kinematicAccelerations(m, s, stage)) {
+            ++shortcuts;
+        } else {
+            forwardKinematics(m, s, stage);
+            clearAppliedForces(stage);
+            hybridDynamics(m, s, stage, DynamicsOutputs::Accelerations);
+        }
+        for (int i = 0; i < m.nb; ++i) EXPECT_EQ(stage.qdd[i], whole.qdd[i]) << "trial " << trial << " joint " << i;
+    }
+    EXPECT_EQ(shortcuts, 10);
+}
+
+TEST(ForwardDynamics, ImpulseResponseSolvesTheMassMatrix)
+{
+    // the O(n) impulse response against M_FF Δθ̇_F = ι_F − M_FP Δθ̇_P solved densely
+    const auto base = test::compileText(test::kZooModel);
+    ASSERT_TRUE(base);
+    std::mt19937 rng(47);
+    for (int trial = 0; trial < 30; ++trial) {
+        const Model m = test::withRandomDrives(*base, rng);
+        const State s = test::randomState(m, rng);
+        Data d(m);
+        forwardKinematics(m, s, d);
+        Eigen::MatrixXd M;
+        massMatrix(m, d, M);
+        const int alsoFree = trial % 3 == 0 ? trial % m.nb : -1;
+        Eigen::VectorXd jump(m.nb), impulse(m.nb), dqd(m.nb);
+        std::vector<int> F, P;
+        for (int i = 0; i < m.nb; ++i) {
+            jump[i] = test::uniform(rng, -1, 1);
+            impulse[i] = test::uniform(rng, -10, 10);
+            (i != alsoFree && isPrescribed(m, s, i) ? P : F).push_back(i);
+        }
+        impulseResponse(m, s, d, jump, impulse, dqd, alsoFree);
+        const auto nF = static_cast<Eigen::Index>(F.size());
+        Eigen::MatrixXd MFF(nF, nF);
+        Eigen::VectorXd rhs(nF);
+        for (Eigen::Index a = 0; a < nF; ++a) {
+            rhs[a] = impulse[F[a]];
+            for (int p : P) rhs[a] -= M(F[a], p) * jump[p];
+            for (Eigen::Index b = 0; b < nF; ++b) MFF(a, b) = M(F[a], F[b]);
+        }
+        const Eigen::VectorXd expected = MFF.ldlt().solve(rhs);
+        for (Eigen::Index a = 0; a < nF; ++a)
+            EXPECT_NEAR(dqd[F[a]], expected[a], 1e-9 * std::max(1.0, expected.cwiseAbs().maxCoeff()))
+                << "trial " << trial << " free joint " << F[a];
+        for (int p : P) EXPECT_EQ(dqd[p], jump[p]);
     }
 }
 

@@ -374,15 +374,30 @@ TEST(IntegratorRk4, CountsStepsAndEvaluations)
     EXPECT_EQ(in.stats().resets, 1);
     EXPECT_EQ(in.stats().rootReturns, 0);
 
-    // reset() every step (new inputs each step) costs one more evaluation per step
+    // reset() every step (new inputs each step): the first stage is evaluated at the
+    // new start, so 4 evaluations per step still (ARKODE needed 5)
     Integrator again(osc, rk4(1e-3));
+    double z[2] = {y[0], y[1]};  // for the third run
     for (int k = 0; k < 1000; ++k) {
         again.reset(k * 1e-3, y);
         again.advanceTo((k + 1) * 1e-3, y);
     }
     EXPECT_EQ(again.stats().steps, 1000);
-    EXPECT_EQ(again.stats().rhsEvals, 5 * 1000);
+    EXPECT_EQ(again.stats().rhsEvals, 4 * 1000);
     EXPECT_EQ(again.stats().resets, 1000);
+
+    // with f at the new start handed over (the simulation has it from its mode rules)
+    // 3 evaluations per step, and the same solution
+    Integrator handed(osc, rk4(1e-3));
+    double zdot[2];
+    for (int k = 0; k < 1000; ++k) {
+        osc.rhs(k * 1e-3, z, zdot);
+        handed.reset(k * 1e-3, z, zdot);
+        handed.advanceTo((k + 1) * 1e-3, z);
+    }
+    EXPECT_EQ(handed.stats().rhsEvals, 3 * 1000);
+    EXPECT_EQ(z[0], y[0]);
+    EXPECT_EQ(z[1], y[1]);
 }
 
 // ---- events -------------------------------------------------------------------------
