@@ -105,20 +105,22 @@ std::shared_ptr<const Model> compileModel(const ModelSpec& spec, const Topology&
     bool driveOnCut = false;
     for (int j : topo.loopJoints) {
         const JointSpec& cut = spec.joints[static_cast<std::size_t>(j)];
-        const Text who = trText("Diagnostics", "joint %1")
-                             .with(std::to_string(cut.id) + (cut.name.empty() ? std::string() : " \"" + cut.name + "\""));
+        auto who = [&] {
+            return trText("Diagnostics", "joint %1")
+                .with(std::to_string(cut.id) + (cut.name.empty() ? std::string() : " \"" + cut.name + "\""));
+        };
         for (const DriveSpec& d : spec.drives) {
             if (d.joint != cut.id) continue;
             diags.error("loop-joint-driven", d.src.pos,
                         trText("Diagnostics", "the drive on %1 cannot act: the joint closes a loop, so it is a "
-                                              "constraint, not a coordinate").with(who),
+                                              "constraint, not a coordinate").with(who()),
                         trText("Diagnostics", "move the drive to another joint of the loop, or leave one joint of "
                                               "the loop passive"));
             driveOnCut = true;
         }
         if (cut.ll || cut.ul) {
             diags.warning("loop-joint-limits-ignored", cut.src.pos,
-                          trText("Diagnostics", "%1 closes a loop: its limits LL/UL are not enforced").with(who),
+                          trText("Diagnostics", "%1 closes a loop: its limits LL/UL are not enforced").with(who()),
                           trText("Diagnostics", "put the limits on another joint of the loop (a tree joint)"));
         }
     }

@@ -110,14 +110,14 @@ void analyzeActuator(const JointSpec& joint, const JointGeometry& geometry, Diag
                      double& q, double& theta)
 {
     const ActuatorLengthLaw law = geometry.lengthLaw();
-    const Text who = trText("Diagnostics", "joint %1's actuator").with(std::to_string(joint.id));
+    auto who = [&] { return trText("Diagnostics", "joint %1's actuator").with(std::to_string(joint.id)); };
 
     // constant length: CL1 or CL2 on the axis
     if (!(law.rho() > 1e-9 * std::max(law.c0, 1e-12))) {
         diags.error("actuator-constant-length", joint.src.where("CL1"),
                     trText("Diagnostics", "%1 keeps the same length %2 m whatever the joint angle: CL1 or CL2 lies "
                                           "on the joint axis A, so the actuator cannot turn the joint")
-                        .with(who)
+                        .with(who())
                         .with(num(law.length(0))),
                     trText("Diagnostics", "place CL1 (on body %1) and CL2 (on body %2) away from the joint axis, so "
                                           "that the actuator length changes as the joint turns")
@@ -151,7 +151,7 @@ void analyzeActuator(const JointSpec& joint, const JointGeometry& geometry, Diag
                     trText("Diagnostics", "%1 = %2 m is beyond the reach of %3 (%4 m .. %5 m)")
                         .with(lim.key)
                         .with(num(*lim.value))
-                        .with(who)
+                        .with(who())
                         .with(num(lmin))
                         .with(num(lmax)),
                     std::move(hint));
@@ -184,7 +184,7 @@ void analyzeActuator(const JointSpec& joint, const JointGeometry& geometry, Diag
                                                      "(%3 m) at joint angle %4 rad, and no %5 stops it before")
                              : trText("Diagnostics", "%1 reaches a dead point inside its stroke: its length is %2 "
                                                      "(%3 m) at joint angle %4 rad, between LL and UL");
-        msg.arg(who).arg(e.which).arg(num(e.length)).arg(num(e.angle));
+        msg.arg(who()).arg(e.which).arg(num(e.length)).arg(num(e.angle));
         if (unlimited) msg.arg(e.limit);
         Text hint = e.upper ? trText("Diagnostics", "the cylinder cannot drive the joint through that point "
                                                     "(dL/dθ = 0 there); set %1 below %2 m")

@@ -4,6 +4,8 @@
 #include "solver/model/validate.h"
 #include "solver/parse/parser.h"
 
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 
 namespace solver {
@@ -47,18 +49,50 @@ SourcePos positionOf(std::string_view s, std::size_t at)
 /// Text that is not UTF-8 is read as Latin-1 (ISO 8859-1), with a warning.
 bool decode(std::string_view raw, std::string& out, Diagnostics& diags)
 {
-    // binary: NUL bytes, or many control characters
+    // one pass finds what the checks below need: the first NUL byte, the control
+    // characters in the first 64 KiB, the first byte that is not valid UTF-8
+    const std::size_t n = raw.size();
+    const std::size_t sample = std::min<std::size_t>(n, 1 << 16);
     std::size_t controls = 0;
-    const std::size_t sample = std::min<std::size_t>(raw.size(), 1 << 16);
-    for (std::size_t i = 0; i < raw.size(); ++i) {
-        const auto c = static_cast<unsigned char>(raw[i]);
-        if (c == 0) {
-            diags.error("binary-file", positionOf(raw, i),
-                        trText("Diagnostics", "this is not a text file (it contains a NUL byte here)"),
-                        trText("Diagnostics", "a model is a text file (.pad); open the model, not a mesh, image or archive"));
-            return false;
+    std::size_t firstNul = std::string_view::npos;
+    std::size_t firstBad = std::string_view::npos;
+    for (std::size_t i = 0; i < n;) {
+        // eight printable ASCII characters at once (no byte below 0x20 or from 0x80 on)
+        if (i + 8 <= n) {
+            std::uint64_t w;
+            std::memcpy(&w, raw.data() + i, 8);
+            constexpr std::uint64_t kHigh = 0x8080808080808080ull, kSpace = 0x2020202020202020ull;
+            if (((w | ((w - kSpace) & ~w)) & kHigh) == 0) {
+                i += 8;
+                continue;
+            }
         }
-        if (i < sample && c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f' && c != '\v') ++controls;
+        const auto c = static_cast<unsigned char>(raw[i]);
+        if (c < 0x80) {
+            if (c == 0) {
+                firstNul = i;
+                break;
+            }
+            if (i < sample && c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f' && c != '\v') ++controls;
+            ++i;
+            continue;
+        }
+        if (firstBad == std::string_view::npos) {
+            const std::size_t len = utf8SequenceLength(raw, i);
+            if (len > 0) {
+                i += len;  // a valid sequence: bytes from 0x80 on, neither NUL nor control characters
+                continue;
+            }
+            firstBad = i;
+        }
+        ++i;
+    }
+    // binary: NUL bytes, or many control characters
+    if (firstNul != std::string_view::npos) {
+        diags.error("binary-file", positionOf(raw, firstNul),
+                    trText("Diagnostics", "this is not a text file (it contains a NUL byte here)"),
+                    trText("Diagnostics", "a model is a text file (.pad); open the model, not a mesh, image or archive"));
+        return false;
     }
     // (a few stray control characters in a short text are the lexer's to report, with
     // their positions; only many of them make a file binary)
@@ -69,12 +103,6 @@ bool decode(std::string_view raw, std::string& out, Diagnostics& diags)
                         .with(std::to_string(sample)),
                     trText("Diagnostics", "a model is a text file (.pad); open the model, not a mesh, image or archive"));
         return false;
-    }
-    std::size_t firstBad = std::string_view::npos;
-    for (std::size_t i = 0; i < raw.size();) {
-        std::size_t len = utf8SequenceLength(raw, i);
-        if (len == 0) { firstBad = i; break; }
-        i += len;
     }
     if (firstBad == std::string_view::npos) {
         out.assign(raw);

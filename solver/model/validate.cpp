@@ -62,7 +62,7 @@ void checkDuplicates(const Items& items, Id idOf, const Text& what, Diagnostics&
 
 void checkBody(const BodySpec& b, Diagnostics& d)
 {
-    const Text who = bodyNamed(b.id, b.name);
+    auto who = [&] { return bodyNamed(b.id, b.name); };
     if (b.id == 0) {
         if (b.hasMass) {
             d.error("ground-mass", b.src.where("m"),
@@ -74,7 +74,7 @@ void checkBody(const BodySpec& b, Diagnostics& d)
     if (!b.src.complete || !b.hasMass) return;
     if (b.mass < 0) {
         d.error("negative-mass", b.src.where("m"),
-                trText("Diagnostics", "%1 has a negative mass (%2 kg)").with(who).with(fmt(b.mass)),
+                trText("Diagnostics", "%1 has a negative mass (%2 kg)").with(who()).with(fmt(b.mass)),
                 trText("Diagnostics", "a mass is zero or positive, in kg"));
     }
     Eigen::Matrix3d I = b.inertiaTensor();
@@ -87,7 +87,7 @@ void checkBody(const BodySpec& b, Diagnostics& d)
         d.error("inertia-not-psd", at,
                 trText("Diagnostics", "%1's inertia tensor is not positive semi-definite (principal moments %2, %3, "
                                       "%4 kg m²)")
-                    .with(who)
+                    .with(who())
                     .with(fmt(ev[0]))
                     .with(fmt(ev[1]))
                     .with(fmt(ev[2])),
@@ -100,7 +100,7 @@ void checkBody(const BodySpec& b, Diagnostics& d)
         d.warning("inertia-triangle", at,
                   trText("Diagnostics", "%1's principal moments of inertia %2, %3, %4 kg m² break the triangle "
                                         "inequality (%2 + %3 < %4): no real body has them")
-                      .with(who)
+                      .with(who())
                       .with(fmt(ev[0]))
                       .with(fmt(ev[1]))
                       .with(fmt(ev[2])),
@@ -108,7 +108,7 @@ void checkBody(const BodySpec& b, Diagnostics& d)
     }
     if (b.mass == 0 && ev[2] > 0) {
         d.warning("inertia-without-mass", b.src.where("m"),
-                  trText("Diagnostics", "%1 has no mass but a non-zero inertia").with(who),
+                  trText("Diagnostics", "%1 has no mass but a non-zero inertia").with(who()),
                   trText("Diagnostics", "give its mass, or set the inertia to zero as well"));
     }
 }
@@ -116,17 +116,17 @@ void checkBody(const BodySpec& b, Diagnostics& d)
 /// Checks one side's A and R, with `digit` 1 or 2.
 void checkAxes(const JointSpec& j, const JointSide& s, int digit, Diagnostics& d)
 {
-    const Text who = jointNamed(j.id, j.name);
+    auto who = [&] { return jointNamed(j.id, j.name); };
     const std::string n = std::to_string(digit);
     const double la = s.a.norm(), lr = s.r.norm();
     bool bad = false;
     if (!(la > 1e-12)) {
-        d.error("zero-vector", s.src.where("A"), trText("Diagnostics", "%1: %2 has zero length").with(who).with("A" + n),
+        d.error("zero-vector", s.src.where("A"), trText("Diagnostics", "%1: %2 has zero length").with(who()).with("A" + n),
                 trText("Diagnostics", "the axis is a direction, e.g. A%1 0 0 1").with(n));
         bad = true;
     }
     if (!(lr > 1e-12)) {
-        d.error("zero-vector", s.src.where("R"), trText("Diagnostics", "%1: %2 has zero length").with(who).with("R" + n),
+        d.error("zero-vector", s.src.where("R"), trText("Diagnostics", "%1: %2 has zero length").with(who()).with("R" + n),
                 trText("Diagnostics", "the reference direction is a direction perpendicular to A%1, e.g. R%1 0 1 0")
                     .with(n));
         bad = true;
@@ -134,13 +134,13 @@ void checkAxes(const JointSpec& j, const JointSide& s, int digit, Diagnostics& d
     if (bad) return;
     const double c = s.a.dot(s.r) / (la * lr);
     if (std::abs(c) > 1 - 1e-9) {
-        d.error("axis-parallel", s.src.where("R"), trText("Diagnostics", "%1: R%2 is parallel to A%2").with(who).with(n),
+        d.error("axis-parallel", s.src.where("R"), trText("Diagnostics", "%1: R%2 is parallel to A%2").with(who()).with(n),
                 trText("Diagnostics", "R%1 must be perpendicular to the axis A%1").with(n));
     } else if (std::abs(c) > kPerpendicularTolerance) {
         const double deg = std::acos(std::abs(c)) * 180.0 / std::numbers::pi;
         d.warning("not-perpendicular", s.src.where("R"),
                   trText("Diagnostics", "%1: R%2 is not perpendicular to A%2 (angle %3°); R%2 is made perpendicular")
-                      .with(who)
+                      .with(who())
                       .with(n)
                       .with(fmt(deg)),
                   trText("Diagnostics", "write R%1 at 90° to A%1").with(n));
@@ -149,25 +149,25 @@ void checkAxes(const JointSpec& j, const JointSide& s, int digit, Diagnostics& d
 
 void checkJoint(const ModelSpec& spec, const JointSpec& j, Diagnostics& d)
 {
-    const Text who = jointNamed(j.id, j.name);
+    auto who = [&] { return jointNamed(j.id, j.name); };
     for (int digit : {1, 2}) {
         const JointSide& s = digit == 1 ? j.side1 : j.side2;
         const std::string n = std::to_string(digit);
         if (!s.present) {
-            d.error("missing-joint-line", j.src.pos, trText("Diagnostics", "%1 has no B%2 line").with(who).with(n),
+            d.error("missing-joint-line", j.src.pos, trText("Diagnostics", "%1 has no B%2 line").with(who()).with(n),
                     trText("Diagnostics", "follow the C line with B%1 body P%1 x y z A%1 x y z R%1 x y z").with(n));
             continue;
         }
         if (s.body >= 0 && !spec.bodyExists(s.body)) {
             d.error("undefined-body", s.src.where("B"),
-                    trText("Diagnostics", "%1: body %2 (B%3) is not defined").with(who).with(std::to_string(s.body)).with(n),
+                    trText("Diagnostics", "%1: body %2 (B%3) is not defined").with(who()).with(std::to_string(s.body)).with(n),
                     trText("Diagnostics", "add 'B %1 m Ixx Iyy Izz', or use an existing body").with(std::to_string(s.body)));
         }
         if (s.src.complete) checkAxes(j, s, digit, d);
     }
     if (j.side1.present && j.side2.present && j.side1.body >= 0 && j.side1.body == j.side2.body) {
         d.error("same-body", j.side2.src.where("B"),
-                trText("Diagnostics", "%1 connects body %2 to itself").with(who).with(std::to_string(j.side1.body)),
+                trText("Diagnostics", "%1 connects body %2 to itself").with(who()).with(std::to_string(j.side1.body)),
                 trText("Diagnostics", "B1 and B2 must name two different bodies"));
     }
     const bool needsCl = j.type == JointType::Actuator;
@@ -175,16 +175,16 @@ void checkJoint(const ModelSpec& spec, const JointSpec& j, Diagnostics& d)
     if (needsCl && (!hasCl1 || !hasCl2)) {
         d.error("missing-cl", j.src.pos,
                 !hasCl1 && !hasCl2
-                    ? trText("Diagnostics", "%1 is a pivoted linear actuator (T 1) but has no CL1/CL2 line").with(who)
+                    ? trText("Diagnostics", "%1 is a pivoted linear actuator (T 1) but has no CL1/CL2 line").with(who())
                     : trText("Diagnostics", "%1 is a pivoted linear actuator (T 1) but has no %2")
-                          .with(who)
+                          .with(who())
                           .with(!hasCl1 ? "CL1" : "CL2"),
                 trText("Diagnostics", "add 'CL1 x y z CL2 x y z': the actuator's ends on body B1 and body B2, in "
                                       "their local frames"));
     }
     if (!needsCl && (hasCl1 || hasCl2)) {
         d.error("unexpected-cl", j.src.where(hasCl1 ? "CL1" : "CL2"),
-                trText("Diagnostics", "%1 has CL1/CL2 but is not a pivoted linear actuator").with(who),
+                trText("Diagnostics", "%1 has CL1/CL2 but is not a pivoted linear actuator").with(who()),
                 trText("Diagnostics", "CL1/CL2 belong to T 1 joints; add 'T 1' to the C line, or remove the CL line"));
     }
     if (!j.src.complete) return;
@@ -194,7 +194,7 @@ void checkJoint(const ModelSpec& spec, const JointSpec& j, Diagnostics& d)
     if (j.ll && j.ul && *j.ll > *j.ul) {
         d.error("limits-reversed", j.src.where("LL"),
                 trText("Diagnostics", "%1: the lower limit LL = %2 is above the upper limit UL = %3")
-                    .with(who)
+                    .with(who())
                     .with(value(*j.ll))
                     .with(value(*j.ul)),
                 trText("Diagnostics", "swap LL and UL"));
@@ -206,7 +206,7 @@ void checkJoint(const ModelSpec& spec, const JointSpec& j, Diagnostics& d)
             if (v && !(*v > 0)) {
                 d.error("bad-length", j.src.where(k),
                         trText("Diagnostics", "%1: %2 = %3 m, but a T 1 joint's coordinate is the actuator's length")
-                            .with(who)
+                            .with(who())
                             .with(k)
                             .with(fmt(*v)),
                         trText("Diagnostics", "give the cylinder's length between CL1 and CL2, in metres (positive)"));
@@ -215,7 +215,7 @@ void checkJoint(const ModelSpec& spec, const JointSpec& j, Diagnostics& d)
         if (j.qi && !(*j.qi > 0)) {
             d.error("bad-length", j.src.where("QI"),
                     trText("Diagnostics", "%1: %2 = %3 m, but a T 1 joint's coordinate is the actuator's length")
-                        .with(who)
+                        .with(who())
                         .with("QI")
                         .with(fmt(*j.qi)),
                     trText("Diagnostics", "give the cylinder's initial length between CL1 and CL2, in metres (positive)"));
@@ -226,14 +226,14 @@ void checkJoint(const ModelSpec& spec, const JointSpec& j, Diagnostics& d)
         if (j.ll && *j.qi < *j.ll - eps) {
             d.error("qi-outside-limits", j.src.where("QI"),
                     trText("Diagnostics", "%1: QI = %2 is below the lower limit LL = %3")
-                        .with(who)
+                        .with(who())
                         .with(value(*j.qi))
                         .with(value(*j.ll)),
                     trText("Diagnostics", "give QI between LL and UL"));
         } else if (j.ul && *j.qi > *j.ul + eps) {
             d.error("qi-outside-limits", j.src.where("QI"),
                     trText("Diagnostics", "%1: QI = %2 is above the upper limit UL = %3")
-                        .with(who)
+                        .with(who())
                         .with(value(*j.qi))
                         .with(value(*j.ul)),
                     trText("Diagnostics", "give QI between LL and UL"));
@@ -245,14 +245,14 @@ void checkJoint(const ModelSpec& spec, const JointSpec& j, Diagnostics& d)
         if (*j.vi > 0 && j.ul && q >= *j.ul - eps) {
             d.error("vi-outside-limits", j.src.where("VI"),
                     trText("Diagnostics", "%1: VI = %2 moves the joint past its upper limit UL = %3, where it starts")
-                        .with(who)
+                        .with(who())
                         .with(fmt(*j.vi))
                         .with(value(*j.ul)),
                     trText("Diagnostics", "start it inside its limits, or give VI ≤ 0"));
         } else if (*j.vi < 0 && j.ll && q <= *j.ll + eps) {
             d.error("vi-outside-limits", j.src.where("VI"),
                     trText("Diagnostics", "%1: VI = %2 moves the joint past its lower limit LL = %3, where it starts")
-                        .with(who)
+                        .with(who())
                         .with(fmt(*j.vi))
                         .with(value(*j.ll)),
                     trText("Diagnostics", "start it inside its limits, or give VI ≥ 0"));
@@ -314,28 +314,28 @@ void checkDrives(const ModelSpec& spec, Diagnostics& d)
 void checkForces(const ModelSpec& spec, Diagnostics& d)
 {
     for (const ForceSpec& f : spec.forces) {
-        const Text who = trText("Diagnostics", "force %1").with(std::to_string(f.id));
+        auto who = [&] { return trText("Diagnostics", "force %1").with(std::to_string(f.id)); };
         auto needBody = [&](int body, const char* key) {
             if (body >= 0 && !spec.bodyExists(body)) {
                 d.error("undefined-body", f.src.where(key),
-                        trText("Diagnostics", "%1: body %2 is not defined").with(who).with(std::to_string(body)),
+                        trText("Diagnostics", "%1: body %2 is not defined").with(who()).with(std::to_string(body)),
                         trText("Diagnostics", "use the id of a body (B id …)"));
             }
         };
         auto needJoint = [&](int joint, SourcePos at) {
             if (joint >= 0 && !spec.joint(joint)) {
                 d.error("undefined-joint", at,
-                        trText("Diagnostics", "%1: joint %2 is not defined").with(who).with(std::to_string(joint)),
+                        trText("Diagnostics", "%1: joint %2 is not defined").with(who()).with(std::to_string(joint)),
                         trText("Diagnostics", "use the id of a joint (C id …)"));
             }
         };
         auto negative = [&](const char* key, Text hint) {
-            d.error("negative-value", f.src.where(key), trText("Diagnostics", "%1: %2 is negative").with(who).with(key),
+            d.error("negative-value", f.src.where(key), trText("Diagnostics", "%1: %2 is negative").with(who()).with(key),
                     std::move(hint));
         };
         auto notPositive = [&](const char* key, Text hint) {
             d.error("not-positive", f.src.where(key),
-                    trText("Diagnostics", "%1: %2 must be positive").with(who).with(key), std::move(hint));
+                    trText("Diagnostics", "%1: %2 must be positive").with(who()).with(key), std::move(hint));
         };
         switch (f.kind) {
         case ForceKind::Point:
@@ -346,7 +346,7 @@ void checkForces(const ModelSpec& spec, Diagnostics& d)
             needBody(f.body2, "B2");
             if (f.body >= 0 && f.body == f.body2) {
                 d.error("same-body", f.src.where("B2"),
-                        trText("Diagnostics", "%1: the spring connects body %2 to itself").with(who).with(std::to_string(f.body)),
+                        trText("Diagnostics", "%1: the spring connects body %2 to itself").with(who()).with(std::to_string(f.body)),
                         trText("Diagnostics", "B1 and B2 must name two different bodies"));
             }
             break;
@@ -358,7 +358,7 @@ void checkForces(const ModelSpec& spec, Diagnostics& d)
         }
         if (!f.src.complete) continue;
         if ((f.kind == ForceKind::Point || f.kind == ForceKind::Torque) && !(f.dir.norm() > 1e-12)) {
-            d.error("zero-vector", f.src.where("DIR"), trText("Diagnostics", "%1: %2 has zero length").with(who).with("DIR"),
+            d.error("zero-vector", f.src.where("DIR"), trText("Diagnostics", "%1: %2 has zero length").with(who()).with("DIR"),
                     trText("Diagnostics", "give the force's direction, e.g. DIR 0 0 -1"));
         }
         if (f.kind == ForceKind::Spring) {
@@ -379,10 +379,10 @@ void checkForces(const ModelSpec& spec, Diagnostics& d)
 void checkGraphics(const ModelSpec& spec, Diagnostics& d, const std::string& baseDir)
 {
     for (const GraphicSpec& g : spec.graphics) {
-        const Text who = trText("Diagnostics", "graphic %1").with(std::to_string(g.id));
+        auto who = [&] { return trText("Diagnostics", "graphic %1").with(std::to_string(g.id)); };
         if (g.body >= 0 && !spec.bodyExists(g.body)) {
             d.error("undefined-body", g.src.where("B"),
-                    trText("Diagnostics", "%1: body %2 is not defined").with(who).with(std::to_string(g.body)),
+                    trText("Diagnostics", "%1: body %2 is not defined").with(who()).with(std::to_string(g.body)),
                     trText("Diagnostics", "use the id of a body (B id …), or 0 for the ground"));
         }
         if (!g.src.complete) continue;
@@ -397,11 +397,11 @@ void checkGraphics(const ModelSpec& spec, Diagnostics& d, const std::string& bas
             }
             if (!(g.dims[0] > 0)) {
                 d.error("not-positive", g.src.where("dims"),
-                        trText("Diagnostics", "%1: the PRISM's height H must be positive").with(who),
+                        trText("Diagnostics", "%1: the PRISM's height H must be positive").with(who()),
                         trText("Diagnostics", "H is in metres"));
             }
             if (!(std::abs(area) > 1e-12)) {
-                d.error("bad-prism", g.src.where("dims"), trText("Diagnostics", "%1: the PRISM's outline has no area").with(who),
+                d.error("bad-prism", g.src.where("dims"), trText("Diagnostics", "%1: the PRISM's outline has no area").with(who()),
                         trText("Diagnostics", "give at least three x y vertices that are not on one line"));
             }
         } else {
@@ -409,7 +409,7 @@ void checkGraphics(const ModelSpec& spec, Diagnostics& d, const std::string& bas
                 if (!(g.dims[k] > 0)) {
                     d.error("not-positive", g.src.where("dims"),
                             trText("Diagnostics", "%1: %2 dimension %3 must be positive, not %4")
-                                .with(who)
+                                .with(who())
                                 .with(shapeKeyword(g.shape))
                                 .with(std::to_string(k + 1))
                                 .with(fmt(g.dims[k])),
@@ -420,12 +420,12 @@ void checkGraphics(const ModelSpec& spec, Diagnostics& d, const std::string& bas
         }
         if (g.shape == ShapeKind::Tube && g.dims.size() == 3 && g.dims[1] >= g.dims[0]) {
             d.error("tube-radii", g.src.where("dims"),
-                    trText("Diagnostics", "%1: the TUBE's inner radius is not smaller than its outer radius").with(who),
+                    trText("Diagnostics", "%1: the TUBE's inner radius is not smaller than its outer radius").with(who()),
                     trText("Diagnostics", "write TUBE RO RI L with RI < RO"));
         }
         if (g.shape == ShapeKind::Mesh) {
             if (g.hasScale && !(g.scale > 0)) {
-                d.error("not-positive", g.src.where("SCALE"), trText("Diagnostics", "%1: %2 must be positive").with(who).with("SCALE"),
+                d.error("not-positive", g.src.where("SCALE"), trText("Diagnostics", "%1: %2 must be positive").with(who()).with("SCALE"),
                         trText("Diagnostics", "SCALE 0.001 turns millimetres into metres"));
             }
             if (!baseDir.empty() && !g.meshFile.empty()) {
@@ -434,7 +434,7 @@ void checkGraphics(const ModelSpec& spec, Diagnostics& d, const std::string& bas
                 if (!std::filesystem::is_regular_file(p, ec)) {
                     d.error("mesh-not-found", g.src.where("dims"),
                             trText("Diagnostics", "%1: mesh file '%2' not found (looked for %3)")
-                                .with(who)
+                                .with(who())
                                 .with(g.meshFile)
                                 .with(p.string()),
                             trText("Diagnostics", "mesh paths are relative to the model file's folder"));
@@ -442,24 +442,24 @@ void checkGraphics(const ModelSpec& spec, Diagnostics& d, const std::string& bas
             }
         }
         if (g.hasAxis && !(g.axis.norm() > 1e-12)) {
-            d.error("zero-vector", g.src.where("AXIS"), trText("Diagnostics", "%1: %2 has zero length").with(who).with("AXIS"),
+            d.error("zero-vector", g.src.where("AXIS"), trText("Diagnostics", "%1: %2 has zero length").with(who()).with("AXIS"),
                     trText("Diagnostics", "give a direction, e.g. AXIS 1 0 0"));
         }
         if (g.hasRot && !(g.rotAxis.norm() > 1e-12)) {
-            d.error("zero-vector", g.src.where("ROT"), trText("Diagnostics", "%1: the ROT axis has zero length").with(who),
+            d.error("zero-vector", g.src.where("ROT"), trText("Diagnostics", "%1: the ROT axis has zero length").with(who()),
                     trText("Diagnostics", "write ROT ax ay az degrees, e.g. ROT 0 0 1 90"));
         }
         if (g.hasColor && (g.color.minCoeff() < 0 || g.color.maxCoeff() > 1)) {
             d.error("bad-color", g.src.where("COLOR"),
-                    trText("Diagnostics", "%1: COLOR components must lie between 0 and 1").with(who),
+                    trText("Diagnostics", "%1: COLOR components must lie between 0 and 1").with(who()),
                     trText("Diagnostics", "write COLOR r g b with 0 ≤ r, g, b ≤ 1 (e.g. 0.8 0.1 0.1 for red)"));
         }
         if (g.mass && *g.mass < 0) {
-            d.error("negative-mass", g.src.where("MASS"), trText("Diagnostics", "%1: %2 is negative").with(who).with("MASS"),
+            d.error("negative-mass", g.src.where("MASS"), trText("Diagnostics", "%1: %2 is negative").with(who()).with("MASS"),
                     trText("Diagnostics", "a mass is ≥ 0, in kg"));
         }
         if (g.rho && !(*g.rho > 0)) {
-            d.error("not-positive", g.src.where("RHO"), trText("Diagnostics", "%1: %2 must be positive").with(who).with("RHO"),
+            d.error("not-positive", g.src.where("RHO"), trText("Diagnostics", "%1: %2 must be positive").with(who()).with("RHO"),
                     trText("Diagnostics", "a density in kg/m³ (steel: 7850)"));
         }
     }

@@ -110,6 +110,13 @@ std::string numberProblem(std::string_view w)
 std::vector<Token> tokenizeLine(std::string_view line, int lineNo, Diagnostics& diags)
 {
     std::vector<Token> tokens;
+    tokenizeLine(line, lineNo, diags, tokens);
+    return tokens;
+}
+
+void tokenizeLine(std::string_view line, int lineNo, Diagnostics& diags, std::vector<Token>& tokens)
+{
+    tokens.clear();
     std::size_t i = 0;
     const std::size_t n = line.size();
     // columns are counted incrementally (positions are asked for left to right), so
@@ -178,17 +185,15 @@ std::vector<Token> tokenizeLine(std::string_view line, int lineNo, Diagnostics& 
                !(line[i] == '/' && i + 1 < n && line[i + 1] == '/')) {
             ++i;
         }
-        Token t;
-        t.text = std::string(line.substr(start, i - start));
+        Token& t = tokens.emplace_back();
+        t.text.assign(line.data() + start, i - start);
         t.pos = posAt(start);
         double v = 0;
         if (looksLikeNumber(t.text) && toDouble(t.text, v)) {
             t.kind = Token::Kind::Number;
             t.number = v;
         }
-        tokens.push_back(std::move(t));
     }
-    return tokens;
 }
 
 }  // namespace solver::parse

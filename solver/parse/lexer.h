@@ -35,6 +35,9 @@ std::string numberProblem(std::string_view word);
 /// Tokenizes one line (without its newline). Problems (unterminated string, control
 /// characters, numbers out of range) go to `diags`.
 std::vector<Token> tokenizeLine(std::string_view line, int lineNo, Diagnostics& diags);
+/// The same into `tokens` (cleared first), whose storage a caller that reads many
+/// lines keeps from one line to the next.
+void tokenizeLine(std::string_view line, int lineNo, Diagnostics& diags, std::vector<Token>& tokens);
 
 /// True when `word` is a number of the language exactly:
 /// [+-]?(d+(.d*)?|.d+)([eE][+-]?d+)? (the range is not checked).

@@ -9,10 +9,13 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <type_traits>
 
 namespace solver::parse {
 
 namespace {
+
+using namespace std::string_view_literals;
 
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 
@@ -65,6 +68,30 @@ Text write(std::string syntax)
     return trText("Diagnostics", "write %1").with(std::move(syntax));
 }
 
+/// A Text built only when a diagnostic needs it, so that a statement written right
+/// costs no phrases: it refers to a callable that makes the Text (a lambda) or to a
+/// Text. Like a function reference it does not own what it refers to: pass it down
+/// to the call it is made for, never keep it (a LazyText made from a temporary lambda
+/// and stored in a variable dangles).
+class LazyText {
+public:
+    template <class F>
+        requires(!std::is_same_v<F, LazyText> && !std::is_same_v<F, Text> && std::is_invocable_r_v<Text, const F&>)
+    LazyText(const F& make)  // NOLINT(google-explicit-constructor): a lambda is passed as a LazyText
+        : m_obj(&make), m_make([](const void* o) -> Text { return (*static_cast<const F*>(o))(); })
+    {
+    }
+    LazyText(const Text& text)  // NOLINT(google-explicit-constructor)
+        : m_obj(&text), m_make([](const void* o) -> Text { return *static_cast<const Text*>(o); })
+    {
+    }
+    Text operator()() const { return m_make(m_obj); }
+
+private:
+    const void* m_obj;
+    Text (*m_make)(const void*);
+};
+
 Text didYouMean(std::string guess)
 {
     return trText("Diagnostics", "did you mean '%1'?").with(std::move(guess));
@@ -88,7 +115,7 @@ struct OptionDef {
     /// An option whose argument is named by a translatable phrase.
     OptionDef(const char* k, Arg a, Text w) : key(k), arg(a), what(std::move(w)) {}
 
-    const char* key;
+    std::string_view key;  ///< a string literal
     Arg arg;
     Text what;  ///< what the argument is, for messages and syntax hints ("the lower limit")
 };
@@ -114,11 +141,11 @@ public:
 
     void parseLine(std::string_view line, int lineNo)
     {
-        m_toks = tokenizeLine(line, lineNo, m_d);
+        tokenizeLine(line, lineNo, m_d, m_toks);
         m_i = 0;
         m_keys.clear();
         m_lineNo = lineNo;
-        m_endPos = {lineNo, columnOf(line, line.size()) + 1};
+        m_line = line;
         if (m_toks.empty()) return;
         const Token& first = m_toks[0];
         if (!first.isWord()) {
@@ -132,16 +159,16 @@ public:
         }
         std::string kw = upper(first.text);
         m_i = 1;
-        if (kw == "B1" || kw == "B2") { parseJointSide(kw == "B1" ? 1 : 2); return; }
-        if (kw == "CL1" || kw == "CL2") { parseCl(); return; }
+        if (kw == "B1"sv || kw == "B2"sv) { parseJointSide(kw == "B1"sv ? 1 : 2); return; }
+        if (kw == "CL1"sv || kw == "CL2"sv) { parseCl(); return; }
         closeJoint();
-        if (kw == "GRAVITY") parseGravity();
-        else if (kw == "RESTITUTION") parseRestitution();
-        else if (kw == "B") parseBody();
-        else if (kw == "C") parseJoint();
-        else if (kw == "D") parseDrive();
-        else if (kw == "F") parseForce();
-        else if (kw == "G") parseGraphic();
+        if (kw == "GRAVITY"sv) parseGravity();
+        else if (kw == "RESTITUTION"sv) parseRestitution();
+        else if (kw == "B"sv) parseBody();
+        else if (kw == "C"sv) parseJoint();
+        else if (kw == "D"sv) parseDrive();
+        else if (kw == "F"sv) parseForce();
+        else if (kw == "G"sv) parseGraphic();
         else {
             std::string guess = closest(kw, kStatementKeywords);
             m_d.error("unknown-keyword", first.pos, trText("Diagnostics", "unknown keyword '%1'").with(first.text),
@@ -159,17 +186,20 @@ private:
     std::vector<Token> m_toks;
     std::size_t m_i = 0;
     int m_lineNo = 0;
-    SourcePos m_endPos;
+    std::string_view m_line;  // the line being parsed (its end's column is worked out when asked for)
     int m_joint = -1;  // index of the joint whose B1/B2/CL lines may follow
-    /// The option keywords of the statement being parsed: a word in a number's place
-    /// that is none of them (nor a typo of one) is a malformed number, not an option.
-    std::vector<std::string> m_keys;
+    /// The option keywords of the statement being parsed (string literals): a word in a
+    /// number's place that is none of them (nor a typo of one) is a malformed number,
+    /// not an option.
+    std::vector<std::string_view> m_keys;
     SourcePos m_tableJointPos;  // the joint id of the last `TABLE Q joint`
 
     // ---- token access ---------------------------------------------------------
     bool atEnd() const { return m_i >= m_toks.size(); }
     const Token& peek() const { return m_toks[m_i]; }
-    SourcePos here() const { return atEnd() ? m_endPos : peek().pos; }
+    SourcePos here() const { return atEnd() ? endPos() : peek().pos; }
+    /// Just after the line's last character.
+    SourcePos endPos() const { return {m_lineNo, columnOf(m_line, m_line.size()) + 1}; }
 
     /// A token in a number's place: a number, or a word that is a malformed number.
     static bool numberLike(const Token& t)
@@ -186,6 +216,7 @@ private:
         m_keys.clear();
         for (const OptionDef& d : defs) m_keys.emplace_back(d.key);
     }
+    void setKeys(std::initializer_list<const char*> keys) { m_keys.assign(keys.begin(), keys.end()); }
 
     /// A word in a number's place that is not one of the statement's options (nor,
     /// for words of three or more letters, a typo of one): a number written wrong
@@ -202,7 +233,7 @@ private:
     {
         if (!t.isWord()) return false;
         const std::string u = upper(t.text);
-        for (const std::string& k : m_keys) {
+        for (std::string_view k : m_keys) {
             if (u == k) return true;
         }
         return false;
@@ -213,30 +244,30 @@ private:
 
     /// Reports why the number-like word `t` is not a number.
     /// `context` says where (trText("Diagnostics", "body %1")).
-    void badNumber(const Token& t, const Text& context, bool& ok)
+    void badNumber(const Token& t, LazyText context, bool& ok)
     {
         ok = false;
         std::string why = numberProblem(t.text);
         if (why == "decimal-comma") {
             std::string dotted = t.text;
             dotted[dotted.find(',')] = '.';
-            m_d.error("decimal-comma", t.pos, trText("Diagnostics", "%1: '%2' is not a number").with(context).with(t.text),
+            m_d.error("decimal-comma", t.pos, trText("Diagnostics", "%1: '%2' is not a number").with(context()).with(t.text),
                       trText("Diagnostics", "use '.' as the decimal separator: %1").with(dotted));
         } else if (why == "not-finite") {
-            m_d.error("not-finite", t.pos, trText("Diagnostics", "%1: '%2' is not a finite number").with(context).with(t.text),
+            m_d.error("not-finite", t.pos, trText("Diagnostics", "%1: '%2' is not a finite number").with(context()).with(t.text),
                       trText("Diagnostics", "write a finite value; NaN and infinity are not allowed"));
         } else if (why == "out-of-range") {
-            m_d.error("number-out-of-range", t.pos, trText("Diagnostics", "%1: %2 is out of range").with(context).with(t.text),
+            m_d.error("number-out-of-range", t.pos, trText("Diagnostics", "%1: %2 is out of range").with(context()).with(t.text),
                       trText("Diagnostics", "a number must lie within ±1.7e308"));
         } else {
-            m_d.error("not-a-number", t.pos, trText("Diagnostics", "%1: '%2' is not a number").with(context).with(t.text),
+            m_d.error("not-a-number", t.pos, trText("Diagnostics", "%1: '%2' is not a number").with(context()).with(t.text),
                       trText("Diagnostics", "numbers look like 12, -0.5, .2 or 1e-3"));
         }
     }
 
     /// Reads one number. On a missing number reports "<context>: <what> is missing"
     /// with the hint `fix` (write(syntax)), and consumes nothing.
-    std::optional<double> number(const Text& context, const Text& what, bool& ok, const Text& fix)
+    std::optional<double> number(LazyText context, LazyText what, bool& ok, LazyText fix)
     {
         if (!atEnd() && peek().isNumber()) return m_toks[m_i++].number;
         if (!atEnd() && badNumberLike(peek())) {
@@ -245,19 +276,19 @@ private:
         }
         ok = false;
         if (atEnd()) {
-            m_d.error("missing-number", here(), trText("Diagnostics", "%1: %2 is missing").with(context).with(what), fix);
+            m_d.error("missing-number", here(), trText("Diagnostics", "%1: %2 is missing").with(context()).with(what()),
+                      fix());
         } else {
             m_d.error("missing-number", here(),
-                      trText("Diagnostics", "%1: expected %2, found '%3'").with(context).with(what).with(peek().text),
-                      fix);
+                      trText("Diagnostics", "%1: expected %2, found '%3'").with(context()).with(what()).with(peek().text),
+                      fix());
         }
         return std::nullopt;
     }
 
     /// Reads `n` numbers into `out`; reports one diagnostic for the first problem.
     template <int N>
-    bool numbers(Eigen::Matrix<double, N, 1>& out, const Text& context, const std::string& key, const Text& fix,
-                 bool& ok)
+    bool numbers(Eigen::Matrix<double, N, 1>& out, LazyText context, std::string_view key, LazyText fix, bool& ok)
     {
         for (int k = 0; k < N; ++k) {
             if (!atEnd() && peek().isNumber()) {
@@ -272,27 +303,27 @@ private:
             Text message = k > 0     ? trText("Diagnostics", "%1: %2 needs %3 numbers, only %4 given")
                            : atEnd() ? trText("Diagnostics", "%1: %2 needs %3 numbers, the line ends")
                                      : trText("Diagnostics", "%1: %2 needs %3 numbers, found '%4'");
-            message.arg(context).arg(key).arg(N);
+            message.arg(context()).arg(std::string(key)).arg(N);
             if (k > 0) message.arg(k);
             else if (!atEnd()) message.arg(peek().text);
-            m_d.error("missing-number", here(), std::move(message), fix);
+            m_d.error("missing-number", here(), std::move(message), fix());
             return false;
         }
         return true;
     }
 
     /// Reads an id (0 … INT_MAX).
-    std::optional<int> readId(const Text& context, const Text& what, bool& ok, const Text& fix)
+    std::optional<int> readId(LazyText context, LazyText what, bool& ok, LazyText fix)
     {
         if (atEnd() || !numberLike(peek())) {
             ok = false;
             m_d.error("missing-id", here(),
-                      atEnd() ? trText("Diagnostics", "%1: %2 is missing").with(context).with(what)
+                      atEnd() ? trText("Diagnostics", "%1: %2 is missing").with(context()).with(what())
                               : trText("Diagnostics", "%1: %2 is missing, found '%3'")
-                                    .with(context)
-                                    .with(what)
+                                    .with(context())
+                                    .with(what())
                                     .with(peek().text),
-                      fix);
+                      fix());
             if (!atEnd() && strayWord(peek())) ++m_i;  // it stood in the id's place
             return std::nullopt;
         }
@@ -304,11 +335,11 @@ private:
             ok = false;
             if (t.isNumber() && t.number < 0) {
                 m_d.error("bad-id", t.pos,
-                          trText("Diagnostics", "%1: %2 cannot be negative (%3)").with(context).with(what).with(t.text),
+                          trText("Diagnostics", "%1: %2 cannot be negative (%3)").with(context()).with(what()).with(t.text),
                           trText("Diagnostics", "ids are whole numbers 0, 1, 2, …"));
             } else if (t.isNumber()) {
                 m_d.error("bad-id", t.pos,
-                          trText("Diagnostics", "%1: %2 must be a whole number, not %3").with(context).with(what).with(t.text),
+                          trText("Diagnostics", "%1: %2 must be a whole number, not %3").with(context()).with(what()).with(t.text),
                           trText("Diagnostics", "ids are whole numbers 0, 1, 2, …"));
             } else {
                 badNumber(t, context, ok);
@@ -319,7 +350,7 @@ private:
         auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
         if (ec != std::errc() || v > INT_MAX) {
             ok = false;
-            m_d.error("bad-id", t.pos, trText("Diagnostics", "%1: %2 %3 is too large").with(context).with(what).with(t.text),
+            m_d.error("bad-id", t.pos, trText("Diagnostics", "%1: %2 %3 is too large").with(context()).with(what()).with(t.text),
                       trText("Diagnostics", "ids go from 0 to %1").with(std::to_string(INT_MAX)));
             return std::nullopt;
         }
@@ -327,7 +358,7 @@ private:
     }
 
     /// Parses a magnitude: number | SIN amp freq phase [offset] | TABLE T t v … | TABLE Q j q v …
-    bool magnitude(MagnitudeSpec& mag, const Text& context, bool& ok)
+    bool magnitude(MagnitudeSpec& mag, LazyText context, bool& ok)
     {
         const Text fix = trText("Diagnostics", "write MAG value, MAG SIN amp freq phase [offset], "
                                                "MAG TABLE T t1 v1 t2 v2 … or MAG TABLE Q joint q1 v1 …");
@@ -342,7 +373,10 @@ private:
             ++m_i;
             mag.kind = MagnitudeSpec::Kind::Sine;
             Eigen::Vector3d v;
-            if (!numbers<3>(v, context, "SIN", write("SIN amplitude frequency[Hz] phase[rad] [offset]"), ok)) return false;
+            if (!numbers<3>(v, context, "SIN", [] { return write("SIN amplitude frequency[Hz] phase[rad] [offset]"); },
+                            ok)) {
+                return false;
+            }
             mag.amplitude = v[0];
             mag.frequency = v[1];
             mag.phase = v[2];
@@ -364,14 +398,14 @@ private:
                 mag.kind = MagnitudeSpec::Kind::TableJoint;
                 m_tableJointPos = here();
                 auto j = readId(context, trText("Diagnostics", "the joint of TABLE Q"), ok,
-                                write("TABLE Q joint q1 v1 q2 v2 …"));
+                                [] { return write("TABLE Q joint q1 v1 q2 v2 …"); });
                 if (!j) return false;
                 mag.joint = *j;
             } else {
                 ok = false;
                 m_d.error("bad-table", here(),
                           trText("Diagnostics", "%1: TABLE must say T (by time) or Q (by a joint's coordinate)")
-                              .with(context),
+                              .with(context()),
                           trText("Diagnostics", "write TABLE T t1 v1 t2 v2 … or TABLE Q joint q1 v1 q2 v2 …"));
                 // skip the table, so that its letter and numbers give no second diagnostic
                 if (!atEnd() && peek().isWord() && !isKey(peek())) ++m_i;
@@ -391,7 +425,7 @@ private:
                           (vals.size() == 1
                                ? trText("Diagnostics", "%1: a TABLE needs pairs of numbers (abscissa value), found %2 number")
                                : trText("Diagnostics", "%1: a TABLE needs pairs of numbers (abscissa value), found %2 numbers"))
-                              .with(context)
+                              .with(context())
                               .with(std::to_string(vals.size())),
                           write("TABLE T t1 v1 t2 v2 …"));
                 return false;
@@ -402,7 +436,7 @@ private:
                     ok = false;
                     m_d.error("table-not-increasing", where[2 * k],
                               trText("Diagnostics", "%1: table abscissae must increase (%2 follows %3)")
-                                  .with(context)
+                                  .with(context())
                                   .with(fmt(mag.table[k].first))
                                   .with(fmt(mag.table[k - 1].first)),
                               trText("Diagnostics", "sort the pairs by their first number and remove repeats"));
@@ -414,19 +448,18 @@ private:
         }
         ok = false;
         m_d.error("missing-number", here(),
-                  atEnd() ? trText("Diagnostics", "%1: MAG needs a value").with(context)
-                          : trText("Diagnostics", "%1: MAG needs a value, found '%2'").with(context).with(peek().text),
+                  atEnd() ? trText("Diagnostics", "%1: MAG needs a value").with(context())
+                          : trText("Diagnostics", "%1: MAG needs a value, found '%2'").with(context()).with(peek().text),
                   fix);
         return false;
     }
 
     /// Parses keyword options in any order until the line ends.
-    Options options(const std::vector<OptionDef>& defs, const Text& context, const Text& statementName, bool& ok)
+    Options options(const std::vector<OptionDef>& defs, LazyText context, LazyText statementName, bool& ok)
     {
         Options out;
         setKeys(defs);
-        std::vector<std::string_view> names;
-        for (const OptionDef& d : defs) names.push_back(d.key);
+        const std::vector<std::string_view>& names = m_keys;  // the option keywords, in the order of defs
         auto listNames = [&] {
             std::string s;
             for (std::size_t k = 0; k < names.size(); ++k) s += (k ? ", " : "") + std::string(names[k]);
@@ -444,7 +477,7 @@ private:
             if (!def) {
                 ok = false;
                 if (numberLike(t)) {
-                    m_d.error("extra-number", t.pos, trText("Diagnostics", "%1: unexpected number %2").with(context).with(t.text),
+                    m_d.error("extra-number", t.pos, trText("Diagnostics", "%1: unexpected number %2").with(context()).with(t.text),
                               names.empty() ? trText("Diagnostics", "remove it")
                                             : trText("Diagnostics", "remove it, or put an option before it (%1)")
                                                   .with(listNames()));
@@ -452,9 +485,9 @@ private:
                     std::string guess = t.isWord() ? closest(t.text, names) : std::string();
                     m_d.error("unknown-option", t.pos,
                               trText("Diagnostics", "%1: '%2' is not an option of %3")
-                                  .with(context)
+                                  .with(context())
                                   .with(t.text)
-                                  .with(statementName),
+                                  .with(statementName()),
                               !guess.empty()  ? didYouMean(guess)
                               : names.empty() ? trText("Diagnostics", "remove it")
                                               : trText("Diagnostics", "options are %1").with(listNames()));
@@ -468,10 +501,10 @@ private:
             val.pos = t.pos;
             ++m_i;
             val.valuePos = here();
-            std::string key = def->key;
+            std::string key(def->key);
             bool dup = out.count(key) > 0;
-            const Text fix = trText("Diagnostics", "write %1 %2").with(key).with(def->what);
-            const Text what = trText("Diagnostics", "%1 after %2").with(def->what).with(key);
+            auto fix = [&] { return trText("Diagnostics", "write %1 %2").with(key).with(def->what); };
+            auto what = [&] { return trText("Diagnostics", "%1 after %2").with(def->what).with(key); };
             switch (def->arg) {
             case Arg::Int: {
                 auto id = readId(context, what, val.ok, fix);
@@ -503,12 +536,12 @@ private:
                     std::string words = m_toks[m_i++].text;
                     while (!atEnd() && peek().isWord() && !isKey(peek())) words += " " + m_toks[m_i++].text;
                     m_d.error("missing-string", at,
-                              trText("Diagnostics", "%1: %2 needs a text in double quotes").with(context).with(key),
+                              trText("Diagnostics", "%1: %2 needs a text in double quotes").with(context()).with(key),
                               write(key + " \"" + words + "\""));
                 } else {
                     val.ok = false;
                     m_d.error("missing-string", here(),
-                              trText("Diagnostics", "%1: %2 needs a text in double quotes").with(context).with(key),
+                              trText("Diagnostics", "%1: %2 needs a text in double quotes").with(context()).with(key),
                               write(key + " \"text\""));
                 }
                 break;
@@ -516,7 +549,7 @@ private:
             if (!val.ok) ok = false;
             if (dup) {
                 ok = false;
-                m_d.error("duplicate-option", val.pos, trText("Diagnostics", "%1: %2 is given twice").with(context).with(key),
+                m_d.error("duplicate-option", val.pos, trText("Diagnostics", "%1: %2 is given twice").with(context()).with(key),
                           trText("Diagnostics", "keep one %1").with(key));
                 continue;
             }
@@ -525,13 +558,24 @@ private:
         return out;
     }
 
-    void requireOptions(const Options& opts, const std::vector<const char*>& keys, const Text& context,
-                        const Text& fix, SourcePos pos, bool& ok)
+    void requireOptions(const Options& opts, std::initializer_list<const char*> keys, LazyText context, LazyText fix,
+                        SourcePos pos, bool& ok)
     {
-        for (const char* k : keys) {
-            if (!opts.count(k)) {
+        requireOptions(opts, keys.begin(), keys.end(), context, fix, pos, ok);
+    }
+    void requireOptions(const Options& opts, const std::vector<const char*>& keys, LazyText context, LazyText fix,
+                        SourcePos pos, bool& ok)
+    {
+        requireOptions(opts, keys.data(), keys.data() + keys.size(), context, fix, pos, ok);
+    }
+    void requireOptions(const Options& opts, const char* const* first, const char* const* last, LazyText context,
+                        LazyText fix, SourcePos pos, bool& ok)
+    {
+        for (const char* const* k = first; k != last; ++k) {
+            if (!opts.count(*k)) {
                 ok = false;
-                m_d.error("missing-option", pos, trText("Diagnostics", "%1: %2 is missing").with(context).with(k), fix);
+                m_d.error("missing-option", pos, trText("Diagnostics", "%1: %2 is missing").with(context()).with(*k),
+                          fix());
             }
         }
     }
@@ -593,18 +637,19 @@ private:
 
     void parseBody()
     {
-        const std::string syntax = "B id [m Ixx Iyy Izz [Ixy Iyz Ixz]] [CG x y z] [NAME \"text\"]";
+        static constexpr const char* syntax = "B id [m Ixx Iyy Izz [Ixy Iyz Ixz]] [CG x y z] [NAME \"text\"]";
         BodySpec b;
         b.src.pos = m_toks[0].pos;
         bool ok = true;
-        auto id = readId(trText("Diagnostics", "body"), trText("Diagnostics", "the body id"), ok, write(syntax));
+        auto id = readId(trText("Diagnostics", "body"), trText("Diagnostics", "the body id"), ok,
+                         [] { return write(syntax); });
         if (!id) {
             b.src.complete = false;
             return;  // a body without an id cannot be referred to; nothing to keep
         }
         b.id = *id;
-        const Text ctx = trText("Diagnostics", "body %1").with(std::to_string(b.id));
-        const std::vector<OptionDef> defs = {{"CG", Arg::Vec3, "x y z"}, {"NAME", Arg::Str, "\"text\""}};
+        auto ctx = [&] { return trText("Diagnostics", "body %1").with(std::to_string(b.id)); };
+        static const std::vector<OptionDef> defs = {{"CG", Arg::Vec3, "x y z"}, {"NAME", Arg::Str, "\"text\""}};
         setKeys(defs);
         // count the numbers after the id: 0 (massless), 4 or 7
         std::size_t first = m_i, count = 0;
@@ -622,7 +667,7 @@ private:
             m_d.error(count > 7 ? "extra-number" : "missing-number", at,
                       trText("Diagnostics", "%1: a body takes 0, 4 or 7 numbers after its id (m Ixx Iyy Izz [Ixy Iyz "
                                             "Ixz]), found %2")
-                          .with(ctx)
+                          .with(ctx())
                           .with(std::to_string(count)),
                       count < 4   ? trText("Diagnostics", "give the mass and the three moments of inertia: %1").with(syntax)
                       : count < 7 ? trText("Diagnostics", "give all three products of inertia Ixy Iyz Ixz, or none")
@@ -659,20 +704,24 @@ private:
 
     void parseJoint()
     {
-        const std::string syntax = "C id [T 0|1|2] [LL v] [UL v] [QI v] [VI v] [NAME \"text\"]";
+        static constexpr const char* syntax = "C id [T 0|1|2] [LL v] [UL v] [QI v] [VI v] [NAME \"text\"]";
         JointSpec j;
         j.src.pos = m_toks[0].pos;
         bool ok = true;
-        auto id = readId(trText("Diagnostics", "joint"), trText("Diagnostics", "the joint id"), ok, write(syntax));
+        auto id = readId(trText("Diagnostics", "joint"), trText("Diagnostics", "the joint id"), ok,
+                         [] { return write(syntax); });
         j.id = id.value_or(-1);
-        const Text ctx = id ? trText("Diagnostics", "joint %1").with(std::to_string(j.id)) : trText("Diagnostics", "joint");
-        Options opts = options({{"T", Arg::Num, trText("Diagnostics", "the joint type (0, 1 or 2)")},
-                                {"LL", Arg::NumDeg, trText("Diagnostics", "the lower limit")},
-                                {"UL", Arg::NumDeg, trText("Diagnostics", "the upper limit")},
-                                {"QI", Arg::NumDeg, trText("Diagnostics", "the initial coordinate")},
-                                {"VI", Arg::NumDeg, trText("Diagnostics", "the initial rate")},
-                                {"NAME", Arg::Str, "\"text\""}},
-                               ctx, trText("Diagnostics", "a joint statement (C)"), ok);
+        const bool hasId = id.has_value();
+        auto ctx = [&] {
+            return hasId ? trText("Diagnostics", "joint %1").with(std::to_string(j.id)) : trText("Diagnostics", "joint");
+        };
+        static const std::vector<OptionDef> defs = {{"T", Arg::Num, trText("Diagnostics", "the joint type (0, 1 or 2)")},
+                                                    {"LL", Arg::NumDeg, trText("Diagnostics", "the lower limit")},
+                                                    {"UL", Arg::NumDeg, trText("Diagnostics", "the upper limit")},
+                                                    {"QI", Arg::NumDeg, trText("Diagnostics", "the initial coordinate")},
+                                                    {"VI", Arg::NumDeg, trText("Diagnostics", "the initial rate")},
+                                                    {"NAME", Arg::Str, "\"text\""}};
+        Options opts = options(defs, ctx, trText("Diagnostics", "a joint statement (C)"), ok);
         recordPositions(j.src, opts);
         if (auto it = opts.find("T"); it != opts.end() && it->second.ok) {
             j.typeWritten = true;
@@ -684,7 +733,7 @@ private:
             else {
                 ok = false;
                 m_d.error("bad-joint-type", it->second.valuePos,
-                          trText("Diagnostics", "%1: there is no joint type T %2").with(ctx).with(fmt(t)),
+                          trText("Diagnostics", "%1: there is no joint type T %2").with(ctx()).with(fmt(t)),
                           trText("Diagnostics", "use T 0 (revolute, the default), T 1 (pivoted linear actuator) or T 2 "
                                                 "(prismatic)"));
             }
@@ -698,7 +747,7 @@ private:
                     ok = false;
                     m_d.error("deg-on-length", it->second.valuePos,
                               trText("Diagnostics", "%1: DEG after %2, but the coordinate of %3 is a length")
-                                  .with(ctx)
+                                  .with(ctx())
                                   .with(key)
                                   .with(j.type == JointType::Actuator
                                             ? trText("Diagnostics", "a pivoted linear actuator (T 1)")
@@ -739,8 +788,8 @@ private:
         if (!j) return;
         const std::string s = std::to_string(side);
         const std::string other = side == 1 ? "2" : "1";
-        const std::string syntax = "B" + s + " body P" + s + " x y z A" + s + " x y z R" + s + " x y z";
-        const Text ctx = trText("Diagnostics", "joint %1, B%2").with(std::to_string(j->id)).with(s);
+        auto fix = [&] { return write("B" + s + " body P" + s + " x y z A" + s + " x y z R" + s + " x y z"); };
+        auto ctx = [&] { return trText("Diagnostics", "joint %1, B%2").with(std::to_string(j->id)).with(s); };
         JointSide& js = side == 1 ? j->side1 : j->side2;
         if (js.present) {
             m_d.error("duplicate-joint-line", kw.pos,
@@ -757,29 +806,32 @@ private:
         side_.src.pos = kw.pos;
         bool ok = true;
         // P, A, R with this side's digit; the other side's keys are diagnosed
-        std::vector<OptionDef> defs = {{nullptr, Arg::Vec3, "x y z"}, {nullptr, Arg::Vec3, "x y z"},
-                                       {nullptr, Arg::Vec3, "x y z"}};
-        std::string kp = "P" + s, ka = "A" + s, kr = "R" + s;
-        defs[0].key = kp.c_str();
-        defs[1].key = ka.c_str();
-        defs[2].key = kr.c_str();
+        static const std::vector<OptionDef> defs1 = {
+            {"P1", Arg::Vec3, "x y z"}, {"A1", Arg::Vec3, "x y z"}, {"R1", Arg::Vec3, "x y z"}};
+        static const std::vector<OptionDef> defs2 = {
+            {"P2", Arg::Vec3, "x y z"}, {"A2", Arg::Vec3, "x y z"}, {"R2", Arg::Vec3, "x y z"}};
+        const std::vector<OptionDef>& defs = side == 1 ? defs1 : defs2;
+        const char* const kp = side == 1 ? "P1" : "P2";
+        const char* const ka = side == 1 ? "A1" : "A2";
+        const char* const kr = side == 1 ? "R1" : "R2";
         // a wrong-side key (P2 on a B1 line) gets its own message
         for (std::size_t k = m_i; k < m_toks.size(); ++k) {
+            if (!m_toks[k].isWord() || m_toks[k].text.size() != 2) continue;  // the keys are two letters
             std::string u = upper(m_toks[k].text);
-            if (m_toks[k].isWord() && (u == "P" + other || u == "A" + other || u == "R" + other)) {
+            if (u == "P" + other || u == "A" + other || u == "R" + other) {
                 ok = false;
                 m_d.error("wrong-side", m_toks[k].pos,
-                          trText("Diagnostics", "%1: %2 belongs on the B%3 line").with(ctx).with(u).with(other),
+                          trText("Diagnostics", "%1: %2 belongs on the B%3 line").with(ctx()).with(u).with(other),
                           trText("Diagnostics", "on the B%1 line write %2").with(s).with(u.substr(0, 1) + s));
                 m_toks[k].text = u.substr(0, 1) + s;  // read it as meant, to avoid a second message
             }
         }
         setKeys(defs);
         side_.src.at["B"] = here();
-        auto body = readId(ctx, trText("Diagnostics", "the body id"), ok, write(syntax));
+        auto body = readId(ctx, trText("Diagnostics", "the body id"), ok, fix);
         side_.body = body.value_or(-1);
-        Options opts = options(defs, ctx, trText("Diagnostics", "a B%1 line").with(s), ok);
-        requireOptions(opts, {kp.c_str(), ka.c_str(), kr.c_str()}, ctx, write(syntax), kw.pos, ok);
+        Options opts = options(defs, ctx, [&] { return trText("Diagnostics", "a B%1 line").with(s); }, ok);
+        requireOptions(opts, {kp, ka, kr}, ctx, fix, kw.pos, ok);
         for (const auto& [k, v] : opts) side_.src.at[k.substr(0, 1)] = v.valuePos;
         if (auto it = opts.find(kp); it != opts.end()) side_.p = it->second.v;
         if (auto it = opts.find(ka); it != opts.end()) side_.a = it->second.v;
@@ -795,15 +847,15 @@ private:
         JointSpec* j = openJoint(kw);
         if (!j) return;
         m_i = 0;  // CL1 and CL2 are both options of this line
-        const Text ctx = trText("Diagnostics", "joint %1").with(std::to_string(j->id));
+        auto ctx = [&] { return trText("Diagnostics", "joint %1").with(std::to_string(j->id)); };
         bool ok = true;
-        Options opts = options({{"CL1", Arg::Vec3, "x y z"}, {"CL2", Arg::Vec3, "x y z"}}, ctx,
-                               trText("Diagnostics", "a CL1/CL2 line"), ok);
+        static const std::vector<OptionDef> defs = {{"CL1", Arg::Vec3, "x y z"}, {"CL2", Arg::Vec3, "x y z"}};
+        Options opts = options(defs, ctx, trText("Diagnostics", "a CL1/CL2 line"), ok);
         for (const auto& [k, v] : opts) {
             bool have = j->src.at.count(k) > 0;
             if (have) {
                 ok = false;
-                m_d.error("duplicate-joint-line", v.pos, trText("Diagnostics", "%1: %2 is given twice").with(ctx).with(k),
+                m_d.error("duplicate-joint-line", v.pos, trText("Diagnostics", "%1: %2 is given twice").with(ctx()).with(k),
                           trText("Diagnostics", "keep one %1").with(k));
                 continue;
             }
@@ -819,59 +871,74 @@ private:
         DriveSpec d;
         d.src.pos = m_toks[0].pos;
         bool ok = true;
-        const std::string syntax = "D joint HYD|MOTOR|PNEU|SERVO parameters…";
-        auto joint = readId(trText("Diagnostics", "drive"), trText("Diagnostics", "the joint id"), ok, write(syntax));
+        static constexpr const char* syntax = "D joint HYD|MOTOR|PNEU|SERVO parameters…";
+        auto joint = readId(trText("Diagnostics", "drive"), trText("Diagnostics", "the joint id"), ok,
+                            [] { return write(syntax); });
         if (!joint) return;
         d.joint = *joint;
-        const Text ctx = trText("Diagnostics", "drive on joint %1").with(std::to_string(d.joint));
+        auto ctx = [&] { return trText("Diagnostics", "drive on joint %1").with(std::to_string(d.joint)); };
         if (atEnd() || !peek().isWord()) {
-            m_d.error("missing-drive-kind", here(), trText("Diagnostics", "%1: the drive kind is missing").with(ctx),
+            m_d.error("missing-drive-kind", here(), trText("Diagnostics", "%1: the drive kind is missing").with(ctx()),
                       trText("Diagnostics", "write HYD, MOTOR, PNEU or SERVO after the joint id"));
             return;
         }
         const Token& kindTok = m_toks[m_i++];
         std::string kind = upper(kindTok.text);
         d.src.at["kind"] = kindTok.pos;
-        std::vector<OptionDef> defs;
-        Text kindFix;  // the hint for what the kind requires
-        const Text speed = trText("Diagnostics", "speed"), force = trText("Diagnostics", "force"),
-                   diameter = trText("Diagnostics", "diameter"), gain = trText("Diagnostics", "gain");
-        if (kind == "HYD") {
+        static const Text speed = trText("Diagnostics", "speed"), force = trText("Diagnostics", "force"),
+                          diameter = trText("Diagnostics", "diameter"), gain = trText("Diagnostics", "gain");
+        static const std::vector<OptionDef> hydraulicDefs = {
+            {"VMAX", Arg::Num, speed},    {"VMIN", Arg::Num, speed},    {"FMAX", Arg::Num, force},
+            {"FMIN", Arg::Num, force},    {"PUMP", Arg::Num, "cc/rev"}, {"RPM", Arg::Num, "rpm"},
+            {"BORE", Arg::Num, diameter}, {"ROD", Arg::Num, diameter},  {"PRESSURE", Arg::Num, "Pa"}};
+        static const std::vector<OptionDef> motorDefs = {{"T0", Arg::Num, trText("Diagnostics", "stall torque")},
+                                                         {"W0", Arg::Num, trText("Diagnostics", "no-load speed")}};
+        static const std::vector<OptionDef> pneumaticDefs = {{"F", Arg::Num, force}};
+        static const std::vector<OptionDef> servoDefs = {
+            {"KP", Arg::Num, gain}, {"KI", Arg::Num, gain}, {"KD", Arg::Num, gain}, {"FMAX", Arg::Num, force}};
+        const std::vector<OptionDef>* defs = nullptr;
+        if (kind == "HYD"sv) {
             d.kind = DriveKind::Hydraulic;
-            defs = {{"VMAX", Arg::Num, speed},   {"VMIN", Arg::Num, speed},   {"FMAX", Arg::Num, force},
-                    {"FMIN", Arg::Num, force},   {"PUMP", Arg::Num, "cc/rev"}, {"RPM", Arg::Num, "rpm"},
-                    {"BORE", Arg::Num, diameter}, {"ROD", Arg::Num, diameter}, {"PRESSURE", Arg::Num, "Pa"}};
-            kindFix = trText("Diagnostics", "write D j HYD VMAX v [VMIN v] [FMAX f] [FMIN f], or D j HYD PUMP cc RPM n "
-                                            "BORE d ROD d PRESSURE Pa");
-        } else if (kind == "MOTOR") {
+            defs = &hydraulicDefs;
+        } else if (kind == "MOTOR"sv) {
             d.kind = DriveKind::Motor;
-            defs = {{"T0", Arg::Num, trText("Diagnostics", "stall torque")},
-                    {"W0", Arg::Num, trText("Diagnostics", "no-load speed")}};
-            kindFix = write("D j MOTOR T0 torque W0 speed");
-        } else if (kind == "PNEU") {
+            defs = &motorDefs;
+        } else if (kind == "PNEU"sv) {
             d.kind = DriveKind::Pneumatic;
-            defs = {{"F", Arg::Num, force}};
-            kindFix = write("D j PNEU F force");
-        } else if (kind == "SERVO") {
+            defs = &pneumaticDefs;
+        } else if (kind == "SERVO"sv) {
             d.kind = DriveKind::Servo;
-            defs = {{"KP", Arg::Num, gain}, {"KI", Arg::Num, gain}, {"KD", Arg::Num, gain}, {"FMAX", Arg::Num, force}};
-            kindFix = write("D j SERVO KP p KI i KD d [FMAX f]");
+            defs = &servoDefs;
         } else {
             std::string guess = closest(kind, std::array<std::string_view, 4>{"HYD", "MOTOR", "PNEU", "SERVO"});
             m_d.error("unknown-drive-kind", kindTok.pos,
-                      trText("Diagnostics", "%1: unknown drive kind '%2'").with(ctx).with(kindTok.text),
+                      trText("Diagnostics", "%1: unknown drive kind '%2'").with(ctx()).with(kindTok.text),
                       guess.empty() ? trText("Diagnostics", "drive kinds are HYD, MOTOR, PNEU and SERVO") : didYouMean(guess));
             return;
         }
-        Options opts = options(defs, ctx, trText("Diagnostics", "a %1 drive").with(kind), ok);
+        // the hint for what the kind requires
+        auto kindFix = [&]() -> Text {
+            switch (d.kind) {
+            case DriveKind::Hydraulic:
+                return trText("Diagnostics", "write D j HYD VMAX v [VMIN v] [FMAX f] [FMIN f], or D j HYD PUMP cc RPM n "
+                                             "BORE d ROD d PRESSURE Pa");
+            case DriveKind::Motor: return write("D j MOTOR T0 torque W0 speed");
+            case DriveKind::Pneumatic: return write("D j PNEU F force");
+            case DriveKind::Servo: return write("D j SERVO KP p KI i KD d [FMAX f]");
+            }
+            return {};
+        };
+        Options opts = options(*defs, ctx, [&] { return trText("Diagnostics", "a %1 drive").with(kind); }, ok);
         recordPositions(d.src, opts);
         // parameters in the order written
-        std::vector<std::pair<SourcePos, std::string>> order;
-        for (const auto& [k, v] : opts) order.emplace_back(v.pos, k);
-        std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
-            return a.first.column < b.first.column;
+        std::vector<const Options::value_type*> order;
+        order.reserve(opts.size());
+        for (const auto& kv : opts) order.push_back(&kv);
+        std::sort(order.begin(), order.end(), [](const auto* a, const auto* b) {
+            return a->second.pos.column < b->second.pos.column;
         });
-        for (const auto& [p, k] : order) d.params.emplace_back(k, opts.at(k).num);
+        d.params.reserve(order.size());
+        for (const auto* kv : order) d.params.emplace_back(kv->first, kv->second.num);
         // what each kind requires
         if (d.kind == DriveKind::Hydraulic) {
             bool hasV = opts.count("VMAX") > 0;
@@ -882,7 +949,7 @@ private:
                 ok = false;
                 m_d.error("hyd-conflict", d.src.where(opts.count("PUMP") ? "PUMP" : "RPM"),
                           trText("Diagnostics", "%1: give either VMAX/FMAX or the hydraulic data PUMP … PRESSURE, not both")
-                              .with(ctx),
+                              .with(ctx()),
                           trText("Diagnostics", "remove one of the two forms"));
             } else if (nPump > 0) {
                 requireOptions(opts, {"PUMP", "RPM", "BORE", "ROD", "PRESSURE"}, ctx, kindFix, d.src.pos, ok);
@@ -891,7 +958,7 @@ private:
                         ok = false;
                         m_d.error("hyd-conflict", d.src.where(k),
                                   trText("Diagnostics", "%1: %2 follows from the hydraulic data PUMP … PRESSURE")
-                                      .with(ctx)
+                                      .with(ctx())
                                       .with(k),
                                   trText("Diagnostics", "remove %1, or give VMAX/VMIN/FMAX/FMIN instead of the pump data")
                                       .with(k));
@@ -902,7 +969,7 @@ private:
                     ok = false;
                     m_d.error("rod-too-large", rod->second.valuePos,
                               trText("Diagnostics", "%1: the rod (%2 m) is not thinner than the bore (%3 m)")
-                                  .with(ctx)
+                                  .with(ctx())
                                   .with(fmt(rod->second.num))
                                   .with(fmt(bore->second.num)),
                               trText("Diagnostics", "ROD and BORE are diameters in metres; the rod must be thinner"));
@@ -910,7 +977,7 @@ private:
             } else if (!hasV) {
                 ok = false;
                 m_d.error("missing-option", d.src.pos,
-                          trText("Diagnostics", "%1: a hydraulic drive needs VMAX or the pump data").with(ctx), kindFix);
+                          trText("Diagnostics", "%1: a hydraulic drive needs VMAX or the pump data").with(ctx()), kindFix());
             }
         } else if (d.kind == DriveKind::Motor) {
             requireOptions(opts, {"T0", "W0"}, ctx, kindFix, d.src.pos, ok);
@@ -925,12 +992,12 @@ private:
             if (mustBePositive && v.ok && !(v.num > 0)) {
                 ok = false;
                 m_d.error("not-positive", v.valuePos,
-                          trText("Diagnostics", "%1: %2 must be positive, not %3").with(ctx).with(k).with(fmt(v.num)),
+                          trText("Diagnostics", "%1: %2 must be positive, not %3").with(ctx()).with(k).with(fmt(v.num)),
                           trText("Diagnostics", "give its magnitude; the direction comes from the operator's command"));
             } else if (!mustBePositive && v.ok && v.num < 0 && k != "F") {
                 ok = false;
                 m_d.error("not-positive", v.valuePos,
-                          trText("Diagnostics", "%1: %2 cannot be negative (%3)").with(ctx).with(k).with(fmt(v.num)),
+                          trText("Diagnostics", "%1: %2 cannot be negative (%3)").with(ctx()).with(k).with(fmt(v.num)),
                           trText("Diagnostics", "gains are zero or positive"));
             }
         }
@@ -943,75 +1010,85 @@ private:
         ForceSpec f;
         f.src.pos = m_toks[0].pos;
         bool ok = true;
-        const std::string syntax = "F id POINT|TORQUE|JOINT|SPRING|AERO parameters…";
-        auto id = readId(trText("Diagnostics", "force"), trText("Diagnostics", "the force id"), ok, write(syntax));
+        static constexpr const char* syntax = "F id POINT|TORQUE|JOINT|SPRING|AERO parameters…";
+        auto id = readId(trText("Diagnostics", "force"), trText("Diagnostics", "the force id"), ok,
+                         [] { return write(syntax); });
         if (!id) return;
         f.id = *id;
-        const Text ctx = trText("Diagnostics", "force %1").with(std::to_string(f.id));
+        auto ctx = [&] { return trText("Diagnostics", "force %1").with(std::to_string(f.id)); };
         if (atEnd() || !peek().isWord()) {
-            m_d.error("missing-force-kind", here(), trText("Diagnostics", "%1: the force kind is missing").with(ctx),
+            m_d.error("missing-force-kind", here(), trText("Diagnostics", "%1: the force kind is missing").with(ctx()),
                       trText("Diagnostics", "write POINT, TORQUE, JOINT, SPRING or AERO after the force id"));
             return;
         }
         const Token& kindTok = m_toks[m_i++];
         std::string kind = upper(kindTok.text);
         f.src.at["kind"] = kindTok.pos;
-        std::vector<OptionDef> defs;
+        static const Text body = trText("Diagnostics", "body"), coefficient = trText("Diagnostics", "coefficient");
+        static const std::vector<OptionDef> pointDefs = {{"B", Arg::Int, body},
+                                                         {"P", Arg::Vec3, "x y z"},
+                                                         {"DIR", Arg::Vec3, "x y z"},
+                                                         {"MAG", Arg::Mag, "spec"},
+                                                         {"LOCAL", Arg::Flag, ""}};
+        static const std::vector<OptionDef> torqueDefs = {
+            {"B", Arg::Int, body}, {"DIR", Arg::Vec3, "x y z"}, {"MAG", Arg::Mag, "spec"}, {"LOCAL", Arg::Flag, ""}};
+        static const std::vector<OptionDef> jointDefs = {{"MAG", Arg::Mag, "spec"}};
+        static const std::vector<OptionDef> springDefs = {{"B1", Arg::Int, body},
+                                                          {"P1", Arg::Vec3, "x y z"},
+                                                          {"B2", Arg::Int, body},
+                                                          {"P2", Arg::Vec3, "x y z"},
+                                                          {"K", Arg::Num, trText("Diagnostics", "stiffness")},
+                                                          {"L0", Arg::Num, trText("Diagnostics", "length")},
+                                                          {"C", Arg::Num, trText("Diagnostics", "damping")}};
+        static const std::vector<OptionDef> aeroDefs = {{"B", Arg::Int, body},
+                                                        {"P", Arg::Vec3, "x y z"},
+                                                        {"AREA", Arg::Num, trText("Diagnostics", "area")},
+                                                        {"CD", Arg::Num, coefficient},
+                                                        {"CL", Arg::Num, coefficient},
+                                                        {"RHO", Arg::Num, trText("Diagnostics", "density")}};
+        const std::vector<OptionDef>* defs = nullptr;
         std::vector<const char*> required;
-        std::string ksyn;
-        const Text body = trText("Diagnostics", "body"), coefficient = trText("Diagnostics", "coefficient");
-        if (kind == "POINT") {
+        const char* ksyn = nullptr;
+        if (kind == "POINT"sv) {
             f.kind = ForceKind::Point;
-            defs = {{"B", Arg::Int, body}, {"P", Arg::Vec3, "x y z"}, {"DIR", Arg::Vec3, "x y z"},
-                    {"MAG", Arg::Mag, "spec"}, {"LOCAL", Arg::Flag, ""}};
+            defs = &pointDefs;
             required = {"B", "P", "DIR", "MAG"};
             ksyn = "F id POINT B body P x y z DIR x y z MAG spec [LOCAL]";
-        } else if (kind == "TORQUE") {
+        } else if (kind == "TORQUE"sv) {
             f.kind = ForceKind::Torque;
-            defs = {{"B", Arg::Int, body}, {"DIR", Arg::Vec3, "x y z"}, {"MAG", Arg::Mag, "spec"},
-                    {"LOCAL", Arg::Flag, ""}};
+            defs = &torqueDefs;
             required = {"B", "DIR", "MAG"};
             ksyn = "F id TORQUE B body DIR x y z MAG spec [LOCAL]";
-        } else if (kind == "JOINT") {
+        } else if (kind == "JOINT"sv) {
             f.kind = ForceKind::Joint;
-            defs = {{"MAG", Arg::Mag, "spec"}};
-            setKeys(defs);
+            defs = &jointDefs;
+            setKeys(*defs);
             f.src.at["JOINT"] = here();
-            auto j = readId(ctx, trText("Diagnostics", "the joint id"), ok, write("F id JOINT joint MAG spec"));
+            auto j = readId(ctx, trText("Diagnostics", "the joint id"), ok,
+                            [] { return write("F id JOINT joint MAG spec"); });
             f.joint = j.value_or(-1);
             required = {"MAG"};
             ksyn = "F id JOINT joint MAG spec";
-        } else if (kind == "SPRING") {
+        } else if (kind == "SPRING"sv) {
             f.kind = ForceKind::Spring;
-            defs = {{"B1", Arg::Int, body},
-                    {"P1", Arg::Vec3, "x y z"},
-                    {"B2", Arg::Int, body},
-                    {"P2", Arg::Vec3, "x y z"},
-                    {"K", Arg::Num, trText("Diagnostics", "stiffness")},
-                    {"L0", Arg::Num, trText("Diagnostics", "length")},
-                    {"C", Arg::Num, trText("Diagnostics", "damping")}};
+            defs = &springDefs;
             required = {"B1", "P1", "B2", "P2", "K", "L0"};
             ksyn = "F id SPRING B1 i P1 x y z B2 k P2 x y z K k L0 l [C c]";
-        } else if (kind == "AERO") {
+        } else if (kind == "AERO"sv) {
             f.kind = ForceKind::Aero;
-            defs = {{"B", Arg::Int, body},
-                    {"P", Arg::Vec3, "x y z"},
-                    {"AREA", Arg::Num, trText("Diagnostics", "area")},
-                    {"CD", Arg::Num, coefficient},
-                    {"CL", Arg::Num, coefficient},
-                    {"RHO", Arg::Num, trText("Diagnostics", "density")}};
+            defs = &aeroDefs;
             required = {"B", "P", "AREA", "CD"};
             ksyn = "F id AERO B body P x y z AREA a CD c [CL c] [RHO r]";
         } else {
             std::string guess = closest(kind, std::array<std::string_view, 5>{"POINT", "TORQUE", "JOINT", "SPRING", "AERO"});
             m_d.error("unknown-force-kind", kindTok.pos,
-                      trText("Diagnostics", "%1: unknown force kind '%2'").with(ctx).with(kindTok.text),
+                      trText("Diagnostics", "%1: unknown force kind '%2'").with(ctx()).with(kindTok.text),
                       guess.empty() ? trText("Diagnostics", "force kinds are POINT, TORQUE, JOINT, SPRING and AERO")
                                     : didYouMean(guess));
             return;
         }
-        Options opts = options(defs, ctx, trText("Diagnostics", "a %1 force").with(kind), ok);
-        requireOptions(opts, required, ctx, write(ksyn), f.src.pos, ok);
+        Options opts = options(*defs, ctx, [&] { return trText("Diagnostics", "a %1 force").with(kind); }, ok);
+        requireOptions(opts, required, ctx, [&] { return write(ksyn); }, f.src.pos, ok);
         recordPositions(f.src, opts);
         auto get = [&](const char* k) -> const OptionValue* {
             auto it = opts.find(k);
@@ -1045,32 +1122,35 @@ private:
         GraphicSpec g;
         g.src.pos = m_toks[0].pos;
         bool ok = true;
-        const std::string syntax = "G id B body SHAPE dimensions… [POS x y z] [AXIS x y z] [ROT ax ay az deg] "
-                                   "[COLOR r g b] [MASS m | RHO density]";
-        auto id = readId(trText("Diagnostics", "graphic"), trText("Diagnostics", "the graphic id"), ok, write(syntax));
+        static constexpr const char* syntax = "G id B body SHAPE dimensions… [POS x y z] [AXIS x y z] [ROT ax ay az deg] "
+                                              "[COLOR r g b] [MASS m | RHO density]";
+        auto fix = [] { return write(syntax); };
+        auto id = readId(trText("Diagnostics", "graphic"), trText("Diagnostics", "the graphic id"), ok, fix);
         if (!id) return;
         g.id = *id;
-        const Text ctx = trText("Diagnostics", "graphic %1").with(std::to_string(g.id));
+        auto ctx = [&] { return trText("Diagnostics", "graphic %1").with(std::to_string(g.id)); };
         if (atEnd() || !peek().is("B")) {
-            m_d.error("missing-option", here(), trText("Diagnostics", "%1: B body is missing after the id").with(ctx),
-                      write(syntax));
+            m_d.error("missing-option", here(), trText("Diagnostics", "%1: B body is missing after the id").with(ctx()),
+                      fix());
             return;
         }
         ++m_i;
-        std::vector<OptionDef> defs = {{"POS", Arg::Vec3, "x y z"},    {"AXIS", Arg::Vec3, "x y z"},
-                                       {"ROT", Arg::Num4, "ax ay az deg"}, {"COLOR", Arg::Vec3, "r g b"},
-                                       {"MASS", Arg::Num, trText("Diagnostics", "mass")},
-                                       {"RHO", Arg::Num, trText("Diagnostics", "density")},
-                                       {"SCALE", Arg::Num, trText("Diagnostics", "factor")}};
+        // the options of a mesh; the other shapes take all but SCALE
+        static const std::vector<OptionDef> meshDefs = {{"POS", Arg::Vec3, "x y z"},
+                                                        {"AXIS", Arg::Vec3, "x y z"},
+                                                        {"ROT", Arg::Num4, "ax ay az deg"},
+                                                        {"COLOR", Arg::Vec3, "r g b"},
+                                                        {"MASS", Arg::Num, trText("Diagnostics", "mass")},
+                                                        {"RHO", Arg::Num, trText("Diagnostics", "density")},
+                                                        {"SCALE", Arg::Num, trText("Diagnostics", "factor")}};
+        static const std::vector<OptionDef> solidDefs(meshDefs.begin(), meshDefs.end() - 1);
         // a word in the body id's place is a malformed id unless it is a shape
-        setKeys({{"BOX", Arg::Flag, ""}, {"CYL", Arg::Flag, ""}, {"TUBE", Arg::Flag, ""},
-                 {"SPHERE", Arg::Flag, ""}, {"CONE", Arg::Flag, ""}, {"ELLIPSOID", Arg::Flag, ""},
-                 {"PRISM", Arg::Flag, ""}, {"MESH", Arg::Flag, ""}});
+        setKeys({"BOX", "CYL", "TUBE", "SPHERE", "CONE", "ELLIPSOID", "PRISM", "MESH"});
         g.src.at["B"] = here();
-        auto body = readId(ctx, trText("Diagnostics", "the body id"), ok, write(syntax));
+        auto body = readId(ctx, trText("Diagnostics", "the body id"), ok, fix);
         g.body = body.value_or(-1);
         if (atEnd() || !peek().isWord()) {
-            m_d.error("missing-shape", here(), trText("Diagnostics", "%1: the shape is missing").with(ctx),
+            m_d.error("missing-shape", here(), trText("Diagnostics", "%1: the shape is missing").with(ctx()),
                       trText("Diagnostics", "write BOX, CYL, TUBE, SPHERE, CONE, ELLIPSOID, PRISM or MESH and its dimensions"));
             return;
         }
@@ -1090,37 +1170,39 @@ private:
         }};
         const ShapeDef* sd = nullptr;
         for (const ShapeDef& s : shapes) {
-            if (shape == s.key) sd = &s;
+            if (shape == std::string_view(s.key)) sd = &s;
         }
         if (!sd) {
             std::vector<std::string_view> names;
             for (const ShapeDef& s : shapes) names.push_back(s.key);
             std::string guess = closest(shape, names);
-            m_d.error("unknown-shape", shapeTok.pos, trText("Diagnostics", "%1: unknown shape '%2'").with(ctx).with(shapeTok.text),
+            m_d.error("unknown-shape", shapeTok.pos, trText("Diagnostics", "%1: unknown shape '%2'").with(ctx()).with(shapeTok.text),
                       guess.empty() ? trText("Diagnostics", "shapes are BOX, CYL, TUBE, SPHERE, CONE, ELLIPSOID, PRISM and MESH")
                                     : didYouMean(guess));
             return;
         }
         g.shape = sd->kind;
-        if (sd->kind != ShapeKind::Mesh) defs.pop_back();  // SCALE is for meshes only
+        const std::vector<OptionDef>& defs = sd->kind == ShapeKind::Mesh ? meshDefs : solidDefs;  // SCALE is for meshes only
         setKeys(defs);
-        const std::string dsyn = std::string(sd->key) + " " + sd->dims;
+        auto dimsFix = [&] { return write(std::string(sd->key) + " " + sd->dims); };
         g.src.at["dims"] = here();
         if (sd->n > 0) {
             for (int k = 0; k < sd->n; ++k) {
                 auto v = number(ctx,
-                                trText("Diagnostics", "%1 dimension %2 of %3 (%4)")
-                                    .with(sd->key)
-                                    .with(std::to_string(k + 1))
-                                    .with(std::to_string(sd->n))
-                                    .with(sd->dims),
-                                ok, write(dsyn));
+                                [&] {
+                                    return trText("Diagnostics", "%1 dimension %2 of %3 (%4)")
+                                        .with(sd->key)
+                                        .with(std::to_string(k + 1))
+                                        .with(std::to_string(sd->n))
+                                        .with(sd->dims);
+                                },
+                                ok, dimsFix);
                 if (!v && !ok && (atEnd() || !numberLike(peek()))) break;
                 g.dims.push_back(v.value_or(0));
             }
         } else if (sd->kind == ShapeKind::Prism) {
             while (!atEnd() && badNumberLike(peek())) {
-                auto v = number(ctx, trText("Diagnostics", "a PRISM value"), ok, write(dsyn));
+                auto v = number(ctx, trText("Diagnostics", "a PRISM value"), ok, dimsFix);
                 g.dims.push_back(v.value_or(0));
             }
             if (g.dims.size() < 7 || g.dims.size() % 2 == 0) {
@@ -1128,9 +1210,9 @@ private:
                 m_d.error("bad-prism", g.src.where("dims"),
                           trText("Diagnostics", "%1: PRISM needs its height H and at least three x y vertices, found %2 "
                                                 "numbers")
-                              .with(ctx)
+                              .with(ctx())
                               .with(std::to_string(g.dims.size())),
-                          write(dsyn));
+                          dimsFix());
             }
         } else {  // MESH
             if (!atEnd() && peek().isString()) {
@@ -1139,11 +1221,11 @@ private:
                 // a file name without quotes: one diagnostic, and the options after it are read
                 ok = false;
                 const Token& t = m_toks[m_i++];
-                m_d.error("missing-string", t.pos, trText("Diagnostics", "%1: the MESH file name must be in double quotes").with(ctx),
+                m_d.error("missing-string", t.pos, trText("Diagnostics", "%1: the MESH file name must be in double quotes").with(ctx()),
                           write("MESH \"" + t.text + "\""));
             } else {
                 ok = false;
-                m_d.error("missing-string", here(), trText("Diagnostics", "%1: MESH needs a file name in double quotes").with(ctx),
+                m_d.error("missing-string", here(), trText("Diagnostics", "%1: MESH needs a file name in double quotes").with(ctx()),
                           trText("Diagnostics", "write MESH \"meshes/part.stl\" (relative to the model file)"));
             }
         }
@@ -1162,7 +1244,7 @@ private:
         if (auto v = get("SCALE")) { g.scale = v->num; g.hasScale = true; }
         if (g.mass && g.rho) {
             ok = false;
-            m_d.error("mass-and-rho", g.src.where("RHO"), trText("Diagnostics", "%1: give MASS or RHO, not both").with(ctx),
+            m_d.error("mass-and-rho", g.src.where("RHO"), trText("Diagnostics", "%1: give MASS or RHO, not both").with(ctx()),
                       trText("Diagnostics", "MASS is the solid's mass in kg; RHO its density in kg/m³"));
         }
         g.src.complete = ok;
