@@ -3671,10 +3671,10 @@
         <location line="+4" />
         <source>Steps: every drive commanded by a sine (amplitude 0.8, 0.5 Hz, phases spread) set before every
 step (held: set once), limits and relief valves watched as events, the joint reactions computed
-in every evaluation. Events in one run: %1.</source>
+at every step's end. Events in one run: %1.</source>
         <translation>Steps: every drive commanded by a sine (amplitude 0.8, 0.5 Hz, phases spread) set before every
 step (held: set once), limits and relief valves watched as events, the joint reactions computed
-in every evaluation. Events in one run: %1.</translation>
+at every step's end. Events in one run: %1.</translation>
     </message>
     <message>
         <location line="+5" />
@@ -3763,8 +3763,8 @@ slowest run (the machine is noisy); times in µs per evaluation or per step.
 
 The RK4 steps command every drive with a slow sine, set before every step (so
 valves open and close and every step restarts the integrator, as at the station),
-watch limits and relief valves, and compute the joint reactions in every
-evaluation; they are also timed with the commands held, and passive without
+watch limits and relief valves, and compute the joint reactions at every
+step's end; they are also timed with the commands held, and passive without
 limits. The real-time factor is dt / step time.
 
 Exit status: 0 success; 1 the model has errors or a simulation failed;
@@ -3794,8 +3794,8 @@ slowest run (the machine is noisy); times in µs per evaluation or per step.
 
 The RK4 steps command every drive with a slow sine, set before every step (so
 valves open and close and every step restarts the integrator, as at the station),
-watch limits and relief valves, and compute the joint reactions in every
-evaluation; they are also timed with the commands held, and passive without
+watch limits and relief valves, and compute the joint reactions at every
+step's end; they are also timed with the commands held, and passive without
 limits. The real-time factor is dt / step time.
 
 Exit status: 0 success; 1 the model has errors or a simulation failed;

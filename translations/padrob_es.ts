@@ -3671,11 +3671,11 @@
         <location line="+4" />
         <source>Steps: every drive commanded by a sine (amplitude 0.8, 0.5 Hz, phases spread) set before every
 step (held: set once), limits and relief valves watched as events, the joint reactions computed
-in every evaluation. Events in one run: %1.</source>
+at every step's end. Events in one run: %1.</source>
         <translation>Pasos: cada accionamiento comandado por una sinusoide (amplitud 0.8, 0.5 Hz, fases repartidas)
 fijada antes de cada paso (mantenidos: fijada una vez), límites y válvulas de alivio vigilados
-como eventos, las reacciones en las articulaciones calculadas en cada evaluación. Eventos en
-una ejecución: %1.</translation>
+como eventos, las reacciones en las articulaciones calculadas al final de cada paso. Eventos
+en una ejecución: %1.</translation>
     </message>
     <message>
         <location line="+5" />
@@ -3764,8 +3764,8 @@ slowest run (the machine is noisy); times in µs per evaluation or per step.
 
 The RK4 steps command every drive with a slow sine, set before every step (so
 valves open and close and every step restarts the integrator, as at the station),
-watch limits and relief valves, and compute the joint reactions in every
-evaluation; they are also timed with the commands held, and passive without
+watch limits and relief valves, and compute the joint reactions at every
+step's end; they are also timed with the commands held, and passive without
 limits. The real-time factor is dt / step time.
 
 Exit status: 0 success; 1 the model has errors or a simulation failed;
@@ -3798,7 +3798,7 @@ paso.
 Los pasos de RK4 comandan cada accionamiento con una sinusoide lenta, fijada antes
 de cada paso (así las válvulas abren y cierran y cada paso reinicia el integrador,
 como en el puesto), vigilan límites y válvulas de alivio, y calculan las reacciones
-en las articulaciones en cada evaluación; también se miden con los comandos
+en las articulaciones al final de cada paso; también se miden con los comandos
 mantenidos, y pasivos sin límites. El factor de tiempo real es dt / tiempo del paso.
 
 Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;

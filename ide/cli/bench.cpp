@@ -12,8 +12,9 @@
 //    sine (each drive its own phase; the command is set before every step, as the
 //    station does every millisecond, so valves open and close, and each new command
 //    restarts the integrator), limits and relief valves watched as events. The
-//    reactions are part of every evaluation of the dynamics, and advanceTo() ends
-//    with one more evaluation, so data() holds them after every step;
+//    integrator's stages compute θ̈ only; every step ends with a whole evaluation
+//    (reactions, drive forces, the event functions), so data() holds them after
+//    every step;
 //  - passive RK4 step: the same ODE without drives and limits (what MuJoCo is
 //    compared on: the same equations, no events);
 //  - the reference: the thesis's Newton–Euler system A·X = B (solver/reference/
@@ -607,7 +608,7 @@ std::string textReport(const Options& o, const ModelFigures* mf, const Scaling* 
         t += "\n";
         t += fill(trStd("padrob", "Steps: every drive commanded by a sine (amplitude 0.8, 0.5 Hz, phases spread) set before every\n"
                                   "step (held: set once), limits and relief valves watched as events, the joint reactions computed\n"
-                                  "in every evaluation. Events in one run: %1."),
+                                  "at every step's end. Events in one run: %1."),
                   {std::to_string(f.events)}) +
              "\n";
         t += fill(trStd("padrob", "Reference: the thesis's Newton–Euler system A·X = B (eq. 2.8–2.11), dense LU, %1 solves\n"
@@ -674,8 +675,8 @@ std::string benchHelp()
               "\n"
               "The RK4 steps command every drive with a slow sine, set before every step (so\n"
               "valves open and close and every step restarts the integrator, as at the station),\n"
-              "watch limits and relief valves, and compute the joint reactions in every\n"
-              "evaluation; they are also timed with the commands held, and passive without\n"
+              "watch limits and relief valves, and compute the joint reactions at every\n"
+              "step's end; they are also timed with the commands held, and passive without\n"
               "limits. The real-time factor is dt / step time.\n"
               "\n"
               "Exit status: 0 success; 1 the model has errors or a simulation failed;\n"
