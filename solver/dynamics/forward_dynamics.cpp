@@ -104,7 +104,7 @@ int bodyTerms(const Model& model, const State& state, Data& data, bool keepInert
 
 /// Pass 4: with data.f holding each body's I a + p less the constraint loads on it,
 /// the joint forces leaves to root, the reactions, the drive and limit-stop forces.
-void jointForces(const Model& model, const State& state, Data& data)
+void jointForces(const Model& model, const State& state, Data& data, bool reactions = true)
 {
     const int nb = model.nb;
     // 4. joint forces, leaves to root (eq. 2.8–2.9 summed over each subtree)
@@ -114,12 +114,14 @@ void jointForces(const Model& model, const State& state, Data& data)
         data.tau[i] = data.S[i].dot(f);
 
         // reaction at the child's joint point, in world and joint axes
-        const Eigen::Isometry3d& X_wj = data.X_wj[i];
-        Vector6d& rw = data.reactionWorld[i];
-        rw = forceAboutPoint(f, X_wj.translation());
-        const Matrix3d Rt = X_wj.linear().transpose();
-        data.reactionJoint[i].head<3>().noalias() = Rt * rw.head<3>();
-        data.reactionJoint[i].tail<3>().noalias() = Rt * rw.tail<3>();
+        if (reactions) {
+            const Eigen::Isometry3d& X_wj = data.X_wj[i];
+            Vector6d& rw = data.reactionWorld[i];
+            rw = forceAboutPoint(f, X_wj.translation());
+            const Matrix3d Rt = X_wj.linear().transpose();
+            data.reactionJoint[i].head<3>().noalias() = Rt * rw.head<3>();
+            data.reactionJoint[i].tail<3>().noalias() = Rt * rw.tail<3>();
+        }
 
         // drive and limit-stop forces
         // (a held hydraulic joint's cylinder carries what the joint transmits, less tauExt)
@@ -153,10 +155,10 @@ void hybridDynamics(const Model& model, const State& state, Data& data, Dynamics
     hybridDynamicsFrom(model, state, data, outputs, bodyTerms(model, state, data));
 }
 
-void hybridDynamicsSamePositions(const Model& model, const State& state, Data& data)
+void hybridDynamicsSamePositions(const Model& model, const State& state, Data& data, DynamicsOutputs outputs)
 {
     assert(sized(model, state, data) && !hasConstraints(model, state));
-    hybridDynamicsFrom(model, state, data, DynamicsOutputs::All, bodyTerms(model, state, data, true));
+    hybridDynamicsFrom(model, state, data, outputs, bodyTerms(model, state, data, true));
 }
 
 namespace {
@@ -171,7 +173,7 @@ void hybridDynamicsFrom(const Model& model, const State& state, Data& data, Dyna
     data.constraints.clear();
     data.constraintReactionWorld.clear();
     data.constraintReactionJoint.clear();
-    const bool all = outputs == DynamicsOutputs::All;
+    const bool all = outputs != DynamicsOutputs::Accelerations;  // the forces too
     // every θ̈ known: no articulated inertias; with the forces asked for, the
     // Newton–Euler passes alone (RNEA)
     if (nFree == 0 && !all) return;
@@ -223,7 +225,7 @@ void hybridDynamicsFrom(const Model& model, const State& state, Data& data, Dyna
         data.f[i] = data.Ib[i] * a + data.pb[i];
     }
 
-    if (all) jointForces(model, state, data);
+    if (all) jointForces(model, state, data, outputs == DynamicsOutputs::All);
 }
 
 }  // namespace

@@ -49,6 +49,7 @@ namespace solver {
 /// What hybridDynamics computes besides θ̈.
 enum class DynamicsOutputs {
     All,            ///< θ̈, the body accelerations, the joint forces and reactions
+    Forces,         ///< all but the reactions (reactionWorld, reactionJoint): the event functions' needs
     Accelerations,  ///< θ̈ only (an integrator's stage): no reactions, no body accelerations
 };
 
@@ -73,7 +74,8 @@ void hybridDynamics(const Model& model, const State& state, Data& data,
 /// hybridDynamics after a change of θ̇ (or of modes, commands, loads) only: data holds
 /// an evaluation at the same θ, whose body inertias are kept (velocityKinematics, then
 /// applyForces, then this). Without constraints only (the caller checks).
-void hybridDynamicsSamePositions(const Model& model, const State& state, Data& data);
+void hybridDynamicsSamePositions(const Model& model, const State& state, Data& data,
+                                 DynamicsOutputs outputs = DynamicsOutputs::All);
 
 /// When every joint's acceleration is prescribed at `state` and there are no
 /// constraints, θ̈ follows from the drive laws alone (drives.h): writes it into

@@ -380,7 +380,9 @@ void Simulation::setInitial(int joint, double theta, double thetaDot)
     evaluate();
 }
 
-void Simulation::evaluate()
+void Simulation::evaluate() { evaluate(DynamicsOutputs::All); }
+
+void Simulation::evaluate(DynamicsOutputs outputs)
 {
     const Model& m = *m_model;
     // at the positions m_data was last evaluated at (the rules after a new command only
@@ -388,7 +390,7 @@ void Simulation::evaluate()
     if (!hasConstraints(m, m_state) && m_positionsAt == m_state.q) {
         velocityKinematics(m, m_state.qd, m_data);
         applyForces(m, m_state, m_data);
-        hybridDynamicsSamePositions(m, m_state, m_data);
+        hybridDynamicsSamePositions(m, m_state, m_data, outputs);
     } else {
         evaluateAll(m, m_state, m_data);
     }
@@ -706,7 +708,9 @@ bool Simulation::applyModeRules(std::vector<SimulationEvent>& events)
         }
         prescribeRates();
         m_state.constraintRank = -1;  // found anew, here on the constraints
-        evaluate();
+        // (the forces the event functions need; the reactions follow at the step's end,
+        // or advanceTo() evaluates them when it ends here)
+        evaluate(DynamicsOutputs::Forces);
         m_state.constraintRank = m_data.constraintRank;
         m_expectedRank = m_data.constraintRank;
         m_system->expectedRank = m_expectedRank;

@@ -44,6 +44,7 @@
 #include "solver/core/data.h"
 #include "solver/core/model.h"
 #include "solver/core/state.h"
+#include "solver/dynamics/forward_dynamics.h"
 #include "solver/integrate/integrator.h"
 
 #include <memory>
@@ -165,6 +166,8 @@ private:
     /// settled on (false: a mode changed after the last evaluation, or a loop locked).
     bool applyModeRules(std::vector<SimulationEvent>& events);
     void handleRoots(std::span<const int> fired, std::vector<SimulationEvent>& events);
+    /// evaluate() with only some outputs (DynamicsOutputs: forward_dynamics.h).
+    void evaluate(DynamicsOutputs outputs);
     /// Restarts the integrator at the current state; `settled`: applyModeRules' last
     /// evaluation is of this state (f and g are then handed over, not evaluated again).
     void resetIntegrator(bool settled);
