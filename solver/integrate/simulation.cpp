@@ -777,6 +777,7 @@ bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, st
         return false;
     }
     const bool constrained = hasConstraints(*m_model, m_state);
+    bool dataCurrent = false;  // m_data holds the evaluation of the state reached
     int eventCount = 0;
     while (true) {
         m_setJoints.clear();
@@ -849,8 +850,14 @@ bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, st
                 return false;
             }
             if (r.status == AdvanceStatus::Reached) {
+                // the evaluation just made is the outputs here and the next step's start
+                // (the same state, the same modes and rank as the integrator's stages use)
                 packState();
-                m_integrator->reset(m_state.t, m_y.data());
+                System::eventFunctions(*m_model, m_state, m_data, m_options.limits, m_expectedRank, m_g.data());
+                System::derivative(*m_model, m_state, m_data, m_ydot.data());
+                m_integrator->reset(m_state.t, m_y.data(), m_ydot.data(),
+                                    m_system->rootCount() > 0 ? m_g.data() : nullptr);
+                dataCurrent = true;
             }
         }
         if (r.status == AdvanceStatus::Reached) break;
@@ -875,6 +882,7 @@ bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, st
         resetIntegrator(settled);
     }
     // the integrator's last evaluation was the step's end, where we are: take it
+    if (dataCurrent) return true;
     if (m_system->takeEvaluation(m_state.t, m_y.data(), m_data)) {
         m_positionsAt = m_state.q;
     } else {
