@@ -12,7 +12,9 @@
 //     written to the runner), for one view and for three (the operator's screens):
 //     N frames paced by the window's own 60 Hz poll timer (time between frames, time
 //     to draw), then N frames back to back (new poses, repaint, composed and flushed:
-//     the pure cost of a frame) — each with the solver's step periods meanwhile;
+//     the pure cost of a frame; also the process's CPU time per frame, all threads,
+//     which other programs on a busy machine disturb less than the wall time) — each
+//     with the solver's step periods meanwhile;
 //  3. the input-to-solver latency of 60 key presses: trainer::KeyboardDevice (the 3D
 //     view's keys) → the station's input thread → SimulationRunner → the first
 //     snapshot whose command has the new value, while the window keeps drawing at

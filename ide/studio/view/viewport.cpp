@@ -3,6 +3,7 @@
 #include "ide/studio/view/scene_geometry.h"
 
 #include <QElapsedTimer>
+#include <QFile>
 #include <QMouseEvent>
 #include <QOpenGLBuffer>
 #include <QOpenGLContext>
@@ -40,7 +41,6 @@ const Eigen::Vector3f kGhostTint(0.55f, 0.8f, 1.0f);  // the ghost: a pale blue
 
 // lighting inside a scene (an interior): the daylight dimmed, the scene's lamps lit
 constexpr float kInteriorDaylight = 0.45f;
-constexpr int kMaxLights = 4;               // as viewport.frag's uLightEye
 const Vector3f kLampLight(1.0f, 0.90f, 0.72f);  // warm white
 constexpr float kLampRange = 4.0f;          // [m]: a lamp lights half as much this far away
 
@@ -337,41 +337,61 @@ void Viewport::initializeGL()
         return;
     }
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::releaseGl, Qt::UniqueConnection);
-    auto build = [this](std::unique_ptr<QOpenGLShaderProgram>& program, const QString& vert, const QString& frag) {
-        program = std::make_unique<QOpenGLShaderProgram>();
-        const bool ok = program->addShaderFromSourceFile(QOpenGLShader::Vertex, vert) &&
-                        program->addShaderFromSourceFile(QOpenGLShader::Fragment, frag) && program->link();
-        if (!ok && !m_glFailed) {
-            emit problem(tr("The 3D view's shaders do not build: %1").arg(program->log()));
-            m_glFailed = true;
-        }
-        return ok;
-    };
-    if (!build(m_program, QStringLiteral(":/studio/shaders/viewport.vert"),
-               QStringLiteral(":/studio/shaders/viewport.frag")) ||
-        !build(m_background, QStringLiteral(":/studio/shaders/background.vert"),
-               QStringLiteral(":/studio/shaders/background.frag"))) {
+    // the background, and the solids' program without lamps (the others when a scene needs them)
+    m_background = std::make_unique<QOpenGLShaderProgram>();
+    const bool background =
+        m_background->addShaderFromSourceFile(QOpenGLShader::Vertex,
+                                              QStringLiteral(":/studio/shaders/background.vert")) &&
+        m_background->addShaderFromSourceFile(QOpenGLShader::Fragment,
+                                              QStringLiteral(":/studio/shaders/background.frag")) &&
+        m_background->link();
+    if (!background) {
+        if (!m_glFailed) emit problem(tr("The 3D view's shaders do not build: %1").arg(m_background->log()));
+        m_glFailed = true;
         return;
     }
-    m_u.model = m_program->uniformLocation("uModel");
-    m_u.view = m_program->uniformLocation("uView");
-    m_u.projection = m_program->uniformLocation("uProjection");
-    m_u.normalMatrix = m_program->uniformLocation("uNormalMatrix");
-    m_u.lit = m_program->uniformLocation("uLit");
-    m_u.tint = m_program->uniformLocation("uTint");
-    m_u.alpha = m_program->uniformLocation("uAlpha");
-    m_u.upEye = m_program->uniformLocation("uUpEye");
-    m_u.fadeCentre = m_program->uniformLocation("uFadeCentre");
-    m_u.fadeRadius = m_program->uniformLocation("uFadeRadius");
-    m_u.clipPlane = m_program->uniformLocation("uClipPlane");
-    m_u.daylight = m_program->uniformLocation("uDaylight");
-    m_u.lightCount = m_program->uniformLocation("uLightCount");
-    m_u.lightEye = m_program->uniformLocation("uLightEye");
-    m_u.lightColor = m_program->uniformLocation("uLightColor");
-    m_u.lightRange = m_program->uniformLocation("uLightRange");
+    m_backgroundBottom = m_background->uniformLocation("uBottom");
+    m_backgroundTop = m_background->uniformLocation("uTop");
+    if (!buildProgram(m_programs[0], 0)) return;
     createMesh(m_modelMesh);
     createMesh(m_sceneMesh);
     m_glReady = true;
+}
+
+bool Viewport::buildProgram(Program& p, int lamps)
+{
+    // viewport.frag with LAMP_COUNT defined (after its #version line)
+    QFile file(QStringLiteral(":/studio/shaders/viewport.frag"));
+    QByteArray fragment = file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+    const qsizetype eol = fragment.indexOf('\n');
+    fragment.insert(eol < 0 ? 0 : eol + 1, QByteArray("#define LAMP_COUNT ") + QByteArray::number(lamps) + '\n');
+    p.program = std::make_unique<QOpenGLShaderProgram>();
+    const bool ok =
+        p.program->addShaderFromSourceFile(QOpenGLShader::Vertex, QStringLiteral(":/studio/shaders/viewport.vert")) &&
+        p.program->addShaderFromSourceCode(QOpenGLShader::Fragment, fragment) && p.program->link();
+    if (!ok) {
+        if (!m_glFailed) emit problem(tr("The 3D view's shaders do not build: %1").arg(p.program->log()));
+        m_glFailed = true;
+        p.program.reset();
+        return false;
+    }
+    QOpenGLShaderProgram& g = *p.program;
+    p.u.model = g.uniformLocation("uModel");
+    p.u.view = g.uniformLocation("uView");
+    p.u.projection = g.uniformLocation("uProjection");
+    p.u.normalMatrix = g.uniformLocation("uNormalMatrix");
+    p.u.lit = g.uniformLocation("uLit");
+    p.u.tint = g.uniformLocation("uTint");
+    p.u.alpha = g.uniformLocation("uAlpha");
+    p.u.upEye = g.uniformLocation("uUpEye");
+    p.u.fadeCentre = g.uniformLocation("uFadeCentre");
+    p.u.fadeRadius = g.uniformLocation("uFadeRadius");
+    p.u.clipPlane = g.uniformLocation("uClipPlane");
+    p.u.daylight = g.uniformLocation("uDaylight");
+    p.u.lightEye = g.uniformLocation("uLightEye");
+    p.u.lightColor = g.uniformLocation("uLightColor");
+    p.u.lightRange = g.uniformLocation("uLightRange");
+    return true;
 }
 
 void Viewport::createMesh(GlMesh& mesh)
@@ -387,7 +407,7 @@ void Viewport::createMesh(GlMesh& mesh)
 
 void Viewport::releaseGl()
 {
-    if (!m_program && !m_modelMesh.vao) return;
+    if (!m_background && !m_modelMesh.vao) return;
     makeCurrent();
     for (GlMesh* mesh : {&m_modelMesh, &m_sceneMesh}) {
         mesh->indices.reset();
@@ -395,7 +415,8 @@ void Viewport::releaseGl()
         mesh->vao.reset();
         mesh->uploaded = false;
     }
-    m_program.reset();
+    for (Program& p : m_programs) p.program.reset();
+    m_program = nullptr;
     m_background.reset();
     m_glReady = false;
     doneCurrent();
@@ -489,6 +510,11 @@ void Viewport::paintGL()
     const bool scene = m_dressing && !m_dressing->mesh.indices.empty();
     if (scene && !m_sceneMesh.uploaded) upload(m_sceneMesh, m_dressing->mesh);
     const SceneGeometry& g = *m_geometry;
+    const int lamps = lampCount();
+    Program& program = m_programs[static_cast<std::size_t>(lamps)];
+    if (!program.program && !buildProgram(program, lamps)) return;
+    m_program = &program;
+    m_u = program.u;
 
     m_modelMesh.vao->bind();
     glDisable(GL_CULL_FACE);
@@ -513,7 +539,7 @@ void Viewport::paintGL()
     }
     const Matrix4f projection = m_camera.projectionMatrix(aspect(), centre, radius, farthest).cast<float>();
     const Vector3f upEye = m_view.topLeftCorner<3, 3>() * Vector3f::UnitZ();
-    m_program->bind();
+    m_program->program->bind();
     glUniformMatrix4fv(m_u.view, 1, GL_FALSE, m_view.data());
     glUniformMatrix4fv(m_u.projection, 1, GL_FALSE, projection.data());
     glUniform3f(m_u.upEye, upEye.x(), upEye.y(), upEye.z());
@@ -521,7 +547,7 @@ void Viewport::paintGL()
     glUniform1f(m_u.fadeRadius, 0.0f);
     glUniform2f(m_u.fadeCentre, 0.0f, 0.0f);
     glUniform4f(m_u.clipPlane, 0.0f, 0.0f, 0.0f, 1.0f);
-    setLights();
+    setLights(lamps);
     setTint(Vector3f::Zero(), 0.0f);
     setAlpha(1.0f);
 
@@ -529,28 +555,27 @@ void Viewport::paintGL()
         m_slotMatrices[static_cast<std::size_t>(s)] = bodyPose(s - 1).matrix().cast<float>();
     }
 
-    // the model
+    // the solids (the model, the scene, the world axes): first their depth alone, then
+    // their colour, without depth writes, where they are nearest. A software renderer
+    // (llvmpipe) then shades every pixel once instead of once per layer of the mill
+    // (liners, their backs, the shell behind): with the same program and state in
+    // both passes the depths are the same, and with GL_LEQUAL the same fragment wins
+    // as in a single pass (the last one drawn at the nearest depth).
     const bool schematic = m_mode == DisplayMode::Schematic;
-    drawSlots(schematic, !schematic);
-    if (schematic) drawActuators(-1);
-
-    // the scene around it
-    if (scene) drawScene();
-
-    // world axes at the origin
-    const double initialRadius =
-        g.initialBounds.isEmpty() ? 1.0 : std::max(0.5 * g.initialBounds.diagonal().norm(), 0.05);
-    drawRange(g.unitTriad, scaled(Isometry3d::Identity(), Vector3d::Constant(0.25 * initialRadius)));
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    drawSolids(schematic);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_FALSE);
+    drawSolids(schematic);
 
     // background, a vertical gradient, after the solids: only where none was drawn
     // (it lies on the far plane; a scene that fills the view then costs no more)
-    glDepthMask(GL_FALSE);
     m_background->bind();
-    m_background->setUniformValue("uBottom", QVector3D(0.12f, 0.13f, 0.15f));
-    m_background->setUniformValue("uTop", QVector3D(0.31f, 0.33f, 0.37f));
+    m_background->setUniformValue(m_backgroundBottom, QVector3D(0.12f, 0.13f, 0.15f));
+    m_background->setUniformValue(m_backgroundTop, QVector3D(0.31f, 0.33f, 0.37f));
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glDepthMask(GL_TRUE);
-    m_program->bind();
+    m_program->program->bind();
 
     // ground grid: transparent lines fading out, after the solids (a scene has its floor)
     if (m_showGrid && !scene) {
@@ -621,7 +646,7 @@ void Viewport::paintGL()
         setTint(Vector3f::Zero(), 0.0f);
     }
 
-    m_program->release();
+    m_program->program->release();
     m_modelMesh.vao->release();
 
     // frame time: until the frame is drawn (software renderers draw at the finish)
@@ -632,25 +657,42 @@ void Viewport::paintGL()
     emit frameTimed(ms);
 }
 
-void Viewport::setLights()
+int Viewport::lampCount() const
+{
+    return m_dressing ? std::min(static_cast<int>(m_dressing->lights.size()), kMaxLamps) : 0;
+}
+
+void Viewport::setLights(int lamps)
 {
     // an interior when the scene has lamps: the daylight dimmed, the lamps lit
-    const bool interior = m_dressing && !m_dressing->lights.empty();
-    glUniform1f(m_u.daylight, interior ? kInteriorDaylight : 1.0f);
-    int n = 0;
-    if (interior) {
-        std::array<GLfloat, 3 * kMaxLights> eye{};
-        for (const Vector3d& p : m_dressing->lights) {
-            if (n == kMaxLights) break;
+    glUniform1f(m_u.daylight, lamps > 0 ? kInteriorDaylight : 1.0f);
+    if (lamps > 0) {
+        std::array<GLfloat, 3 * kMaxLamps> eye{};
+        for (int n = 0; n < lamps; ++n) {
+            const Vector3d& p = m_dressing->lights[static_cast<std::size_t>(n)];
             const Vector3f e = (m_view * p.cast<float>().homogeneous()).head<3>();
             for (int k = 0; k < 3; ++k) eye[static_cast<std::size_t>(3 * n + k)] = e[k];
-            ++n;
         }
-        glUniform3fv(m_u.lightEye, n, eye.data());
+        glUniform3fv(m_u.lightEye, lamps, eye.data());
         glUniform3f(m_u.lightColor, kLampLight.x(), kLampLight.y(), kLampLight.z());
         glUniform1f(m_u.lightRange, kLampRange);
     }
-    glUniform1i(m_u.lightCount, n);
+}
+
+void Viewport::drawSolids(bool schematic)
+{
+    const SceneGeometry& g = *m_geometry;
+    // the model
+    drawSlots(schematic, !schematic);
+    if (schematic) drawActuators(-1);
+
+    // the scene around it
+    if (m_dressing && !m_dressing->mesh.indices.empty()) drawScene();
+
+    // world axes at the origin
+    const double initialRadius =
+        g.initialBounds.isEmpty() ? 1.0 : std::max(0.5 * g.initialBounds.diagonal().norm(), 0.05);
+    drawRange(g.unitTriad, scaled(Isometry3d::Identity(), Vector3d::Constant(0.25 * initialRadius)));
 }
 
 void Viewport::drawScene()

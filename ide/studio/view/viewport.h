@@ -21,7 +21,10 @@
 // looks into it and the seat's screens see past the wall behind the machine.
 //
 // Geometry is built once per bundle (shared between viewports) and uploaded once per
-// GL context; a frame only sets one model matrix per body.
+// GL context; a frame only sets one model matrix per body. Made for a software
+// renderer (Mesa llvmpipe), whose cost is per fragment: the solids are drawn twice,
+// depth alone and then colour where nearest (each pixel shaded once), and the shader
+// is built per number of lamps (its loop over them unrolled).
 //
 // Mouse: left drag orbits, middle drag or Shift + left drag pans, the wheel zooms
 // towards the cursor, a double click frames the whole model. Cameras: orbit views
@@ -170,8 +173,10 @@ private:
     void releaseGl();
     void createMesh(GlMesh& mesh);
     void upload(GlMesh& gl, const MeshBuilder& mesh);
+    void drawSolids(bool schematic);
     void drawScene();
-    void setLights();
+    void setLights(int lamps);
+    int lampCount() const;
     void drawRange(const DrawRange& range, const Eigen::Matrix4f& model, unsigned mode = 0x0004 /*GL_TRIANGLES*/);
     void drawSlots(bool schematic, bool dressed);
     void drawActuators(int onlyJoint);
@@ -202,15 +207,28 @@ private:
     // GL (per context)
     bool m_glReady = false;
     bool m_glFailed = false;
-    std::unique_ptr<QOpenGLShaderProgram> m_program;
+    /// The scene's lamps that light it: at most this many (viewport.frag's uLightEye).
+    static constexpr int kMaxLamps = 4;
+    /// viewport.frag/.vert built for one number of lamps (LAMP_COUNT: its loop over them
+    /// unrolled, which llvmpipe runs far faster than a loop over a uniform count), and
+    /// its uniforms' locations.
+    struct Program {
+        std::unique_ptr<QOpenGLShaderProgram> program;
+        struct Uniforms {
+            int model = -1, view = -1, projection = -1, normalMatrix = -1, lit = -1, tint = -1, alpha = -1,
+                upEye = -1, fadeCentre = -1, fadeRadius = -1, clipPlane = -1, daylight = -1, lightEye = -1,
+                lightColor = -1, lightRange = -1;
+        } u;
+    };
+    /// Builds `program` for `lamps` lamps (false, and problem(), when it does not build).
+    bool buildProgram(Program& program, int lamps);
+    std::array<Program, kMaxLamps + 1> m_programs;  ///< by lamp count, built when first needed
+    Program* m_program = nullptr;                   ///< this frame's
+    Program::Uniforms m_u;                          ///< m_program's uniforms
     std::unique_ptr<QOpenGLShaderProgram> m_background;
+    int m_backgroundBottom = -1, m_backgroundTop = -1;  ///< its uniforms' locations
     GlMesh m_modelMesh;
     GlMesh m_sceneMesh;
-    struct Uniforms {
-        int model = -1, view = -1, projection = -1, normalMatrix = -1, lit = -1, tint = -1, alpha = -1,
-            upEye = -1, fadeCentre = -1, fadeRadius = -1, clipPlane = -1, daylight = -1, lightCount = -1,
-            lightEye = -1, lightColor = -1, lightRange = -1;
-    } m_u;
     Eigen::Matrix4f m_view = Eigen::Matrix4f::Identity();
     std::vector<Eigen::Matrix4f> m_slotMatrices;  ///< per slot, this frame
 

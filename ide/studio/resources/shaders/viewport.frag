@@ -3,6 +3,12 @@
 // ambient (brighter from the sky) so that faces turned differently read differently:
 // the daylight, dimmed inside a scene with lamps, whose point lights then add up.
 // The side facing the viewer is lit, whatever the triangles' winding.
+// LAMP_COUNT (0 … 4) is defined by the viewport, which builds one program per count:
+// with a constant count the loop over the lamps is unrolled, and llvmpipe (software
+// GL, where a frame's cost is its fragments') no longer indexes uLightEye per pixel.
+#ifndef LAMP_COUNT
+#define LAMP_COUNT 0
+#endif
 in vec3 vNormal;
 in vec3 vColor;
 in vec3 vEye;
@@ -15,8 +21,7 @@ uniform vec3 uUpEye;         // world up (z) in eye space
 uniform vec2 uFadeCentre;    // grid fade: centre (world x, y)
 uniform float uFadeRadius;   // 0: no fade
 uniform float uDaylight;     // 1 outdoors; less inside a scene with lamps
-uniform int uLightCount;     // point lights (lamps), 0 … 4
-uniform vec3 uLightEye[4];   // their positions, eye space
+uniform vec3 uLightEye[4];   // the point lights' (lamps') positions, eye space; LAMP_COUNT of them
 uniform vec3 uLightColor;
 uniform float uLightRange;   // a lamp lights half as much this far away [m]
 
@@ -37,12 +42,19 @@ void main()
         float diffuse = 0.70 * max(dot(n, key), 0.0);
         vec3 fillLight = vec3(0.22, 0.24, 0.28) * max(dot(n, fill), 0.0);
         vec3 h = normalize(key + v);
-        float specular = 0.20 * pow(max(dot(n, h), 0.0), 40.0);
+        // pow(x, 40) as x^32 · x^8: llvmpipe's pow is a log2 and an exp2 per pixel
+        float x = max(dot(n, h), 0.0);
+        float x2 = x * x;
+        float x4 = x2 * x2;
+        float x8 = x4 * x4;
+        float x16 = x8 * x8;
+        float x32 = x16 * x16;
+        float specular = 0.20 * (x32 * x8);
         vec3 light = uDaylight * (ambient + vec3(diffuse) + fillLight);
         vec3 shine = vec3(uDaylight * specular);
         // the lamps: diffuse only, fading with the square of the distance
         float range2 = uLightRange * uLightRange;
-        for (int i = 0; i < uLightCount; ++i) {
+        for (int i = 0; i < LAMP_COUNT; ++i) {
             vec3 d = uLightEye[i] - vEye;
             float r2 = dot(d, d);
             float lit = max(dot(n, d), 0.0) * inversesqrt(max(r2, 1e-8));
