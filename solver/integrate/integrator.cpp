@@ -509,62 +509,49 @@ private:
     // then creeps towards that time until mxstep (measured: 276 000 evaluations and
     // CV_TOO_MUCH_WORK instead of the cause).
 
-    /// f(t, y) into ydot, checked; false (with m_failure set) on any failure.
-    bool callRhs(double t, const double* y, double* ydot)
+    /// Calls `f` (the system's rhs, roots or both) as SUNDIALS would: an exception is
+    /// `threw`, a false return `failed`; true when it returned true. m_failure says why not.
+    template <class F>
+    bool guarded(F&& f, double t, FailureKind threw, FailureKind failed)
     {
-        ++m_stats.rhsEvals;
         bool ok = false;
         try {
-            ok = m_system.rhs(t, y, ydot);
+            ok = f();
         } catch (...) {
-            recordFailure(FailureKind::RhsThrew, t);
+            recordFailure(threw, t);
             return false;
         }
-        if (!ok) {
-            recordFailure(FailureKind::RhsFalse, t);
-            return false;
-        }
-        return finiteRhs(t, ydot);
+        if (!ok) recordFailure(failed, t);
+        return ok;
     }
 
-    bool finiteRhs(double t, const double* ydot)
+    /// True when the n values are finite; else records `kind` at the first that is not.
+    bool finite(const double* values, int n, FailureKind kind, double t)
     {
-        for (int i = 0; i < m_n; ++i) {
-            if (!std::isfinite(ydot[i])) {
-                recordFailure(FailureKind::RhsNonFinite, t, i, ydot[i]);
+        for (int i = 0; i < n; ++i) {
+            if (!std::isfinite(values[i])) {
+                recordFailure(kind, t, i, values[i]);
                 return false;
             }
         }
         return true;
+    }
+
+    /// f(t, y) into ydot, checked; false (with m_failure set) on any failure.
+    bool callRhs(double t, const double* y, double* ydot)
+    {
+        ++m_stats.rhsEvals;
+        return guarded([&] { return m_system.rhs(t, y, ydot); }, t, FailureKind::RhsThrew, FailureKind::RhsFalse) &&
+               finite(ydot, m_n, FailureKind::RhsNonFinite, t);
     }
 
     /// g(t, y) into g, checked; false (with m_failure set) on any failure.
     bool callRoots(double t, const double* y, double* g)
     {
         ++m_stats.rootEvals;
-        bool ok = false;
-        try {
-            ok = m_system.roots(t, y, g);
-        } catch (...) {
-            recordFailure(FailureKind::RootsThrew, t);
-            return false;
-        }
-        if (!ok) {
-            recordFailure(FailureKind::RootsFalse, t);
-            return false;
-        }
-        return finiteRoots(t, g);
-    }
-
-    bool finiteRoots(double t, const double* g)
-    {
-        for (int i = 0; i < m_nroots; ++i) {
-            if (!std::isfinite(g[i])) {
-                recordFailure(FailureKind::RootsNonFinite, t, i, g[i]);
-                return false;
-            }
-        }
-        return true;
+        return guarded([&] { return m_system.roots(t, y, g); }, t, FailureKind::RootsThrew,
+                       FailureKind::RootsFalse) &&
+               finite(g, m_nroots, FailureKind::RootsNonFinite, t);
     }
 
     /// f and g at one state (OdeSystem::rhsAndRoots), checked.
@@ -572,18 +559,9 @@ private:
     {
         ++m_stats.rhsEvals;
         if (m_nroots > 0) ++m_stats.rootEvals;
-        bool ok = false;
-        try {
-            ok = m_system.rhsAndRoots(t, y, ydot, g);
-        } catch (...) {
-            recordFailure(FailureKind::RhsThrew, t);
-            return false;
-        }
-        if (!ok) {
-            recordFailure(FailureKind::RhsFalse, t);
-            return false;
-        }
-        return finiteRhs(t, ydot) && finiteRoots(t, g);
+        return guarded([&] { return m_system.rhsAndRoots(t, y, ydot, g); }, t, FailureKind::RhsThrew,
+                       FailureKind::RhsFalse) &&
+               finite(ydot, m_n, FailureKind::RhsNonFinite, t) && finite(g, m_nroots, FailureKind::RootsNonFinite, t);
     }
 
     static int rhsTrampoline(sunrealtype t, N_Vector y, N_Vector ydot, void* userData)

@@ -7,6 +7,26 @@ namespace solver {
 
 using Eigen::Vector3d;
 
+namespace {
+
+/// Body i's velocity (eq. 2.2–2.4) and velocity-product acceleration, from its parent's
+/// velocity, its motion subspace and its pose (data.S[i], X_wb[i] already set).
+inline void bodyVelocity(const Model& model, const Eigen::VectorXd& qd, Data& data, int i)
+{
+    const int p = model.parent[i];
+    const Vector6d vj = data.S[i] * qd[i];
+    if (p < 0) {
+        data.v[i] = vj;
+    } else {
+        data.v[i] = data.v[p] + vj;
+    }
+    data.c[i] = crossMotion(data.v[i], vj);
+    data.omega[i] = data.v[i].head<3>();
+    data.vel[i] = data.v[i].tail<3>() + data.omega[i].cross(data.X_wb[i].translation());
+}
+
+}  // namespace
+
 void forwardKinematics(const Model& model, const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
                        Data& data)
 {
@@ -54,35 +74,14 @@ void forwardKinematics(const Model& model, const Eigen::VectorXd& q, const Eigen
         X_wb.translation().noalias() = R * model.X_jc[i].translation();
         X_wb.translation() += x;
 
-        // velocity (eq. 2.2–2.4) and the velocity-product acceleration
-        const Vector6d vj = s * qd[i];
-        if (p < 0) {
-            data.v[i] = vj;
-        } else {
-            data.v[i] = data.v[p] + vj;
-        }
-        data.c[i] = crossMotion(data.v[i], vj);
-        data.omega[i] = data.v[i].head<3>();
-        data.vel[i] = data.v[i].tail<3>() + data.omega[i].cross(data.X_wb[i].translation());
+        bodyVelocity(model, qd, data, i);
     }
 }
 
 void velocityKinematics(const Model& model, const Eigen::VectorXd& qd, Data& data)
 {
-    const int nb = model.nb;
-    assert(qd.size() == nb);
-    for (int i = 0; i < nb; ++i) {
-        const int p = model.parent[i];
-        const Vector6d vj = data.S[i] * qd[i];
-        if (p < 0) {
-            data.v[i] = vj;
-        } else {
-            data.v[i] = data.v[p] + vj;
-        }
-        data.c[i] = crossMotion(data.v[i], vj);
-        data.omega[i] = data.v[i].head<3>();
-        data.vel[i] = data.v[i].tail<3>() + data.omega[i].cross(data.X_wb[i].translation());
-    }
+    assert(qd.size() == model.nb);
+    for (int i = 0; i < model.nb; ++i) bodyVelocity(model, qd, data, i);
 }
 
 void forwardKinematics(const Model& model, const State& state, Data& data)
