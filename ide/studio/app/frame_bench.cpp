@@ -308,8 +308,8 @@ int runFrameBench(const FrameBenchOptions& o)
         const std::vector<double> pacedInterval = log.intervals();
         all.merge(pacedPeriods);
 
-        // unpaced: new poses and a repaint of every screen, back to back (drawn,
-        // composed and flushed to the window before repaint() returns)
+        // unpaced: new poses and a frame on every screen, back to back (drawn and
+        // swapped to its window before renderNow() returns)
         log.clear();
         runner->resetStepPeriods();
         wait(5);
@@ -319,7 +319,7 @@ int runFrameBench(const FrameBenchOptions& o)
             const double c0 = processCpuMillis();
             const auto t0 = Clock::now();
             layout->setSnapshot(runner->latest());
-            layout->repaint();
+            layout->renderNow();
             frameMs.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
             cpuMs.push_back(processCpuMillis() - c0);
         }

@@ -11,7 +11,7 @@
 //  2. with the simulation running and every drive following a slow sine (commands
 //     written to the runner), for one view and for three (the operator's screens):
 //     N frames paced by the window's own 60 Hz poll timer (time between frames, time
-//     to draw), then N frames back to back (new poses, repaint, composed and flushed:
+//     to draw), then N frames back to back (new poses, drawn and swapped to the screens:
 //     the pure cost of a frame; also the process's CPU time per frame, all threads,
 //     which other programs on a busy machine disturb less than the wall time) — each
 //     with the solver's step periods meanwhile;

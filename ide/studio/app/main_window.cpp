@@ -168,6 +168,7 @@ MainWindow::MainWindow(QWidget* parent)
                          "padding: 8px 12px; font-size: 15pt; }");
     m_hud->move(12, 12);
     m_hud->hide();
+    m_viewports->addOverlay(m_hud);  // the 3D views' native windows would hide it: drawn in their frames
     m_plots->setRunner(m_runner.get());
     connect(m_plots, &PlotPanel::exportFailed, this,
             [this](const QString& message) { QMessageBox::warning(this, tr("Export"), message); });

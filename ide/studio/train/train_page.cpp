@@ -975,9 +975,12 @@ QWidget* TrainPage::buildAttempt()
     m_hintLabel->hide();
     grid->addWidget(m_hintLabel, 0, 0, Qt::AlignBottom | Qt::AlignHCenter);
     grid->setContentsMargins(0, 0, 0, 0);
+    // (over the view's native window they are drawn in its frames: Viewport::addOverlay)
     for (QWidget* w : {static_cast<QWidget*>(m_hudPanel), static_cast<QWidget*>(m_warningLabel),
-                       static_cast<QWidget*>(m_hintLabel)})
+                       static_cast<QWidget*>(m_hintLabel)}) {
         w->setContentsMargins(0, 0, 0, 0);
+        m_attemptView->addOverlay(w);
+    }
     layout->addWidget(viewBox, 1);
 
     auto* bar = new QHBoxLayout;

@@ -2,14 +2,21 @@
 
 #include "ide/studio/view/scene_geometry.h"
 
+#include <QApplication>
 #include <QElapsedTimer>
+#include <QExposeEvent>
 #include <QFile>
 #include <QMouseEvent>
+#include <QOffscreenSurface>
 #include <QOpenGLBuffer>
 #include <QOpenGLContext>
+#include <QOpenGLFramebufferObject>
+#include <QOpenGLPaintDevice>
 #include <QOpenGLShaderProgram>
 #include <QOpenGLVertexArrayObject>
+#include <QPainter>
 #include <QWheelEvent>
+#include <QWindow>
 
 #include <algorithm>
 #include <cmath>
@@ -66,21 +73,81 @@ Matrix4f scaled(const Isometry3d& pose, const Vector3d& scale)
     return a.matrix().cast<float>();
 }
 
+const QColor kUnderColor(51, 54, 59);  // the view's widget under its window (seen before it first draws)
+
 }  // namespace
 
-Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent)
+// ---- the native window ---------------------------------------------------------------
+
+/// The view's native window: draws the frames (Viewport::renderNow) when exposed and
+/// at update requests, and hands its mouse, wheel and key events to the view (the
+/// widget), as if they had come to it. It never takes the keyboard focus: the view
+/// (ClickFocus) does, so the keys go through the widget's event filters as before.
+class Viewport::Surface : public QWindow {
+public:
+    explicit Surface(Viewport* view) : m_view(view)
+    {
+        setSurfaceType(QSurface::OpenGLSurface);
+        setFormat(Viewport::surfaceFormat());
+        setFlag(Qt::WindowDoesNotAcceptFocus);
+    }
+
+protected:
+    bool event(QEvent* event) override
+    {
+        switch (event->type()) {
+        case QEvent::UpdateRequest:
+            m_view->renderNow();
+            return true;
+        case QEvent::MouseButtonPress:
+        case QEvent::MouseButtonDblClick:
+            if (m_view->focusPolicy() & Qt::ClickFocus) m_view->setFocus(Qt::MouseFocusReason);
+            if (!m_view->isActiveWindow()) m_view->activateWindow();
+            [[fallthrough]];
+        case QEvent::MouseButtonRelease:
+        case QEvent::MouseMove:
+        case QEvent::Wheel:
+        case QEvent::KeyPress:
+        case QEvent::KeyRelease:
+            // this window fills the view, so its coordinates are the view's
+            QCoreApplication::sendEvent(m_view, event);
+            return true;
+        default:
+            return QWindow::event(event);
+        }
+    }
+    void exposeEvent(QExposeEvent*) override
+    {
+        if (isExposed()) m_view->renderNow();
+    }
+
+private:
+    Viewport* m_view;
+};
+
+Viewport::Viewport(QWidget* parent) : QWidget(parent)
 {
     static const bool resources = (initStudioResources(), true);
     Q_UNUSED(resources);
-    setFormat(surfaceFormat());
     setMinimumSize(160, 120);
     setFocusPolicy(Qt::ClickFocus);
+    setAttribute(Qt::WA_OpaquePaintEvent);
+    m_surface = new Surface(this);
+    m_container = QWidget::createWindowContainer(m_surface, this);
+    m_container->setFocusPolicy(Qt::NoFocus);
+    m_container->setAttribute(Qt::WA_TransparentForMouseEvents);
+    m_container->setGeometry(rect());
     setBundle(nullptr);
 }
 
 Viewport::~Viewport()
 {
+    for (const QPointer<QWidget>& o : m_overlays) {
+        if (o) watchOverlay(o, false);
+    }
     releaseGl();
+    m_context.reset();  // before its window (m_container's) goes
+    m_offscreen.reset();
 }
 
 QSurfaceFormat Viewport::surfaceFormat()
@@ -129,7 +196,7 @@ void Viewport::setBundle(std::shared_ptr<const ModelBundle> bundle)
         else applyNamedCamera();
     }
     for (const QString& message : m_geometry->problems) emit problem(message);
-    update();
+    requestFrame();
 }
 
 void Viewport::setScene(std::shared_ptr<const ModelBundle> scene)
@@ -141,14 +208,14 @@ void Viewport::setScene(std::shared_ptr<const ModelBundle> scene)
     if (m_dressing) {
         for (const QString& message : m_dressing->problems) emit problem(message);
     }
-    update();
+    requestFrame();
 }
 
 void Viewport::setPoses(const std::vector<Isometry3d>& X_wb)
 {
     if (!m_geometry || static_cast<int>(X_wb.size()) != m_geometry->nb) return;
     m_poses = X_wb;  // same size: no reallocation
-    update();
+    requestFrame();
 }
 
 void Viewport::setSnapshot(std::shared_ptr<const Snapshot> snapshot)
@@ -162,33 +229,33 @@ void Viewport::setGhost(std::shared_ptr<const Snapshot> ghost)
 {
     if (ghost == m_ghost) return;
     m_ghost = std::move(ghost);
-    update();
+    requestFrame();
 }
 
 void Viewport::clearGhost()
 {
     if (!m_ghost) return;
     m_ghost.reset();
-    update();
+    requestFrame();
 }
 
 void Viewport::setDisplayMode(DisplayMode mode)
 {
     if (m_mode == mode) return;
     m_mode = mode;
-    update();
+    requestFrame();
 }
 
 void Viewport::setShowFrames(bool show)
 {
     m_showFrames = show;
-    update();
+    requestFrame();
 }
 
 void Viewport::setShowGrid(bool show)
 {
     m_showGrid = show;
-    update();
+    requestFrame();
 }
 
 void Viewport::setHighlight(int body, int joint)
@@ -196,7 +263,7 @@ void Viewport::setHighlight(int body, int joint)
     const int nb = m_geometry ? m_geometry->nb : 0;
     m_highlightBody = body >= 0 && body < nb ? body : -1;
     m_highlightJoint = joint >= 0 && joint < nb ? joint : -1;
-    update();
+    requestFrame();
 }
 
 // ---- cameras -------------------------------------------------------------------------
@@ -223,7 +290,7 @@ void Viewport::setCameraState(const Camera& camera)
 {
     m_camera = camera;
     m_cameraName.clear();
-    update();
+    requestFrame();
 }
 
 bool Viewport::setCamera(const QString& name)
@@ -231,7 +298,7 @@ bool Viewport::setCamera(const QString& name)
     if (!cameraNames().contains(name)) return false;
     m_cameraName = name;
     applyNamedCamera();
-    update();
+    requestFrame();
     return true;
 }
 
@@ -266,7 +333,7 @@ void Viewport::fitAll()
 {
     if (m_camera.mode == Camera::Mode::Seat) leaveNamedCamera();
     m_camera.frame(sceneBox(), aspect());
-    update();
+    requestFrame();
 }
 
 void Viewport::setOperatorSeat(const Vector3d& eye, double yawRad, double pitchRad)
@@ -275,7 +342,7 @@ void Viewport::setOperatorSeat(const Vector3d& eye, double yawRad, double pitchR
     m_camera.seatEye = eye;
     m_camera.seatHeading = yawRad;
     m_camera.seatPitch = std::clamp(pitchRad, -std::numbers::pi / 2, std::numbers::pi / 2);
-    update();
+    requestFrame();
 }
 
 void Viewport::resetOperatorSeat()
@@ -284,19 +351,19 @@ void Viewport::resetOperatorSeat()
     m_camera.seatEye = m_geometry->seatEye;
     m_camera.seatHeading = 0;
     m_camera.seatPitch = m_geometry->seatPitch;
-    update();
+    requestFrame();
 }
 
 void Viewport::setYawOffset(double radians)
 {
     m_camera.yawOffset = radians;
-    update();
+    requestFrame();
 }
 
 void Viewport::setSeatFieldOfView(double radians)
 {
     m_camera.seatFieldOfView = std::clamp(radians, 5 * kDeg, 170 * kDeg);
-    update();
+    requestFrame();
 }
 
 double Viewport::aspect() const
@@ -336,7 +403,7 @@ void Viewport::initializeGL()
         m_glFailed = true;
         return;
     }
-    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::releaseGl, Qt::UniqueConnection);
+    connect(m_context.get(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::releaseGl, Qt::UniqueConnection);
     // the background, and the solids' program without lamps (the others when a scene needs them)
     m_background = std::make_unique<QOpenGLShaderProgram>();
     const bool background =
@@ -407,7 +474,7 @@ void Viewport::createMesh(GlMesh& mesh)
 
 void Viewport::releaseGl()
 {
-    if (!m_background && !m_modelMesh.vao) return;
+    if (!m_context || (!m_background && !m_modelMesh.vao)) return;
     makeCurrent();
     for (GlMesh* mesh : {&m_modelMesh, &m_sceneMesh}) {
         mesh->indices.reset();
@@ -438,6 +505,206 @@ void Viewport::upload(GlMesh& gl, const MeshBuilder& mesh)
     glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(MeshVertex, color)));
     gl.vao->release();
     gl.uploaded = true;
+}
+
+// ---- the context, frames on screen and offscreen --------------------------------------
+
+QOpenGLContext* Viewport::context() const
+{
+    return m_context.get();
+}
+
+bool Viewport::makeCurrent()
+{
+    if (!m_context) {
+        m_context = std::make_unique<QOpenGLContext>();
+        m_context->setFormat(m_surface->requestedFormat());
+        if (!m_context->create()) {
+            m_context.reset();
+            if (!m_glFailed) emit problem(tr("The 3D view needs OpenGL 3.3, which this system does not provide."));
+            m_glFailed = true;
+            return false;
+        }
+        m_glInitialized = false;
+    }
+    if (m_surface->handle()) return m_context->makeCurrent(m_surface);
+    // no native window yet (the view was never shown): an offscreen surface
+    if (!m_offscreen) {
+        m_offscreen = std::make_unique<QOffscreenSurface>();
+        m_offscreen->setFormat(m_context->format());
+        m_offscreen->create();
+    }
+    return m_context->makeCurrent(m_offscreen.get());
+}
+
+void Viewport::doneCurrent()
+{
+    if (m_context) m_context->doneCurrent();
+}
+
+bool Viewport::prepareGl()
+{
+    if (!makeCurrent()) return false;
+    if (!m_glInitialized) {
+        m_glInitialized = true;
+        initializeGL();
+        resizeGL(width(), height());
+    }
+    return true;
+}
+
+void Viewport::requestFrame()
+{
+    // not exposed: the expose event draws
+    if (m_surface && m_surface->isExposed()) m_surface->requestUpdate();
+}
+
+void Viewport::renderNow()
+{
+    if (!m_surface || !m_surface->isExposed() || !prepareGl()) return;
+    const qreal dpr = m_surface->devicePixelRatio();
+    const QSize size = (QSizeF(m_surface->size()) * dpr).toSize();
+    if (size.isEmpty()) return;
+    glBindFramebuffer(GL_FRAMEBUFFER, m_context->defaultFramebufferObject());
+    drawFrame(size.width(), size.height(), true);
+    m_context->swapBuffers(m_surface);
+}
+
+QImage Viewport::grabFramebuffer()
+{
+    if (!prepareGl()) return {};
+    const qreal dpr = devicePixelRatioF();
+    const QSize size = (QSizeF(this->size()) * dpr).toSize().expandedTo(QSize(1, 1));
+    QOpenGLFramebufferObjectFormat format;
+    format.setAttachment(QOpenGLFramebufferObject::CombinedDepthStencil);
+    format.setSamples(m_context->format().samples() > 0 ? m_context->format().samples() : 0);
+    QOpenGLFramebufferObject fbo(size, format);
+    if (!fbo.isValid() || !fbo.bind()) return {};
+    drawFrame(size.width(), size.height(), false);
+    QImage image = fbo.toImage();
+    fbo.release();
+    image.setDevicePixelRatio(dpr);
+    return image;
+}
+
+void Viewport::drawFrame(int w, int h, bool overlays)
+{
+    glViewport(0, 0, w, h);
+    paintGL();
+    if (overlays) drawOverlays(w, h);
+}
+
+void Viewport::paintEvent(QPaintEvent*)
+{
+    QPainter painter(this);
+    // painted somewhere else than on screen (QWidget::grab() or render() of a window
+    // that holds the view): a frame drawn offscreen, the overlays are painted over it
+    if (redirected(nullptr)) {
+        const QImage frame = grabFramebuffer();
+        if (frame.isNull()) painter.fillRect(rect(), kUnderColor);
+        else painter.drawImage(rect(), frame);
+        return;
+    }
+    // on screen the native window covers this; an update() of the widget is a new frame
+    painter.fillRect(rect(), kUnderColor);
+    requestFrame();
+}
+
+void Viewport::resizeEvent(QResizeEvent*)
+{
+    m_container->setGeometry(rect());
+    resizeGL(width(), height());
+}
+
+// ---- overlays ---------------------------------------------------------------------------
+
+void Viewport::addOverlay(QWidget* widget)
+{
+    if (!widget || m_overlays.contains(widget)) return;
+    m_overlays.append(widget);
+    watchOverlay(widget, true);
+    m_overlaysDirty = true;
+    requestFrame();
+}
+
+void Viewport::removeOverlay(QWidget* widget)
+{
+    if (!widget || !m_overlays.removeOne(widget)) return;
+    watchOverlay(widget, false);
+    m_overlayImages.remove(widget);
+    requestFrame();
+}
+
+void Viewport::watchOverlay(QWidget* widget, bool watch)
+{
+    // the overlay and its children: their paint events say that it changed
+    QList<QWidget*> widgets = widget->findChildren<QWidget*>();
+    widgets.prepend(widget);
+    for (QWidget* w : widgets) {
+        if (watch) w->installEventFilter(this);
+        else w->removeEventFilter(this);
+    }
+}
+
+bool Viewport::eventFilter(QObject* watched, QEvent* event)
+{
+    if (!m_renderingOverlays && watched != this) {
+        switch (event->type()) {
+        case QEvent::Paint:
+        case QEvent::Show:
+        case QEvent::Hide:
+        case QEvent::Resize:
+        case QEvent::Move:
+            m_overlaysDirty = true;
+            requestFrame();
+            break;
+        case QEvent::ChildAdded:
+            if (auto* child = qobject_cast<QWidget*>(static_cast<QChildEvent*>(event)->child())) {
+                child->installEventFilter(this);
+                m_overlaysDirty = true;
+            }
+            break;
+        default:
+            break;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+void Viewport::drawOverlays(int w, int h)
+{
+    if (m_overlays.isEmpty()) return;
+    if (m_overlaysDirty) {
+        m_overlayImages.clear();
+        m_overlaysDirty = false;
+    }
+    const qreal dpr = m_surface->devicePixelRatio();
+    QWidget* top = window();
+    const QPoint origin = mapTo(top, QPoint(0, 0));
+    std::vector<std::pair<QPoint, const QImage*>> shown;
+    for (const QPointer<QWidget>& o : m_overlays) {
+        if (!o || !o->isVisible() || o->window() != top || o->size().isEmpty()) continue;
+        const QRect r(o->mapTo(top, QPoint(0, 0)) - origin, o->size());
+        if (!r.intersects(rect())) continue;
+        QImage& image = m_overlayImages[o.data()];
+        const QSize pixels = (QSizeF(o->size()) * dpr).toSize();
+        if (image.size() != pixels) {
+            // the widget as it paints itself (its style sheet's translucent background
+            // included), on a transparent image
+            image = QImage(pixels, QImage::Format_ARGB32_Premultiplied);
+            image.setDevicePixelRatio(dpr);
+            image.fill(Qt::transparent);
+            m_renderingOverlays = true;
+            o->render(&image, QPoint(), QRegion(), QWidget::DrawChildren);
+            m_renderingOverlays = false;
+        }
+        shown.emplace_back(r.topLeft(), &image);
+    }
+    if (shown.empty()) return;
+    QOpenGLPaintDevice device(w, h);
+    device.setDevicePixelRatio(dpr);
+    QPainter painter(&device);
+    for (const auto& [at, image] : shown) painter.drawImage(at, *image);
 }
 
 void Viewport::resizeGL(int, int)
@@ -766,7 +1033,7 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
     leaveNamedCamera();
     if (pan) m_camera.pan(d.x(), d.y(), height());
     else m_camera.orbit(d.x(), d.y());
-    update();
+    requestFrame();
     event->accept();
 }
 
@@ -789,7 +1056,7 @@ void Viewport::wheelEvent(QWheelEvent* event)
     leaveNamedCamera();
     const QPointF p = event->position();
     m_camera.zoom(std::pow(0.85, steps), p.x(), p.y(), width(), height());
-    update();
+    requestFrame();
     event->accept();
 }
 

@@ -26,6 +26,13 @@
 // depth alone and then colour where nearest (each pixel shaded once), and the shader
 // is built per number of lamps (its loop over them unrolled).
 //
+// It is a QWidget holding a native window (QWidget::createWindowContainer) that does
+// the GL work: a frame goes from its own OpenGL context straight to swapBuffers, not
+// through Qt's widget composition (on llvmpipe under X, composing a QOpenGLWidget into
+// its window and flushing it took longer than drawing the mill). So that widgets over
+// the view still show, they are drawn into the frame (addOverlay); grabFramebuffer()
+// draws a frame offscreen, and QWidget::grab()/render() of the window show it.
+//
 // Mouse: left drag orbits, middle drag or Shift + left drag pans, the wheel zooms
 // towards the cursor, a double click frames the whole model. Cameras: orbit views
 // "Iso", "Front" (from −y), "Side" (from +x), "Top", and "Operator seat" (a fixed
@@ -38,16 +45,22 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <QHash>
+#include <QImage>
+#include <QList>
 #include <QOpenGLFunctions_3_3_Core>
-#include <QOpenGLWidget>
 #include <QPoint>
+#include <QPointer>
 #include <QSurfaceFormat>
+#include <QWidget>
 
 #include <array>
 #include <memory>
 #include <vector>
 
+class QOffscreenSurface;
 class QOpenGLBuffer;
+class QOpenGLContext;
 class QOpenGLShaderProgram;
 class QOpenGLVertexArrayObject;
 
@@ -60,7 +73,7 @@ struct DrawRange;
 
 enum class DisplayMode { Schematic, Dressed, Both };
 
-class Viewport : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
+class Viewport : public QWidget, protected QOpenGLFunctions_3_3_Core {
     Q_OBJECT
 public:
     explicit Viewport(QWidget* parent = nullptr);
@@ -145,6 +158,26 @@ public:
     /// Median time to draw a frame over the last 31 frames [ms] (0 before the first).
     double frameMillis() const;
 
+    /// Draws a frame now and shows it (swapBuffers) before returning, when the view is
+    /// on screen; else it is drawn when it shows.
+    void renderNow();
+    /// A frame drawn now, offscreen, at the view's size: the 3D view alone (without
+    /// the overlays). A null image when OpenGL 3.3 is not available.
+    QImage grabFramebuffer();
+    /// The view's OpenGL context (nullptr before the view first drew or was made current).
+    QOpenGLContext* context() const;
+    /// Makes the view's context current (on its window, or offscreen before it has one);
+    /// false when there is no OpenGL 3.3.
+    bool makeCurrent();
+    void doneCurrent();
+
+    /// A widget shown over the view (a sibling or a child of an ancestor, e.g. a HUD
+    /// label): the view's native window would hide it, so the view draws it into its
+    /// frames, where it lies, whenever it is visible, and again when it repaints.
+    /// Its on-screen geometry stays Qt's (layouts, tests and grab() see it as before).
+    void addOverlay(QWidget* widget);
+    void removeOverlay(QWidget* widget);
+
 signals:
     /// Something in the model cannot be drawn as written (a mesh file missing or
     /// unreadable). Emitted once per bundle and message.
@@ -153,9 +186,12 @@ signals:
     void frameTimed(double ms);
 
 protected:
-    void initializeGL() override;
-    void resizeGL(int w, int h) override;
-    void paintGL() override;
+    void initializeGL();
+    void resizeGL(int w, int h);
+    void paintGL();
+    void paintEvent(QPaintEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
@@ -163,6 +199,18 @@ protected:
     void wheelEvent(QWheelEvent* event) override;
 
 private:
+    class Surface;
+    friend class Surface;
+    /// Schedules a frame on the native window (drawn at its next update request).
+    void requestFrame();
+    /// The context current (creating it and the GL objects the first time); false
+    /// when there is no OpenGL 3.3.
+    bool prepareGl();
+    /// Draws a frame into the bound framebuffer of w × h device pixels.
+    void drawFrame(int w, int h, bool overlays);
+    void drawOverlays(int w, int h);
+    void watchOverlay(QWidget* widget, bool watch);
+
     /// One mesh's GL objects (the model's, the scene's).
     struct GlMesh {
         std::unique_ptr<QOpenGLVertexArrayObject> vao;
@@ -231,6 +279,19 @@ private:
     GlMesh m_sceneMesh;
     Eigen::Matrix4f m_view = Eigen::Matrix4f::Identity();
     std::vector<Eigen::Matrix4f> m_slotMatrices;  ///< per slot, this frame
+
+    // the native window and its context
+    Surface* m_surface = nullptr;        ///< owned by m_container
+    QWidget* m_container = nullptr;      ///< createWindowContainer(m_surface), a child
+    std::unique_ptr<QOpenGLContext> m_context;
+    std::unique_ptr<QOffscreenSurface> m_offscreen;  ///< before m_surface has a native window
+    bool m_glInitialized = false;        ///< initializeGL ran in m_context
+
+    // overlays: widgets drawn into the frames, and their last images
+    QList<QPointer<QWidget>> m_overlays;
+    QHash<QWidget*, QImage> m_overlayImages;
+    bool m_overlaysDirty = true;
+    bool m_renderingOverlays = false;
 
     // interaction
     QPoint m_lastMouse;

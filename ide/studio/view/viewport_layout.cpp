@@ -74,6 +74,9 @@ Viewport* ViewportLayout::makeViewport(int index, int count)
     v->setShowFrames(m_showFrames);
     v->setHighlight(m_highlightBody, m_highlightJoint);
     if (index == 0) connect(v, &Viewport::problem, this, &ViewportLayout::problem);
+    for (const QPointer<QWidget>& o : m_overlays) {
+        if (o) v->addOverlay(o);
+    }
     return v;
 }
 
@@ -199,6 +202,18 @@ double ViewportLayout::frameMillis() const
     double slowest = 0;
     for (const Viewport* v : m_views) slowest = std::max(slowest, v->frameMillis());
     return slowest;
+}
+
+void ViewportLayout::renderNow()
+{
+    for (Viewport* v : m_views) v->renderNow();
+}
+
+void ViewportLayout::addOverlay(QWidget* widget)
+{
+    if (!widget || m_overlays.contains(widget)) return;
+    m_overlays.append(widget);
+    for (Viewport* v : m_views) v->addOverlay(widget);
 }
 
 void ViewportLayout::setHighlight(int body, int joint)

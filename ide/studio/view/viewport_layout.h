@@ -14,6 +14,8 @@
 #include "ide/studio/sim/snapshot.h"
 #include "ide/studio/view/viewport.h"
 
+#include <QList>
+#include <QPointer>
 #include <QWidget>
 
 #include <memory>
@@ -63,6 +65,11 @@ public:
 
     /// The slowest screen's median frame time [ms] (Viewport::frameMillis).
     double frameMillis() const;
+    /// Every screen draws a frame now and shows it (Viewport::renderNow).
+    void renderNow();
+    /// A widget over the screens (e.g. a HUD label, a child of this widget), drawn
+    /// into the frames of every screen it lies on (Viewport::addOverlay), new ones too.
+    void addOverlay(QWidget* widget);
 
 signals:
     /// A problem drawing the model (reported once, by the first screen).
@@ -96,6 +103,7 @@ private:
     bool m_showFrames = false;
     QString m_camera = QStringLiteral("Iso");  ///< of a single screen
     int m_highlightBody = -1, m_highlightJoint = -1;
+    QList<QPointer<QWidget>> m_overlays;
 };
 
 }  // namespace studio
