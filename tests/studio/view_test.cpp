@@ -841,6 +841,87 @@ private slots:
         QCOMPARE(difference(render(view), plain), 0.0);
     }
 
+    void closedSolidsAreFoundAndTheirBackFacesCulledUnseen()
+    {
+        // closedWinding: a box and a cylinder are closed solids, wound counter-clockwise
+        // seen from outside; reversed, clockwise; with a triangle missing, open
+        {
+            studio::MeshBuilder m;
+            m.box(Eigen::Vector3d(1, 2, 3));
+            QCOMPARE(studio::closedWinding(m, 0, std::uint32_t(m.indices.size()), 1e-6), 1);
+            studio::MeshBuilder flipped = m;
+            for (std::size_t k = 0; k < flipped.indices.size(); k += 3) std::swap(flipped.indices[k], flipped.indices[k + 1]);
+            QCOMPARE(studio::closedWinding(flipped, 0, std::uint32_t(flipped.indices.size()), 1e-6), -1);
+            QCOMPARE(studio::closedWinding(m, 0, std::uint32_t(m.indices.size()) - 3, 1e-6), 0);
+            studio::MeshBuilder c;
+            c.cylinder(0.5, 0, 2);
+            QCOMPARE(studio::closedWinding(c, 0, std::uint32_t(c.indices.size()), 1e-6), 1);
+            studio::MeshBuilder strip;  // two boxes side by side, one turned inside out
+            strip.box(Eigen::Vector3d(1, 1, 1));
+            strip.append(flipped);
+            QCOMPARE(studio::closedWinding(strip, 0, std::uint32_t(strip.indices.size()), 1e-6), 0);
+        }
+
+        // the mill and the machine: many closed solids; the pictures are the same with
+        // and without culling (the back faces of a closed solid seen from outside never
+        // show; solids cut by the section plane or the near plane are not culled)
+        auto bundle = modelBundle(QStringLiteral("liner_manipulator.pad"));
+        QVERIFY(bundle);
+        const studio::SceneFile mill = studio::loadSceneFile(millScenePath());
+        QVERIFY2(mill.bundle, qPrintable(mill.error));
+        const auto dressing = studio::sceneDressing(mill.bundle);
+        const auto geometry = studio::sceneGeometry(bundle);
+        int closed = 0, parts = 0;
+        for (const auto& p : dressing->solidParts) closed += p.winding != 0 ? 1 : 0;
+        parts += int(dressing->solidParts.size());
+        for (const auto& slot : geometry->dressedParts) {
+            for (const auto& p : slot) closed += p.winding != 0 ? 1 : 0;
+            parts += int(slot.size());
+        }
+        qInfo("mill and liner manipulator: %d of %d graphics are closed solids", closed, parts);
+        QVERIFY(closed > parts / 2);
+
+        Viewport view;
+        view.resize(1280, 720);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        view.setBundle(bundle);
+        view.setScene(mill.bundle);
+        QVERIFY(Viewport::backFaceCulling());  // the default
+        auto compare = [&](const QString& name) {
+            Viewport::setBackFaceCulling(false);
+            const QImage all = render(view);
+            Viewport::setBackFaceCulling(true);
+            const QImage culled = render(view);
+            const double d = difference(all, culled);
+            qInfo("%s: %.5f of the pixels differ with culling", qPrintable(name), d);
+            QVERIFY2(d < 0.0005, qPrintable(name));
+            QVERIFY(stats(culled).distinct > 50);
+        };
+        for (const QString& name : {QStringLiteral("Iso"), QStringLiteral("Operator seat"), QStringLiteral("Front"),
+                                    QStringLiteral("Side"), QStringLiteral("Top")}) {
+            QVERIFY(view.setCamera(name));
+            compare(name);
+        }
+        // close in, inside the mill among the liners, and the schematic and both modes
+        view.setCamera(QStringLiteral("Iso"));
+        for (int k = 0; k < 4; ++k) {
+            QWheelEvent wheel(QPointF(640, 360), view.mapToGlobal(QPointF(640, 360)), QPoint(), QPoint(0, 360),
+                              Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+            QCoreApplication::sendEvent(&view, &wheel);
+            compare(QStringLiteral("zoomed in %1").arg(k + 1));
+        }
+        studio::Camera c = view.cameraState();
+        c.yaw += 2.5;
+        c.pitch = -0.2;
+        view.setCameraState(c);
+        compare(QStringLiteral("from below, turned"));
+        view.setDisplayMode(DisplayMode::Both);
+        compare(QStringLiteral("both"));
+        view.setDisplayMode(DisplayMode::Schematic);
+        compare(QStringLiteral("schematic"));
+    }
+
     void sceneLampsGlowAndLightTheirSurroundings()
     {
         // a floor and a box 6 m ahead of a pendulum: a lamp (near white), or a grey box

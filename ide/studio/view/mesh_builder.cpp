@@ -1,8 +1,11 @@
 #include "ide/studio/view/mesh_builder.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <numeric>
+#include <unordered_map>
 
 namespace studio {
 
@@ -368,6 +371,81 @@ Eigen::Affine3d frameAlong(const Vector3d& a, const Vector3d& b)
     const Vector3d d = b - a;
     if (d.norm() > 0) f.linear() = Eigen::Quaterniond::FromTwoVectors(Vector3d::UnitZ(), d).toRotationMatrix();
     return f;
+}
+
+int closedWinding(const MeshBuilder& mesh, std::uint32_t first, std::uint32_t count, double tolerance)
+{
+    if (count < 12 || count % 3 != 0 || !(tolerance > 0)) return 0;  // fewest: a tetrahedron
+    if (std::size_t(first) + count > mesh.indices.size()) return 0;
+    // weld: vertices in the same cell of a grid of `tolerance` are one (twins on either
+    // side of a cell's border are not, and the part then counts as open: only slower)
+    struct CellHash {
+        std::size_t operator()(const std::array<long long, 3>& c) const
+        {
+            std::size_t h = 1469598103934665603ull;
+            for (long long v : c) h = (h ^ std::size_t(v)) * 1099511628211ull;
+            return h;
+        }
+    };
+    std::unordered_map<std::array<long long, 3>, int, CellHash> cells;
+    std::vector<Vector3d> points;
+    auto weld = [&](std::uint32_t index) {
+        const MeshVertex& v = mesh.vertices[index];
+        const Vector3d p(v.position[0], v.position[1], v.position[2]);
+        const std::array<long long, 3> cell{std::llround(p.x() / tolerance), std::llround(p.y() / tolerance),
+                                             std::llround(p.z() / tolerance)};
+        const auto [it, added] = cells.emplace(cell, static_cast<int>(points.size()));
+        if (added) points.push_back(p);
+        return it->second;
+    };
+    std::vector<std::array<int, 3>> triangles;
+    triangles.reserve(count / 3);
+    for (std::uint32_t k = first; k < first + count; k += 3) {
+        const std::array<int, 3> t{weld(mesh.indices[k]), weld(mesh.indices[k + 1]), weld(mesh.indices[k + 2])};
+        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;  // degenerate (a pole): draws nothing
+        triangles.push_back(t);
+    }
+    if (triangles.size() < 4) return 0;
+    // every directed edge once, and its reverse once
+    auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
+    std::unordered_map<std::uint64_t, int> edges;
+    edges.reserve(3 * triangles.size());
+    for (const auto& t : triangles) {
+        for (int e = 0; e < 3; ++e) {
+            if (++edges[key(t[e], t[(e + 1) % 3])] > 1) return 0;
+        }
+    }
+    for (const auto& [k, n] : edges) {
+        if (!edges.count(key(int(std::uint32_t(k)), int(k >> 32)))) return 0;
+    }
+    // connected surfaces (union-find), and the volume each encloses (signed: > 0 when
+    // wound counter-clockwise seen from outside)
+    std::vector<int> parent(points.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    auto root = [&](int a) {
+        while (parent[a] != a) a = parent[a] = parent[parent[a]];
+        return a;
+    };
+    for (const auto& t : triangles) {
+        parent[root(t[1])] = root(t[0]);
+        parent[root(t[2])] = root(t[0]);
+    }
+    Eigen::AlignedBox3d box;
+    for (const Vector3d& p : points) box.extend(p);
+    const Vector3d c = box.center();  // (about the middle: fewer digits cancel)
+    std::unordered_map<int, double> volumes;
+    for (const auto& t : triangles) {
+        volumes[root(t[0])] += (points[t[0]] - c).dot((points[t[1]] - c).cross(points[t[2]] - c)) / 6;
+    }
+    const double tiny = 1e-9 * std::pow(box.diagonal().norm(), 3);
+    int sign = 0;
+    for (const auto& [r, volume] : volumes) {
+        if (!(std::abs(volume) > tiny)) return 0;
+        const int s = volume > 0 ? 1 : -1;
+        if (sign != 0 && s != sign) return 0;
+        sign = s;
+    }
+    return sign;
 }
 
 }  // namespace studio

@@ -79,6 +79,15 @@ private:
     Eigen::Matrix3d m_normalMatrix = Eigen::Matrix3d::Identity();
 };
 
+/// How the triangles indices[first, first + count) of `mesh` bound a solid: +1 when they
+/// form closed surfaces wound counter-clockwise seen from outside (every edge shared by
+/// two triangles, in opposite directions; vertices less than about `tolerance` apart
+/// are one; every connected surface encloses a volume on the same side), −1 when they
+/// are closed but wound clockwise seen from outside, 0 otherwise (open, inconsistently
+/// wound, flat). Seen from outside such a solid, only the triangles facing the eye can
+/// show, so the others may be culled (unless the solid is cut open, e.g. by a clip plane).
+int closedWinding(const MeshBuilder& mesh, std::uint32_t first, std::uint32_t count, double tolerance);
+
 /// Triangulates a simple polygon (x, y pairs) by ear clipping: index triples into it,
 /// counter-clockwise. Empty when it has fewer than 3 vertices or no area.
 std::vector<int> triangulatePolygon(const std::vector<Eigen::Vector2d>& polygon);

@@ -201,6 +201,7 @@ std::shared_ptr<SceneGeometry> buildSceneGeometry(const ModelBundle* bundle, con
     const int slotTotal = nb + 1;
     g.nb = nb;
     g.dressed.assign(slotTotal, {});
+    g.dressedParts.assign(slotTotal, {});
     g.bars.assign(slotTotal, {});
     g.schematic.assign(slotTotal, {});
     g.bounds.assign(slotTotal, {});
@@ -267,6 +268,7 @@ std::shared_ptr<SceneGeometry> buildSceneGeometry(const ModelBundle* bundle, con
 
     // ---- dressed: the G statements, per slot ---------------------------------------
     std::vector<MeshBuilder> dressed(slotTotal);
+    std::vector<std::vector<CullPart>> dressedParts(slotTotal);  // ranges within dressed[slot]
     if (bundle) {
         const QString modelDir = bundle->filePath.isEmpty() ? QDir::currentPath()
                                                             : QFileInfo(bundle->filePath).absolutePath();
@@ -277,7 +279,18 @@ std::shared_ptr<SceneGeometry> buildSceneGeometry(const ModelBundle* bundle, con
                 if (b < 0) continue;
                 slot = slotOf(b);
             }
-            addGraphic(dressed[slot], gr, modelDir, 4 * w, g.problems);
+            MeshBuilder& m = dressed[slot];
+            CullPart part;
+            part.range.first = static_cast<std::uint32_t>(m.indices.size());
+            addGraphic(m, gr, modelDir, 4 * w, g.problems);
+            part.range.count = static_cast<std::uint32_t>(m.indices.size()) - part.range.first;
+            if (part.range.empty()) continue;
+            for (std::uint32_t i = part.range.first; i < part.range.first + part.range.count; ++i) {
+                const MeshVertex& v = m.vertices[m.indices[i]];
+                part.box.extend(Vector3d(v.position[0], v.position[1], v.position[2]));
+            }
+            part.winding = closedWinding(m, part.range.first, part.range.count, 1e-5 * part.box.diagonal().norm());
+            dressedParts[slot].push_back(part);
         }
     }
 
@@ -400,6 +413,10 @@ std::shared_ptr<SceneGeometry> buildSceneGeometry(const ModelBundle* bundle, con
     for (int s = 0; s < slotTotal; ++s) {
         const auto k = static_cast<std::size_t>(s);
         g.dressed[k] = put(dressed[k]);
+        for (CullPart part : dressedParts[k]) {
+            part.range.first += g.dressed[k].first;
+            g.dressedParts[k].push_back(part);
+        }
         g.bars[k] = put(bars[k]);
         const DrawRange markRange = put(marks[k]);
         g.schematic[k] = {g.bars[k].first, g.bars[k].count + markRange.count};
@@ -529,7 +546,14 @@ std::shared_ptr<const SceneDressing> sceneDressing(const std::shared_ptr<const M
     };
     out->lamps = put(lamps);
     out->solids.first = static_cast<std::uint32_t>(out->mesh.indices.size());
-    for (const auto& part : solids) out->mesh.append(part.second);
+    for (const auto& part : solids) {
+        CullPart p;
+        p.range = put(part.second);
+        if (p.range.empty()) continue;
+        p.box = part.second.bounds();
+        p.winding = closedWinding(part.second, 0, p.range.count, 1e-5 * p.box.diagonal().norm());
+        out->solidParts.push_back(p);
+    }
     out->solids.count = static_cast<std::uint32_t>(out->mesh.indices.size()) - out->solids.first;
     out->bounds = out->mesh.bounds();
     for (auto e = cache.begin(); e != cache.end();) e = e->second.expired() ? cache.erase(e) : std::next(e);

@@ -40,6 +40,14 @@ struct DrawRange {
     bool empty() const { return count == 0; }
 };
 
+/// One G statement's triangles within a range drawn as a whole, and whether its back
+/// faces may be culled (closedWinding: +1 or −1 for a closed solid, 0 when not).
+struct CullPart {
+    DrawRange range;
+    Eigen::AlignedBox3d box;  ///< of its vertices, in the range's frame
+    int winding = 0;
+};
+
 /// Part of a joint's schematic drawn on one body (to highlight the joint).
 struct JointPiece {
     int body = -1;  ///< tree index, −1 = ground
@@ -59,6 +67,7 @@ struct SceneGeometry {
 
     // per slot (dim nb + 1), in the slot's body frame
     std::vector<DrawRange> dressed;    ///< G shapes
+    std::vector<std::vector<CullPart>> dressedParts;  ///< dressed[slot], one part per G statement, in order
     std::vector<DrawRange> bars;       ///< schematic body bars (ground: anchors)
     std::vector<DrawRange> schematic;  ///< bars + the joint marks on this body (contiguous)
     std::vector<Eigen::AlignedBox3d> bounds;  ///< everything drawn on the slot (empty box: nothing)
@@ -93,6 +102,7 @@ struct SceneGeometry {
 struct SceneDressing {
     MeshBuilder mesh;
     DrawRange solids;  ///< every ground graphic but the lamps
+    std::vector<CullPart> solidParts;  ///< solids, one part per G statement, in order
     DrawRange lamps;   ///< the lamps
     std::vector<Eigen::Vector3d> lights;  ///< the lamps' centres [m, world]
     Eigen::AlignedBox3d bounds;           ///< of everything drawn [m, world]

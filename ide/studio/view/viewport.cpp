@@ -65,6 +65,7 @@ const NamedView kViews[] = {
 const char* const kSeat = "Operator seat";
 
 int g_samples = 0;  // multisampling of new viewports (Viewport::setSamples)
+bool g_cullFaces = true;  // Viewport::setBackFaceCulling
 
 Matrix4f scaled(const Isometry3d& pose, const Vector3d& scale)
 {
@@ -170,6 +171,16 @@ void Viewport::setSamples(int samples)
 int Viewport::samples()
 {
     return g_samples;
+}
+
+void Viewport::setBackFaceCulling(bool on)
+{
+    g_cullFaces = on;
+}
+
+bool Viewport::backFaceCulling()
+{
+    return g_cullFaces;
 }
 
 // ---- model and poses ---------------------------------------------------------------
@@ -740,9 +751,55 @@ void Viewport::drawSlots(bool schematic, bool dressed)
         const auto k = static_cast<std::size_t>(s);
         const bool lit = s > 0 && s - 1 == m_highlightBody;
         if (lit) setTint(kHighlight, 0.85f);
-        if (dressed) drawRange(g.dressed[k].empty() ? g.bars[k] : g.dressed[k], m_slotMatrices[k]);
+        if (dressed) {
+            if (g.dressed[k].empty()) drawRange(g.bars[k], m_slotMatrices[k]);
+            else drawParts(g.dressedParts[k], m_slotMatrices[k], nullptr);
+        }
         if (schematic) drawRange(g.schematic[k], m_slotMatrices[k]);
         if (lit) setTint(Vector3f::Zero(), 0.0f);
+    }
+}
+
+void Viewport::drawParts(const std::vector<CullPart>& parts, const Matrix4f& model, const Eigen::Vector4d* cut)
+{
+    // per part: 0 both sides drawn, +1 / −1 back / front faces culled, 2 not drawn
+    const Eigen::Matrix4d world = model.cast<double>();
+    const Eigen::Matrix4d eye = (m_view * model).cast<double>();
+    m_partModes.resize(parts.size());
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        const CullPart& p = parts[k];
+        signed char mode = 0;
+        if (g_cullFaces && (p.winding != 0 || cut)) {
+            int kept = 0;
+            bool clear = true;  // all of it beyond the near plane
+            for (int c = 0; c < 8; ++c) {
+                const Eigen::Vector4d x = p.box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)).homogeneous();
+                if (-(eye.row(2).dot(x)) < 1.5 * m_near) clear = false;
+                if (cut && cut->dot(world * x) >= -1e-6) ++kept;
+            }
+            if (cut && kept == 0) mode = 2;          // all cut away: it would draw nothing
+            else if (cut && kept < 8) mode = 0;      // cut open: its inside shows
+            else if (clear) mode = static_cast<signed char>(p.winding);
+        }
+        m_partModes[k] = mode;
+    }
+    // consecutive parts of the same mode in one call
+    for (std::size_t k = 0; k < parts.size();) {
+        const signed char mode = m_partModes[k];
+        DrawRange run = parts[k].range;
+        std::size_t next = k + 1;
+        while (next < parts.size() && m_partModes[next] == mode && parts[next].range.first == run.first + run.count) {
+            run.count += parts[next].range.count;
+            ++next;
+        }
+        k = next;
+        if (mode == 2) continue;
+        if (mode != 0) {
+            glEnable(GL_CULL_FACE);
+            glCullFace(mode > 0 ? GL_BACK : GL_FRONT);  // +1: counter-clockwise seen from outside
+        }
+        drawRange(run, model);
+        if (mode != 0) glDisable(GL_CULL_FACE);
     }
 }
 
@@ -785,6 +842,7 @@ void Viewport::paintGL()
 
     m_modelMesh.vao->bind();
     glDisable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);
     glDisable(GL_BLEND);
 
     glEnable(GL_DEPTH_TEST);
@@ -804,7 +862,9 @@ void Viewport::paintGL()
             farthest = std::max(farthest, (corner - centre).norm());
         }
     }
-    const Matrix4f projection = m_camera.projectionMatrix(aspect(), centre, radius, farthest).cast<float>();
+    const Eigen::Matrix4d projection64 = m_camera.projectionMatrix(aspect(), centre, radius, farthest);
+    const Matrix4f projection = projection64.cast<float>();
+    m_near = projection64(2, 3) / (projection64(2, 2) - 1);  // (p23 = −2fn/(f−n), p22 = −(f+n)/(f−n))
     const Vector3f upEye = m_view.topLeftCorner<3, 3>() * Vector3f::UnitZ();
     m_program->program->bind();
     glUniformMatrix4fv(m_u.view, 1, GL_FALSE, m_view.data());
@@ -994,7 +1054,9 @@ void Viewport::drawScene()
     glUniform1i(m_u.lit, 0);  // the lamps glow
     drawRange(d.lamps, Matrix4f::Identity());
     glUniform1i(m_u.lit, 1);
-    drawRange(d.solids, Matrix4f::Identity());
+    // the scene's closed solids that the plane leaves whole: their back faces culled
+    const Eigen::Vector4d cut(normal.x(), normal.y(), normal.z(), -(normal.dot(eye) + nearest));
+    drawParts(d.solidParts, Matrix4f::Identity(), nearest > 0 ? &cut : nullptr);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CLIP_DISTANCE0);
     glUniform4f(m_u.clipPlane, 0.0f, 0.0f, 0.0f, 1.0f);

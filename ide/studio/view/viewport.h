@@ -70,6 +70,7 @@ class MeshBuilder;
 struct SceneGeometry;
 struct SceneDressing;
 struct DrawRange;
+struct CullPart;
 
 enum class DisplayMode { Schematic, Dressed, Both };
 
@@ -88,6 +89,10 @@ public:
     /// frame about three times slower, so turn it on only with a GPU.
     static void setSamples(int samples);
     static int samples();
+    /// Back-face culling of closed solids that nothing cuts open (on by default; the
+    /// pictures are the same either way, culling only skips triangles that cannot show).
+    static void setBackFaceCulling(bool on);
+    static bool backFaceCulling();
 
     /// The model to draw (nullptr: an empty scene). Builds its meshes (once per bundle)
     /// and draws it at its initial pose until setPoses; frames the camera on a new
@@ -227,6 +232,10 @@ private:
     int lampCount() const;
     void drawRange(const DrawRange& range, const Eigen::Matrix4f& model, unsigned mode = 0x0004 /*GL_TRIANGLES*/);
     void drawSlots(bool schematic, bool dressed);
+    /// Draws `parts` (consecutive ranges) with `model`, culling the back faces of the
+    /// closed solids that the near plane and `cut` (a world plane, kept where
+    /// n·x + d ≥ 0; nullptr for none) do not cut open, and not drawing those it cuts away.
+    void drawParts(const std::vector<CullPart>& parts, const Eigen::Matrix4f& model, const Eigen::Vector4d* cut);
     void drawActuators(int onlyJoint);
     void setTint(const Eigen::Vector3f& rgb, float amount);
     void setAlpha(float alpha);
@@ -278,6 +287,8 @@ private:
     GlMesh m_modelMesh;
     GlMesh m_sceneMesh;
     Eigen::Matrix4f m_view = Eigen::Matrix4f::Identity();
+    double m_near = 0;                  ///< this frame's near plane distance [m]
+    std::vector<signed char> m_partModes;  ///< drawParts' scratch
     std::vector<Eigen::Matrix4f> m_slotMatrices;  ///< per slot, this frame
 
     // the native window and its context
