@@ -17,7 +17,7 @@ jobs=${PADROB_JOBS:-2}
 cmake --preset default >/dev/null
 cmake --build --preset default -j "$jobs"
 
-# the GUI tests need an X server (QOpenGLWidget does not work with Qt's `offscreen`
+# the GUI tests need an X server (the 3D view's OpenGL window does not work with Qt's `offscreen`
 # platform): without a display, start a virtual one for the run
 xvfb_pid=""
 if [ -z "${DISPLAY:-}" ]; then
