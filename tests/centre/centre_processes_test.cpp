@@ -361,3 +361,34 @@ TEST_F(Centre, ARecordsOutageLosesNothingAndDuplicatesNothing)
     ASSERT_TRUE(j.open(QIODevice::ReadOnly));
     EXPECT_FALSE(j.readAll().contains(server.password.toUtf8()));
 }
+
+// The operator's devices through a station profile: a profile the model does not have
+// is refused before the station joins; one it has opens its devices (none plugged in
+// here: the station still comes up, the levers at rest, and says what is missing).
+TEST_F(Centre, AStationTakesItsOperatorsDevicesFromAProfile)
+{
+    QProcess bad;
+    bad.start(PADROB_CLI, QStringList{"station", kTut0, "--name", "S-bad", "--profile", "No such profile"} + net());
+    ASSERT_TRUE(bad.waitForFinished(20000));
+    EXPECT_EQ(bad.exitCode(), 2);
+    EXPECT_TRUE(bad.readAllStandardError().contains("No such profile"));
+
+    const std::string name = centre_test::unique("S5");
+    auto p = std::make_unique<QProcess>();
+    p->start(PADROB_CLI, QStringList{"station", kTut0, "--name", QString::fromStdString(name), "--profile", "Gamepad",
+                                     "--for", "60"} +
+                             net());
+    ASSERT_TRUE(p->waitForStarted(5000));
+    QProcess* station = p.get();
+    stations.push_back(std::move(p));
+    ASSERT_TRUE(waitFor([&] { return seenRunning(name); }, 20000, [&] { poll(); }));
+    auto r = command(name, "start", "T0", "OP-2");
+    ASSERT_TRUE(r && r->accepted);
+    const State s0 = stateAfter(name, 300), s1 = stateAfter(name, 700);
+    EXPECT_EQ(s1.status, "running");
+    EXPECT_GT(s1.attemptTime, s0.attemptTime);
+    for (float u : s1.commands) EXPECT_EQ(u, 0.0f) << "no gamepad: the levers rest";
+    station->terminate();
+    ASSERT_TRUE(station->waitForFinished(10000));
+    EXPECT_EQ(station->exitCode(), 0);
+}
