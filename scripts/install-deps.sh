@@ -40,6 +40,9 @@ packages=(
   # trainee records on PostgreSQL: Qt's driver, and the server programs (initdb, pg_ctl) that
   # trainer_tests start a throwaway server with (about 1 s; its default cluster is not used)
   libqt6sql6-psql postgresql
+  # the training centre (optional at build time; installed so CI builds and tests it):
+  # Eclipse Cyclone DDS and its IDL compiler (idlc, in cyclonedds-tools)
+  cyclonedds-dev cyclonedds-tools
   # tests
   libgtest-dev libgmock-dev libbenchmark-dev locales
   # Qt's own texts in Spanish (the buttons of standard dialogs, context menus)

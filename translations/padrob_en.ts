@@ -4,12 +4,12 @@
 <context>
     <name>AttemptLog</name>
     <message>
-        <location filename="../trainer/training/attempt_log.cpp" line="+68" />
+        <location filename="../trainer/training/attempt_log.cpp" line="+70" />
         <source>the records database is not open: this attempt is kept aside and recorded later</source>
         <translation>the records database is not open: this attempt is kept aside and recorded later</translation>
     </message>
     <message>
-        <location line="+69" />
+        <location line="+70" />
         <source>%1 — this attempt was saved in %2 and will be recorded when the database can be written</source>
         <translation>%1 — this attempt was saved in %2 and will be recorded when the database can be written</translation>
     </message>
@@ -74,6 +74,58 @@
     </message>
 </context>
 <context>
+    <name>CentreBus</name>
+    <message>
+        <location filename="../trainer/centre/bus.cpp" line="+160" />
+        <source>The centre's DDS domain must be a number from 0 to 232 (it is %1).</source>
+        <translation>The centre's DDS domain must be a number from 0 to 232 (it is %1).</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>Could not join the centre's network (DDS domain %1): %2. Check the centre's network interfaces and peers.</source>
+        <translation>Could not join the centre's network (DDS domain %1): %2. Check the centre's network interfaces and peers.</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Could not join the centre's network (DDS domain %1): %2.</source>
+        <translation>Could not join the centre's network (DDS domain %1): %2.</translation>
+    </message>
+    <message>
+        <location line="+35" />
+        <location line="+12" />
+        <source>Could not create the centre's topic %1: %2.</source>
+        <translation>Could not create the centre's topic %1: %2.</translation>
+    </message>
+</context>
+<context>
+    <name>CentreKey</name>
+    <message>
+        <location filename="../trainer/centre/signing.cpp" line="+84" />
+        <source>Cannot read the centre's key file %1: %2.</source>
+        <translation>Cannot read the centre's key file %1: %2.</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>The centre's key file %1 can be read by other users: make it readable by its owner only (chmod 600 %1).</source>
+        <translation>The centre's key file %1 can be read by other users: make it readable by its owner only (chmod 600 %1).</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>The centre's key file %1 must hold 64 hexadecimal digits (32 bytes); make one with 'padrob centre key FILE'.</source>
+        <translation>The centre's key file %1 must hold 64 hexadecimal digits (32 bytes); make one with 'padrob centre key FILE'.</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>%1 exists already: a centre's key is never overwritten.</source>
+        <translation>%1 exists already: a centre's key is never overwritten.</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Cannot write the centre's key file %1: %2.</source>
+        <translation>Cannot write the centre's key file %1: %2.</translation>
+    </message>
+</context>
+<context>
     <name>Diagnostics</name>
     <message>
         <location filename="../ide/studio/editor/diagnostic_text.cpp" line="+23" />
@@ -127,7 +179,7 @@
         <location line="+131" />
         <location filename="../solver/model/validate.cpp" line="+382" />
         <location line="+107" />
-        <location filename="../solver/parse/parser.cpp" line="+1053" />
+        <location filename="../solver/parse/parser.cpp" line="+1131" />
         <source>graphic %1</source>
         <translation>graphic %1</translation>
     </message>
@@ -221,18 +273,18 @@
         <translation>G %1 is left out of the clearance checks: %2</translation>
     </message>
     <message>
-        <location filename="../solver/compile/compile.cpp" line="+108" />
+        <location filename="../solver/compile/compile.cpp" line="+109" />
         <location filename="../solver/compile/topology.cpp" line="+51" />
         <location line="+9" />
         <location filename="../solver/model/validate.cpp" line="-430" />
         <location line="+454" />
-        <location filename="../solver/parse/parser.cpp" line="-385" />
-        <location line="+130" />
+        <location filename="../solver/parse/parser.cpp" line="-415" />
+        <location line="+134" />
         <source>joint %1</source>
         <translation>joint %1</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>the drive on %1 cannot act: the joint closes a loop, so it is a constraint, not a coordinate</source>
         <translation>the drive on %1 cannot act: the joint closes a loop, so it is a constraint, not a coordinate</translation>
     </message>
@@ -266,7 +318,7 @@
         <location filename="../solver/integrate/simulation.cpp" line="+50" />
         <location filename="../solver/model/validate.cpp" line="-461" />
         <location line="+460" />
-        <location filename="../solver/parse/parser.cpp" line="-192" />
+        <location filename="../solver/parse/parser.cpp" line="-199" />
         <source>body %1</source>
         <translation>body %1</translation>
     </message>
@@ -502,7 +554,7 @@
     <message>
         <location line="+6" />
         <location line="+16" />
-        <location filename="../solver/parse/parser.cpp" line="-383" />
+        <location filename="../solver/parse/parser.cpp" line="-397" />
         <location line="+9" />
         <source>%1: '%2' is not a number</source>
         <translation>%1: '%2' is not a number</translation>
@@ -738,13 +790,13 @@
         <translation>the table has one column u&lt;joint id&gt; per drive; write 0 in a column to keep that valve closed</translation>
     </message>
     <message>
-        <location filename="../solver/model/load.cpp" line="+57" />
+        <location filename="../solver/model/load.cpp" line="+93" />
         <source>this is not a text file (it contains a NUL byte here)</source>
         <translation>this is not a text file (it contains a NUL byte here)</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+12" />
+        <location line="+10" />
         <source>a model is a text file (.pad); open the model, not a mesh, image or archive</source>
         <translation>a model is a text file (.pad); open the model, not a mesh, image or archive</translation>
     </message>
@@ -754,7 +806,7 @@
         <translation>this is not a text file (%1 control characters in its first %2 bytes)</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+20" />
         <source>the file is not UTF-8 (byte 0x%1 here); it was read as Latin-1 (ISO 8859-1)</source>
         <translation>the file is not UTF-8 (byte 0x%1 here); it was read as Latin-1 (ISO 8859-1)</translation>
     </message>
@@ -785,7 +837,7 @@
     </message>
     <message>
         <location line="+5" />
-        <location filename="../solver/parse/parser.cpp" line="+599" />
+        <location filename="../solver/parse/parser.cpp" line="+621" />
         <source>drive on joint %1</source>
         <translation>drive on joint %1</translation>
     </message>
@@ -1060,7 +1112,7 @@
     <message>
         <location line="+10" />
         <location line="+171" />
-        <location filename="../solver/parse/parser.cpp" line="+124" />
+        <location filename="../solver/parse/parser.cpp" line="+139" />
         <source>force %1</source>
         <translation>force %1</translation>
     </message>
@@ -1224,7 +1276,7 @@
         <translation>split the machine into smaller models, or remove joints that never move</translation>
     </message>
     <message>
-        <location filename="../solver/parse/lexer.cpp" line="+132" />
+        <location filename="../solver/parse/lexer.cpp" line="+139" />
         <source>unexpected control character (code %1)</source>
         <translation>unexpected control character (code %1)</translation>
     </message>
@@ -1244,12 +1296,12 @@
         <translation>add '"' at the end of the text</translation>
     </message>
     <message>
-        <location filename="../solver/parse/parser.cpp" line="-885" />
+        <location filename="../solver/parse/parser.cpp" line="-950" />
         <source>write %1</source>
         <translation>write %1</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+29" />
         <source>did you mean '%1'?</source>
         <translation>did you mean '%1'?</translation>
     </message>
@@ -1279,7 +1331,7 @@
         <translation>statements are GRAVITY, RESTITUTION, B, C (with B1, B2, CL1), D, F and G; comments start with // or #</translation>
     </message>
     <message>
-        <location line="+81" />
+        <location line="+85" />
         <source>%1: %2 is out of range</source>
         <translation>%1: %2 is out of range</translation>
     </message>
@@ -1296,17 +1348,17 @@
     <message>
         <location line="+15" />
         <location line="+42" />
-        <location line="+244" />
+        <location line="+256" />
         <source>%1: %2 is missing</source>
         <translation>%1: %2 is missing</translation>
     </message>
     <message>
-        <location line="-283" />
+        <location line="-294" />
         <source>%1: expected %2, found '%3'</source>
         <translation>%1: expected %2, found '%3'</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+20" />
         <source>%1: %2 needs %3 numbers, only %4 given</source>
         <translation>%1: %2 needs %3 numbers, only %4 given</translation>
     </message>
@@ -1327,12 +1379,12 @@
     </message>
     <message>
         <location line="+16" />
-        <location line="+626" />
+        <location line="+662" />
         <source>%1: %2 cannot be negative (%3)</source>
         <translation>%1: %2 cannot be negative (%3)</translation>
     </message>
     <message>
-        <location line="-625" />
+        <location line="-661" />
         <location line="+4" />
         <source>ids are whole numbers 0, 1, 2, …</source>
         <translation>ids are whole numbers 0, 1, 2, …</translation>
@@ -1363,7 +1415,7 @@
         <translation>the magnitude</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+16" />
         <source>the offset</source>
         <translation>the offset</translation>
     </message>
@@ -1418,7 +1470,7 @@
         <translation>%1: MAG needs a value, found '%2'</translation>
     </message>
     <message>
-        <location line="+29" />
+        <location line="+28" />
         <source>%1: unexpected number %2</source>
         <translation>%1: unexpected number %2</translation>
     </message>
@@ -1461,18 +1513,18 @@
     </message>
     <message>
         <location line="+8" />
-        <location line="+287" />
+        <location line="+306" />
         <source>%1: %2 is given twice</source>
         <translation>%1: %2 is given twice</translation>
     </message>
     <message>
-        <location line="-286" />
-        <location line="+287" />
+        <location line="-305" />
+        <location line="+306" />
         <source>keep one %1</source>
         <translation>keep one %1</translation>
     </message>
     <message>
-        <location line="-256" />
+        <location line="-264" />
         <source>write GRAVITY gx gy gz (m/s², z is up)</source>
         <translation>write GRAVITY gx gy gz (m/s², z is up)</translation>
     </message>
@@ -1510,19 +1562,19 @@
     </message>
     <message>
         <location line="+12" />
-        <location line="+362" />
+        <location line="+383" />
         <source>body</source>
         <translation>body</translation>
     </message>
     <message>
-        <location line="-362" />
-        <location line="+179" />
-        <location line="+291" />
+        <location line="-383" />
+        <location line="+187" />
+        <location line="+319" />
         <source>the body id</source>
         <translation>the body id</translation>
     </message>
     <message>
-        <location line="-447" />
+        <location line="-482" />
         <source>%1: a body takes 0, 4 or 7 numbers after its id (m Ixx Iyy Izz [Ixy Iyz Ixz]), found %2</source>
         <translation>%1: a body takes 0, 4 or 7 numbers after its id (m Ixx Iyy Izz [Ixy Iyz Ixz]), found %2</translation>
     </message>
@@ -1548,19 +1600,19 @@
     </message>
     <message>
         <location line="+17" />
-        <location line="+2" />
+        <location line="+5" />
         <source>joint</source>
         <translation>joint</translation>
     </message>
     <message>
-        <location line="-2" />
-        <location line="+157" />
-        <location line="+157" />
+        <location line="-5" />
+        <location line="+164" />
+        <location line="+192" />
         <source>the joint id</source>
         <translation>the joint id</translation>
     </message>
     <message>
-        <location line="-311" />
+        <location line="-349" />
         <source>the joint type (0, 1 or 2)</source>
         <translation>the joint type (0, 1 or 2)</translation>
     </message>
@@ -1645,7 +1697,7 @@
         <translation>keep one B%1 line per joint</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+24" />
         <source>%1: %2 belongs on the B%3 line</source>
         <translation>%1: %2 belongs on the B%3 line</translation>
     </message>
@@ -1670,7 +1722,7 @@
         <translation>drive</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>%1: the drive kind is missing</source>
         <translation>%1: the drive kind is missing</translation>
     </message>
@@ -1680,18 +1732,18 @@
         <translation>write HYD, MOTOR, PNEU or SERVO after the joint id</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+6" />
         <source>speed</source>
         <translation>speed</translation>
     </message>
     <message>
         <location line="+0" />
-        <location line="+110" />
+        <location line="+126" />
         <source>force</source>
         <translation>force</translation>
     </message>
     <message>
-        <location line="-109" />
+        <location line="-125" />
         <source>diameter</source>
         <translation>diameter</translation>
     </message>
@@ -1701,12 +1753,12 @@
         <translation>gain</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+34" />
         <source>write D j HYD VMAX v [VMIN v] [FMAX f] [FMIN f], or D j HYD PUMP cc RPM n BORE d ROD d PRESSURE Pa</source>
         <translation>write D j HYD VMAX v [VMIN v] [FMAX f] [FMIN f], or D j HYD PUMP cc RPM n BORE d ROD d PRESSURE Pa</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="-29" />
         <source>stall torque</source>
         <translation>stall torque</translation>
     </message>
@@ -1716,7 +1768,7 @@
         <translation>no-load speed</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+20" />
         <source>%1: unknown drive kind '%2'</source>
         <translation>%1: unknown drive kind '%2'</translation>
     </message>
@@ -1726,12 +1778,12 @@
         <translation>drive kinds are HYD, MOTOR, PNEU and SERVO</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+15" />
         <source>a %1 drive</source>
         <translation>a %1 drive</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+20" />
         <source>%1: give either VMAX/FMAX or the hydraulic data PUMP … PRESSURE, not both</source>
         <translation>%1: give either VMAX/FMAX or the hydraulic data PUMP … PRESSURE, not both</translation>
     </message>
@@ -1786,7 +1838,7 @@
         <translation>the force id</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>%1: the force kind is missing</source>
         <translation>%1: the force kind is missing</translation>
     </message>
@@ -1796,12 +1848,12 @@
         <translation>write POINT, TORQUE, JOINT, SPRING or AERO after the force id</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+6" />
         <source>coefficient</source>
         <translation>coefficient</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+13" />
         <source>stiffness</source>
         <translation>stiffness</translation>
     </message>
@@ -1816,18 +1868,18 @@
         <translation>damping</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+3" />
         <source>area</source>
         <translation>area</translation>
     </message>
     <message>
         <location line="+3" />
-        <location line="+61" />
+        <location line="+96" />
         <source>density</source>
         <translation>density</translation>
     </message>
     <message>
-        <location line="-55" />
+        <location line="-59" />
         <source>%1: unknown force kind '%2'</source>
         <translation>%1: unknown force kind '%2'</translation>
     </message>
@@ -1842,7 +1894,7 @@
         <translation>a %1 force</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+38" />
         <source>graphic</source>
         <translation>graphic</translation>
     </message>
@@ -1857,7 +1909,7 @@
         <translation>%1: B body is missing after the id</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+10" />
         <source>mass</source>
         <translation>mass</translation>
     </message>
@@ -1867,7 +1919,7 @@
         <translation>factor</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+8" />
         <source>%1: the shape is missing</source>
         <translation>%1: the shape is missing</translation>
     </message>
@@ -1887,12 +1939,12 @@
         <translation>shapes are BOX, CYL, TUBE, SPHERE, CONE, ELLIPSOID, PRISM and MESH</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+13" />
         <source>%1 dimension %2 of %3 (%4)</source>
         <translation>%1 dimension %2 of %3 (%4)</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+12" />
         <source>a PRISM value</source>
         <translation>a PRISM value</translation>
     </message>
@@ -1932,7 +1984,7 @@
         <translation>MASS is the solid's mass in kg; RHO its density in kg/m³</translation>
     </message>
     <message>
-        <location filename="../solver/integrate/integrator.cpp" line="+473" />
+        <location filename="../solver/integrate/integrator.cpp" line="+466" />
         <source>the right-hand side reported a failure at t = %1 s</source>
         <translation>the right-hand side reported a failure at t = %1 s</translation>
     </message>
@@ -1992,7 +2044,7 @@
         <translation>body %1 %2</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+23" />
         <source>t=%1 s: %2 welded to %3</source>
         <translation>t=%1 s: %2 welded to %3</translation>
     </message>
@@ -2047,12 +2099,12 @@
         <translation>t=%1 s: joint %2 relief valve closed retracting</translation>
     </message>
     <message>
-        <location line="+547" />
+        <location line="+720" />
         <source>the closed loops locked up at t = %1 s (a singular configuration: the loop-closure equations lost rank, so the mechanism cannot move on there); drive it another way or change the geometry</source>
         <translation>the closed loops locked up at t = %1 s (a singular configuration: the loop-closure equations lost rank, so the mechanism cannot move on there); drive it another way or change the geometry</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+24" />
         <source>the closed loops cannot be closed at t = %1 s from the coordinates given: set coordinates the loops can reach</source>
         <translation>the closed loops cannot be closed at t = %1 s from the coordinates given: set coordinates the loops can reach</translation>
     </message>
@@ -2072,12 +2124,12 @@
         <translation>the simulation failed at t = %1 s, joint %2 (%3): %4</translation>
     </message>
     <message>
-        <location line="+45" />
+        <location line="+52" />
         <source>more than %1 events before t = %2 s: the joints keep switching (chattering)</source>
         <translation>more than %1 events before t = %2 s: the joints keep switching (chattering)</translation>
     </message>
     <message>
-        <location line="+29" />
+        <location line="+46" />
         <source>cannot weld: no such body</source>
         <translation>cannot weld: no such body</translation>
     </message>
@@ -2151,6 +2203,24 @@
     </message>
 </context>
 <context>
+    <name>StationNode</name>
+    <message>
+        <location filename="../trainer/centre/station_node.cpp" line="+42" />
+        <source>A station needs at least one tutorial to run.</source>
+        <translation>A station needs at least one tutorial to run.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>A station needs a name, unique in the centre.</source>
+        <translation>A station needs a name, unique in the centre.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The tutorials of one station must all use the same model: %1 uses %2, %3 uses %4.</source>
+        <translation>The tutorials of one station must all use the same model: %1 uses %2, %3 uses %4.</translation>
+    </message>
+</context>
+<context>
     <name>TutorialRunner</name>
     <message>
         <location filename="../trainer/training/runner.cpp" line="+45" />
@@ -2211,7 +2281,7 @@
 <context>
     <name>TutorialSession</name>
     <message>
-        <location filename="../trainer/training/session.cpp" line="+77" />
+        <location filename="../trainer/training/session.cpp" line="+80" />
         <source>Goal done</source>
         <translation>Goal done</translation>
     </message>
@@ -2286,12 +2356,17 @@
         <translation>Simulation stopped</translation>
     </message>
     <message>
+        <location line="+3" />
+        <source>Instructor</source>
+        <translation>Instructor</translation>
+    </message>
+    <message>
         <location line="+1" />
         <source>Stopped</source>
         <translation>Stopped</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+64" />
         <source>Goal done: %1</source>
         <translation>Goal done: %1</translation>
     </message>
@@ -2366,7 +2441,37 @@
         <translation>The simulation stopped: %1</translation>
     </message>
     <message>
+        <location line="+7" />
+        <source>Instructor %1 started the attempt</source>
+        <translation>Instructor %1 started the attempt</translation>
+    </message>
+    <message>
         <location line="+1" />
+        <source>Instructor %1 paused the attempt</source>
+        <translation>Instructor %1 paused the attempt</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Instructor %1 resumed the attempt</source>
+        <translation>Instructor %1 resumed the attempt</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Instructor %1 restarted the tutorial</source>
+        <translation>Instructor %1 restarted the tutorial</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Instructor %1 stopped the attempt</source>
+        <translation>Instructor %1 stopped the attempt</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Instructor %1: %2</source>
+        <translation>Instructor %1: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>The attempt was stopped</source>
         <translation>The attempt was stopped</translation>
     </message>
@@ -2414,6 +2519,151 @@
         <location line="+16" />
         <source>Complete every goal: the stage is passed only when all are done.</source>
         <translation>Complete every goal: the stage is passed only when all are done.</translation>
+    </message>
+    <message>
+        <location line="-131" />
+        <source>Fault injected</source>
+        <translation>Fault injected</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Fault cleared</source>
+        <translation>Fault cleared</translation>
+    </message>
+    <message>
+        <location filename="../trainer/training/faults.cpp" line="+40" />
+        <source>Hose burst</source>
+        <translation>Hose burst</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Stuck valve</source>
+        <translation>Stuck valve</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Worker walks in</source>
+        <translation>Worker walks in</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Power cut</source>
+        <translation>Power cut</translation>
+    </message>
+    <message>
+        <location filename="../trainer/training/session.cpp" line="+30" />
+        <source>Instructor: the hose of %1 was repaired</source>
+        <translation>Instructor: the hose of %1 was repaired</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Instructor: a hose of %1 burst; the drive has no pressure</source>
+        <translation>Instructor: a hose of %1 burst; the drive has no pressure</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Instructor: the valve of %1 was freed</source>
+        <translation>Instructor: the valve of %1 was freed</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Instructor: the valve of %1 stuck at %2 % of its opening</source>
+        <translation>Instructor: the valve of %1 stuck at %2 % of its opening</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Instructor: %1 left the work area</source>
+        <translation>Instructor: %1 left the work area</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Instructor: %1 walked into the work area</source>
+        <translation>Instructor: %1 walked into the work area</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Instructor: the power is back</source>
+        <translation>Instructor: the power is back</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Instructor: the power was cut; every valve closed</source>
+        <translation>Instructor: the power was cut; every valve closed</translation>
+    </message>
+    <message>
+        <location line="+611" />
+        <source>There is no drive "%1": this machine has no hydraulic drives</source>
+        <translation>There is no drive "%1": this machine has no hydraulic drives</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>There is no drive "%1" on this machine; its hydraulic drives are: %2</source>
+        <translation>There is no drive "%1" on this machine; its hydraulic drives are: %2</translation>
+    </message>
+    <message>
+        <location line="+54" />
+        <source>The attempt has ended: no fault can be injected</source>
+        <translation>The attempt has ended: no fault can be injected</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>A burst hose's damping and residual force must be zero or more</source>
+        <translation>A burst hose's damping and residual force must be zero or more</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>A stuck valve's opening is a command from -1 to 1, not %1</source>
+        <translation>A stuck valve's opening is a command from -1 to 1, not %1</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>This tutorial has no worker who could walk in (it has no WORKER)</source>
+        <translation>This tutorial has no worker who could walk in (it has no WORKER)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>There is no worker %1 in this tutorial: its workers are numbered 0 to %2</source>
+        <translation>There is no worker %1 in this tutorial: its workers are numbered 0 to %2</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Worker %1 has no graphics in the scene that could be moved</source>
+        <translation>Worker %1 has no graphics in the scene that could be moved</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The place a worker walks to must be a finite position</source>
+        <translation>The place a worker walks to must be a finite position</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>The attempt has ended: no fault can be cleared</source>
+        <translation>The attempt has ended: no fault can be cleared</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>No hose of %1 has burst</source>
+        <translation>No hose of %1 has burst</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The valve of %1 is not stuck</source>
+        <translation>The valve of %1 is not stuck</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>No worker has walked in</source>
+        <translation>No worker has walked in</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Worker %1 has not walked in</source>
+        <translation>Worker %1 has not walked in</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The power has not been cut</source>
+        <translation>The power has not been cut</translation>
     </message>
 </context>
 <context>
@@ -3500,7 +3750,7 @@
 <context>
     <name>padrob</name>
     <message>
-        <location filename="../ide/cli/bench.cpp" line="+212" />
+        <location filename="../ide/cli/bench.cpp" line="+213" />
         <source>the simulation failed: %1</source>
         <translation>the simulation failed: %1</translation>
     </message>
@@ -3804,6 +4054,10 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
     </message>
     <message>
         <location line="+45" />
+        <location filename="../ide/cli/centre.cpp" line="+84" />
+        <location line="+6" />
+        <location line="+2" />
+        <location line="+3" />
         <location filename="../ide/cli/export.cpp" line="+109" />
         <location filename="../ide/cli/simulate.cpp" line="+244" />
         <location filename="../ide/cli/tutorial.cpp" line="+186" />
@@ -3828,9 +4082,12 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
     </message>
     <message>
         <location line="+4" />
+        <location filename="../ide/cli/centre.cpp" line="+128" />
+        <location line="+260" />
+        <location line="+174" />
         <location filename="../ide/cli/export.cpp" line="+12" />
         <location filename="../ide/cli/inertia.cpp" line="+204" />
-        <location filename="../ide/cli/main.cpp" line="+130" />
+        <location filename="../ide/cli/main.cpp" line="+138" />
         <location line="+26" />
         <location filename="../ide/cli/simulate.cpp" line="+23" />
         <location filename="../ide/cli/tutorial.cpp" line="+8" />
@@ -4275,7 +4532,7 @@ Exit status 2 on a usage error or a file that cannot be read or written.
         <translation>dependent coordinates (joints): %1</translation>
     </message>
     <message>
-        <location filename="../ide/cli/main.cpp" line="-122" />
+        <location filename="../ide/cli/main.cpp" line="-127" />
         <source>Usage: padrob COMMAND [OPTIONS] [ARGS]
 
 Padrob builds real-time training simulators of machines from model files (.pad).
@@ -4292,6 +4549,11 @@ Commands:
                         write a tree model as MuJoCo's MJCF
   tutorial FILE [--input LOG | --demo] [--json]
                         check a tutorial, or run it against an input log and score it
+  station TUTORIAL... --name NAME
+                        a training station without a window on the centre's network
+  instructor list|watch|send
+                        the training centre's stations: list, watch and command them
+  centre key|seal|bench the training centre's key, sealed secrets, scale benchmark
 
 Options:
   -h, --help            show this help (or a command's: padrob COMMAND --help)
@@ -4317,6 +4579,11 @@ Commands:
                         write a tree model as MuJoCo's MJCF
   tutorial FILE [--input LOG | --demo] [--json]
                         check a tutorial, or run it against an input log and score it
+  station TUTORIAL... --name NAME
+                        a training station without a window on the centre's network
+  instructor list|watch|send
+                        the training centre's stations: list, watch and command them
+  centre key|seal|bench the training centre's key, sealed secrets, scale benchmark
 
 Options:
   -h, --help            show this help (or a command's: padrob COMMAND --help)
@@ -4328,7 +4595,7 @@ Exit status: 0 success, 1 the model has errors, 2 usage error or unreadable file
 </translation>
     </message>
     <message>
-        <location line="+29" />
+        <location line="+34" />
         <source>Usage: padrob check MODEL...
 
 Reads each model file and prints every problem found, one per line, as
@@ -4415,7 +4682,7 @@ A model with errors is not described: its problems are printed as by
     </message>
     <message>
         <location line="+26" />
-        <location line="+25" />
+        <location line="+30" />
         <source>Try 'padrob --help'.</source>
         <translation>Try 'padrob --help'.</translation>
     </message>
@@ -4884,6 +5151,422 @@ Exit status: 0 the tutorial is fine (checked) or the run passed; 1 the run faile
         <source>the tutorial has no usable demonstration (DEMO)</source>
         <translation>the tutorial has no usable demonstration (DEMO)</translation>
     </message>
+    <message>
+        <location filename="../ide/cli/centre.cpp" line="-596" />
+        <source>Network options (every node of a centre uses the same):
+  --domain N            the centre's DDS domain, 0-232 (default 0)
+  --key FILE            the centre's key (make one with 'padrob centre key FILE');
+                        commands are signed with it, and stations refuse the rest
+  --interface NAME      the network interface to use (name or address; repeatable)
+  --peer ADDRESS        discover the other computers by unicast at ADDRESS
+                        (repeatable; without it, multicast)
+  --loopback            this computer only (--interface 127.0.0.1 --peer 127.0.0.1)
+</source>
+        <translation>Network options (every node of a centre uses the same):
+  --domain N            the centre's DDS domain, 0-232 (default 0)
+  --key FILE            the centre's key (make one with 'padrob centre key FILE');
+                        commands are signed with it, and stations refuse the rest
+  --interface NAME      the network interface to use (name or address; repeatable)
+  --peer ADDRESS        discover the other computers by unicast at ADDRESS
+                        (repeatable; without it, multicast)
+  --loopback            this computer only (--interface 127.0.0.1 --peer 127.0.0.1)
+</translation>
+    </message>
+    <message>
+        <location line="+26" />
+        <source>--domain must be a whole number from 0 to 232, not '%1'</source>
+        <translation>--domain must be a whole number from 0 to 232, not '%1'</translation>
+    </message>
+    <message>
+        <location line="+49" />
+        <location line="+10" />
+        <source>--records-server must be USER@HOST:PORT/DATABASE, not '%1'</source>
+        <translation>--records-server must be USER@HOST:PORT/DATABASE, not '%1'</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Usage: padrob station TUTORIAL... --name NAME [OPTIONS]
+
+Runs a training station without a window on the centre's network: the tutorials'
+machine is simulated in real time, its state is streamed for display nodes
+(padrob-studio --display-of NAME) and the instructor, its events are sent as they
+happen, and the instructor's signed commands are obeyed: start, pause, resume,
+reset and stop a tutorial, inject and clear faults. Every attempt is recorded.
+Runs until interrupted (Ctrl+C or SIGTERM), then says it is leaving.
+
+  --name NAME           the station's name, unique in the centre
+  --profile P           the operator's devices: a station profile of the model (its
+                        name, or a .json file; docs/station.md): gamepads, joysticks,
+                        the serial valve console
+  --demo                the operator's input is each tutorial's demonstration
+                        (a showcase, or a test)
+                        Without either, the levers rest.
+  --records FILE        record the attempts in this SQLite file (the station's journal)
+  --records-server USER@HOST:PORT/DATABASE
+                        and sync them to the centre's PostgreSQL server; while it is
+                        out of reach the journal keeps them (docs/records.md)
+  --records-password FILE
+                        the server's password, sealed with the centre's key by
+                        'padrob centre seal' (never stored in plain text)
+  --for SECONDS         stop after this long
+</source>
+        <translation>Usage: padrob station TUTORIAL... --name NAME [OPTIONS]
+
+Runs a training station without a window on the centre's network: the tutorials'
+machine is simulated in real time, its state is streamed for display nodes
+(padrob-studio --display-of NAME) and the instructor, its events are sent as they
+happen, and the instructor's signed commands are obeyed: start, pause, resume,
+reset and stop a tutorial, inject and clear faults. Every attempt is recorded.
+Runs until interrupted (Ctrl+C or SIGTERM), then says it is leaving.
+
+  --name NAME           the station's name, unique in the centre
+  --profile P           the operator's devices: a station profile of the model (its
+                        name, or a .json file; docs/station.md): gamepads, joysticks,
+                        the serial valve console
+  --demo                the operator's input is each tutorial's demonstration
+                        (a showcase, or a test)
+                        Without either, the levers rest.
+  --records FILE        record the attempts in this SQLite file (the station's journal)
+  --records-server USER@HOST:PORT/DATABASE
+                        and sync them to the centre's PostgreSQL server; while it is
+                        out of reach the journal keeps them (docs/records.md)
+  --records-password FILE
+                        the server's password, sealed with the centre's key by
+                        'padrob centre seal' (never stored in plain text)
+  --for SECONDS         stop after this long
+</translation>
+    </message>
+    <message>
+        <location line="+61" />
+        <source>--for must be a positive number of seconds, not '%1'</source>
+        <translation>--for must be a positive number of seconds, not '%1'</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>--name is required: the station's name in the centre</source>
+        <translation>--name is required: the station's name in the centre</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>give at least one tutorial file (.tut)</source>
+        <translation>give at least one tutorial file (.tut)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>without --key the station takes no commands from the instructor</source>
+        <translation>without --key the station takes no commands from the instructor</translation>
+    </message>
+    <message>
+        <location line="+30" />
+        <source>cannot open the sealed password in %1: it must be made by 'padrob centre seal' with this centre's key</source>
+        <translation>cannot open the sealed password in %1: it must be made by 'padrob centre seal' with this centre's key</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>--records-server needs --records FILE, the station's local journal</source>
+        <translation>--records-server needs --records FILE, the station's local journal</translation>
+    </message>
+    <message>
+        <location line="+48" />
+        <source>station %1: on the centre's network (domain %2), ready
+</source>
+        <translation>station %1: on the centre's network (domain %2), ready
+</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>station %1: left the centre's network
+</source>
+        <translation>station %1: left the centre's network
+</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Usage: padrob instructor list|watch|send ... [OPTIONS]
+
+The instructor's station without a window:
+  list [--wait S]       the stations on the network after listening S seconds
+                        (default 2): name, status, tutorial, time, score, warnings
+  watch [--for S]       print the stations' events and comings and goings as they
+                        happen (for S seconds; default until interrupted)
+  send STATION COMMAND [ARG [ARG2]] [--value V] [--timeout S]
+                        send a signed command and wait for the station's answer:
+                          start [TUTORIAL [OPERATOR]], pause, resume, reset, stop,
+                          inject FAULT [DRIVE|X,Y,Z], clear FAULT [DRIVE]
+                        faults: hose-burst DRIVE, stuck-valve DRIVE [--value U],
+                          worker-in X,Y,Z [--value WORKER], power-cut
+  --name NAME           the instructor's name (default: instructor@HOST)
+  --json                JSON output (one object; watch: one per line)
+
+Exit status: 0 done or accepted, 1 the station refused or did not answer,
+2 usage error.
+</source>
+        <translation>Usage: padrob instructor list|watch|send ... [OPTIONS]
+
+The instructor's station without a window:
+  list [--wait S]       the stations on the network after listening S seconds
+                        (default 2): name, status, tutorial, time, score, warnings
+  watch [--for S]       print the stations' events and comings and goings as they
+                        happen (for S seconds; default until interrupted)
+  send STATION COMMAND [ARG [ARG2]] [--value V] [--timeout S]
+                        send a signed command and wait for the station's answer:
+                          start [TUTORIAL [OPERATOR]], pause, resume, reset, stop,
+                          inject FAULT [DRIVE|X,Y,Z], clear FAULT [DRIVE]
+                        faults: hose-burst DRIVE, stuck-valve DRIVE [--value U],
+                          worker-in X,Y,Z [--value WORKER], power-cut
+  --name NAME           the instructor's name (default: instructor@HOST)
+  --json                JSON output (one object; watch: one per line)
+
+Exit status: 0 done or accepted, 1 the station refused or did not answer,
+2 usage error.
+</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>on the network</source>
+        <translation>on the network</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>silent</source>
+        <translation>silent</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>gone (it left)</source>
+        <translation>gone (it left)</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>idle</source>
+        <translation>idle</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>running</source>
+        <translation>running</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>paused</source>
+        <translation>paused</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>ended</source>
+        <translation>ended</translation>
+    </message>
+    <message>
+        <location line="+68" />
+        <source>the station has no centre key and takes no commands</source>
+        <translation>the station has no centre key and takes no commands</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the signature does not match the station's centre key</source>
+        <translation>the signature does not match the station's centre key</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the command is too old or from the future (check the computers' clocks)</source>
+        <translation>the command is too old or from the future (check the computers' clocks)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a replayed command (its nonce was already used)</source>
+        <translation>a replayed command (its nonce was already used)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the station has no such tutorial</source>
+        <translation>the station has no such tutorial</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>no attempt is running</source>
+        <translation>no attempt is running</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the attempt is not paused</source>
+        <translation>the attempt is not paused</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>no such fault (hose-burst, stuck-valve, worker-in, power-cut)</source>
+        <translation>no such fault (hose-burst, stuck-valve, worker-in, power-cut)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>no such command</source>
+        <translation>no such command</translation>
+    </message>
+    <message>
+        <location line="+36" />
+        <location line="+171" />
+        <source>%1 needs a number</source>
+        <translation>%1 needs a number</translation>
+    </message>
+    <message>
+        <location line="-163" />
+        <source>say what to do: list, watch or send</source>
+        <translation>say what to do: list, watch or send</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>unknown instructor command '%1'</source>
+        <translation>unknown instructor command '%1'</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>send needs a station and a command</source>
+        <translation>send needs a station and a command</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>send needs the centre's key (--key FILE)</source>
+        <translation>send needs the centre's key (--key FILE)</translation>
+    </message>
+    <message>
+        <location line="+29" />
+        <source>no station answered
+</source>
+        <translation>no station answered
+</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>%1 is %2
+</source>
+        <translation>%1 is %2
+</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>station %1 did not answer</source>
+        <translation>station %1 did not answer</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>station %1 did not answer the command</source>
+        <translation>station %1 did not answer the command</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>%1: %2 done
+</source>
+        <translation>%1: %2 done
+</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 refused %2: %3
+</source>
+        <translation>%1 refused %2: %3
+</translation>
+    </message>
+    <message>
+        <location line="+34" />
+        <source>expected: padrob centre seal --key FILE</source>
+        <translation>expected: padrob centre seal --key FILE</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>give the secret on standard input (one line)</source>
+        <translation>give the secret on standard input (one line)</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>--stations needs a whole number from 1 to 64</source>
+        <translation>--stations needs a whole number from 1 to 64</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>no tutorial file %1 (run from Padrob's folder, or give --tutorial FILE)</source>
+        <translation>no tutorial file %1 (run from Padrob's folder, or give --tutorial FILE)</translation>
+    </message>
+    <message>
+        <location line="+58" />
+        <source>only %1 of %2 stations were heard</source>
+        <translation>only %1 of %2 stations were heard</translation>
+    </message>
+    <message>
+        <location line="+61" />
+        <source>%1 stations streaming to one instructor for %2 s (%3 states):
+</source>
+        <translation>%1 stations streaming to one instructor for %2 s (%3 states):
+</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>  state rate per station: median %1 Hz, lowest %2 Hz; most lost: %3 %
+</source>
+        <translation>  state rate per station: median %1 Hz, lowest %2 Hz; most lost: %3 %
+</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>  latency, station to instructor: median %1 ms, 99th percentile %2 ms, max %3 ms
+</source>
+        <translation>  latency, station to instructor: median %1 ms, 99th percentile %2 ms, max %3 ms
+</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>  CPU: the instructor %1 % of a core; each station (median) %2 %
+</source>
+        <translation>  CPU: the instructor %1 % of a core; each station (median) %2 %
+</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>Usage: padrob centre key FILE
+       padrob centre seal --key FILE &lt; SECRET
+       padrob centre bench [--stations N] [--seconds S] [--tutorial FILE] [--json]
+
+key: makes a new centre key (32 random bytes) in FILE, readable by its owner only.
+Copy it to every station and instructor of the centre (padrob station --key,
+padrob instructor --key, padrob-studio --centre-key): commands signed with another
+key are refused. An existing file is never replaced.
+
+seal: prints the line read from standard input (the records server's password)
+sealed with the centre's key, for padrob station --records-password FILE.
+
+bench: starts N headless stations (default 16) on this computer, each running the
+tutorial's demonstration in real time and streaming its state at 60 Hz, and measures
+at one instructor the state rate, the latency from station to instructor and the CPU
+used (docs/performance.md).
+</source>
+        <translation>Usage: padrob centre key FILE
+       padrob centre seal --key FILE &lt; SECRET
+       padrob centre bench [--stations N] [--seconds S] [--tutorial FILE] [--json]
+
+key: makes a new centre key (32 random bytes) in FILE, readable by its owner only.
+Copy it to every station and instructor of the centre (padrob station --key,
+padrob instructor --key, padrob-studio --centre-key): commands signed with another
+key are refused. An existing file is never replaced.
+
+seal: prints the line read from standard input (the records server's password)
+sealed with the centre's key, for padrob station --records-password FILE.
+
+bench: starts N headless stations (default 16) on this computer, each running the
+tutorial's demonstration in real time and streaming its state at 60 Hz, and measures
+at one instructor the state rate, the latency from station to instructor and the CPU
+used (docs/performance.md).
+</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>expected: padrob centre key FILE</source>
+        <translation>expected: padrob centre key FILE</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>new centre key in %1 (fingerprint %2)
+</source>
+        <translation>new centre key in %1 (fingerprint %2)
+</translation>
+    </message>
 </context>
 <context>
     <name>studio::CalibrationWizard</name>
@@ -5230,6 +5913,86 @@ Exit status: 0 the tutorial is fine (checked) or the run passed; 1 the run faile
     </message>
 </context>
 <context>
+    <name>studio::DisplayFeed</name>
+    <message>
+        <location filename="../ide/studio/centre/display_feed.cpp" line="+184" />
+        <source>The station announced no usable model name (“%1”).</source>
+        <translation>The station announced no usable model name (“%1”).</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>The station's model “%1” is not installed on this computer (%2).</source>
+        <translation>The station's model “%1” is not installed on this computer (%2).</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <location line="+28" />
+        <source>The model file %1 cannot be read.</source>
+        <translation>The model file %1 cannot be read.</translation>
+    </message>
+    <message>
+        <location line="-23" />
+        <source>The station runs another version of the model “%1” than the one installed on this computer (%2): install the same model files on both computers.</source>
+        <translation>The station runs another version of the model “%1” than the one installed on this computer (%2): install the same model files on both computers.</translation>
+    </message>
+    <message>
+        <location line="+36" />
+        <source>The station's model %1 has errors on this computer: %2</source>
+        <translation>The station's model %1 has errors on this computer: %2</translation>
+    </message>
+</context>
+<context>
+    <name>studio::DisplayView</name>
+    <message>
+        <location filename="../ide/studio/centre/display_view.cpp" line="+112" />
+        <source>Waiting for station %1…</source>
+        <translation>Waiting for station %1…</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Station %1 is silent: no state for %2 s.</source>
+        <translation>Station %1 is silent: no state for %2 s.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Station %1 has left the centre.</source>
+        <translation>Station %1 has left the centre.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Waiting for station %1 to announce its model…</source>
+        <translation>Waiting for station %1 to announce its model…</translation>
+    </message>
+</context>
+<context>
+    <name>studio::DisplayWindow</name>
+    <message>
+        <location filename="../ide/studio/centre/display_window.cpp" line="+29" />
+        <source>This display cannot join the training centre's network (DDS domain %1): %2</source>
+        <translation>This display cannot join the training centre's network (DDS domain %1): %2</translation>
+    </message>
+    <message>
+        <location line="+54" />
+        <source>left screen</source>
+        <translation>left screen</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>centre screen</source>
+        <translation>centre screen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>right screen</source>
+        <translation>right screen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Padrob display: station %1, %2</source>
+        <translation>Padrob display: station %1, %2</translation>
+    </message>
+</context>
+<context>
     <name>studio::EditorPanel</name>
     <message>
         <location filename="../ide/studio/editor/editor_panel.cpp" line="+89" />
@@ -5295,7 +6058,7 @@ Exit status: 0 the tutorial is fine (checked) or the run passed; 1 the run faile
 <context>
     <name>studio::FrameBench</name>
     <message>
-        <location filename="../ide/studio/app/frame_bench.cpp" line="+193" />
+        <location filename="../ide/studio/app/frame_bench.cpp" line="+201" />
         <source>Cannot read the model %1.</source>
         <translation>Cannot read the model %1.</translation>
     </message>
@@ -5570,6 +6333,366 @@ Exit status: 0 the tutorial is fine (checked) or the run passed; 1 the run faile
         <location line="+4" />
         <source>the file's B line has no mass</source>
         <translation>the file's B line has no mass</translation>
+    </message>
+</context>
+<context>
+    <name>studio::InstructorWindow</name>
+    <message>
+        <location filename="../ide/studio/centre/instructor_window.cpp" line="+264" />
+        <source>up</source>
+        <translation>up</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>silent</source>
+        <translation>silent</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>left</source>
+        <translation>left</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>idle</source>
+        <translation>idle</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>running</source>
+        <translation>running</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>paused</source>
+        <translation>paused</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>ended</source>
+        <translation>ended</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>overload</source>
+        <translation>overload</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>near a worker</source>
+        <translation>near a worker</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>near the scene</source>
+        <translation>near the scene</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>records offline</source>
+        <translation>records offline</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <location line="+299" />
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="-287" />
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1/%2</source>
+        <translation>%1/%2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location line="+33" />
+        <source>%1 s  %2</source>
+        <translation>%1 s  %2</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>Padrob instructor</source>
+        <translation>Padrob instructor</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Station</source>
+        <translation>Station</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Presence</source>
+        <translation>Presence</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Tutorial</source>
+        <translation>Tutorial</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Operator</source>
+        <translation>Operator</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Time</source>
+        <translation>Time</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Score</source>
+        <translation>Score</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Goals</source>
+        <translation>Goals</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Warnings and faults</source>
+        <translation>Warnings and faults</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Latency</source>
+        <translation>Latency</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Start…</source>
+        <translation>Start…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+44" />
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <location line="-43" />
+        <location line="+44" />
+        <source>Resume</source>
+        <translation>Resume</translation>
+    </message>
+    <message>
+        <location line="-43" />
+        <location line="+44" />
+        <source>Reset</source>
+        <translation>Reset</translation>
+    </message>
+    <message>
+        <location line="-43" />
+        <location line="+44" />
+        <source>Stop</source>
+        <translation>Stop</translation>
+    </message>
+    <message>
+        <location line="-43" />
+        <source>Inject fault…</source>
+        <translation>Inject fault…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+44" />
+        <source>Clear fault</source>
+        <translation>Clear fault</translation>
+    </message>
+    <message>
+        <location line="-43" />
+        <source>Events</source>
+        <translation>Events</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Events of %1 (latest last)</source>
+        <translation>Events of %1 (latest last)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Cannot join the training centre's network: %1</source>
+        <translation>Cannot join the training centre's network: %1</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Centre key %1: commands to the stations are signed with it.</source>
+        <translation>Centre key %1: commands to the stations are signed with it.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Watching only: the centre's key cannot be used (%1).</source>
+        <translation>Watching only: the centre's key cannot be used (%1).</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Watching only: without the centre's key (--centre-key FILE) no commands can be sent.</source>
+        <translation>Watching only: without the centre's key (--centre-key FILE) no commands can be sent.</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Not connected to the training centre's network.</source>
+        <translation>Not connected to the training centre's network.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Commands need the centre's key: start padrob-studio with --centre-key FILE.</source>
+        <translation>Commands need the centre's key: start padrob-studio with --centre-key FILE.</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <location line="+86" />
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <location line="-81" />
+        <source>Inject fault</source>
+        <translation>Inject fault</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>the command was not signed with the key this station has.</source>
+        <translation>the command was not signed with the key this station has.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the command was too old when it arrived: check that the computers' clocks agree.</source>
+        <translation>the command was too old when it arrived: check that the computers' clocks agree.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the station has already taken a newer command from this instructor.</source>
+        <translation>the station has already taken a newer command from this instructor.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the station has no centre key and takes no commands.</source>
+        <translation>the station has no centre key and takes no commands.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>no attempt is running on the station.</source>
+        <translation>no attempt is running on the station.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the attempt is not paused.</source>
+        <translation>the attempt is not paused.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the station does not have that tutorial.</source>
+        <translation>the station does not have that tutorial.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the station does not know that fault.</source>
+        <translation>the station does not know that fault.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the station does not know that command.</source>
+        <translation>the station does not know that command.</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>%1 on %2</source>
+        <translation>%1 on %2</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1: sent, waiting for the station…</source>
+        <translation>%1: sent, waiting for the station…</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1: could not be sent.</source>
+        <translation>%1: could not be sent.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1: done.</source>
+        <translation>%1: done.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1: refused, %2</source>
+        <translation>%1: refused, %2</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1: no reply from the station in 5 s.</source>
+        <translation>%1: no reply from the station in 5 s.</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>Start a tutorial on %1</source>
+        <translation>Start a tutorial on %1</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>guest</source>
+        <translation>guest</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Tutorial:</source>
+        <translation>Tutorial:</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Operator code:</source>
+        <translation>Operator code:</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>Inject a fault on %1</source>
+        <translation>Inject a fault on %1</translation>
+    </message>
+    <message>
+        <location line="+30" />
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Fault:</source>
+        <translation>Fault:</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Drive:</source>
+        <translation>Drive:</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Valve opening (−1 … 1):</source>
+        <translation>Valve opening (−1 … 1):</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Where the worker walks to (x, y, z):</source>
+        <translation>Where the worker walks to (x, y, z):</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Inject</source>
+        <translation>Inject</translation>
     </message>
 </context>
 <context>
@@ -8381,7 +9504,8 @@ Id: %3</translation>
         <translation>The 3D view needs OpenGL 3.3, which this system does not provide.</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+14" />
+        <location line="+24" />
         <source>The 3D view's shaders do not build: %1</source>
         <translation>The 3D view's shaders do not build: %1</translation>
     </message>
@@ -8402,7 +9526,7 @@ Id: %3</translation>
 <context>
     <name>studio::main</name>
     <message>
-        <location filename="../ide/studio/main.cpp" line="+47" />
+        <location filename="../ide/studio/main.cpp" line="+55" />
         <source>Padrob Studio: write a machine's model, simulate it in real time and drive it from the operator's devices.</source>
         <translation>Padrob Studio: write a machine's model, simulate it in real time and drive it from the operator's devices.</translation>
     </message>
@@ -8418,11 +9542,12 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+3" />
+        <location line="+50" />
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="-47" />
         <source>Measure instead of working, then quit: the start-up time, N frames of a 1920x1080 window paced at 60 Hz and N back to back, with one view and with three, the solver's step periods meanwhile, and the latency of 60 key presses to the solver.</source>
         <translation>Measure instead of working, then quit: the start-up time, N frames of a 1920x1080 window paced at 60 Hz and N back to back, with one view and with three, the solver's step periods meanwhile, and the latency of 60 key presses to the solver.</translation>
     </message>
@@ -8452,7 +9577,7 @@ Id: %3</translation>
         <translation>The language of the application and the tutorials (es or en).</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+45" />
         <source>--lang must be es or en.</source>
         <translation>--lang must be es or en.</translation>
     </message>
@@ -8460,6 +9585,71 @@ Id: %3</translation>
         <location line="+13" />
         <source>--bench-frames needs a number of frames (1 or more) and --views 1 or 3.</source>
         <translation>--bench-frames needs a number of frames (1 or more) and --views 1 or 3.</translation>
+    </message>
+    <message>
+        <location line="-51" />
+        <source>Be a display node of the training centre: show STATION's machine from its operator's seat, driven by its state stream.</source>
+        <translation>Be a display node of the training centre: show STATION's machine from its operator's seat, driven by its state stream.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>STATION</source>
+        <translation>STATION</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>With --display-of: which of the station's three screens (default centre).</source>
+        <translation>With --display-of: which of the station's three screens (default centre).</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Be the instructor's station of the training centre: watch the stations and command them.</source>
+        <translation>Be the instructor's station of the training centre: watch the stations and command them.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>With --instructor: the centre's key, which signs the commands (without it the instructor only watches).</source>
+        <translation>With --instructor: the centre's key, which signs the commands (without it the instructor only watches).</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The training centre's DDS domain, 0-232 (default 0).</source>
+        <translation>The training centre's DDS domain, 0-232 (default 0).</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The training centre on this computer only.</source>
+        <translation>The training centre on this computer only.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The network interface of the training centre (name or address; repeatable).</source>
+        <translation>The network interface of the training centre (name or address; repeatable).</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>INTERFACE</source>
+        <translation>INTERFACE</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Find the centre's other computers by unicast at ADDRESS (repeatable; without it, multicast).</source>
+        <translation>Find the centre's other computers by unicast at ADDRESS (repeatable; without it, multicast).</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>ADDRESS</source>
+        <translation>ADDRESS</translation>
+    </message>
+    <message>
+        <location line="+44" />
+        <source>--domain must be a whole number from 0 to 232.</source>
+        <translation>--domain must be a whole number from 0 to 232.</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>--view must be left, centre or right.</source>
+        <translation>--view must be left, centre or right.</translation>
     </message>
 </context>
 <context>
@@ -9011,7 +10201,7 @@ Id: %3</translation>
 <context>
     <name>trainer::records::RecordsDb</name>
     <message>
-        <location filename="../trainer/records/records_db.cpp" line="+266" />
+        <location filename="../trainer/records/records_db.cpp" line="+286" />
         <source>the records database is in use by another program, which has kept it locked for over %1 s; close that program or try again</source>
         <translation>the records database is in use by another program, which has kept it locked for over %1 s; close that program or try again</translation>
     </message>
@@ -9164,17 +10354,19 @@ Id: %3</translation>
         <translation>the upgrade to schema version %1 failed (%2)</translation>
     </message>
     <message>
-        <location line="+218" />
+        <location line="+224" />
+        <location line="+449" />
         <source>cannot add the operator “%1”</source>
         <translation>cannot add the operator “%1”</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="-447" />
+        <location line="+449" />
         <source>an operator needs an id</source>
         <translation>an operator needs an id</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="-443" />
         <source>the id is taken already, by “%1”</source>
         <translation>the id is taken already, by “%1”</translation>
     </message>
@@ -9185,12 +10377,12 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+7" />
-        <location line="+30" />
+        <location line="+31" />
         <source>there is no operator %1</source>
         <translation>there is no operator %1</translation>
     </message>
     <message>
-        <location line="-24" />
+        <location line="-25" />
         <source>cannot look the operator up</source>
         <translation>cannot look the operator up</translation>
     </message>
@@ -9205,7 +10397,7 @@ Id: %3</translation>
         <translation>the tutorial has no id</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+33" />
         <source>cannot record the attempt's events</source>
         <translation>cannot record the attempt's events</translation>
     </message>
@@ -9216,12 +10408,13 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+5" />
-        <location line="+46" />
+        <location line="+54" />
+        <location line="+254" />
         <source>there is no attempt %1</source>
         <translation>there is no attempt %1</translation>
     </message>
     <message>
-        <location line="-25" />
+        <location line="-279" />
         <source>cannot record the attempt's result</source>
         <translation>cannot record the attempt's result</translation>
     </message>
@@ -9267,13 +10460,79 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+7" />
+        <location line="+76" />
+        <location line="+82" />
         <source>cannot read the attempt</source>
         <translation>cannot read the attempt</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="-146" />
         <source>cannot export the records to %1</source>
         <translation>cannot export the records to %1</translation>
+    </message>
+    <message>
+        <location line="-189" />
+        <source>there is an attempt with the id %1 already</source>
+        <translation>there is an attempt with the id %1 already</translation>
+    </message>
+    <message>
+        <location line="+268" />
+        <source>cannot read what the centre's server lacks</source>
+        <translation>cannot read what the centre's server lacks</translation>
+    </message>
+    <message>
+        <location line="+44" />
+        <location line="+12" />
+        <source>cannot note what the centre's server has</source>
+        <translation>cannot note what the centre's server has</translation>
+    </message>
+    <message>
+        <location line="+22" />
+        <source>cannot give the old attempts their unique ids</source>
+        <translation>cannot give the old attempts their unique ids</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>cannot read the attempt's events</source>
+        <translation>cannot read the attempt's events</translation>
+    </message>
+    <message>
+        <location line="+39" />
+        <source>cannot copy the attempt %1</source>
+        <translation>cannot copy the attempt %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the attempt has no unique id</source>
+        <translation>the attempt has no unique id</translation>
+    </message>
+    <message>
+        <location line="+62" />
+        <source>an event has no index</source>
+        <translation>an event has no index</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>cannot reach the records database</source>
+        <translation>cannot reach the records database</translation>
+    </message>
+</context>
+<context>
+    <name>trainer::records::SharedRecords</name>
+    <message>
+        <location filename="../trainer/records/shared_records.cpp" line="+165" />
+        <source>cannot send the records to the centre's server: the station's records are not open</source>
+        <translation>cannot send the records to the centre's server: the station's records are not open</translation>
+    </message>
+    <message>
+        <location line="+104" />
+        <source>not connected yet to the centre's records server %1: this station records on its own until it is</source>
+        <translation>not connected yet to the centre's records server %1: this station records on its own until it is</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>this station records on its own, and sends its records to the centre's server %1 when it is back (%2)</source>
+        <translation>this station records on its own, and sends its records to the centre's server %1 when it is back (%2)</translation>
     </message>
 </context>
 </TS>

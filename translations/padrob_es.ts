@@ -4,12 +4,12 @@
 <context>
     <name>AttemptLog</name>
     <message>
-        <location filename="../trainer/training/attempt_log.cpp" line="+68" />
+        <location filename="../trainer/training/attempt_log.cpp" line="+70" />
         <source>the records database is not open: this attempt is kept aside and recorded later</source>
         <translation>la base de datos de registros no está abierta: este intento se guarda aparte y se registra después</translation>
     </message>
     <message>
-        <location line="+69" />
+        <location line="+70" />
         <source>%1 — this attempt was saved in %2 and will be recorded when the database can be written</source>
         <translation>%1 — este intento se guardó en %2 y se registrará cuando se pueda escribir en la base de datos</translation>
     </message>
@@ -74,6 +74,58 @@
     </message>
 </context>
 <context>
+    <name>CentreBus</name>
+    <message>
+        <location filename="../trainer/centre/bus.cpp" line="+160" />
+        <source>The centre's DDS domain must be a number from 0 to 232 (it is %1).</source>
+        <translation>El dominio DDS del centro debe ser un número de 0 a 232 (es %1).</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>Could not join the centre's network (DDS domain %1): %2. Check the centre's network interfaces and peers.</source>
+        <translation>No se pudo entrar a la red del centro (dominio DDS %1): %2. Revise las interfaces de red y los pares del centro.</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Could not join the centre's network (DDS domain %1): %2.</source>
+        <translation>No se pudo entrar a la red del centro (dominio DDS %1): %2.</translation>
+    </message>
+    <message>
+        <location line="+35" />
+        <location line="+12" />
+        <source>Could not create the centre's topic %1: %2.</source>
+        <translation>No se pudo crear el tópico %1 del centro: %2.</translation>
+    </message>
+</context>
+<context>
+    <name>CentreKey</name>
+    <message>
+        <location filename="../trainer/centre/signing.cpp" line="+84" />
+        <source>Cannot read the centre's key file %1: %2.</source>
+        <translation>No se puede leer el archivo de clave del centro %1: %2.</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>The centre's key file %1 can be read by other users: make it readable by its owner only (chmod 600 %1).</source>
+        <translation>El archivo de clave del centro %1 lo pueden leer otros usuarios: déjelo legible solo por su dueño (chmod 600 %1).</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>The centre's key file %1 must hold 64 hexadecimal digits (32 bytes); make one with 'padrob centre key FILE'.</source>
+        <translation>El archivo de clave del centro %1 debe contener 64 dígitos hexadecimales (32 bytes); cree uno con 'padrob centre key ARCHIVO'.</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>%1 exists already: a centre's key is never overwritten.</source>
+        <translation>%1 ya existe: la clave de un centro nunca se sobrescribe.</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Cannot write the centre's key file %1: %2.</source>
+        <translation>No se puede escribir el archivo de clave del centro %1: %2.</translation>
+    </message>
+</context>
+<context>
     <name>Diagnostics</name>
     <message>
         <location filename="../ide/studio/editor/diagnostic_text.cpp" line="+23" />
@@ -127,7 +179,7 @@
         <location line="+131" />
         <location filename="../solver/model/validate.cpp" line="+382" />
         <location line="+107" />
-        <location filename="../solver/parse/parser.cpp" line="+1053" />
+        <location filename="../solver/parse/parser.cpp" line="+1131" />
         <source>graphic %1</source>
         <translation>gráfico %1</translation>
     </message>
@@ -221,18 +273,18 @@
         <translation>G %1 queda fuera de los controles de distancia libre: %2</translation>
     </message>
     <message>
-        <location filename="../solver/compile/compile.cpp" line="+108" />
+        <location filename="../solver/compile/compile.cpp" line="+109" />
         <location filename="../solver/compile/topology.cpp" line="+51" />
         <location line="+9" />
         <location filename="../solver/model/validate.cpp" line="-430" />
         <location line="+454" />
-        <location filename="../solver/parse/parser.cpp" line="-385" />
-        <location line="+130" />
+        <location filename="../solver/parse/parser.cpp" line="-415" />
+        <location line="+134" />
         <source>joint %1</source>
         <translation>articulación %1</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>the drive on %1 cannot act: the joint closes a loop, so it is a constraint, not a coordinate</source>
         <translation>el accionamiento de la %1 no puede actuar: la articulación cierra un lazo, así que es una restricción, no una coordenada</translation>
     </message>
@@ -266,7 +318,7 @@
         <location filename="../solver/integrate/simulation.cpp" line="+50" />
         <location filename="../solver/model/validate.cpp" line="-461" />
         <location line="+460" />
-        <location filename="../solver/parse/parser.cpp" line="-192" />
+        <location filename="../solver/parse/parser.cpp" line="-199" />
         <source>body %1</source>
         <translation>cuerpo %1</translation>
     </message>
@@ -502,7 +554,7 @@
     <message>
         <location line="+6" />
         <location line="+16" />
-        <location filename="../solver/parse/parser.cpp" line="-383" />
+        <location filename="../solver/parse/parser.cpp" line="-397" />
         <location line="+9" />
         <source>%1: '%2' is not a number</source>
         <translation>%1: '%2' no es un número</translation>
@@ -738,13 +790,13 @@
         <translation>la tabla tiene una columna u&lt;id de articulación&gt; por accionamiento; escriba 0 en una columna para mantener esa válvula cerrada</translation>
     </message>
     <message>
-        <location filename="../solver/model/load.cpp" line="+57" />
+        <location filename="../solver/model/load.cpp" line="+93" />
         <source>this is not a text file (it contains a NUL byte here)</source>
         <translation>este no es un archivo de texto (contiene un byte NUL aquí)</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+12" />
+        <location line="+10" />
         <source>a model is a text file (.pad); open the model, not a mesh, image or archive</source>
         <translation>un modelo es un archivo de texto (.pad); abra el modelo, no una malla, una imagen ni un archivo comprimido</translation>
     </message>
@@ -754,7 +806,7 @@
         <translation>este no es un archivo de texto (%1 caracteres de control en sus primeros %2 bytes)</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+20" />
         <source>the file is not UTF-8 (byte 0x%1 here); it was read as Latin-1 (ISO 8859-1)</source>
         <translation>el archivo no está en UTF-8 (byte 0x%1 aquí); se leyó como Latin-1 (ISO 8859-1)</translation>
     </message>
@@ -785,7 +837,7 @@
     </message>
     <message>
         <location line="+5" />
-        <location filename="../solver/parse/parser.cpp" line="+599" />
+        <location filename="../solver/parse/parser.cpp" line="+621" />
         <source>drive on joint %1</source>
         <translation>accionamiento de la articulación %1</translation>
     </message>
@@ -1060,7 +1112,7 @@
     <message>
         <location line="+10" />
         <location line="+171" />
-        <location filename="../solver/parse/parser.cpp" line="+124" />
+        <location filename="../solver/parse/parser.cpp" line="+139" />
         <source>force %1</source>
         <translation>fuerza %1</translation>
     </message>
@@ -1224,7 +1276,7 @@
         <translation>divida la máquina en modelos más pequeños, o elimine las articulaciones que nunca se mueven</translation>
     </message>
     <message>
-        <location filename="../solver/parse/lexer.cpp" line="+132" />
+        <location filename="../solver/parse/lexer.cpp" line="+139" />
         <source>unexpected control character (code %1)</source>
         <translation>carácter de control inesperado (código %1)</translation>
     </message>
@@ -1244,12 +1296,12 @@
         <translation>agregue '"' al final del texto</translation>
     </message>
     <message>
-        <location filename="../solver/parse/parser.cpp" line="-885" />
+        <location filename="../solver/parse/parser.cpp" line="-950" />
         <source>write %1</source>
         <translation>escriba %1</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+29" />
         <source>did you mean '%1'?</source>
         <translation>¿quiso decir '%1'?</translation>
     </message>
@@ -1279,7 +1331,7 @@
         <translation>las instrucciones son GRAVITY, RESTITUTION, B, C (con B1, B2, CL1), D, F y G; los comentarios empiezan con // o #</translation>
     </message>
     <message>
-        <location line="+81" />
+        <location line="+85" />
         <source>%1: %2 is out of range</source>
         <translation>%1: %2 está fuera de rango</translation>
     </message>
@@ -1296,17 +1348,17 @@
     <message>
         <location line="+15" />
         <location line="+42" />
-        <location line="+244" />
+        <location line="+256" />
         <source>%1: %2 is missing</source>
         <translation>%1: falta %2</translation>
     </message>
     <message>
-        <location line="-283" />
+        <location line="-294" />
         <source>%1: expected %2, found '%3'</source>
         <translation>%1: se esperaba %2, pero se encontró '%3'</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+20" />
         <source>%1: %2 needs %3 numbers, only %4 given</source>
         <translation>%1: %2 necesita %3 números, solo se dieron %4</translation>
     </message>
@@ -1327,12 +1379,12 @@
     </message>
     <message>
         <location line="+16" />
-        <location line="+626" />
+        <location line="+662" />
         <source>%1: %2 cannot be negative (%3)</source>
         <translation>%1: %2 no puede ser negativo (%3)</translation>
     </message>
     <message>
-        <location line="-625" />
+        <location line="-661" />
         <location line="+4" />
         <source>ids are whole numbers 0, 1, 2, …</source>
         <translation>los id son números enteros 0, 1, 2, …</translation>
@@ -1363,7 +1415,7 @@
         <translation>la magnitud</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+16" />
         <source>the offset</source>
         <translation>el desplazamiento (offset)</translation>
     </message>
@@ -1418,7 +1470,7 @@
         <translation>%1: MAG necesita un valor, pero se encontró '%2'</translation>
     </message>
     <message>
-        <location line="+29" />
+        <location line="+28" />
         <source>%1: unexpected number %2</source>
         <translation>%1: número inesperado %2</translation>
     </message>
@@ -1461,18 +1513,18 @@
     </message>
     <message>
         <location line="+8" />
-        <location line="+287" />
+        <location line="+306" />
         <source>%1: %2 is given twice</source>
         <translation>%1: %2 aparece dos veces</translation>
     </message>
     <message>
-        <location line="-286" />
-        <location line="+287" />
+        <location line="-305" />
+        <location line="+306" />
         <source>keep one %1</source>
         <translation>deje un solo %1</translation>
     </message>
     <message>
-        <location line="-256" />
+        <location line="-264" />
         <source>write GRAVITY gx gy gz (m/s², z is up)</source>
         <translation>escriba GRAVITY gx gy gz (m/s², z hacia arriba)</translation>
     </message>
@@ -1510,19 +1562,19 @@
     </message>
     <message>
         <location line="+12" />
-        <location line="+362" />
+        <location line="+383" />
         <source>body</source>
         <translation>cuerpo</translation>
     </message>
     <message>
-        <location line="-362" />
-        <location line="+179" />
-        <location line="+291" />
+        <location line="-383" />
+        <location line="+187" />
+        <location line="+319" />
         <source>the body id</source>
         <translation>el id del cuerpo</translation>
     </message>
     <message>
-        <location line="-447" />
+        <location line="-482" />
         <source>%1: a body takes 0, 4 or 7 numbers after its id (m Ixx Iyy Izz [Ixy Iyz Ixz]), found %2</source>
         <translation>%1: un cuerpo lleva 0, 4 o 7 números después de su id (m Ixx Iyy Izz [Ixy Iyz Ixz]); se encontraron %2</translation>
     </message>
@@ -1548,19 +1600,19 @@
     </message>
     <message>
         <location line="+17" />
-        <location line="+2" />
+        <location line="+5" />
         <source>joint</source>
         <translation>articulación</translation>
     </message>
     <message>
-        <location line="-2" />
-        <location line="+157" />
-        <location line="+157" />
+        <location line="-5" />
+        <location line="+164" />
+        <location line="+192" />
         <source>the joint id</source>
         <translation>el id de la articulación</translation>
     </message>
     <message>
-        <location line="-311" />
+        <location line="-349" />
         <source>the joint type (0, 1 or 2)</source>
         <translation>el tipo de articulación (0, 1 o 2)</translation>
     </message>
@@ -1645,7 +1697,7 @@
         <translation>deje una sola línea B%1 por articulación</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+24" />
         <source>%1: %2 belongs on the B%3 line</source>
         <translation>%1: %2 va en la línea B%3</translation>
     </message>
@@ -1670,7 +1722,7 @@
         <translation>accionamiento</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>%1: the drive kind is missing</source>
         <translation>%1: falta el tipo de accionamiento</translation>
     </message>
@@ -1680,18 +1732,18 @@
         <translation>escriba HYD, MOTOR, PNEU o SERVO después del id de la articulación</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+6" />
         <source>speed</source>
         <translation>velocidad</translation>
     </message>
     <message>
         <location line="+0" />
-        <location line="+110" />
+        <location line="+126" />
         <source>force</source>
         <translation>fuerza</translation>
     </message>
     <message>
-        <location line="-109" />
+        <location line="-125" />
         <source>diameter</source>
         <translation>diámetro</translation>
     </message>
@@ -1701,12 +1753,12 @@
         <translation>ganancia</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+34" />
         <source>write D j HYD VMAX v [VMIN v] [FMAX f] [FMIN f], or D j HYD PUMP cc RPM n BORE d ROD d PRESSURE Pa</source>
         <translation>escriba D j HYD VMAX v [VMIN v] [FMAX f] [FMIN f], o D j HYD PUMP cc RPM n BORE d ROD d PRESSURE Pa</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="-29" />
         <source>stall torque</source>
         <translation>torque de bloqueo</translation>
     </message>
@@ -1716,7 +1768,7 @@
         <translation>velocidad en vacío</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+20" />
         <source>%1: unknown drive kind '%2'</source>
         <translation>%1: tipo de accionamiento desconocido '%2'</translation>
     </message>
@@ -1726,12 +1778,12 @@
         <translation>los tipos de accionamiento son HYD, MOTOR, PNEU y SERVO</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+15" />
         <source>a %1 drive</source>
         <translation>un accionamiento %1</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+20" />
         <source>%1: give either VMAX/FMAX or the hydraulic data PUMP … PRESSURE, not both</source>
         <translation>%1: indique VMAX/FMAX o los datos hidráulicos PUMP … PRESSURE, no ambos</translation>
     </message>
@@ -1786,7 +1838,7 @@
         <translation>el id de la fuerza</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>%1: the force kind is missing</source>
         <translation>%1: falta el tipo de fuerza</translation>
     </message>
@@ -1796,12 +1848,12 @@
         <translation>escriba POINT, TORQUE, JOINT, SPRING o AERO después del id de la fuerza</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+6" />
         <source>coefficient</source>
         <translation>coeficiente</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+13" />
         <source>stiffness</source>
         <translation>rigidez</translation>
     </message>
@@ -1816,18 +1868,18 @@
         <translation>amortiguamiento</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+3" />
         <source>area</source>
         <translation>área</translation>
     </message>
     <message>
         <location line="+3" />
-        <location line="+61" />
+        <location line="+96" />
         <source>density</source>
         <translation>densidad</translation>
     </message>
     <message>
-        <location line="-55" />
+        <location line="-59" />
         <source>%1: unknown force kind '%2'</source>
         <translation>%1: tipo de fuerza desconocido '%2'</translation>
     </message>
@@ -1842,7 +1894,7 @@
         <translation>una fuerza %1</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+38" />
         <source>graphic</source>
         <translation>gráfico</translation>
     </message>
@@ -1857,7 +1909,7 @@
         <translation>%1: falta B cuerpo después del id</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+10" />
         <source>mass</source>
         <translation>masa</translation>
     </message>
@@ -1867,7 +1919,7 @@
         <translation>factor</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+8" />
         <source>%1: the shape is missing</source>
         <translation>%1: falta la forma</translation>
     </message>
@@ -1887,12 +1939,12 @@
         <translation>las formas son BOX, CYL, TUBE, SPHERE, CONE, ELLIPSOID, PRISM y MESH</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+13" />
         <source>%1 dimension %2 of %3 (%4)</source>
         <translation>la dimensión %2 de %3 de %1 (%4)</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+12" />
         <source>a PRISM value</source>
         <translation>un valor de PRISM</translation>
     </message>
@@ -1932,7 +1984,7 @@
         <translation>MASS es la masa del sólido en kg; RHO, su densidad en kg/m³</translation>
     </message>
     <message>
-        <location filename="../solver/integrate/integrator.cpp" line="+473" />
+        <location filename="../solver/integrate/integrator.cpp" line="+466" />
         <source>the right-hand side reported a failure at t = %1 s</source>
         <translation>el lado derecho de las ecuaciones informó una falla en t = %1 s</translation>
     </message>
@@ -1992,7 +2044,7 @@
         <translation>cuerpo %1 %2</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+23" />
         <source>t=%1 s: %2 welded to %3</source>
         <translation>t=%1 s: %2 soldado a %3</translation>
     </message>
@@ -2047,12 +2099,12 @@
         <translation>t=%1 s: articulación %2: la válvula de alivio se cerró al retraer</translation>
     </message>
     <message>
-        <location line="+547" />
+        <location line="+720" />
         <source>the closed loops locked up at t = %1 s (a singular configuration: the loop-closure equations lost rank, so the mechanism cannot move on there); drive it another way or change the geometry</source>
         <translation>los lazos cerrados se trabaron en t = %1 s (una configuración singular: las ecuaciones de cierre de los lazos perdieron rango, así que el mecanismo no puede seguir moviéndose desde ahí); accione el mecanismo de otra forma o cambie la geometría</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+24" />
         <source>the closed loops cannot be closed at t = %1 s from the coordinates given: set coordinates the loops can reach</source>
         <translation>los lazos cerrados no se pueden cerrar en t = %1 s con las coordenadas indicadas: indique coordenadas que los lazos puedan alcanzar</translation>
     </message>
@@ -2072,12 +2124,12 @@
         <translation>la simulación falló en t = %1 s, articulación %2 (%3): %4</translation>
     </message>
     <message>
-        <location line="+45" />
+        <location line="+52" />
         <source>more than %1 events before t = %2 s: the joints keep switching (chattering)</source>
         <translation>más de %1 eventos antes de t = %2 s: las articulaciones no dejan de conmutar (chattering)</translation>
     </message>
     <message>
-        <location line="+29" />
+        <location line="+46" />
         <source>cannot weld: no such body</source>
         <translation>no se puede soldar: no existe ese cuerpo</translation>
     </message>
@@ -2151,6 +2203,24 @@
     </message>
 </context>
 <context>
+    <name>StationNode</name>
+    <message>
+        <location filename="../trainer/centre/station_node.cpp" line="+42" />
+        <source>A station needs at least one tutorial to run.</source>
+        <translation>Una estación necesita al menos un tutorial que ejecutar.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>A station needs a name, unique in the centre.</source>
+        <translation>Una estación necesita un nombre, único en el centro.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The tutorials of one station must all use the same model: %1 uses %2, %3 uses %4.</source>
+        <translation>Los tutoriales de una estación deben usar todos el mismo modelo: %1 usa %2, %3 usa %4.</translation>
+    </message>
+</context>
+<context>
     <name>TutorialRunner</name>
     <message>
         <location filename="../trainer/training/runner.cpp" line="+45" />
@@ -2211,7 +2281,7 @@
 <context>
     <name>TutorialSession</name>
     <message>
-        <location filename="../trainer/training/session.cpp" line="+77" />
+        <location filename="../trainer/training/session.cpp" line="+80" />
         <source>Goal done</source>
         <translation>Objetivo cumplido</translation>
     </message>
@@ -2286,12 +2356,17 @@
         <translation>Simulación detenida</translation>
     </message>
     <message>
+        <location line="+3" />
+        <source>Instructor</source>
+        <translation>Instructor</translation>
+    </message>
+    <message>
         <location line="+1" />
         <source>Stopped</source>
         <translation>Detenido</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+64" />
         <source>Goal done: %1</source>
         <translation>Objetivo cumplido: %1</translation>
     </message>
@@ -2366,7 +2441,37 @@
         <translation>La simulación se detuvo: %1</translation>
     </message>
     <message>
+        <location line="+7" />
+        <source>Instructor %1 started the attempt</source>
+        <translation>El instructor %1 inició el intento</translation>
+    </message>
+    <message>
         <location line="+1" />
+        <source>Instructor %1 paused the attempt</source>
+        <translation>El instructor %1 pausó el intento</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Instructor %1 resumed the attempt</source>
+        <translation>El instructor %1 reanudó el intento</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Instructor %1 restarted the tutorial</source>
+        <translation>El instructor %1 reinició el tutorial</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Instructor %1 stopped the attempt</source>
+        <translation>El instructor %1 detuvo el intento</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Instructor %1: %2</source>
+        <translation>Instructor %1: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>The attempt was stopped</source>
         <translation>Se detuvo el intento</translation>
     </message>
@@ -2414,6 +2519,151 @@
         <location line="+16" />
         <source>Complete every goal: the stage is passed only when all are done.</source>
         <translation>Cumpla todos los objetivos: la etapa se aprueba solo cuando están todos cumplidos.</translation>
+    </message>
+    <message>
+        <location line="-131" />
+        <source>Fault injected</source>
+        <translation>Falla introducida</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Fault cleared</source>
+        <translation>Falla resuelta</translation>
+    </message>
+    <message>
+        <location filename="../trainer/training/faults.cpp" line="+40" />
+        <source>Hose burst</source>
+        <translation>Rotura de manguera</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Stuck valve</source>
+        <translation>Válvula trabada</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Worker walks in</source>
+        <translation>Entra un trabajador</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Power cut</source>
+        <translation>Corte de energía</translation>
+    </message>
+    <message>
+        <location filename="../trainer/training/session.cpp" line="+30" />
+        <source>Instructor: the hose of %1 was repaired</source>
+        <translation>Instructor: se reparó la manguera de %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Instructor: a hose of %1 burst; the drive has no pressure</source>
+        <translation>Instructor: se rompió una manguera de %1; el accionamiento no tiene presión</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Instructor: the valve of %1 was freed</source>
+        <translation>Instructor: se liberó la válvula de %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Instructor: the valve of %1 stuck at %2 % of its opening</source>
+        <translation>Instructor: la válvula de %1 se trabó al %2 % de su apertura</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Instructor: %1 left the work area</source>
+        <translation>Instructor: %1 salió del área de trabajo</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Instructor: %1 walked into the work area</source>
+        <translation>Instructor: %1 entró al área de trabajo</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Instructor: the power is back</source>
+        <translation>Instructor: volvió la energía</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Instructor: the power was cut; every valve closed</source>
+        <translation>Instructor: se cortó la energía; todas las válvulas se cerraron</translation>
+    </message>
+    <message>
+        <location line="+611" />
+        <source>There is no drive "%1": this machine has no hydraulic drives</source>
+        <translation>No hay un accionamiento "%1": esta máquina no tiene accionamientos hidráulicos</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>There is no drive "%1" on this machine; its hydraulic drives are: %2</source>
+        <translation>No hay un accionamiento "%1" en esta máquina; sus accionamientos hidráulicos son: %2</translation>
+    </message>
+    <message>
+        <location line="+54" />
+        <source>The attempt has ended: no fault can be injected</source>
+        <translation>El intento terminó: no se pueden introducir fallas</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>A burst hose's damping and residual force must be zero or more</source>
+        <translation>El amortiguamiento y la fuerza residual de una manguera rota deben ser cero o más</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>A stuck valve's opening is a command from -1 to 1, not %1</source>
+        <translation>La apertura de una válvula trabada es un comando de -1 a 1, no %1</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>This tutorial has no worker who could walk in (it has no WORKER)</source>
+        <translation>Este tutorial no tiene un trabajador que pueda entrar (no tiene WORKER)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>There is no worker %1 in this tutorial: its workers are numbered 0 to %2</source>
+        <translation>No hay un trabajador %1 en este tutorial: sus trabajadores van del 0 al %2</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Worker %1 has no graphics in the scene that could be moved</source>
+        <translation>El trabajador %1 no tiene gráficos en la escena que se puedan mover</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The place a worker walks to must be a finite position</source>
+        <translation>El lugar al que camina un trabajador debe ser una posición finita</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>The attempt has ended: no fault can be cleared</source>
+        <translation>El intento terminó: no se pueden resolver fallas</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>No hose of %1 has burst</source>
+        <translation>No se ha roto ninguna manguera de %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The valve of %1 is not stuck</source>
+        <translation>La válvula de %1 no está trabada</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>No worker has walked in</source>
+        <translation>No ha entrado ningún trabajador</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Worker %1 has not walked in</source>
+        <translation>El trabajador %1 no ha entrado</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The power has not been cut</source>
+        <translation>La energía no se ha cortado</translation>
     </message>
 </context>
 <context>
@@ -3500,7 +3750,7 @@
 <context>
     <name>padrob</name>
     <message>
-        <location filename="../ide/cli/bench.cpp" line="+212" />
+        <location filename="../ide/cli/bench.cpp" line="+213" />
         <source>the simulation failed: %1</source>
         <translation>la simulación falló: %1</translation>
     </message>
@@ -3807,6 +4057,10 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
     </message>
     <message>
         <location line="+45" />
+        <location filename="../ide/cli/centre.cpp" line="+84" />
+        <location line="+6" />
+        <location line="+2" />
+        <location line="+3" />
         <location filename="../ide/cli/export.cpp" line="+109" />
         <location filename="../ide/cli/simulate.cpp" line="+244" />
         <location filename="../ide/cli/tutorial.cpp" line="+186" />
@@ -3831,9 +4085,12 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
     </message>
     <message>
         <location line="+4" />
+        <location filename="../ide/cli/centre.cpp" line="+128" />
+        <location line="+260" />
+        <location line="+174" />
         <location filename="../ide/cli/export.cpp" line="+12" />
         <location filename="../ide/cli/inertia.cpp" line="+204" />
-        <location filename="../ide/cli/main.cpp" line="+130" />
+        <location filename="../ide/cli/main.cpp" line="+138" />
         <location line="+26" />
         <location filename="../ide/cli/simulate.cpp" line="+23" />
         <location filename="../ide/cli/tutorial.cpp" line="+8" />
@@ -4280,7 +4537,7 @@ escribir.
         <translation>coordenadas dependientes (articulaciones): %1</translation>
     </message>
     <message>
-        <location filename="../ide/cli/main.cpp" line="-122" />
+        <location filename="../ide/cli/main.cpp" line="-127" />
         <source>Usage: padrob COMMAND [OPTIONS] [ARGS]
 
 Padrob builds real-time training simulators of machines from model files (.pad).
@@ -4297,6 +4554,11 @@ Commands:
                         write a tree model as MuJoCo's MJCF
   tutorial FILE [--input LOG | --demo] [--json]
                         check a tutorial, or run it against an input log and score it
+  station TUTORIAL... --name NAME
+                        a training station without a window on the centre's network
+  instructor list|watch|send
+                        the training centre's stations: list, watch and command them
+  centre key|seal|bench the training centre's key, sealed secrets, scale benchmark
 
 Options:
   -h, --help            show this help (or a command's: padrob COMMAND --help)
@@ -4328,6 +4590,12 @@ Comandos:
   tutorial ARCHIVO [--input REGISTRO | --demo] [--json]
                         revisa un tutorial, o lo ejecuta con un registro de entradas y
                         le asigna puntaje
+  station TUTORIAL... --name NOMBRE
+                        una estación de entrenamiento sin ventana en la red del centro
+  instructor list|watch|send
+                        las estaciones del centro de entrenamiento: listarlas,
+                        observarlas y darles órdenes
+  centre key|seal|bench la clave del centro, secretos sellados, prueba de escala
 
 Opciones:
   -h, --help            muestra esta ayuda (o la de un comando: padrob COMANDO --help)
@@ -4340,7 +4608,7 @@ ilegible.
 </translation>
     </message>
     <message>
-        <location line="+29" />
+        <location line="+34" />
         <source>Usage: padrob check MODEL...
 
 Reads each model file and prints every problem found, one per line, as
@@ -4428,7 +4696,7 @@ Un modelo con errores no se describe: sus problemas se informan como con
     </message>
     <message>
         <location line="+26" />
-        <location line="+25" />
+        <location line="+30" />
         <source>Try 'padrob --help'.</source>
         <translation>Pruebe 'padrob --help'.</translation>
     </message>
@@ -4903,6 +5171,427 @@ registro ilegible.
         <source>the tutorial has no usable demonstration (DEMO)</source>
         <translation>el tutorial no tiene una demostración utilizable (DEMO)</translation>
     </message>
+    <message>
+        <location filename="../ide/cli/centre.cpp" line="-596" />
+        <source>Network options (every node of a centre uses the same):
+  --domain N            the centre's DDS domain, 0-232 (default 0)
+  --key FILE            the centre's key (make one with 'padrob centre key FILE');
+                        commands are signed with it, and stations refuse the rest
+  --interface NAME      the network interface to use (name or address; repeatable)
+  --peer ADDRESS        discover the other computers by unicast at ADDRESS
+                        (repeatable; without it, multicast)
+  --loopback            this computer only (--interface 127.0.0.1 --peer 127.0.0.1)
+</source>
+        <translation>Opciones de red (todos los nodos de un centro usan las mismas):
+  --domain N            el dominio DDS del centro, 0-232 (por omisión 0)
+  --key ARCHIVO         la clave del centro (se crea con 'padrob centre key ARCHIVO');
+                        las órdenes se firman con ella y las estaciones rechazan las demás
+  --interface NOMBRE    la interfaz de red a usar (nombre o dirección; repetible)
+  --peer DIRECCIÓN      descubre los otros computadores por unicast en DIRECCIÓN
+                        (repetible; sin ella, multicast)
+  --loopback            solo este computador (--interface 127.0.0.1 --peer 127.0.0.1)
+</translation>
+    </message>
+    <message>
+        <location line="+26" />
+        <source>--domain must be a whole number from 0 to 232, not '%1'</source>
+        <translation>--domain debe ser un número entero de 0 a 232, no '%1'</translation>
+    </message>
+    <message>
+        <location line="+49" />
+        <location line="+10" />
+        <source>--records-server must be USER@HOST:PORT/DATABASE, not '%1'</source>
+        <translation>--records-server debe ser USUARIO@SERVIDOR:PUERTO/BASE, no '%1'</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Usage: padrob station TUTORIAL... --name NAME [OPTIONS]
+
+Runs a training station without a window on the centre's network: the tutorials'
+machine is simulated in real time, its state is streamed for display nodes
+(padrob-studio --display-of NAME) and the instructor, its events are sent as they
+happen, and the instructor's signed commands are obeyed: start, pause, resume,
+reset and stop a tutorial, inject and clear faults. Every attempt is recorded.
+Runs until interrupted (Ctrl+C or SIGTERM), then says it is leaving.
+
+  --name NAME           the station's name, unique in the centre
+  --profile P           the operator's devices: a station profile of the model (its
+                        name, or a .json file; docs/station.md): gamepads, joysticks,
+                        the serial valve console
+  --demo                the operator's input is each tutorial's demonstration
+                        (a showcase, or a test)
+                        Without either, the levers rest.
+  --records FILE        record the attempts in this SQLite file (the station's journal)
+  --records-server USER@HOST:PORT/DATABASE
+                        and sync them to the centre's PostgreSQL server; while it is
+                        out of reach the journal keeps them (docs/records.md)
+  --records-password FILE
+                        the server's password, sealed with the centre's key by
+                        'padrob centre seal' (never stored in plain text)
+  --for SECONDS         stop after this long
+</source>
+        <translation>Uso: padrob station TUTORIAL... --name NOMBRE [OPCIONES]
+
+Ejecuta una estación de entrenamiento sin ventana en la red del centro: la máquina
+de los tutoriales se simula en tiempo real, su estado se transmite a los nodos de
+pantalla (padrob-studio --display-of NOMBRE) y al instructor, sus eventos se envían
+a medida que ocurren, y obedece las órdenes firmadas del instructor: iniciar,
+pausar, reanudar, reiniciar y detener un tutorial, inyectar y quitar fallas. Cada
+intento queda registrado. Funciona hasta que se interrumpe (Ctrl+C o SIGTERM), y
+entonces avisa que se va.
+
+  --name NOMBRE         el nombre de la estación, único en el centro
+  --profile P           los dispositivos del operador: un perfil de estación del
+                        modelo (su nombre, o un archivo .json; docs/station.md):
+                        gamepads, joysticks, la consola de válvulas serial
+  --demo                la entrada del operador es la demostración de cada tutorial
+                        (una exhibición, o una prueba)
+                        Sin ninguna de las dos, las palancas quedan en reposo.
+  --records ARCHIVO     registra los intentos en este archivo SQLite (el registro
+                        local de la estación)
+  --records-server USUARIO@SERVIDOR:PUERTO/BASE
+                        y los sincroniza con el servidor PostgreSQL del centro;
+                        mientras no se alcanza, el registro local los guarda
+                        (docs/records.md)
+  --records-password ARCHIVO
+                        la contraseña del servidor, sellada con la clave del centro
+                        por 'padrob centre seal' (nunca guardada en texto plano)
+  --for SEGUNDOS        se detiene después de ese tiempo
+</translation>
+    </message>
+    <message>
+        <location line="+61" />
+        <source>--for must be a positive number of seconds, not '%1'</source>
+        <translation>--for debe ser un número positivo de segundos, no '%1'</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>--name is required: the station's name in the centre</source>
+        <translation>falta --name: el nombre de la estación en el centro</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>give at least one tutorial file (.tut)</source>
+        <translation>indique al menos un archivo de tutorial (.tut)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>without --key the station takes no commands from the instructor</source>
+        <translation>sin --key la estación no acepta órdenes del instructor</translation>
+    </message>
+    <message>
+        <location line="+30" />
+        <source>cannot open the sealed password in %1: it must be made by 'padrob centre seal' with this centre's key</source>
+        <translation>no se puede abrir la contraseña sellada de %1: debe crearse con 'padrob centre seal' y la clave de este centro</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>--records-server needs --records FILE, the station's local journal</source>
+        <translation>--records-server necesita --records ARCHIVO, el registro local de la estación</translation>
+    </message>
+    <message>
+        <location line="+48" />
+        <source>station %1: on the centre's network (domain %2), ready
+</source>
+        <translation>estación %1: en la red del centro (dominio %2), lista
+</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>station %1: left the centre's network
+</source>
+        <translation>estación %1: salió de la red del centro
+</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Usage: padrob instructor list|watch|send ... [OPTIONS]
+
+The instructor's station without a window:
+  list [--wait S]       the stations on the network after listening S seconds
+                        (default 2): name, status, tutorial, time, score, warnings
+  watch [--for S]       print the stations' events and comings and goings as they
+                        happen (for S seconds; default until interrupted)
+  send STATION COMMAND [ARG [ARG2]] [--value V] [--timeout S]
+                        send a signed command and wait for the station's answer:
+                          start [TUTORIAL [OPERATOR]], pause, resume, reset, stop,
+                          inject FAULT [DRIVE|X,Y,Z], clear FAULT [DRIVE]
+                        faults: hose-burst DRIVE, stuck-valve DRIVE [--value U],
+                          worker-in X,Y,Z [--value WORKER], power-cut
+  --name NAME           the instructor's name (default: instructor@HOST)
+  --json                JSON output (one object; watch: one per line)
+
+Exit status: 0 done or accepted, 1 the station refused or did not answer,
+2 usage error.
+</source>
+        <translation>Uso: padrob instructor list|watch|send ... [OPCIONES]
+
+El puesto del instructor sin ventana:
+  list [--wait S]       las estaciones de la red tras escuchar S segundos
+                        (por omisión 2): nombre, estado, tutorial, tiempo, puntaje, avisos
+  watch [--for S]       muestra los eventos de las estaciones y sus llegadas y salidas
+                        a medida que ocurren (durante S segundos; por omisión hasta
+                        que se interrumpa)
+  send ESTACIÓN ORDEN [ARG [ARG2]] [--value V] [--timeout S]
+                        envía una orden firmada y espera la respuesta de la estación:
+                          start [TUTORIAL [OPERADOR]], pause, resume, reset, stop,
+                          inject FALLA [ACCIONAMIENTO|X,Y,Z], clear FALLA [ACCIONAMIENTO]
+                        fallas: hose-burst ACCIONAMIENTO, stuck-valve ACCIONAMIENTO
+                          [--value U], worker-in X,Y,Z [--value TRABAJADOR], power-cut
+  --name NOMBRE         el nombre del instructor (por omisión: instructor@SERVIDOR)
+  --json                salida JSON (un objeto; watch: uno por línea)
+
+Estado de salida: 0 hecho o aceptado, 1 la estación rechazó o no respondió,
+2 error de uso.
+</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>on the network</source>
+        <translation>en la red</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>silent</source>
+        <translation>en silencio</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>gone (it left)</source>
+        <translation>fuera (se retiró)</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>idle</source>
+        <translation>inactiva</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>running</source>
+        <translation>en curso</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>paused</source>
+        <translation>en pausa</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>ended</source>
+        <translation>terminado</translation>
+    </message>
+    <message>
+        <location line="+68" />
+        <source>the station has no centre key and takes no commands</source>
+        <translation>la estación no tiene clave del centro y no acepta órdenes</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the signature does not match the station's centre key</source>
+        <translation>la firma no corresponde a la clave del centro de la estación</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the command is too old or from the future (check the computers' clocks)</source>
+        <translation>la orden es demasiado antigua o del futuro (revise los relojes de los computadores)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a replayed command (its nonce was already used)</source>
+        <translation>una orden repetida (su número único ya se usó)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the station has no such tutorial</source>
+        <translation>la estación no tiene ese tutorial</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>no attempt is running</source>
+        <translation>no hay ningún intento en curso</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the attempt is not paused</source>
+        <translation>el intento no está en pausa</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>no such fault (hose-burst, stuck-valve, worker-in, power-cut)</source>
+        <translation>no existe esa falla (hose-burst, stuck-valve, worker-in, power-cut)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>no such command</source>
+        <translation>no existe esa orden</translation>
+    </message>
+    <message>
+        <location line="+36" />
+        <location line="+171" />
+        <source>%1 needs a number</source>
+        <translation>%1 necesita un número</translation>
+    </message>
+    <message>
+        <location line="-163" />
+        <source>say what to do: list, watch or send</source>
+        <translation>indique qué hacer: list, watch o send</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>unknown instructor command '%1'</source>
+        <translation>orden de instructor desconocida '%1'</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>send needs a station and a command</source>
+        <translation>send necesita una estación y una orden</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>send needs the centre's key (--key FILE)</source>
+        <translation>send necesita la clave del centro (--key ARCHIVO)</translation>
+    </message>
+    <message>
+        <location line="+29" />
+        <source>no station answered
+</source>
+        <translation>ninguna estación respondió
+</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>%1 is %2
+</source>
+        <translation>%1 está %2
+</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>station %1 did not answer</source>
+        <translation>la estación %1 no respondió</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>station %1 did not answer the command</source>
+        <translation>la estación %1 no respondió la orden</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>%1: %2 done
+</source>
+        <translation>%1: %2 hecho
+</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 refused %2: %3
+</source>
+        <translation>%1 rechazó %2: %3
+</translation>
+    </message>
+    <message>
+        <location line="+34" />
+        <source>expected: padrob centre seal --key FILE</source>
+        <translation>se esperaba: padrob centre seal --key ARCHIVO</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>give the secret on standard input (one line)</source>
+        <translation>entregue el secreto por la entrada estándar (una línea)</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>--stations needs a whole number from 1 to 64</source>
+        <translation>--stations necesita un número entero de 1 a 64</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>no tutorial file %1 (run from Padrob's folder, or give --tutorial FILE)</source>
+        <translation>no existe el archivo de tutorial %1 (ejecute desde la carpeta de Padrob, o use --tutorial ARCHIVO)</translation>
+    </message>
+    <message>
+        <location line="+58" />
+        <source>only %1 of %2 stations were heard</source>
+        <translation>solo se oyeron %1 de %2 estaciones</translation>
+    </message>
+    <message>
+        <location line="+61" />
+        <source>%1 stations streaming to one instructor for %2 s (%3 states):
+</source>
+        <translation>%1 estaciones transmitiendo a un instructor durante %2 s (%3 estados):
+</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>  state rate per station: median %1 Hz, lowest %2 Hz; most lost: %3 %
+</source>
+        <translation>  frecuencia de estados por estación: mediana %1 Hz, mínima %2 Hz; la mayor pérdida: %3 %
+</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>  latency, station to instructor: median %1 ms, 99th percentile %2 ms, max %3 ms
+</source>
+        <translation>  latencia, de estación a instructor: mediana %1 ms, percentil 99 %2 ms, máxima %3 ms
+</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>  CPU: the instructor %1 % of a core; each station (median) %2 %
+</source>
+        <translation>  CPU: el instructor %1 % de un núcleo; cada estación (mediana) %2 %
+</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>Usage: padrob centre key FILE
+       padrob centre seal --key FILE &lt; SECRET
+       padrob centre bench [--stations N] [--seconds S] [--tutorial FILE] [--json]
+
+key: makes a new centre key (32 random bytes) in FILE, readable by its owner only.
+Copy it to every station and instructor of the centre (padrob station --key,
+padrob instructor --key, padrob-studio --centre-key): commands signed with another
+key are refused. An existing file is never replaced.
+
+seal: prints the line read from standard input (the records server's password)
+sealed with the centre's key, for padrob station --records-password FILE.
+
+bench: starts N headless stations (default 16) on this computer, each running the
+tutorial's demonstration in real time and streaming its state at 60 Hz, and measures
+at one instructor the state rate, the latency from station to instructor and the CPU
+used (docs/performance.md).
+</source>
+        <translation>Uso: padrob centre key ARCHIVO
+       padrob centre seal --key ARCHIVO &lt; SECRETO
+       padrob centre bench [--stations N] [--seconds S] [--tutorial ARCHIVO] [--json]
+
+key: crea una nueva clave del centro (32 bytes al azar) en ARCHIVO, legible solo por
+su dueño. Cópiela a cada estación e instructor del centro (padrob station --key,
+padrob instructor --key, padrob-studio --centre-key): las órdenes firmadas con otra
+clave se rechazan. Un archivo existente nunca se reemplaza.
+
+seal: muestra la línea leída de la entrada estándar (la contraseña del servidor de
+registros) sellada con la clave del centro, para padrob station --records-password
+ARCHIVO.
+
+bench: inicia N estaciones sin ventana (por omisión 16) en este computador, cada una
+ejecutando la demostración del tutorial en tiempo real y transmitiendo su estado a
+60 Hz, y mide en un instructor la frecuencia de estados, la latencia de estación a
+instructor y la CPU usada (docs/performance.md).
+</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>expected: padrob centre key FILE</source>
+        <translation>se esperaba: padrob centre key ARCHIVO</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>new centre key in %1 (fingerprint %2)
+</source>
+        <translation>nueva clave del centro en %1 (huella %2)
+</translation>
+    </message>
 </context>
 <context>
     <name>studio::CalibrationWizard</name>
@@ -5249,6 +5938,86 @@ registro ilegible.
     </message>
 </context>
 <context>
+    <name>studio::DisplayFeed</name>
+    <message>
+        <location filename="../ide/studio/centre/display_feed.cpp" line="+184" />
+        <source>The station announced no usable model name (“%1”).</source>
+        <translation>El puesto no anunció un nombre de modelo utilizable («%1»).</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>The station's model “%1” is not installed on this computer (%2).</source>
+        <translation>El modelo «%1» del puesto no está instalado en este computador (%2).</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <location line="+28" />
+        <source>The model file %1 cannot be read.</source>
+        <translation>No se puede leer el archivo de modelo %1.</translation>
+    </message>
+    <message>
+        <location line="-23" />
+        <source>The station runs another version of the model “%1” than the one installed on this computer (%2): install the same model files on both computers.</source>
+        <translation>El puesto usa otra versión del modelo «%1» que la instalada en este computador (%2): instale los mismos archivos de modelo en ambos computadores.</translation>
+    </message>
+    <message>
+        <location line="+36" />
+        <source>The station's model %1 has errors on this computer: %2</source>
+        <translation>El modelo %1 del puesto tiene errores en este computador: %2</translation>
+    </message>
+</context>
+<context>
+    <name>studio::DisplayView</name>
+    <message>
+        <location filename="../ide/studio/centre/display_view.cpp" line="+112" />
+        <source>Waiting for station %1…</source>
+        <translation>Esperando al puesto %1…</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Station %1 is silent: no state for %2 s.</source>
+        <translation>El puesto %1 está en silencio: sin estado desde hace %2 s.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Station %1 has left the centre.</source>
+        <translation>El puesto %1 salió del centro.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Waiting for station %1 to announce its model…</source>
+        <translation>Esperando que el puesto %1 anuncie su modelo…</translation>
+    </message>
+</context>
+<context>
+    <name>studio::DisplayWindow</name>
+    <message>
+        <location filename="../ide/studio/centre/display_window.cpp" line="+29" />
+        <source>This display cannot join the training centre's network (DDS domain %1): %2</source>
+        <translation>Esta pantalla no puede unirse a la red del centro de entrenamiento (dominio DDS %1): %2</translation>
+    </message>
+    <message>
+        <location line="+54" />
+        <source>left screen</source>
+        <translation>pantalla izquierda</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>centre screen</source>
+        <translation>pantalla central</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>right screen</source>
+        <translation>pantalla derecha</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Padrob display: station %1, %2</source>
+        <translation>Pantalla Padrob: puesto %1, %2</translation>
+    </message>
+</context>
+<context>
     <name>studio::EditorPanel</name>
     <message>
         <location filename="../ide/studio/editor/editor_panel.cpp" line="+89" />
@@ -5314,7 +6083,7 @@ registro ilegible.
 <context>
     <name>studio::FrameBench</name>
     <message>
-        <location filename="../ide/studio/app/frame_bench.cpp" line="+193" />
+        <location filename="../ide/studio/app/frame_bench.cpp" line="+201" />
         <source>Cannot read the model %1.</source>
         <translation>No se puede leer el modelo %1.</translation>
     </message>
@@ -5589,6 +6358,366 @@ registro ilegible.
         <location line="+4" />
         <source>the file's B line has no mass</source>
         <translation>la línea B del archivo no tiene masa</translation>
+    </message>
+</context>
+<context>
+    <name>studio::InstructorWindow</name>
+    <message>
+        <location filename="../ide/studio/centre/instructor_window.cpp" line="+264" />
+        <source>up</source>
+        <translation>en línea</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>silent</source>
+        <translation>en silencio</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>left</source>
+        <translation>se fue</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>idle</source>
+        <translation>inactivo</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>running</source>
+        <translation>en curso</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>paused</source>
+        <translation>en pausa</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>ended</source>
+        <translation>terminado</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>overload</source>
+        <translation>sobrecarga</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>near a worker</source>
+        <translation>cerca de un trabajador</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>near the scene</source>
+        <translation>cerca de la escena</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>records offline</source>
+        <translation>registros fuera de línea</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <location line="+299" />
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="-287" />
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1/%2</source>
+        <translation>%1/%2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location line="+33" />
+        <source>%1 s  %2</source>
+        <translation>%1 s  %2</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>Padrob instructor</source>
+        <translation>Instructor Padrob</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Station</source>
+        <translation>Puesto</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Presence</source>
+        <translation>Presencia</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Status</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Tutorial</source>
+        <translation>Tutorial</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Operator</source>
+        <translation>Operador</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Time</source>
+        <translation>Tiempo</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Score</source>
+        <translation>Puntaje</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Goals</source>
+        <translation>Objetivos</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Warnings and faults</source>
+        <translation>Advertencias y fallas</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Latency</source>
+        <translation>Latencia</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Start…</source>
+        <translation>Iniciar…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+44" />
+        <source>Pause</source>
+        <translation>Pausa</translation>
+    </message>
+    <message>
+        <location line="-43" />
+        <location line="+44" />
+        <source>Resume</source>
+        <translation>Reanudar</translation>
+    </message>
+    <message>
+        <location line="-43" />
+        <location line="+44" />
+        <source>Reset</source>
+        <translation>Reiniciar</translation>
+    </message>
+    <message>
+        <location line="-43" />
+        <location line="+44" />
+        <source>Stop</source>
+        <translation>Detener</translation>
+    </message>
+    <message>
+        <location line="-43" />
+        <source>Inject fault…</source>
+        <translation>Provocar falla…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+44" />
+        <source>Clear fault</source>
+        <translation>Quitar falla</translation>
+    </message>
+    <message>
+        <location line="-43" />
+        <source>Events</source>
+        <translation>Eventos</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Events of %1 (latest last)</source>
+        <translation>Eventos de %1 (el último al final)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Cannot join the training centre's network: %1</source>
+        <translation>No se puede unir a la red del centro de entrenamiento: %1</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Centre key %1: commands to the stations are signed with it.</source>
+        <translation>Clave del centro %1: las órdenes a los puestos se firman con ella.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Watching only: the centre's key cannot be used (%1).</source>
+        <translation>Solo observación: la clave del centro no se puede usar (%1).</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Watching only: without the centre's key (--centre-key FILE) no commands can be sent.</source>
+        <translation>Solo observación: sin la clave del centro (--centre-key ARCHIVO) no se pueden enviar órdenes.</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Not connected to the training centre's network.</source>
+        <translation>Sin conexión a la red del centro de entrenamiento.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Commands need the centre's key: start padrob-studio with --centre-key FILE.</source>
+        <translation>Las órdenes necesitan la clave del centro: inicie padrob-studio con --centre-key ARCHIVO.</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <location line="+86" />
+        <source>Start</source>
+        <translation>Iniciar</translation>
+    </message>
+    <message>
+        <location line="-81" />
+        <source>Inject fault</source>
+        <translation>Provocar falla</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>the command was not signed with the key this station has.</source>
+        <translation>la orden no se firmó con la clave que tiene este puesto.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the command was too old when it arrived: check that the computers' clocks agree.</source>
+        <translation>la orden llegó demasiado tarde: revise que los relojes de los computadores coincidan.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the station has already taken a newer command from this instructor.</source>
+        <translation>el puesto ya recibió una orden más reciente de este instructor.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the station has no centre key and takes no commands.</source>
+        <translation>el puesto no tiene clave del centro y no acepta órdenes.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>no attempt is running on the station.</source>
+        <translation>no hay un intento en curso en el puesto.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the attempt is not paused.</source>
+        <translation>el intento no está en pausa.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the station does not have that tutorial.</source>
+        <translation>el puesto no tiene ese tutorial.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the station does not know that fault.</source>
+        <translation>el puesto no conoce esa falla.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the station does not know that command.</source>
+        <translation>el puesto no conoce esa orden.</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>%1 on %2</source>
+        <translation>%1 en %2</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1: sent, waiting for the station…</source>
+        <translation>%1: enviado, esperando al puesto…</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1: could not be sent.</source>
+        <translation>%1: no se pudo enviar.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1: done.</source>
+        <translation>%1: hecho.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1: refused, %2</source>
+        <translation>%1: rechazado, %2</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1: no reply from the station in 5 s.</source>
+        <translation>%1: el puesto no respondió en 5 s.</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>Start a tutorial on %1</source>
+        <translation>Iniciar un tutorial en %1</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>guest</source>
+        <translation>invitado</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Tutorial:</source>
+        <translation>Tutorial:</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Operator code:</source>
+        <translation>Código del operador:</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>Inject a fault on %1</source>
+        <translation>Provocar una falla en %1</translation>
+    </message>
+    <message>
+        <location line="+30" />
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Fault:</source>
+        <translation>Falla:</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Drive:</source>
+        <translation>Accionamiento:</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Valve opening (−1 … 1):</source>
+        <translation>Apertura de la válvula (−1 … 1):</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Where the worker walks to (x, y, z):</source>
+        <translation>Hacia dónde camina el trabajador (x, y, z):</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Inject</source>
+        <translation>Provocar</translation>
     </message>
 </context>
 <context>
@@ -8400,7 +9529,8 @@ Id: %3</translation>
         <translation>La vista 3D necesita OpenGL 3.3, que este sistema no ofrece.</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+14" />
+        <location line="+24" />
         <source>The 3D view's shaders do not build: %1</source>
         <translation>Los shaders de la vista 3D no se compilan: %1</translation>
     </message>
@@ -8421,7 +9551,7 @@ Id: %3</translation>
 <context>
     <name>studio::main</name>
     <message>
-        <location filename="../ide/studio/main.cpp" line="+47" />
+        <location filename="../ide/studio/main.cpp" line="+55" />
         <source>Padrob Studio: write a machine's model, simulate it in real time and drive it from the operator's devices.</source>
         <translation>Padrob Studio: escriba el modelo de una máquina, simúlelo en tiempo real y opérelo desde los dispositivos del operador.</translation>
     </message>
@@ -8437,11 +9567,12 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+3" />
+        <location line="+50" />
         <source>FILE</source>
         <translation>ARCHIVO</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="-47" />
         <source>Measure instead of working, then quit: the start-up time, N frames of a 1920x1080 window paced at 60 Hz and N back to back, with one view and with three, the solver's step periods meanwhile, and the latency of 60 key presses to the solver.</source>
         <translation>Medir en vez de trabajar, y luego salir: el tiempo de inicio, N cuadros de una ventana de 1920x1080 a 60 Hz y N seguidos, con una vista y con tres, los periodos de paso del solver mientras tanto, y la latencia de 60 pulsaciones de tecla hasta el solver.</translation>
     </message>
@@ -8471,7 +9602,7 @@ Id: %3</translation>
         <translation>El idioma de la aplicación y de los tutoriales (es o en).</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+45" />
         <source>--lang must be es or en.</source>
         <translation>--lang debe ser es o en.</translation>
     </message>
@@ -8479,6 +9610,71 @@ Id: %3</translation>
         <location line="+13" />
         <source>--bench-frames needs a number of frames (1 or more) and --views 1 or 3.</source>
         <translation>--bench-frames necesita un número de cuadros (1 o más) y --views 1 o 3.</translation>
+    </message>
+    <message>
+        <location line="-51" />
+        <source>Be a display node of the training centre: show STATION's machine from its operator's seat, driven by its state stream.</source>
+        <translation>Ser una pantalla del centro de entrenamiento: mostrar la máquina de PUESTO desde el asiento de su operador, movida por su flujo de estado.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>STATION</source>
+        <translation>PUESTO</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>With --display-of: which of the station's three screens (default centre).</source>
+        <translation>Con --display-of: cuál de las tres pantallas del puesto (por defecto la central).</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Be the instructor's station of the training centre: watch the stations and command them.</source>
+        <translation>Ser el puesto del instructor del centro de entrenamiento: observar los puestos y darles órdenes.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>With --instructor: the centre's key, which signs the commands (without it the instructor only watches).</source>
+        <translation>Con --instructor: la clave del centro, que firma las órdenes (sin ella el instructor solo observa).</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The training centre's DDS domain, 0-232 (default 0).</source>
+        <translation>El dominio DDS del centro de entrenamiento, 0-232 (por defecto 0).</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The training centre on this computer only.</source>
+        <translation>El centro de entrenamiento solo en este computador.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The network interface of the training centre (name or address; repeatable).</source>
+        <translation>La interfaz de red del centro de entrenamiento (nombre o dirección; repetible).</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>INTERFACE</source>
+        <translation>INTERFAZ</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Find the centre's other computers by unicast at ADDRESS (repeatable; without it, multicast).</source>
+        <translation>Encontrar los otros computadores del centro por unicast en DIRECCIÓN (repetible; sin esta opción, multicast).</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>ADDRESS</source>
+        <translation>DIRECCIÓN</translation>
+    </message>
+    <message>
+        <location line="+44" />
+        <source>--domain must be a whole number from 0 to 232.</source>
+        <translation>--domain debe ser un número entero de 0 a 232.</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>--view must be left, centre or right.</source>
+        <translation>--view debe ser left, centre o right.</translation>
     </message>
 </context>
 <context>
@@ -9030,7 +10226,7 @@ Id: %3</translation>
 <context>
     <name>trainer::records::RecordsDb</name>
     <message>
-        <location filename="../trainer/records/records_db.cpp" line="+266" />
+        <location filename="../trainer/records/records_db.cpp" line="+286" />
         <source>the records database is in use by another program, which has kept it locked for over %1 s; close that program or try again</source>
         <translation>la base de datos de registros está en uso por otro programa, que la tiene bloqueada hace más de %1 s; cierre ese programa o intente de nuevo</translation>
     </message>
@@ -9183,17 +10379,19 @@ Id: %3</translation>
         <translation>falló la actualización a la versión de esquema %1 (%2)</translation>
     </message>
     <message>
-        <location line="+218" />
+        <location line="+224" />
+        <location line="+449" />
         <source>cannot add the operator “%1”</source>
         <translation>no se puede agregar al operador “%1”</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="-447" />
+        <location line="+449" />
         <source>an operator needs an id</source>
         <translation>un operador necesita un id</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="-443" />
         <source>the id is taken already, by “%1”</source>
         <translation>el id ya está en uso, por “%1”</translation>
     </message>
@@ -9204,12 +10402,12 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+7" />
-        <location line="+30" />
+        <location line="+31" />
         <source>there is no operator %1</source>
         <translation>no existe el operador %1</translation>
     </message>
     <message>
-        <location line="-24" />
+        <location line="-25" />
         <source>cannot look the operator up</source>
         <translation>no se puede buscar al operador</translation>
     </message>
@@ -9224,7 +10422,7 @@ Id: %3</translation>
         <translation>el tutorial no tiene id</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+33" />
         <source>cannot record the attempt's events</source>
         <translation>no se pueden registrar los eventos del intento</translation>
     </message>
@@ -9235,12 +10433,13 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+5" />
-        <location line="+46" />
+        <location line="+54" />
+        <location line="+254" />
         <source>there is no attempt %1</source>
         <translation>no existe el intento %1</translation>
     </message>
     <message>
-        <location line="-25" />
+        <location line="-279" />
         <source>cannot record the attempt's result</source>
         <translation>no se puede registrar el resultado del intento</translation>
     </message>
@@ -9286,13 +10485,79 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+7" />
+        <location line="+76" />
+        <location line="+82" />
         <source>cannot read the attempt</source>
         <translation>no se puede leer el intento</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="-146" />
         <source>cannot export the records to %1</source>
         <translation>no se pueden exportar los registros a %1</translation>
+    </message>
+    <message>
+        <location line="-189" />
+        <source>there is an attempt with the id %1 already</source>
+        <translation>ya hay un intento con el identificador %1</translation>
+    </message>
+    <message>
+        <location line="+268" />
+        <source>cannot read what the centre's server lacks</source>
+        <translation>no se puede leer lo que le falta al servidor del centro</translation>
+    </message>
+    <message>
+        <location line="+44" />
+        <location line="+12" />
+        <source>cannot note what the centre's server has</source>
+        <translation>no se puede anotar lo que tiene el servidor del centro</translation>
+    </message>
+    <message>
+        <location line="+22" />
+        <source>cannot give the old attempts their unique ids</source>
+        <translation>no se pueden dar a los intentos antiguos sus identificadores únicos</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>cannot read the attempt's events</source>
+        <translation>no se pueden leer los eventos del intento</translation>
+    </message>
+    <message>
+        <location line="+39" />
+        <source>cannot copy the attempt %1</source>
+        <translation>no se puede copiar el intento %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the attempt has no unique id</source>
+        <translation>el intento no tiene identificador único</translation>
+    </message>
+    <message>
+        <location line="+62" />
+        <source>an event has no index</source>
+        <translation>un evento no tiene índice</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>cannot reach the records database</source>
+        <translation>no se puede alcanzar la base de datos de registros</translation>
+    </message>
+</context>
+<context>
+    <name>trainer::records::SharedRecords</name>
+    <message>
+        <location filename="../trainer/records/shared_records.cpp" line="+165" />
+        <source>cannot send the records to the centre's server: the station's records are not open</source>
+        <translation>no se pueden enviar los registros al servidor del centro: los registros del puesto no están abiertos</translation>
+    </message>
+    <message>
+        <location line="+104" />
+        <source>not connected yet to the centre's records server %1: this station records on its own until it is</source>
+        <translation>aún sin conexión con el servidor de registros del centro %1: este puesto registra por su cuenta hasta tenerla</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>this station records on its own, and sends its records to the centre's server %1 when it is back (%2)</source>
+        <translation>este puesto registra por su cuenta y envía sus registros al servidor del centro %1 cuando vuelva (%2)</translation>
     </message>
 </context>
 </TS>

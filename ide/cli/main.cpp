@@ -10,6 +10,9 @@
 #include "ide/cli/info_report.h"
 #include "ide/cli/simulate.h"
 #include "ide/cli/tutorial.h"
+#ifdef PADROB_HAVE_DDS
+#include "ide/cli/centre.h"
+#endif
 #include "ide/i18n/language.h"
 #include "solver/model/load.h"
 
@@ -51,6 +54,11 @@ std::string mainHelp()
                  "                        write a tree model as MuJoCo's MJCF\n"
                  "  tutorial FILE [--input LOG | --demo] [--json]\n"
                  "                        check a tutorial, or run it against an input log and score it\n"
+                 "  station TUTORIAL... --name NAME\n"
+                 "                        a training station without a window on the centre's network\n"
+                 "  instructor list|watch|send\n"
+                 "                        the training centre's stations: list, watch and command them\n"
+                 "  centre key|seal|bench the training centre's key, sealed secrets, scale benchmark\n"
                  "\n"
                  "Options:\n"
                  "  -h, --help            show this help (or a command's: padrob COMMAND --help)\n"
@@ -242,6 +250,11 @@ int main(int argc, char** argv)
     if (cmd == "bench") return ide::cli::runBench(rest);
     if (cmd == "export") return ide::cli::runExport(rest);
     if (cmd == "tutorial") return ide::cli::runTutorial(rest);
+#ifdef PADROB_HAVE_DDS
+    if (cmd == "station") return ide::cli::runStation(rest);
+    if (cmd == "instructor") return ide::cli::runInstructor(rest);
+    if (cmd == "centre") return ide::cli::runCentre(rest);
+#endif
     print(stderr, "padrob: " + fill(trStd("padrob", "unknown command '%1'"), {cmd}) + "\n" +
                       trStd("padrob", "Try 'padrob --help'.") + "\n");
     return kUsage;

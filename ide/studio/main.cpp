@@ -3,11 +3,19 @@
 // workspace, full screen (Ctrl+Shift+F12 and the trainer's PIN leave it).
 // padrob-studio --bench-frames N [--scene FILE] [--views 1|3] [--json] [MODEL]: how
 // fast it starts and draws and how steady its real-time loop is (app/frame_bench.h).
+// padrob-studio --display-of STATION [--view left|centre|right] [NETWORK]: a display
+// node of the training centre (centre/display_window.h).
+// padrob-studio --instructor [--centre-key FILE] [NETWORK]: the instructor's station
+// (centre/instructor_window.h). NETWORK: --domain N, --loopback, --interface I, --peer A.
 #include "ide/studio/app/frame_bench.h"
 #include "ide/studio/app/main_window.h"
 #include "ide/studio/train/train_page.h"
 #include "ide/studio/view/viewport.h"
 #include "ide/i18n/language.h"
+#ifdef PADROB_HAVE_DDS
+#include "ide/studio/centre/display_window.h"
+#include "ide/studio/centre/instructor_window.h"
+#endif
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -88,6 +96,46 @@ int main(int argc, char** argv)
         QCoreApplication::translate("studio::main", "The language of the application and the tutorials (es or en)."),
         QStringLiteral("es|en"));
     parser.addOptions({scene, bench, views, json, trainerMode, operatorId, lang});
+#ifdef PADROB_HAVE_DDS
+    // the training centre (docs/training-centre.md)
+    const QCommandLineOption displayOf(
+        QStringLiteral("display-of"),
+        QCoreApplication::translate("studio::main", "Be a display node of the training centre: show STATION's "
+                                                    "machine from its operator's seat, driven by its state stream."),
+        QCoreApplication::translate("studio::main", "STATION"));
+    const QCommandLineOption viewSide(
+        QStringLiteral("view"),
+        QCoreApplication::translate("studio::main", "With --display-of: which of the station's three screens "
+                                                    "(default centre)."),
+        QStringLiteral("left|centre|right"));
+    const QCommandLineOption instructor(
+        QStringLiteral("instructor"),
+        QCoreApplication::translate("studio::main", "Be the instructor's station of the training centre: watch "
+                                                    "the stations and command them."));
+    const QCommandLineOption centreKey(
+        QStringLiteral("centre-key"),
+        QCoreApplication::translate("studio::main", "With --instructor: the centre's key, which signs the "
+                                                    "commands (without it the instructor only watches)."),
+        QCoreApplication::translate("studio::main", "FILE"));
+    const QCommandLineOption domain(
+        QStringLiteral("domain"),
+        QCoreApplication::translate("studio::main", "The training centre's DDS domain, 0-232 (default 0)."),
+        QStringLiteral("N"));
+    const QCommandLineOption loopback(
+        QStringLiteral("loopback"),
+        QCoreApplication::translate("studio::main", "The training centre on this computer only."));
+    const QCommandLineOption netInterface(
+        QStringLiteral("interface"),
+        QCoreApplication::translate("studio::main", "The network interface of the training centre (name or "
+                                                    "address; repeatable)."),
+        QCoreApplication::translate("studio::main", "INTERFACE"));
+    const QCommandLineOption peer(
+        QStringLiteral("peer"),
+        QCoreApplication::translate("studio::main", "Find the centre's other computers by unicast at ADDRESS "
+                                                    "(repeatable; without it, multicast)."),
+        QCoreApplication::translate("studio::main", "ADDRESS"));
+    parser.addOptions({displayOf, viewSide, instructor, centreKey, domain, loopback, netInterface, peer});
+#endif
     parser.process(app);
     if (parser.isSet(lang) && parser.value(lang) != "es" && parser.value(lang) != "en") {
         std::fputs(qPrintable(QCoreApplication::translate("studio::main", "--lang must be es or en.") +
@@ -117,6 +165,40 @@ int main(int argc, char** argv)
         options.sinceMain = sinceMain;
         return studio::runFrameBench(options);
     }
+
+#ifdef PADROB_HAVE_DDS
+    if (parser.isSet(displayOf) || parser.isSet(instructor)) {
+        const auto fail = [](const QString& message) {
+            std::fputs(qPrintable(message + QLatin1Char('\n')), stderr);
+            return 2;
+        };
+        trainer::centre::BusOptions net;
+        if (parser.isSet(domain)) {
+            bool ok = false;
+            net.domain = parser.value(domain).toInt(&ok);
+            if (!ok || net.domain < 0 || net.domain > 232)
+                return fail(QCoreApplication::translate("studio::main", "--domain must be a whole number from 0 to 232."));
+        }
+        net.interfaces = parser.values(netInterface);
+        net.peers = parser.values(peer);
+        if (parser.isSet(loopback)) {
+            net.interfaces = {QStringLiteral("127.0.0.1")};
+            net.peers = {QStringLiteral("127.0.0.1")};
+        }
+        if (parser.isSet(instructor)) {
+            studio::InstructorWindow window(net, parser.value(centreKey));
+            window.show();
+            return QApplication::exec();
+        }
+        studio::DisplayView::Screen side = studio::DisplayView::Centre;
+        if (parser.isSet(viewSide) && !studio::DisplayWindow::parseScreen(parser.value(viewSide), &side))
+            return fail(QCoreApplication::translate("studio::main", "--view must be left, centre or right."));
+        studio::DisplayWindow window(parser.value(displayOf), side, net);
+        window.resize(1280, 720);
+        window.show();
+        return QApplication::exec();
+    }
+#endif
 
     studio::MainWindow window;
     window.openInitial(model);

@@ -383,6 +383,23 @@ void CollisionWorld::excludeFromScene(const std::vector<int>& shapeIndices)
     if (changed) m_impl->still.setup();
 }
 
+void CollisionWorld::placeSceneShapes(const std::vector<int>& shapeIndices, const Eigen::Isometry3d& offset)
+{
+    bool registered = false;
+    for (int i : shapeIndices) {
+        const std::size_t k = std::size_t(i);
+        if (k >= m_shapes.size() || m_shapes[k].body >= 0 || !m_shapes[k].scene) continue;
+        fcl::CollisionObjectd* o = m_impl->objects[k].get();
+        o->setTransform(offset * m_impl->local[k]);
+        o->computeAABB();
+        if (k >= m_impl->excluded.size() || !m_impl->excluded[k]) {
+            m_impl->still.update(o);
+            registered = true;
+        }
+    }
+    if (registered) m_impl->still.setup();
+}
+
 Clearance CollisionWorld::bodyToShapes(int body, const std::vector<int>& shapeIndices, double cap)
 {
     Clearance best;

@@ -82,6 +82,11 @@ public:
     /// Takes scene shapes out of bodyToScene() and machineToScene() (a tutorial checks
     /// the people in the mill on their own); bodyToShapes() still sees them.
     void excludeFromScene(const std::vector<int>& shapeIndices);
+    /// Moves scene shapes (indices into shapes(); the machine's are left alone) to
+    /// `offset` · their pose as the scene places them, for the queries that follow (a
+    /// person walking into the work area); the identity puts them back. Shapes still in
+    /// the scene's broad phase are updated there too.
+    void placeSceneShapes(const std::vector<int>& shapeIndices, const Eigen::Isometry3d& offset);
     /// The smallest distance between one body's shapes (tree index) and the given shapes
     /// (indices into shapes()), pair by pair; pairs whose bounding boxes are farther apart
     /// than `cap` or than the best so far are not measured (invalid: none within `cap`).

@@ -123,8 +123,8 @@ Text SimulationEvent::describeText(const Model& model) const
 /// current modes (kRootsPerJoint per joint, then the loop lock; each valid while positive).
 class Simulation::System : public OdeSystem {
 public:
-    System(const Model& model, const State& modes, bool limits)
-        : m_model(model), m_modes(modes), m_work(modes), m_data(model), m_limits(limits)
+    System(const Model& model, const State& modes, bool limits, const std::vector<char>& faulted)
+        : m_model(&model), m_modes(modes), m_work(modes), m_data(model), m_limits(limits), m_faulted(faulted)
     {
         for (int j = 0; j < model.nb; ++j) {
             if ((limits && (std::isfinite(model.lower[j]) || std::isfinite(model.upper[j]))) || isHydraulic(model, j))
@@ -137,8 +137,8 @@ public:
     /// event watches (set at every mode change).
     int expectedRank = 0;
 
-    int size() const override { return 3 * m_model.nb; }
-    int rootCount() const override { return m_needRoots ? kRootsPerJoint * m_model.nb + 1 : 0; }
+    int size() const override { return 3 * m_model->nb; }
+    int rootCount() const override { return m_needRoots ? kRootsPerJoint * m_model->nb + 1 : 0; }
     int rootDirection(int) const override { return -1; }
     bool evaluateAtStepEnds() const override { return true; }  // the outputs (takeEvaluation)
 
@@ -148,38 +148,44 @@ public:
     {
         load(t, y);
         m_fullValid = false;
-        if (!kinematicAccelerations(m_model, m_work, m_data)) {
-            forwardKinematics(m_model, m_work, m_data);
-            applyForces(m_model, m_work, m_data);
-            hybridDynamics(m_model, m_work, m_data, DynamicsOutputs::Accelerations);
+        if (!kinematicAccelerations(*m_model, m_work, m_data)) {
+            forwardKinematics(*m_model, m_work, m_data);
+            applyForces(*m_model, m_work, m_data);
+            hybridDynamics(*m_model, m_work, m_data, DynamicsOutputs::Accelerations);
         }
-        derivative(m_model, m_work, m_data, ydot);
+        derivative(*m_model, m_work, m_data, m_faulted, ydot);
         return true;
     }
 
     bool roots(double t, const double* y, double* g) override
     {
         full(t, y);
-        eventFunctions(m_model, m_work, m_data, m_limits, expectedRank, g);
+        eventFunctions(*m_model, m_work, m_data, m_limits, expectedRank, g);
         return true;
     }
 
     bool rhsAndRoots(double t, const double* y, double* ydot, double* g) override
     {
         full(t, y);
-        derivative(m_model, m_work, m_data, ydot);
-        if (rootCount() > 0) eventFunctions(m_model, m_work, m_data, m_limits, expectedRank, g);
+        derivative(*m_model, m_work, m_data, m_faulted, ydot);
+        if (rootCount() > 0) eventFunctions(*m_model, m_work, m_data, m_limits, expectedRank, g);
         return true;
     }
 
-    /// y' at a state whose θ̈ `data` holds.
-    static void derivative(const Model& model, const State& s, const Data& data, double* ydot)
+    /// The model the dynamics run on from now on (same size: the simulation's, after a
+    /// drive fault was set or cleared; the number of event functions does not change).
+    void setModel(const Model& model) { m_model = &model; }
+
+    /// y' at a state whose θ̈ `data` holds; `faulted` (per joint): drives whose law is a
+    /// fault's, whose servo integral stays as it is.
+    static void derivative(const Model& model, const State& s, const Data& data, const std::vector<char>& faulted,
+                           double* ydot)
     {
         const int nb = model.nb;
         for (int j = 0; j < nb; ++j) {
             ydot[j] = s.qd[j];
             ydot[nb + j] = data.qdd[j];
-            ydot[2 * nb + j] = servoError(model, s, j);
+            ydot[2 * nb + j] = faulted[static_cast<std::size_t>(j)] ? 0.0 : servoError(model, s, j);
         }
     }
 
@@ -252,21 +258,22 @@ public:
     }
 
 private:
-    const Model& m_model;
+    const Model* m_model;  // the simulation's (with its drive faults)
     const State& m_modes;  // the simulation's state: modes and commands
     State m_work;          // modes copied from m_modes, values from y
     Data m_data;
     bool m_limits;
+    const std::vector<char>& m_faulted;  // per joint: a drive fault (no servo integral)
     bool m_needRoots = false;
     // the last whole evaluation (roots, rhsAndRoots) and where it was
     bool m_fullValid = false;
     double m_fullT = 0;
-    std::vector<double> m_fullY = std::vector<double>(static_cast<std::size_t>(3 * m_model.nb), 0.0);
+    std::vector<double> m_fullY = std::vector<double>(static_cast<std::size_t>(3 * m_model->nb), 0.0);
 
     void full(double t, const double* y)
     {
         load(t, y);
-        evaluateAll(m_model, m_work, m_data);
+        evaluateAll(*m_model, m_work, m_data);
         m_fullValid = true;
         m_fullT = t;
         std::copy(y, y + size(), m_fullY.begin());
@@ -274,7 +281,7 @@ private:
 
     void load(double t, const double* y)
     {
-        const int nb = m_model.nb;
+        const int nb = m_model->nb;
         m_work.t = t;
         for (int j = 0; j < nb; ++j) {
             m_work.q[j] = y[j];
@@ -310,6 +317,7 @@ std::shared_ptr<const Model> adapt(std::shared_ptr<const Model> model, const Sim
 
 Simulation::Simulation(std::shared_ptr<const Model> model, const SimulationOptions& options)
     : m_model(adapt(std::move(model), options)),
+      m_base(m_model),
       m_options(options),
       m_state(makeState(*m_model)),
       m_data(*m_model),
@@ -324,7 +332,9 @@ Simulation::Simulation(std::shared_ptr<const Model> model, const SimulationOptio
     if (!m_options.limits) {
         for (LimitState& l : m_state.limit) l = LimitState::Free;
     }
-    m_system = std::make_unique<System>(*m_model, m_state, m_options.limits);
+    m_faults.assign(nb, DriveFault{});
+    m_faulted.assign(nb, 0);
+    m_system = std::make_unique<System>(*m_model, m_state, m_options.limits, m_faulted);
     IntegratorOptions io = m_options.integrator;
     if (io.method != IntegrationMethod::Rk4Fixed && io.maxStep == 0) io.maxStep = kDefaultMaxStep;
     if (m_model->nb > 0) m_integrator = std::make_unique<Integrator>(*m_system, io);
@@ -355,6 +365,70 @@ void Simulation::setCommand(int joint, double u)
         m_state.u[joint] = u;
         m_restart = true;
     }
+}
+
+namespace {
+
+/// The law a burst hose leaves (DriveFault): F = clamp(−damping·q̇, ±maxForce) in the
+/// modeler's coordinate, which is the servo law with only its derivative term
+/// (drives.h: kd·ė with ė = −q̇, clamped to ±servoFmax; no set-point, no integral).
+CompiledDrive burstDrive(const DriveFault& f)
+{
+    CompiledDrive d;
+    d.type = DriveType::Servo;
+    d.kp = d.ki = 0;
+    d.kd = f.damping;
+    d.servoFmax = f.maxForce;
+    return d;
+}
+
+}  // namespace
+
+bool Simulation::setDriveFault(int joint, const DriveFault& fault)
+{
+    if (joint < 0 || joint >= m_base->nb || !isHydraulic(*m_base, joint)) return false;
+    if (!(fault.damping >= 0) || !(fault.maxForce >= 0)) return false;  // (NaN fails too)
+    m_faults[joint] = fault;
+    m_faulted[joint] = 1;
+    m_state.relief[joint] = ReliefState::Closed;
+    m_state.servoIntegral[joint] = 0;
+    applyFaults();
+    return true;
+}
+
+bool Simulation::clearDriveFault(int joint)
+{
+    if (joint < 0 || joint >= m_base->nb || !m_faulted[joint]) return false;
+    m_faults[joint] = DriveFault{};
+    m_faulted[joint] = 0;
+    m_state.relief[joint] = ReliefState::Closed;
+    m_state.servoIntegral[joint] = 0;
+    applyFaults();
+    return true;
+}
+
+const DriveFault* Simulation::driveFault(int joint) const
+{
+    if (joint < 0 || joint >= m_base->nb || !m_faulted[joint]) return nullptr;
+    return &m_faults[joint];
+}
+
+void Simulation::applyFaults()
+{
+    if (std::none_of(m_faulted.begin(), m_faulted.end(), [](char f) { return f != 0; })) {
+        m_model = m_base;
+    } else {
+        auto m = std::make_shared<Model>(*m_base);
+        for (int j = 0; j < m->nb; ++j) {
+            if (m_faulted[j]) m->drive[j] = burstDrive(m_faults[j]);
+        }
+        m_model = std::move(m);
+    }
+    m_system->setModel(*m_model);
+    // the modes change (a prescribed rate becomes free, or the other way): the mode
+    // rules settle them and the integrator restarts at the next advanceTo()
+    m_restart = true;
+    evaluate();
 }
 
 void Simulation::setInitial(int joint, double theta, double thetaDot)
@@ -747,7 +821,7 @@ bool Simulation::applyModeRules(std::vector<SimulationEvent>& events)
             changed = true;
         }
         if (!changed) {
-            System::derivative(m, m_state, m_data, m_ydot.data());
+            System::derivative(m, m_state, m_data, m_faulted, m_ydot.data());
             return true;
         }
     }
@@ -854,7 +928,7 @@ bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, st
                 // (the same state, the same modes and rank as the integrator's stages use)
                 packState();
                 System::eventFunctions(*m_model, m_state, m_data, m_options.limits, m_expectedRank, m_g.data());
-                System::derivative(*m_model, m_state, m_data, m_ydot.data());
+                System::derivative(*m_model, m_state, m_data, m_faulted, m_ydot.data());
                 m_integrator->reset(m_state.t, m_y.data(), m_ydot.data(),
                                     m_system->rootCount() > 0 ? m_g.data() : nullptr);
                 dataCurrent = true;

@@ -35,6 +35,13 @@
 //    bodies that move apart is a plastic impact: momentum is conserved.
 // Each switch is reported as a SimulationEvent.
 //
+// Drive faults (setDriveFault, issue 10): an instructor bursts a hydraulic drive's hose.
+// The fault belongs to this Simulation and its state, never to the shared Model: the
+// Simulation then runs on a private copy of the model whose faulted drives are
+// replaced by their fault's law (model() stays the model as compiled). Like a new
+// command it takes effect at the next advanceTo(), which restarts the integrator
+// there; the step loop allocates no more with a fault than without.
+//
 // Commands (u per joint in [−1, 1]) are read at the start of every advanceTo():
 // a new command sets the prescribed rates at once (the valve spool moves) and
 // restarts the integrator there. The free joints take the impulse of that jump
@@ -47,6 +54,7 @@
 #include "solver/dynamics/forward_dynamics.h"
 #include "solver/integrate/integrator.h"
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -80,6 +88,19 @@ struct SimulationEvent {
     Text describeText(const Model& model) const;
 };
 
+/// A burst hose on a hydraulic drive (Simulation::setDriveFault): the line has lost its
+/// pressure, so the cylinder (or hydraulic motor) can neither hold nor push. Its relief
+/// valve no longer matters and its rate is no longer prescribed: the joint becomes
+/// force-driven (passive) with what is left of the drive, in the modeler's coordinate,
+///     F = clamp(−damping · q̇, −maxForce, +maxForce),
+/// the oil escaping through the break (viscous) bounded by what the residual pressure
+/// can give. The defaults (no damping) leave a passive joint: the load falls under
+/// gravity until a limit stops it, as a passive joint's would.
+struct DriveFault {
+    double damping = 0;  ///< [N s/m or N m s/rad] (≥ 0)
+    double maxForce = std::numeric_limits<double>::infinity();  ///< [N or N m] (≥ 0)
+};
+
 /// The longest adaptive step a Simulation takes unless told otherwise [s].
 inline constexpr double kDefaultMaxStep = 0.01;
 
@@ -96,7 +117,9 @@ public:
     Simulation(const Simulation&) = delete;
     Simulation& operator=(const Simulation&) = delete;
 
-    const Model& model() const { return *m_model; }
+    /// The model as compiled (with SimulationOptions' drives and limits applied), without
+    /// drive faults: a burst drive is still hydraulic here (driveFault() tells).
+    const Model& model() const { return *m_base; }
     const State& state() const { return m_state; }
     /// Values derived at the current state (kinematics, forces, dynamics, reactions)
     /// after the last advanceTo() or evaluate().
@@ -104,6 +127,24 @@ public:
 
     /// Sets joint i's command u in [−1, 1] (clamped), read by the next advanceTo().
     void setCommand(int joint, double u);
+    /// Bursts the hose of joint i's hydraulic drive (DriveFault), from the next
+    /// advanceTo() until clearDriveFault(i); setting it again replaces the fault. The
+    /// joint's rate is kept (no jump: the load starts from where it was moving), its
+    /// relief valve is taken as closed and raises no events, its command (state().u)
+    /// is kept but does nothing; at a limit it leaves the stop when the dynamics pull it
+    /// away (as a passive joint). Returns false, changing nothing, when i is out of
+    /// range, the joint has no hydraulic drive, or a value is negative or not a number.
+    /// Allocates (a copy of the model): call it between steps, not inside a step loop
+    /// that must not allocate.
+    bool setDriveFault(int joint, const DriveFault& fault);
+    /// Repairs joint i's drive from the next advanceTo(): its rate is prescribed by its
+    /// command again (u = 0: it holds where it is), the jump in rate taken by the free
+    /// joints as for a new command; if holding needs more than the relief setting the
+    /// valve opens at once (a ReliefOpen event). False when joint i has no fault.
+    bool clearDriveFault(int joint);
+    /// Joint i's fault, nullptr when its drive is sound (or i is out of range).
+    const DriveFault* driveFault(int joint) const;
+
     /// Before the first advanceTo(): the initial θ and θ̇ of joint i (overrides QI/VI).
     void setInitial(int joint, double theta, double thetaDot);
 
@@ -137,7 +178,14 @@ public:
 
 private:
     class System;
+    /// The model the dynamics run on: m_base, or with drive faults a private copy of it
+    /// whose faulted drives carry their fault's law.
     std::shared_ptr<const Model> m_model;
+    std::shared_ptr<const Model> m_base;  // model(): as compiled, the options applied
+    std::vector<DriveFault> m_faults;     // per joint (used where m_faulted)
+    std::vector<char> m_faulted;          // per joint: 1 with a drive fault
+    /// Makes m_model from m_base and the faults, and hands it to the system.
+    void applyFaults();
     SimulationOptions m_options;
     State m_state;
     Data m_data;

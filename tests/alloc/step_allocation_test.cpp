@@ -150,3 +150,34 @@ TEST(StepAllocation, ImpulsesOnFreeJointsAllocateNothing)
         << "2000 RK4 steps of a 30-link chain";
     EXPECT_GT(events, 0) << "the limits were to be hit on the way";
 }
+
+TEST(StepAllocation, ABurstHoseAllocatesNothingInTheStepLoop)
+{
+    // the boom's hose bursts (issue 10): the boom falls with its cylinder passive, every
+    // other valve commanded every step, until the boom lands on its stop (an event)
+    auto model = liner();
+    ASSERT_TRUE(model);
+    solver::Simulation sim(model, solver::SimulationOptions{});
+    std::vector<solver::SimulationEvent> events;
+    events.reserve(10000);
+    std::string error;
+    const int boom = model->jointIndex(2);
+    ASSERT_TRUE(sim.advanceTo(0.01, events, error)) << error;
+    ASSERT_TRUE(sim.setDriveFault(boom, solver::DriveFault{2e4}));  // injected between steps
+    ASSERT_TRUE(sim.advanceTo(0.02, events, error)) << error;
+    const double before0 = sim.state().q[boom];
+    const long before = g_allocations;
+    for (int k = 3; k <= 2000; ++k) {
+        for (int j = 0; j < model->nb; ++j) sim.setCommand(j, 0.5 * std::sin(0.003 * k + j));
+        if (!sim.advanceTo(0.01 * k, events, error)) {
+            ADD_FAILURE() << error;
+            break;
+        }
+    }
+    EXPECT_EQ(g_allocations - before, 0) << "allocations in 1998 steps of 10 ms with a burst hose";
+    EXPECT_NE(sim.state().q[boom], before0);  // it moved
+    bool landed = false;
+    for (const solver::SimulationEvent& e : events)
+        landed = landed || (e.kind == solver::SimulationEvent::Kind::LimitHit && e.joint == boom);
+    EXPECT_TRUE(landed) << "the boom was to land on its stop";
+}

@@ -14,6 +14,7 @@
 #include <QStandardPaths>
 #include <QThread>
 #include <QUrl>
+#include <QUuid>
 #include <QVariant>
 
 #include <algorithm>
@@ -82,6 +83,25 @@ const QList<Migration>& migrations()
              "ALTER TABLE attempt_events ADD COLUMN penalty DOUBLE PRECISION NOT NULL DEFAULT 0",
              "ALTER TABLE attempt_events ADD COLUMN detail TEXT NOT NULL DEFAULT ''",
          }},
+        {3,
+         "a training centre: attempts get a unique id and their station, events their index; a station's "
+         "journal notes what the centre's server has",
+         {
+             "ALTER TABLE attempts ADD COLUMN uid TEXT",
+             "ALTER TABLE attempts ADD COLUMN station TEXT NOT NULL DEFAULT ''",
+             "ALTER TABLE attempt_events ADD COLUMN seq INTEGER",
+             // old events: their index within their attempt, in the order appended
+             "UPDATE attempt_events SET seq = r.n FROM (SELECT id,"
+             " ROW_NUMBER() OVER (PARTITION BY attempt_id ORDER BY id) - 1 AS n FROM attempt_events) AS r"
+             " WHERE r.id = attempt_events.id",
+             "CREATE UNIQUE INDEX attempts_by_uid ON attempts (uid)",
+             "CREATE UNIQUE INDEX attempt_events_by_seq ON attempt_events (attempt_id, seq)",
+             "CREATE TABLE sync_state ("
+             " attempt_id BIGINT PRIMARY KEY REFERENCES attempts (id) ON DELETE CASCADE,"
+             " events INTEGER NOT NULL, status TEXT NOT NULL)",
+             "CREATE TABLE sync_operators ("
+             " operator_id BIGINT PRIMARY KEY REFERENCES operators (id) ON DELETE CASCADE)",
+         }},
     };
     return steps;
 }
@@ -90,7 +110,7 @@ const QList<Migration>& migrations()
 const QStringList& ourTables()
 {
     static const QStringList names = {"records_schema", "operators", "attempts", "attempt_scores",
-                                      "attempt_events"};
+                                      "attempt_events", "sync_state", "sync_operators"};
     return names;
 }
 
@@ -607,8 +627,10 @@ bool RecordsDb::Impl::upgrade(QSqlQuery& q, int from, const QString& what, QStri
 bool RecordsDb::Impl::markInterrupted(QSqlQuery& q, const QString& what, QString* error)
 {
     if (postgres) {
-        // a running attempt whose recorder is alive has its session's advisory lock
-        if (!run(q, "UPDATE attempts SET status = 'interrupted' WHERE status = 'running'"
+        // a running attempt whose recorder is alive has its session's advisory lock;
+        // one of a station's journal (station <> '') has none: only that station's
+        // sync marks it (docs/records.md, "A training centre")
+        if (!run(q, "UPDATE attempts SET status = 'interrupted' WHERE status = 'running' AND station = ''"
                     " AND pg_try_advisory_xact_lock(CAST(? AS INTEGER), CAST(MOD(id, 2147483648) AS INTEGER))",
                  {kLockClass}))
             return fail(error, what, q.lastError());
@@ -643,7 +665,7 @@ bool RecordsDb::Impl::loadAttempts(const QString& filter, const QVariant& arg, b
     QSqlQuery q(db());
     if (!run(q,
              "SELECT a.id, a.operator_id, a.tutorial, a.tutorial_title, a.started, a.duration_s, a.score,"
-             " a.stars, a.passed, a.status, a.language FROM attempts a WHERE " +
+             " a.stars, a.passed, a.status, a.language, a.uid, a.station FROM attempts a WHERE " +
                  filter + " ORDER BY a.started DESC, a.id DESC",
              {arg}))
         return fail(error, what, q.lastError());
@@ -660,6 +682,8 @@ bool RecordsDb::Impl::loadAttempts(const QString& filter, const QVariant& arg, b
         a.passed = q.value(8).toInt() != 0;
         if (!statusFromName(q.value(9).toString(), a.status)) a.status = AttemptStatus::Interrupted;
         a.language = q.value(10).toString();
+        a.uid = q.value(11).toString();
+        a.station = q.value(12).toString();
         index.insert(a.id, list.size());
         list.append(a);
     }
@@ -687,16 +711,18 @@ bool RecordsDb::Impl::loadAttempts(const QString& filter, const QVariant& arg, b
 
     if (withEvents) {
         if (!run(q,
-                 "SELECT e.attempt_id, e.t, e.kind, e.text, e.value, e.penalty, e.detail FROM attempt_events e"
-                 " JOIN attempts a ON a.id = e.attempt_id WHERE " +
-                     filter + " ORDER BY e.attempt_id, e.id",
+                 "SELECT e.attempt_id, e.t, e.kind, e.text, e.value, e.penalty, e.detail, e.seq"
+                 " FROM attempt_events e JOIN attempts a ON a.id = e.attempt_id WHERE " +
+                     filter + " ORDER BY e.attempt_id, e.seq, e.id",
                  {arg}))
             return fail(error, what, q.lastError());
         while (q.next()) {
             const auto it = index.constFind(q.value(0).toLongLong());
             if (it == index.constEnd()) continue;
-            list[*it].events.append({q.value(1).toDouble(), q.value(2).toString(), q.value(3).toString(),
-                                     doubleOrNaN(q.value(4)), q.value(5).toDouble(), q.value(6).toString()});
+            AttemptEvent e(q.value(1).toDouble(), q.value(2).toString(), q.value(3).toString(),
+                           doubleOrNaN(q.value(4)), q.value(5).toDouble(), q.value(6).toString());
+            e.seq = q.value(7).toInt();
+            list[*it].events.append(e);
         }
         if (q.lastError().isValid()) return fail(error, what, q.lastError());
     }
@@ -865,6 +891,7 @@ qint64 RecordsDb::beginAttempt(const AttemptStart& start, QString* error)
     if (!d->usable(true, what, error)) return 0;
     if (start.tutorialId.isEmpty()) return d->fail(error, what, Tr::tr("the tutorial has no id")), 0;
     const QDateTime started = start.started.isValid() ? start.started : QDateTime::currentDateTimeUtc();
+    const QString uid = start.uid.isEmpty() ? QUuid::createUuid().toString(QUuid::WithoutBraces) : start.uid;
     QSqlQuery q(d->db());  // before the transaction: it outlives it
     Transaction tx(d->db(), d->sqlite());
     if (!tx.begin()) return d->fail(error, what, tx.error()), 0;
@@ -872,10 +899,14 @@ qint64 RecordsDb::beginAttempt(const AttemptStart& start, QString* error)
         return d->fail(error, what, q.lastError()), 0;
     if (!q.next()) return d->fail(error, what, Tr::tr("there is no operator %1").arg(start.operatorId)), 0;
     q.finish();
+    if (!run(q, "SELECT id FROM attempts WHERE uid = ?", {uid})) return d->fail(error, what, q.lastError()), 0;
+    if (q.next()) return d->fail(error, what, Tr::tr("there is an attempt with the id %1 already").arg(uid)), 0;
+    q.finish();
     if (!run(q,
-             "INSERT INTO attempts (operator_id, tutorial, tutorial_title, started, status, language)"
-             " VALUES (?, ?, ?, ?, 'running', ?) RETURNING id",
-             {start.operatorId, start.tutorialId, start.tutorialTitle, toDb(started), start.language}) ||
+             "INSERT INTO attempts (operator_id, tutorial, tutorial_title, started, status, language, uid, station)"
+             " VALUES (?, ?, ?, ?, 'running', ?, ?, ?) RETURNING id",
+             {start.operatorId, start.tutorialId, start.tutorialTitle, toDb(started), start.language, uid,
+              start.station.isNull() ? QString::fromLatin1("") : start.station}) ||
         !q.next())
         return d->fail(error, what, q.lastError()), 0;
     const qint64 id = q.value(0).toLongLong();
@@ -902,10 +933,18 @@ bool RecordsDb::appendEvents(qint64 attemptId, const QList<AttemptEvent>& events
     if (!run(q, "SELECT id FROM attempts WHERE id = ?", {attemptId})) return d->fail(error, what, q.lastError());
     if (!q.next()) return d->fail(error, what, Tr::tr("there is no attempt %1").arg(attemptId));
     q.finish();
-    if (!q.prepare("INSERT INTO attempt_events (attempt_id, t, kind, text, value, penalty, detail)"
-                   " VALUES (?, ?, ?, ?, ?, ?, ?)"))
+    // the next index: how many the attempt has (its indexes are 0, 1, 2…)
+    if (!run(q, "SELECT COALESCE(MAX(seq), -1) + 1 FROM attempt_events WHERE attempt_id = ?", {attemptId}) ||
+        !q.next())
         return d->fail(error, what, q.lastError());
-    for (const AttemptEvent& e : events) {
+    const qint64 next = q.value(0).toLongLong();
+    q.finish();
+    if (!q.prepare("INSERT INTO attempt_events (attempt_id, t, kind, text, value, penalty, detail, seq)"
+                   " VALUES (?, ?, ?, ?, ?, ?, ?, ?)"))
+        return d->fail(error, what, q.lastError());
+    for (qsizetype i = 0; i < events.size(); ++i) {
+        const AttemptEvent& e = events[i];
+        q.bindValue(7, e.seq >= 0 ? qint64(e.seq) : next + i);
         q.bindValue(0, attemptId);
         q.bindValue(1, e.t);
         q.bindValue(2, e.kind);
@@ -1109,6 +1148,247 @@ bool RecordsDb::exportCsv(const QString& path, QString* error) const
     QSaveFile f(path);
     if (!f.open(QIODevice::WriteOnly) || f.write(text) != text.size() || !f.commit())
         return d->fail(error, what, f.errorString());
+    return true;
+}
+
+bool RecordsDb::findAttempt(const QString& uid, Attempt& out, QString* error) const
+{
+    const QString what = Tr::tr("cannot read the attempt");
+    if (error) error->clear();
+    if (!d->usable(false, what, error)) return false;
+    if (uid.isEmpty()) return false;
+    QList<Attempt> list;
+    if (!d->loadAttempts("a.uid = ?", uid, true, list, what, error)) return false;
+    if (list.isEmpty()) return false;
+    out = list.first();
+    return true;
+}
+
+// replication (SharedRecords) --------------------------------------------------------
+
+bool RecordsDb::unsynced(QList<Unsynced>& attempts, QList<Operator>& operators, QString* error) const
+{
+    const QString what = Tr::tr("cannot read what the centre's server lacks");
+    if (!d->usable(false, what, error)) return false;
+    QSqlQuery q(d->db());
+    // one index probe per attempt (MAX(seq) by attempt_events_by_seq): cheap when
+    // nothing changed
+    if (!run(q, "SELECT x.id, x.operator_id, x.uid, x.station, x.status, x.n, x.synced_events, x.synced_status,"
+                " o.code, o.name, o.created"
+                " FROM (SELECT a.id, a.operator_id, a.uid, a.station, a.status, s.events AS synced_events,"
+                "  s.status AS synced_status,"
+                "  (SELECT COALESCE(MAX(e.seq) + 1, 0) FROM attempt_events e WHERE e.attempt_id = a.id) AS n"
+                "  FROM attempts a LEFT JOIN sync_state s ON s.attempt_id = a.id WHERE a.uid IS NOT NULL) x"
+                " JOIN operators o ON o.id = x.operator_id"
+                " WHERE x.synced_status IS NULL OR x.synced_status <> x.status OR x.synced_events < x.n"
+                " ORDER BY x.id"))
+        return d->fail(error, what, q.lastError());
+    QList<Unsynced> list;
+    while (q.next()) {
+        Unsynced u;
+        u.attemptId = q.value(0).toLongLong();
+        u.op = {q.value(1).toLongLong(), q.value(8).toString(), q.value(9).toString(), fromDb(q.value(10))};
+        u.uid = q.value(2).toString();
+        u.station = q.value(3).toString();
+        if (!statusFromName(q.value(4).toString(), u.status)) u.status = AttemptStatus::Interrupted;
+        u.events = q.value(5).toInt();
+        u.syncedEvents = q.value(6).isNull() ? 0 : q.value(6).toInt();
+        u.syncedStatus = q.value(7).toString();
+        list.append(u);
+    }
+    if (q.lastError().isValid()) return d->fail(error, what, q.lastError());
+    q.finish();
+    QList<Operator> ops;
+    if (!run(q, "SELECT id, code, name, created FROM operators o"
+                " WHERE NOT EXISTS (SELECT 1 FROM sync_operators s WHERE s.operator_id = o.id) ORDER BY id"))
+        return d->fail(error, what, q.lastError());
+    while (q.next())
+        ops.append({q.value(0).toLongLong(), q.value(1).toString(), q.value(2).toString(), fromDb(q.value(3))});
+    if (q.lastError().isValid()) return d->fail(error, what, q.lastError());
+    attempts = std::move(list);
+    operators = std::move(ops);
+    return true;
+}
+
+bool RecordsDb::noteSynced(qint64 attemptId, int events, AttemptStatus status, QString* error)
+{
+    const QString what = Tr::tr("cannot note what the centre's server has");
+    if (!d->usable(true, what, error)) return false;
+    QSqlQuery q(d->db());
+    if (!run(q, "INSERT INTO sync_state (attempt_id, events, status) VALUES (?, ?, ?) ON CONFLICT (attempt_id)"
+                " DO UPDATE SET events = excluded.events, status = excluded.status",
+             {attemptId, events, statusName(status)}))
+        return d->fail(error, what, q.lastError());
+    return true;
+}
+
+bool RecordsDb::noteOperatorSynced(qint64 operatorId, QString* error)
+{
+    const QString what = Tr::tr("cannot note what the centre's server has");
+    if (!d->usable(true, what, error)) return false;
+    QSqlQuery q(d->db());
+    if (!run(q, "INSERT INTO sync_operators (operator_id) VALUES (?) ON CONFLICT (operator_id) DO NOTHING",
+             {operatorId}))
+        return d->fail(error, what, q.lastError());
+    return true;
+}
+
+bool RecordsDb::attemptHead(qint64 attemptId, Attempt& out, QString* error) const
+{
+    const QString what = Tr::tr("cannot read the attempt");
+    if (!d->usable(false, what, error)) return false;
+    QList<Attempt> list;
+    if (!d->loadAttempts("a.id = ?", attemptId, false, list, what, error)) return false;
+    if (list.isEmpty()) return d->fail(error, what, Tr::tr("there is no attempt %1").arg(attemptId));
+    out = list.first();
+    return true;
+}
+
+bool RecordsDb::giveUids(QString* error)
+{
+    const QString what = Tr::tr("cannot give the old attempts their unique ids");
+    if (!d->usable(true, what, error)) return false;
+    QSqlQuery q(d->db());  // before the transaction: it outlives it
+    Transaction tx(d->db(), d->sqlite());
+    if (!tx.begin()) return d->fail(error, what, tx.error());
+    if (!run(q, "SELECT id FROM attempts WHERE uid IS NULL")) return d->fail(error, what, q.lastError());
+    QList<qint64> ids;
+    while (q.next()) ids << q.value(0).toLongLong();
+    q.finish();
+    for (qint64 id : ids)
+        if (!run(q, "UPDATE attempts SET uid = ? WHERE id = ?", {QUuid::createUuid().toString(QUuid::WithoutBraces), id}))
+            return d->fail(error, what, q.lastError());
+    q.finish();
+    return tx.commit() || d->fail(error, what, tx.error());
+}
+
+bool RecordsDb::eventsOf(qint64 attemptId, int fromSeq, int limit, QList<AttemptEvent>& out, QString* error) const
+{
+    const QString what = Tr::tr("cannot read the attempt's events");
+    if (!d->usable(false, what, error)) return false;
+    QSqlQuery q(d->db());
+    if (!run(q, "SELECT t, kind, text, value, penalty, detail, seq FROM attempt_events"
+                " WHERE attempt_id = ? AND seq >= ? ORDER BY seq LIMIT ?",
+             {attemptId, fromSeq, limit}))
+        return d->fail(error, what, q.lastError());
+    QList<AttemptEvent> list;
+    while (q.next()) {
+        AttemptEvent e(q.value(0).toDouble(), q.value(1).toString(), q.value(2).toString(), doubleOrNaN(q.value(3)),
+                       q.value(4).toDouble(), q.value(5).toString());
+        e.seq = q.value(6).toInt();
+        list.append(e);
+    }
+    if (q.lastError().isValid()) return d->fail(error, what, q.lastError());
+    out = std::move(list);
+    return true;
+}
+
+qint64 RecordsDb::ensureOperator(const Operator& op, QString* error)
+{
+    const QString c = op.code.trimmed();
+    const QString what = Tr::tr("cannot add the operator “%1”").arg(c);
+    if (!d->usable(true, what, error)) return 0;
+    if (c.isEmpty()) return d->fail(error, what, Tr::tr("an operator needs an id")), 0;
+    QSqlQuery q(d->db());
+    // the name of an operator the database has already stays (a rename at the
+    // trainer's desk is not undone by a station's older copy)
+    if (!run(q, "INSERT INTO operators (code, name, created) VALUES (?, ?, ?) ON CONFLICT (code) DO NOTHING",
+             {c, op.name.trimmed(), toDb(op.created.isValid() ? op.created : QDateTime::currentDateTimeUtc())}))
+        return d->fail(error, what, q.lastError()), 0;
+    q.finish();
+    if (!run(q, "SELECT id FROM operators WHERE code = ?", {c}) || !q.next())
+        return d->fail(error, what, q.lastError()), 0;
+    return q.value(0).toLongLong();
+}
+
+bool RecordsDb::mergeAttempt(const Attempt& a, qint64 operatorId, const QList<AttemptEvent>& events, QString* error)
+{
+    const QString what = Tr::tr("cannot copy the attempt %1").arg(a.uid);
+    if (!d->usable(true, what, error)) return false;
+    if (a.uid.isEmpty()) return d->fail(error, what, Tr::tr("the attempt has no unique id"));
+    const bool ended = a.status != AttemptStatus::Running;
+    auto writeBreakdown = [&](QSqlQuery& q, qint64 id) {
+        if (!run(q, "DELETE FROM attempt_scores WHERE attempt_id = ?", {id})) return false;
+        if (!q.prepare("INSERT INTO attempt_scores (attempt_id, seq, key, label, value, points, max_points)"
+                       " VALUES (?, ?, ?, ?, ?, ?, ?)"))
+            return false;
+        for (qsizetype i = 0; i < a.breakdown.size(); ++i) {
+            const ScoreItem& s = a.breakdown[i];
+            q.bindValue(0, id);
+            q.bindValue(1, int(i));
+            q.bindValue(2, s.key);
+            q.bindValue(3, s.label);
+            q.bindValue(4, s.value);
+            q.bindValue(5, s.points);
+            q.bindValue(6, s.maxPoints);
+            if (!q.exec()) return false;
+        }
+        return true;
+    };
+
+    QSqlQuery q(d->db());  // before the transaction: it outlives it
+    Transaction tx(d->db(), d->sqlite());
+    if (!tx.begin()) return d->fail(error, what, tx.error());
+    const QVariantList result = {a.durationS, a.score, a.stars, a.passed ? 1 : 0, statusName(a.status)};
+    if (!run(q,
+             "INSERT INTO attempts (operator_id, tutorial, tutorial_title, started, language, uid, station,"
+             " duration_s, score, stars, passed, status) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"
+             " ON CONFLICT (uid) DO NOTHING RETURNING id",
+             QVariantList{operatorId, a.tutorialId, a.tutorialTitle, toDb(a.started), a.language, a.uid,
+                          a.station.isNull() ? QString::fromLatin1("") : a.station} +
+                 result))
+        return d->fail(error, what, q.lastError());
+    qint64 id = 0;
+    if (q.next()) {  // new here
+        id = q.value(0).toLongLong();
+        q.finish();
+        if (ended && !writeBreakdown(q, id)) return d->fail(error, what, q.lastError());
+    } else {
+        if (q.lastError().isValid()) return d->fail(error, what, q.lastError());
+        q.finish();
+        if (!run(q, "SELECT id, status FROM attempts WHERE uid = ?", {a.uid}) || !q.next())
+            return d->fail(error, what, q.lastError());
+        id = q.value(0).toLongLong();
+        const QString there = q.value(1).toString();
+        q.finish();
+        // a result replaces "running", and a finished or aborted attempt "interrupted"
+        // (it was wrongly marked); nothing undoes a result
+        const bool update = ended && (there == QLatin1String("running") ||
+                                      (there == QLatin1String("interrupted") && a.status != AttemptStatus::Interrupted));
+        if (update) {
+            if (!run(q, "UPDATE attempts SET duration_s = ?, score = ?, stars = ?, passed = ?, status = ? WHERE id = ?",
+                     result + QVariantList{id}) ||
+                !writeBreakdown(q, id))
+                return d->fail(error, what, q.lastError());
+        }
+    }
+    if (!events.isEmpty()) {
+        if (!q.prepare("INSERT INTO attempt_events (attempt_id, seq, t, kind, text, value, penalty, detail)"
+                       " VALUES (?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT (attempt_id, seq) DO NOTHING"))
+            return d->fail(error, what, q.lastError());
+        for (const AttemptEvent& e : events) {
+            if (e.seq < 0) return d->fail(error, what, Tr::tr("an event has no index"));
+            q.bindValue(0, id);
+            q.bindValue(1, e.seq);
+            q.bindValue(2, e.t);
+            q.bindValue(3, e.kind);
+            q.bindValue(4, e.text);
+            q.bindValue(5, nullableDouble(e.value));
+            q.bindValue(6, std::isfinite(e.penalty) ? e.penalty : 0.0);
+            q.bindValue(7, e.detail.isNull() ? QString::fromLatin1("") : e.detail);
+            if (!q.exec()) return d->fail(error, what, q.lastError());
+        }
+    }
+    q.finish();
+    return tx.commit() || d->fail(error, what, tx.error());
+}
+
+bool RecordsDb::check(QString* error) const
+{
+    const QString what = Tr::tr("cannot reach the records database");
+    if (!d->usable(false, what, error)) return false;
+    QSqlQuery q(d->db());
+    if (!run(q, "SELECT 1") || !q.next()) return d->fail(error, what, q.lastError());
     return true;
 }
 

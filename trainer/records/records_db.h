@@ -82,6 +82,9 @@ struct AttemptEvent {
     double value = std::numeric_limits<double>::quiet_NaN();
     double penalty = 0;  ///< points the event cost
     QString detail;      ///< what it concerns: a goal's id, a shape, a drive (as the model names it)
+    /// its index within the attempt (0, 1, 2…); < 0 = appendEvents() assigns it (the
+    /// number of events already stored plus its place in the batch)
+    int seq = -1;
 };
 
 /// What beginAttempt() records.
@@ -91,6 +94,10 @@ struct AttemptStart {
     QString tutorialTitle;  ///< its title as shown (in `language`)
     QString language;       ///< the UI language of the attempt ("en", "es"…)
     QDateTime started;      ///< invalid = now; stored in UTC to the millisecond
+    QString uid{};          ///< the attempt's unique id (a UUID); "" = a new one (QUuid)
+    /// the station whose local journal owns the attempt (SharedRecords); "" = recorded
+    /// directly in this database (docs/records.md, "A training centre")
+    QString station{};
 };
 
 /// What finishAttempt() records.
@@ -116,8 +123,10 @@ struct Attempt {
     bool passed = false;
     AttemptStatus status = AttemptStatus::Running;
     QString language;
+    QString uid;      ///< unique in the database and across a centre's stations ("" = an old attempt)
+    QString station;  ///< the station whose journal owns it ("" = none)
     QList<ScoreItem> breakdown;  ///< in the order given to finishAttempt()
-    QList<AttemptEvent> events;  ///< in the order appended
+    QList<AttemptEvent> events;  ///< in the order appended (by seq)
 };
 
 /// One tutorial in an operator's progress: scores are of finished attempts only.
@@ -163,10 +172,26 @@ struct RecordsLocation {
     int busyTimeoutMs = 2000; ///< how long to wait for another program's lock before giving up
 };
 
-class RecordsDb {
+/// What records an attempt as it happens: a RecordsDb, or a station's SharedRecords
+/// (its local journal first, the centre's server when it can). AttemptLog uses this.
+class AttemptRecorder {
+public:
+    virtual ~AttemptRecorder() = default;
+    virtual bool isOpen() const = 0;
+    virtual qint64 beginAttempt(const AttemptStart& start, QString* error = nullptr) = 0;
+    virtual bool appendEvents(qint64 attemptId, const QList<AttemptEvent>& events, QString* error = nullptr) = 0;
+    virtual bool finishAttempt(qint64 attemptId, const AttemptResult& result, QString* error = nullptr) = 0;
+    /// The attempt with `uid`, with breakdown and events. False when there is none
+    /// (`error` empty) or on failure.
+    virtual bool findAttempt(const QString& uid, Attempt& out, QString* error = nullptr) const = 0;
+};
+
+class SharedRecords;
+
+class RecordsDb : public AttemptRecorder {
 public:
     RecordsDb();
-    ~RecordsDb();  ///< close()s
+    ~RecordsDb() override;  ///< close()s
     RecordsDb(const RecordsDb&) = delete;
     RecordsDb& operator=(const RecordsDb&) = delete;
 
@@ -188,7 +213,7 @@ public:
     /// Closes; attempts of this object still running are recorded as interrupted.
     void close();
 
-    bool isOpen() const;
+    bool isOpen() const override;
     bool isPostgres() const;
     bool isReadOnly() const;
     /// The file path, or "user@host:port/database" (never the password).
@@ -210,13 +235,17 @@ public:
     // attempts (the recording side)
 
     /// Records a new attempt as running and commits it. Returns its id, 0 on failure.
-    qint64 beginAttempt(const AttemptStart& start, QString* error = nullptr);
+    /// The attempt gets `start.uid`, or a new UUID when it is empty (a uid already in
+    /// the database is refused).
+    qint64 beginAttempt(const AttemptStart& start, QString* error = nullptr) override;
     /// Appends events to an attempt: the whole batch is committed or none of it.
     /// Each call costs a disk sync: append in batches (e.g. once a second), not per event.
-    bool appendEvents(qint64 attemptId, const QList<AttemptEvent>& events, QString* error = nullptr);
+    /// Events with seq < 0 get the next indexes; a seq already stored fails the batch.
+    bool appendEvents(qint64 attemptId, const QList<AttemptEvent>& events, QString* error = nullptr) override;
     /// Records the result (status, score, breakdown) in one transaction; the attempt
     /// then no longer counts as running.
-    bool finishAttempt(qint64 attemptId, const AttemptResult& result, QString* error = nullptr);
+    bool finishAttempt(qint64 attemptId, const AttemptResult& result, QString* error = nullptr) override;
+    bool findAttempt(const QString& uid, Attempt& out, QString* error = nullptr) const override;
 
     // queries (the trainer's view)
 
@@ -232,6 +261,43 @@ public:
     bool exportCsv(const QString& path, QString* error = nullptr) const;
 
 private:
+    friend class SharedRecords;
+    // replication (SharedRecords, docs/records.md "A training centre") -------------------
+
+    /// An attempt of the journal not yet (entirely) on the server.
+    struct Unsynced {
+        qint64 attemptId = 0;
+        Operator op;  ///< its operator (the journal's id)
+        QString uid;
+        QString station;
+        AttemptStatus status = AttemptStatus::Running;
+        int events = 0;        ///< events in the journal (the next seq)
+        int syncedEvents = 0;  ///< of which the server has seq < syncedEvents
+        QString syncedStatus;  ///< the status the server had at the last sync ("" = it has no copy)
+    };
+    /// Journal: attempts whose events or status the server lacks, and operators it lacks.
+    bool unsynced(QList<Unsynced>& attempts, QList<Operator>& operators, QString* error) const;
+    /// Journal: the server has the attempt's events with seq < `events` and `status`.
+    bool noteSynced(qint64 attemptId, int events, AttemptStatus status, QString* error);
+    /// Journal: the server has the operator.
+    bool noteOperatorSynced(qint64 operatorId, QString* error);
+    /// An attempt without its events.
+    bool attemptHead(qint64 attemptId, Attempt& out, QString* error) const;
+    /// Journal: gives attempts without a uid (recorded before schema 3) one.
+    bool giveUids(QString* error);
+    /// The attempt's events with seq >= `fromSeq`, at most `limit`, by seq.
+    bool eventsOf(qint64 attemptId, int fromSeq, int limit, QList<AttemptEvent>& out, QString* error) const;
+    /// Server: the id of the operator with `op.code`, added (with op's name and
+    /// creation) when absent; 0 on failure.
+    qint64 ensureOperator(const Operator& op, QString* error);
+    /// Server, one transaction: the attempt `a.uid` inserted if absent (for `operatorId`),
+    /// `events` (with their seq) inserted where absent, and, when `a.status` is not
+    /// running, its result and breakdown when the server's copy is running (or
+    /// interrupted, for a finished or aborted one). Idempotent.
+    bool mergeAttempt(const Attempt& a, qint64 operatorId, const QList<AttemptEvent>& events, QString* error);
+    /// Whether the database still answers (a trivial query).
+    bool check(QString* error) const;
+
     struct Impl;
     std::unique_ptr<Impl> d;
 };

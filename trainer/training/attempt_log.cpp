@@ -8,6 +8,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QSaveFile>
+#include <QUuid>
 
 #include <cmath>
 
@@ -49,7 +50,7 @@ records::AttemptResult toRecordResult(const TutorialResult& r, bool aborted)
     return out;
 }
 
-AttemptLog::AttemptLog(records::RecordsDb* db, QString pendingFolder, qint64 operatorId, const Tutorial& tutorial,
+AttemptLog::AttemptLog(records::AttemptRecorder* db, QString pendingFolder, qint64 operatorId, const Tutorial& tutorial,
                        const QString& language)
     : m_db(db), m_tutorial(&tutorial), m_folder(std::move(pendingFolder))
 {
@@ -58,6 +59,7 @@ AttemptLog::AttemptLog(records::RecordsDb* db, QString pendingFolder, qint64 ope
     m_start.tutorialTitle = QString::fromStdString(tutorial.title(language.toStdString()));
     m_start.language = language;
     m_start.started = QDateTime::currentDateTimeUtc();
+    m_start.uid = QUuid::createUuid().toString(QUuid::WithoutBraces);
     ensureBegun();
 }
 
@@ -111,6 +113,7 @@ bool AttemptLog::finish(const std::vector<TutorialEvent>& events, const Tutorial
     o["language"] = m_start.language;
     o["started"] = m_start.started.toString(Qt::ISODateWithMs);
     o["replaces"] = m_attempt;  // the attempt begun in the database, if any
+    o["uid"] = m_start.uid;     // completes that attempt (or begins one with this uid)
     const records::AttemptResult r = toRecordResult(result, aborted);
     o["aborted"] = aborted;
     o["duration"] = r.durationS;
@@ -142,7 +145,7 @@ bool AttemptLog::finish(const std::vector<TutorialEvent>& events, const Tutorial
     return false;
 }
 
-int AttemptLog::importPending(records::RecordsDb& db, const QString& folder, QString* error)
+int AttemptLog::importPending(records::AttemptRecorder& db, const QString& folder, QString* error)
 {
     int imported = 0;
     const QDir dir(folder);
@@ -161,6 +164,7 @@ int AttemptLog::importPending(records::RecordsDb& db, const QString& folder, QSt
         start.tutorialTitle = o["title"].toString();
         start.language = o["language"].toString();
         start.started = QDateTime::fromString(o["started"].toString(), Qt::ISODateWithMs);
+        start.uid = o["uid"].toString();  // "" in files of older Padrobs: a new one
         QList<records::AttemptEvent> events;
         for (const QJsonValue& v : o["events"].toArray()) {
             const QJsonObject e = v.toObject();
@@ -179,7 +183,17 @@ int AttemptLog::importPending(records::RecordsDb& db, const QString& folder, QSt
             r.breakdown.append({i["key"].toString(), i["label"].toString(), i["value"].toDouble(), i["points"].toDouble(), i["max"].toDouble()});
         }
         QString e;
-        const qint64 id = db.beginAttempt(start, &e);
+        // begun in the database before it refused: complete that attempt with the events
+        // it lacks (by their index), never a second copy
+        records::Attempt begun;
+        qint64 id = 0;
+        if (db.findAttempt(start.uid, begun, &e)) {
+            id = begun.id;
+            events = events.mid(std::min(events.size(), begun.events.size()));
+            for (qsizetype i = 0; i < events.size(); ++i) events[i].seq = int(begun.events.size() + i);
+        } else if (e.isEmpty()) {
+            id = db.beginAttempt(start, &e);
+        }
         if (id <= 0 || !db.appendEvents(id, events, &e) || !db.finishAttempt(id, r, &e)) {
             if (error) *error = e;
             return imported;  // the database refuses again: try later

@@ -66,6 +66,9 @@ const char* TutorialEvent::key(Kind k)
     case Kind::TimeUp: return "time-up";
     case Kind::InputEnded: return "input-ended";
     case Kind::SolverError: return "solver-error";
+    case Kind::Fault: return "fault";
+    case Kind::FaultCleared: return "fault-cleared";
+    case Kind::Instructor: return "instructor";
     case Kind::Aborted: return "aborted";
     }
     return "?";
@@ -89,13 +92,57 @@ QString TutorialEvent::label(Kind k)
     case Kind::TimeUp: return Tr::tr("Time up");
     case Kind::InputEnded: return Tr::tr("Input ended");
     case Kind::SolverError: return Tr::tr("Simulation stopped");
+    case Kind::Fault: return Tr::tr("Fault injected");
+    case Kind::FaultCleared: return Tr::tr("Fault cleared");
+    case Kind::Instructor: return Tr::tr("Instructor");
     case Kind::Aborted: return Tr::tr("Stopped");
     }
     return {};
 }
 
+namespace {
+
+/// A fault event's sentence from its detail ("hose-burst LEVANTE PLUMA"…): the drive as
+/// the model names it, the person in `language` (by `subject`, else by the English name).
+QString faultText(const TutorialEvent& e, const Tutorial* tutorial, const std::string& language)
+{
+    const std::size_t space = e.detail.find(' ');
+    const std::string key = e.detail.substr(0, space);
+    QString who = space == std::string::npos ? QString() : QString::fromStdString(e.detail.substr(space + 1));
+    Fault::Kind kind = Fault::Kind::PowerCut;
+    if (!Fault::fromKey(key, &kind)) return TutorialEvent::label(e.kind) + ": " + QString::fromStdString(e.detail);
+    if (kind == Fault::Kind::WorkerIn && tutorial) {
+        const std::vector<Worker>& workers = tutorial->spec.workers;
+        int w = e.subject;
+        for (std::size_t i = 0; w < 0 && i < workers.size(); ++i) {
+            if (!workers[i].name.empty() && workers[i].name.in("en") == who.toStdString()) w = int(i);
+        }
+        if (w >= 0 && std::size_t(w) < workers.size() && !workers[std::size_t(w)].name.empty())
+            who = QString::fromStdString(workers[std::size_t(w)].name.in(language));
+    }
+    const bool cleared = e.kind == TutorialEvent::Kind::FaultCleared;
+    switch (kind) {
+    case Fault::Kind::HoseBurst:
+        return cleared ? Tr::tr("Instructor: the hose of %1 was repaired").arg(who)
+                       : Tr::tr("Instructor: a hose of %1 burst; the drive has no pressure").arg(who);
+    case Fault::Kind::StuckValve:
+        return cleared ? Tr::tr("Instructor: the valve of %1 was freed").arg(who)
+                       : Tr::tr("Instructor: the valve of %1 stuck at %2 % of its opening").arg(who, shown(100.0 * e.value, 0));
+    case Fault::Kind::WorkerIn:
+        return cleared ? Tr::tr("Instructor: %1 left the work area").arg(who)
+                       : Tr::tr("Instructor: %1 walked into the work area").arg(who);
+    case Fault::Kind::PowerCut:
+        return cleared ? Tr::tr("Instructor: the power is back")
+                       : Tr::tr("Instructor: the power was cut; every valve closed");
+    }
+    return {};
+}
+
+}  // namespace
+
 QString TutorialEvent::text(const Tutorial* tutorial, const std::string& language) const
 {
+    if (kind == Kind::Fault || kind == Kind::FaultCleared) return faultText(*this, tutorial, language);
     QString d = QString::fromStdString(detail);
     if (tutorial && subject >= 0) {
         const bool worker = kind == Kind::WorkerZone || kind == Kind::WorkerHit;
@@ -127,6 +174,19 @@ QString TutorialEvent::text(const Tutorial* tutorial, const std::string& languag
     case Kind::TimeUp: return Tr::tr("The time limit was reached");
     case Kind::InputEnded: return Tr::tr("The recorded input ended before the goals were done");
     case Kind::SolverError: return Tr::tr("The simulation stopped: %1").arg(detailText.empty() ? d : translated(detailText));
+    case Kind::Fault:
+    case Kind::FaultCleared: break;  // faultText
+    case Kind::Instructor: {
+        // detail: "ACTION:INSTRUCTOR" (trainer/centre/station_node.cpp)
+        const qsizetype colon = d.indexOf(':');
+        const QString action = colon < 0 ? d : d.left(colon), who = colon < 0 ? QString() : d.mid(colon + 1);
+        if (action == "start") return Tr::tr("Instructor %1 started the attempt").arg(who);
+        if (action == "pause") return Tr::tr("Instructor %1 paused the attempt").arg(who);
+        if (action == "resume") return Tr::tr("Instructor %1 resumed the attempt").arg(who);
+        if (action == "reset") return Tr::tr("Instructor %1 restarted the tutorial").arg(who);
+        if (action == "stop") return Tr::tr("Instructor %1 stopped the attempt").arg(who);
+        return Tr::tr("Instructor %1: %2").arg(who, action);
+    }
     case Kind::Aborted: return Tr::tr("The attempt was stopped");
     }
     return {};
@@ -183,6 +243,8 @@ TutorialSession::TutorialSession(std::shared_ptr<const Tutorial> tutorial, const
     m_sim->evaluate();
     m_commands.assign(std::size_t(m.nb), 0.0);
     m_reliefOpen.assign(std::size_t(m.nb), 0);
+    m_stuck.assign(std::size_t(m.nb), std::numeric_limits<double>::quiet_NaN());
+    m_workerOffsets.assign(t.spec.workers.size(), Eigen::Isometry3d::Identity());
     if (t.spec.scoring.avoidScene || !t.spec.workers.empty()) {
         solver::Diagnostics diags;
         m_world = std::make_unique<solver::CollisionWorld>(*t.modelSpec, m, t.sceneSpec.get(), diags);
@@ -229,7 +291,12 @@ bool TutorialSession::step()
 {
     if (ended()) return false;
     const solver::Model& m = *m_tutorial->model;
-    for (int j = 0; j < m.nb; ++j) m_sim->setCommand(j, m_commands[std::size_t(j)]);
+    // the operator's levers, unless a valve is stuck or the power is cut (faults)
+    for (int j = 0; j < m.nb; ++j) {
+        const std::size_t k = std::size_t(j);
+        const double u = m_powerCut ? 0.0 : std::isnan(m_stuck[k]) ? m_commands[k] : m_stuck[k];
+        m_sim->setCommand(j, u);
+    }
     m_qdBefore.assign(m_sim->state().qd.data(), m_sim->state().qd.data() + m.nb);
     m_simEvents.clear();
     std::string error;
@@ -663,6 +730,187 @@ bool TutorialSession::isClaw(int joint) const
         if (c.joint == joint) return true;
     }
     return false;
+}
+
+int TutorialSession::findDrive(const std::string& name, QString* error) const
+{
+    const solver::Model& m = *m_tutorial->model;
+    const QString wanted = QString::fromStdString(name).trimmed();
+    QStringList valid;
+    for (int j = 0; j < m.nb; ++j) {
+        if (m.drive[std::size_t(j)].type != solver::DriveType::Hydraulic) continue;
+        const QString n = QString::fromStdString(driveName(j));
+        if (n.compare(wanted, Qt::CaseInsensitive) == 0) return j;
+        valid << n;
+    }
+    if (error) {
+        *error = valid.isEmpty() ? Tr::tr("There is no drive \"%1\": this machine has no hydraulic drives").arg(wanted)
+                                 : Tr::tr("There is no drive \"%1\" on this machine; its hydraulic drives are: %2")
+                                       .arg(wanted, valid.join(QStringLiteral(", ")));
+    }
+    return -1;
+}
+
+Eigen::Vector3d TutorialSession::workerAnchor(int w) const
+{
+    const Tutorial& t = *m_tutorial;
+    if (w < 0 || std::size_t(w) >= t.workerShapes.size() || t.workerShapes[std::size_t(w)].empty() || !t.sceneSpec)
+        return Eigen::Vector3d::Zero();
+    const int id = t.workerShapes[std::size_t(w)].front();
+    for (const solver::GraphicSpec& g : t.sceneSpec->graphics) {
+        if (g.id == id && g.body == 0) return g.position;
+    }
+    return Eigen::Vector3d::Zero();
+}
+
+Eigen::Isometry3d TutorialSession::workerOffset(int worker) const
+{
+    if (worker < 0 || std::size_t(worker) >= m_workerOffsets.size()) return Eigen::Isometry3d::Identity();
+    return m_workerOffsets[std::size_t(worker)];
+}
+
+Eigen::Vector3d TutorialSession::workerPosition(int worker) const
+{
+    return workerOffset(worker) * workerAnchor(worker);
+}
+
+void TutorialSession::placeWorker(int w, const Eigen::Isometry3d& offset)
+{
+    m_workerOffsets[std::size_t(w)] = offset;
+    if (m_world && std::size_t(w) < m_workerShapes.size()) m_world->placeSceneShapes(m_workerShapes[std::size_t(w)], offset);
+    m_lastCheck = -1.0;  // the checker looks at the people at the next step
+}
+
+namespace {
+
+std::string workerName(const Tutorial& t, int w)
+{
+    const Worker& worker = t.spec.workers[std::size_t(w)];
+    return worker.name.empty() ? "G " + std::to_string(worker.graphicIds.front()) : worker.name.in("en");
+}
+
+bool fail(QString* error, const QString& message)
+{
+    if (error) *error = message;
+    return false;
+}
+
+}  // namespace
+
+bool TutorialSession::inject(const Fault& fault, QString* error)
+{
+    if (ended()) return fail(error, Tr::tr("The attempt has ended: no fault can be injected"));
+    const Tutorial& t = *m_tutorial;
+    Fault f = fault;
+    std::string detail = Fault::key(f.kind);
+    double value = 0.0;
+    int subject = -1;
+    auto same = [&](const Fault& a) {
+        if (a.kind != f.kind) return false;
+        if (Fault::onDrive(a.kind)) return a.drive == f.drive;
+        if (a.kind == Fault::Kind::WorkerIn) return a.worker == f.worker;
+        return true;
+    };
+    switch (f.kind) {
+    case Fault::Kind::HoseBurst:
+    case Fault::Kind::StuckValve: {
+        const int j = findDrive(f.drive, error);
+        if (j < 0) return false;
+        f.drive = driveName(j);
+        detail += " " + f.drive;
+        if (f.kind == Fault::Kind::HoseBurst) {
+            if (!m_sim->setDriveFault(j, f.hose))
+                return fail(error, Tr::tr("A burst hose's damping and residual force must be zero or more"));
+            m_reliefOpen[std::size_t(j)] = 0;  // no relief valve on a drive without pressure
+        } else {
+            if (std::isnan(f.opening)) f.opening = m_sim->state().u[j];
+            if (!(f.opening >= -1.0 && f.opening <= 1.0))
+                return fail(error, Tr::tr("A stuck valve's opening is a command from -1 to 1, not %1").arg(shown(f.opening, 2)));
+            m_stuck[std::size_t(j)] = f.opening;
+            value = f.opening;
+        }
+        break;
+    }
+    case Fault::Kind::WorkerIn: {
+        const int n = int(t.spec.workers.size());
+        if (n == 0) return fail(error, Tr::tr("This tutorial has no worker who could walk in (it has no WORKER)"));
+        if (f.worker < 0 || f.worker >= n)
+            return fail(error, Tr::tr("There is no worker %1 in this tutorial: its workers are numbered 0 to %2")
+                                   .arg(f.worker)
+                                   .arg(n - 1));
+        if (std::size_t(f.worker) >= m_workerShapes.size() || m_workerShapes[std::size_t(f.worker)].empty())
+            return fail(error, Tr::tr("Worker %1 has no graphics in the scene that could be moved").arg(f.worker));
+        if (!f.where.allFinite()) return fail(error, Tr::tr("The place a worker walks to must be a finite position"));
+        Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();
+        offset.translation() = f.where - workerAnchor(f.worker);
+        placeWorker(f.worker, offset);
+        detail += " " + workerName(t, f.worker);
+        subject = f.worker;
+        break;
+    }
+    case Fault::Kind::PowerCut: m_powerCut = true; break;
+    }
+    m_faults.erase(std::remove_if(m_faults.begin(), m_faults.end(), same), m_faults.end());
+    m_faults.push_back(f);
+    addEvent(TutorialEvent::Kind::Fault, value, 0.0, detail, subject);
+    return true;
+}
+
+bool TutorialSession::clearFault(Fault::Kind kind, const std::string& drive, QString* error, int worker)
+{
+    if (ended()) return fail(error, Tr::tr("The attempt has ended: no fault can be cleared"));
+    const Tutorial& t = *m_tutorial;
+    std::string detail = Fault::key(kind);
+    int j = -1;
+    std::string name;
+    if (Fault::onDrive(kind)) {
+        j = findDrive(drive, error);
+        if (j < 0) return false;
+        name = driveName(j);
+    }
+    std::vector<Fault> cleared;
+    for (auto it = m_faults.begin(); it != m_faults.end();) {
+        const bool match = it->kind == kind && (!Fault::onDrive(kind) || it->drive == name) &&
+                           (kind != Fault::Kind::WorkerIn || worker < 0 || it->worker == worker);
+        if (match) {
+            cleared.push_back(*it);
+            it = m_faults.erase(it);
+        } else {
+            ++it;
+        }
+    }
+    if (cleared.empty()) {
+        switch (kind) {
+        case Fault::Kind::HoseBurst: return fail(error, Tr::tr("No hose of %1 has burst").arg(QString::fromStdString(name)));
+        case Fault::Kind::StuckValve: return fail(error, Tr::tr("The valve of %1 is not stuck").arg(QString::fromStdString(name)));
+        case Fault::Kind::WorkerIn:
+            return fail(error, worker < 0 ? Tr::tr("No worker has walked in") : Tr::tr("Worker %1 has not walked in").arg(worker));
+        case Fault::Kind::PowerCut: return fail(error, Tr::tr("The power has not been cut"));
+        }
+        return false;
+    }
+    for (const Fault& f : cleared) {
+        std::string d = detail;
+        int subject = -1;
+        switch (kind) {
+        case Fault::Kind::HoseBurst:
+            m_sim->clearDriveFault(j);
+            d += " " + name;
+            break;
+        case Fault::Kind::StuckValve:
+            m_stuck[std::size_t(j)] = std::numeric_limits<double>::quiet_NaN();
+            d += " " + name;
+            break;
+        case Fault::Kind::WorkerIn:
+            placeWorker(f.worker, Eigen::Isometry3d::Identity());
+            d += " " + workerName(t, f.worker);
+            subject = f.worker;
+            break;
+        case Fault::Kind::PowerCut: m_powerCut = false; break;
+        }
+        addEvent(TutorialEvent::Kind::FaultCleared, 0.0, 0.0, d, subject);
+    }
+    return true;
 }
 
 std::string TutorialSession::driveName(int joint) const

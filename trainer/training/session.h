@@ -14,6 +14,7 @@
 
 #include "solver/collision/collision_world.h"
 #include "solver/integrate/simulation.h"
+#include "trainer/training/faults.h"
 #include "trainer/training/tutorial.h"
 
 #include <QString>
@@ -42,14 +43,21 @@ struct TutorialEvent {
         TimeUp,       ///< the time limit: the attempt ends
         InputEnded,   ///< a replayed input ran out before the goals were done
         SolverError,  ///< the simulation failed (a loop locked…): the attempt ends
+        Fault,        ///< the instructor injected a fault (no penalty); detail: Fault::key and its drive or person
+        FaultCleared, ///< the instructor cleared one; detail as for Fault
+        Instructor,   ///< the instructor started, paused, resumed, reset or stopped the attempt; detail: "pause:NAME"…
         Aborted,      ///< the operator or the trainer stopped it
     };
     Kind kind = Kind::GoalDone;
     double t = 0.0;        ///< [s]
     double value = 0.0;    ///< speed of a hit [m/s], distance [m], force [N]…
     double penalty = 0.0;  ///< points taken
-    std::string detail;    ///< goal id, shape, drive name (as in the model); a PART's or WORKER's English name
-    int subject = -1;      ///< hits: the tutorial's PART touched; worker events: the WORKER (−1 none)
+    /// goal id, shape, drive name (as in the model); a PART's or WORKER's English name; faults:
+    /// "hose-burst LEVANTE PLUMA", "stuck-valve EXTENSIÓN" (value: the opening), "worker-in the
+    /// fitter" (the WORKER's English name, or "G id"), "power-cut"
+    std::string detail;
+    /// hits: the tutorial's PART touched; worker events (and a fault "worker-in"): the WORKER (−1 none)
+    int subject = -1;
     /// SolverError: the solver's message, translatable (`detail` is its English); text()
     /// shows it in the current language. Empty for the other kinds and for events read back.
     solver::Text detailText;
@@ -158,6 +166,38 @@ public:
     /// Where the tracked point is now (TRACK, else the GRIP's tool point…) [m].
     Eigen::Vector3d trackPoint() const;
 
+    // Faults the instructor injects (faults.h, docs/training.md). Between steps, on the
+    // session's thread. Each inject and clear adds an event (Fault, FaultCleared) at the
+    // time it happened; neither costs points (what follows is scored as usual).
+    //  - HoseBurst: the drive's joint goes passive in the solver (Simulation::setDriveFault):
+    //    the load sags under gravity until a limit; its lever does nothing. Cleared: the
+    //    drive holds again where it is, and its lever acts.
+    //  - StuckValve: the drive runs at the stuck opening whatever its lever says (q̇ = u·vmax).
+    //  - WorkerIn: the WORKER's graphics move to `where` (workerOffset() for the viewer)
+    //    and the checker measures the person there (at the next step). Cleared: back
+    //    where the scene has them.
+    //  - PowerCut: every command is 0 (the valves close, the machine holds; a relief valve
+    //    can still open under an overload). It overrides a stuck valve; a burst hose still sags.
+    // Injecting a fault that is active again (same kind and drive, or worker) replaces it.
+    // Returns false with a translated `error` (may be nullptr), changing nothing, when the
+    // attempt has ended, the drive is not one of the machine's hydraulic drives (the
+    // message lists them), an opening is outside [−1, 1], the tutorial has no such worker…
+    bool inject(const Fault& fault, QString* error = nullptr);
+    /// Clears the active fault of that kind on that drive (HoseBurst, StuckValve; the name
+    /// as inject() takes it) or of worker `worker` (WorkerIn; −1: every worker who walked
+    /// in); PowerCut: power is back. False with a translated `error` when there is none.
+    bool clearFault(Fault::Kind kind, const std::string& drive = {}, QString* error = nullptr, int worker = -1);
+    /// The faults active now, in the order they were injected (StuckValve with the
+    /// opening used, drives by their names as the events give them).
+    std::vector<Fault> activeFaults() const { return m_faults; }
+    /// Per WORKER: where to draw the person now, as a transform of the graphics as the
+    /// scene places them (identity unless the person walked in).
+    const std::vector<Eigen::Isometry3d>& workerOffsets() const { return m_workerOffsets; }
+    Eigen::Isometry3d workerOffset(int worker) const;
+    /// Where WORKER `worker` stands now: its first graphic's POS moved by its offset (the
+    /// reference Fault::where sets); the origin when the worker has no graphics.
+    Eigen::Vector3d workerPosition(int worker) const;
+
 private:
     void handleSolverEvents(const std::vector<solver::SimulationEvent>& events, const std::vector<double>& qdBefore);
     void checkGrip();
@@ -172,6 +212,11 @@ private:
     std::string shapeName(int shape) const;
     std::string driveName(int joint) const;
     bool isClaw(int joint) const;
+    /// The hydraulic drive named `name` (faults), or −1 with a translated `error` listing them.
+    int findDrive(const std::string& name, QString* error) const;
+    /// The first graphic's POS of WORKER w in the scene (the reference of Fault::where).
+    Eigen::Vector3d workerAnchor(int w) const;
+    void placeWorker(int w, const Eigen::Isometry3d& offset);
 
     std::shared_ptr<const Tutorial> m_tutorial;
     SessionOptions m_options;
@@ -204,6 +249,11 @@ private:
     Eigen::Vector3d m_lastGoalPoint = Eigen::Vector3d::Zero();
     double m_lastSample = -1.0;
     std::vector<char> m_reliefOpen;
+    // faults
+    std::vector<Fault> m_faults;        // active, in the order injected
+    std::vector<double> m_stuck;        // per tree joint: the stuck valve's opening (NaN: free)
+    bool m_powerCut = false;
+    std::vector<Eigen::Isometry3d> m_workerOffsets;  // per worker
 };
 
 }  // namespace trainer

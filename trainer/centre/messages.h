@@ -1,0 +1,94 @@
+#pragma once
+// The training centre's messages as plain C++ values (docs/training-centre.md). They
+// mirror centre.idl one to one; only bus.cpp converts them to and from DDS samples.
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace trainer::centre {
+
+/// The wall clock in µs since the epoch (UTC): State::sentUs, latencies.
+std::uint64_t wallUs();
+
+/// A node says who it is (stations, instructors, displays). Reliable, transient-local.
+struct Announce {
+    std::string node;       ///< unique in the centre
+    std::string role;       ///< "station", "instructor", "display"
+    std::string host;
+    int pid = 0;
+    std::string model;      ///< stations: the model's name
+    std::string modelHash;  ///< stations: SHA-256 (hex) of the model file's text
+    std::vector<std::string> tutorials;  ///< stations: the tutorial ids they run
+    std::string language;
+    std::uint64_t startedMs = 0;
+};
+
+/// Bits of State::warnings.
+enum StateWarning : std::uint32_t {
+    WarnOverload = 1,        ///< a relief valve is open
+    WarnNearWorker = 2,      ///< inside a person's safety zone
+    WarnNearScene = 4,       ///< closer than the near-miss distance to the scene
+    WarnFault = 8,           ///< an injected fault is active
+    WarnRecordsOffline = 16, ///< the centre's records database is out of reach (recording locally)
+};
+
+/// A station's state at display rate. Best effort: a lost one is replaced by the next.
+struct State {
+    std::string station;
+    std::uint64_t seq = 0;
+    std::uint64_t sentUs = 0;  ///< wall clock when sent [µs since the epoch, UTC]
+    double simTime = 0;
+    std::vector<double> q;        ///< θ per tree joint
+    std::vector<float> commands;  ///< valve openings applied, per tree joint
+    std::string tutorial;
+    std::string status;           ///< "idle", "running", "paused", "ended"
+    std::string operatorCode;
+    double attemptTime = 0;
+    double score = 0;
+    int goal = 0;
+    int goals = 0;
+    double clearance = -1;
+    double workerDistance = -1;
+    std::uint32_t warnings = 0;
+    std::string faults;           ///< "hose-burst:Boom,power-cut"
+    std::string endReason;
+};
+
+/// Something that happened at a station (tutorial events, the instructor's actions).
+struct Event {
+    std::string station;
+    std::uint64_t seq = 0;
+    double t = 0;
+    std::string tutorial;
+    std::string kind;
+    std::string text;
+    std::string detail;
+    double value = std::numeric_limits<double>::quiet_NaN();
+    double penalty = 0;
+};
+
+/// An instructor's command to a station, signed (signing.h).
+struct Command {
+    std::string target;
+    std::string sender;
+    std::uint64_t nonce = 0;
+    std::int64_t issuedMs = 0;
+    std::string kind;  ///< "start", "pause", "resume", "reset", "stop", "inject", "clear"
+    std::string arg;
+    std::string arg2;
+    double value = std::numeric_limits<double>::quiet_NaN();
+    std::string mac;   ///< hex HMAC-SHA256 of the rest
+};
+
+/// What a station did with a command.
+struct Reply {
+    std::string station;
+    std::string sender;
+    std::uint64_t nonce = 0;
+    bool accepted = false;
+    std::string message;
+};
+
+}  // namespace trainer::centre

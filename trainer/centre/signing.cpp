@@ -1,0 +1,202 @@
+#include "trainer/centre/signing.h"
+
+#include <QCoreApplication>
+#include <QCryptographicHash>
+#include <QFile>
+#include <QFileInfo>
+#include <QMessageAuthenticationCode>
+#include <QRandomGenerator>
+
+#include <cmath>
+#include <cstring>
+
+namespace trainer::centre {
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(CentreKey)
+};
+
+void put(QByteArray& out, const std::string& s)
+{
+    const quint32 n = static_cast<quint32>(s.size());
+    out.append(reinterpret_cast<const char*>(&n), sizeof n);
+    out.append(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+template <typename T>
+void putValue(QByteArray& out, T v)
+{
+    out.append(reinterpret_cast<const char*>(&v), sizeof v);
+}
+
+QByteArray hmac(const QByteArray& key, const QByteArray& data)
+{
+    return QMessageAuthenticationCode::hash(data, key, QCryptographicHash::Sha256);
+}
+
+bool sameBytes(const QByteArray& a, const QByteArray& b)
+{
+    if (a.size() != b.size()) return false;
+    unsigned char diff = 0;
+    for (qsizetype i = 0; i < a.size(); ++i) diff |= static_cast<unsigned char>(a[i] ^ b[i]);
+    return diff == 0;
+}
+
+/// Keys derived from the centre's key, one per purpose.
+QByteArray derive(const QByteArray& key, const char* purpose) { return hmac(key, QByteArray("padrob-centre:") + purpose); }
+
+QByteArray keystream(const QByteArray& encKey, const QByteArray& nonce, qsizetype length)
+{
+    QByteArray out;
+    for (quint32 block = 0; out.size() < length; ++block) {
+        QByteArray in = nonce;
+        putValue(in, block);
+        out += hmac(encKey, in);
+    }
+    out.truncate(length);
+    return out;
+}
+
+}  // namespace
+
+QByteArray signedBytes(const Command& c)
+{
+    QByteArray out("padrob-command-v1");
+    put(out, c.target);
+    put(out, c.sender);
+    putValue(out, c.nonce);
+    putValue(out, c.issuedMs);
+    put(out, c.kind);
+    put(out, c.arg);
+    put(out, c.arg2);
+    // NaN has many bit patterns: sign one
+    const double v = std::isnan(c.value) ? std::numeric_limits<double>::quiet_NaN() : c.value;
+    putValue(out, v);
+    return out;
+}
+
+bool CentreKey::load(const QString& path, QString* error)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) {
+        if (error) *error = Tr::tr("Cannot read the centre's key file %1: %2.").arg(path, f.errorString());
+        return false;
+    }
+    const QFileInfo info(path);
+    if (info.permissions() & (QFileDevice::ReadGroup | QFileDevice::ReadOther | QFileDevice::WriteGroup |
+                              QFileDevice::WriteOther)) {
+        if (error) {
+            *error = Tr::tr("The centre's key file %1 can be read by other users: make it readable by its owner only "
+                            "(chmod 600 %1).")
+                         .arg(path);
+        }
+        return false;
+    }
+    const QByteArray text = f.readAll().trimmed();
+    const QByteArray bytes = QByteArray::fromHex(text);
+    if (text.size() != 64 || bytes.size() != 32 || bytes.toHex() != text.toLower()) {
+        if (error) {
+            *error = Tr::tr("The centre's key file %1 must hold 64 hexadecimal digits (32 bytes); make one with "
+                            "'padrob centre key FILE'.")
+                         .arg(path);
+        }
+        return false;
+    }
+    m_key = bytes;
+    return true;
+}
+
+bool CentreKey::create(const QString& path, QString* error)
+{
+    if (QFileInfo::exists(path)) {
+        if (error) *error = Tr::tr("%1 exists already: a centre's key is never overwritten.").arg(path);
+        return false;
+    }
+    QByteArray bytes(32, Qt::Uninitialized);
+    QRandomGenerator::system()->fillRange(reinterpret_cast<quint32*>(bytes.data()), 8);
+    QFile f(path);
+    // created owner-only before anything is written
+    if (!f.open(QIODevice::WriteOnly | QIODevice::NewOnly, QFileDevice::ReadOwner | QFileDevice::WriteOwner) ||
+        f.write(bytes.toHex() + "\n") != 65 || !f.flush()) {
+        if (error) *error = Tr::tr("Cannot write the centre's key file %1: %2.").arg(path, f.errorString());
+        return false;
+    }
+    return true;
+}
+
+CentreKey CentreKey::fromBytes(const QByteArray& bytes)
+{
+    CentreKey k;
+    if (bytes.size() == 32) k.m_key = bytes;
+    return k;
+}
+
+QString CentreKey::fingerprint() const
+{
+    return QString::fromLatin1(QCryptographicHash::hash(m_key, QCryptographicHash::Sha256).toHex().left(8));
+}
+
+void CentreKey::sign(Command& c) const
+{
+    c.mac = hmac(derive(m_key, "command"), signedBytes(c)).toHex().toStdString();
+}
+
+bool CentreKey::verify(const Command& c) const
+{
+    if (!isSet()) return false;
+    const QByteArray expected = hmac(derive(m_key, "command"), signedBytes(c)).toHex();
+    return sameBytes(expected, QByteArray::fromStdString(c.mac));
+}
+
+QString CentreKey::seal(const QString& secret) const
+{
+    QByteArray nonce(16, Qt::Uninitialized);
+    QRandomGenerator::system()->fillRange(reinterpret_cast<quint32*>(nonce.data()), 4);
+    const QByteArray plain = secret.toUtf8();
+    QByteArray cipher = plain;
+    const QByteArray ks = keystream(derive(m_key, "seal-encrypt"), nonce, plain.size());
+    for (qsizetype i = 0; i < cipher.size(); ++i) cipher[i] = static_cast<char>(cipher[i] ^ ks[i]);
+    const QByteArray tag = hmac(derive(m_key, "seal-mac"), nonce + cipher);
+    return QString::fromLatin1((nonce + cipher + tag).toBase64());
+}
+
+bool CentreKey::unseal(const QString& sealed, QString& secret) const
+{
+    const QByteArray all = QByteArray::fromBase64(sealed.toLatin1());
+    if (!isSet() || all.size() < 16 + 32) return false;
+    const QByteArray nonce = all.left(16), cipher = all.mid(16, all.size() - 48), tag = all.right(32);
+    if (!sameBytes(tag, hmac(derive(m_key, "seal-mac"), nonce + cipher))) return false;
+    QByteArray plain = cipher;
+    const QByteArray ks = keystream(derive(m_key, "seal-encrypt"), nonce, cipher.size());
+    for (qsizetype i = 0; i < plain.size(); ++i) plain[i] = static_cast<char>(plain[i] ^ ks[i]);
+    secret = QString::fromUtf8(plain);
+    return true;
+}
+
+bool CommandGuard::accept(const Command& c, std::int64_t nowMs, std::string& why)
+{
+    if (!m_key.isSet()) {
+        why = "no-key";
+        return false;
+    }
+    if (!m_key.verify(c)) {
+        why = "bad-signature";
+        return false;
+    }
+    if (c.issuedMs < nowMs - m_maxAgeMs || c.issuedMs > nowMs + m_maxAgeMs) {
+        why = "stale";
+        return false;
+    }
+    const QString sender = QString::fromStdString(c.sender);
+    const auto it = m_lastNonce.constFind(sender);
+    if (it != m_lastNonce.constEnd() && c.nonce <= it.value()) {
+        why = "replay";
+        return false;
+    }
+    m_lastNonce.insert(sender, c.nonce);
+    return true;
+}
+
+}  // namespace trainer::centre
