@@ -46,6 +46,8 @@ DisplayView::DisplayView(const DisplayFeed* feed, Screen screen, QWidget* parent
     m_overlay->setStyleSheet(QStringLiteral("QLabel { background: rgba(20, 20, 24, 200); color: white; "
                                             "border-radius: 8px; padding: 16px; font-size: 16pt; }"));
     m_overlay->hide();
+    // the view is a native window: a widget over it shows only drawn into its frames
+    m_view->addOverlay(m_overlay);
     // at the monitor's rate (the poses between two states are interpolated)
     m_timer->setTimerType(Qt::PreciseTimer);
     connect(m_timer, &QTimer::timeout, this, [this] { frame(centreClock()); });
