@@ -43,6 +43,8 @@ packages=(
   # the training centre (optional at build time; installed so CI builds and tests it):
   # Eclipse Cyclone DDS and its IDL compiler (idlc, in cyclonedds-tools)
   cyclonedds-dev cyclonedds-tools
+  # its DDS Security PKI (padrob centre pki) is made with OpenSSL's libcrypto: its headers
+  libssl-dev
   # tests
   libgtest-dev libgmock-dev libbenchmark-dev locales
   # Qt's own texts in Spanish (the buttons of standard dialogs, context menus)

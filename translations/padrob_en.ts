@@ -76,17 +76,32 @@
 <context>
     <name>CentreBus</name>
     <message>
-        <location filename="../trainer/centre/bus.cpp" line="+160" />
+        <location filename="../trainer/centre/bus.cpp" line="+207" />
         <source>The centre's DDS domain must be a number from 0 to 232 (it is %1).</source>
         <translation>The centre's DDS domain must be a number from 0 to 232 (it is %1).</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+5" />
+        <source>DDS Security needs this node's name (--name), made of letters, digits and - _ . @, not '%1'.</source>
+        <translation>DDS Security needs this node's name (--name), made of letters, digits and - _ . @, not '%1'.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>DDS Security covers the domains 0 to 230: choose one of them for the centre (it is %1).</source>
+        <translation>DDS Security covers the domains 0 to 230: choose one of them for the centre (it is %1).</translation>
+    </message>
+    <message>
+        <location line="+23" />
         <source>Could not join the centre's network (DDS domain %1): %2. Check the centre's network interfaces and peers.</source>
         <translation>Could not join the centre's network (DDS domain %1): %2. Check the centre's network interfaces and peers.</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+19" />
+        <source>DDS Security refused node %1's identity or permissions in %2 (%3). Check that the node's files and the centre's identity_ca.pem, permissions_ca.pem and governance.p7s come from the same 'padrob centre pki', and that the security plugins of Cyclone DDS are installed.</source>
+        <translation>DDS Security refused node %1's identity or permissions in %2 (%3). Check that the node's files and the centre's identity_ca.pem, permissions_ca.pem and governance.p7s come from the same 'padrob centre pki', and that the security plugins of Cyclone DDS are installed.</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>Could not join the centre's network (DDS domain %1): %2.</source>
         <translation>Could not join the centre's network (DDS domain %1): %2.</translation>
     </message>
@@ -123,6 +138,105 @@
         <location line="+9" />
         <source>Cannot write the centre's key file %1: %2.</source>
         <translation>Cannot write the centre's key file %1: %2.</translation>
+    </message>
+</context>
+<context>
+    <name>CentrePki</name>
+    <message>
+        <location filename="../trainer/centre/pki.cpp" line="+51" />
+        <source>%1 exists already: a PKI file is never replaced (remove it first if you mean to).</source>
+        <translation>%1 exists already: a PKI file is never replaced (remove it first if you mean to).</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Could not write %1: %2.</source>
+        <translation>Could not write %1: %2.</translation>
+    </message>
+    <message>
+        <location line="+156" />
+        <source>OpenSSL could not make %1.</source>
+        <translation>OpenSSL could not make %1.</translation>
+    </message>
+    <message>
+        <location line="+20" />
+        <source>%1 holds a centre's PKI already: it is never replaced.</source>
+        <translation>%1 holds a centre's PKI already: it is never replaced.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <location line="+48" />
+        <source>Could not make the folder %1.</source>
+        <translation>Could not make the folder %1.</translation>
+    </message>
+    <message>
+        <location line="-43" />
+        <source>the CAs' keys</source>
+        <translation>the CAs' keys</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the CAs' certificates</source>
+        <translation>the CAs' certificates</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the signed governance document</source>
+        <translation>the signed governance document</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>'%1' cannot be a node's name in the centre's PKI: use letters, digits and - _ . @ (up to 64).</source>
+        <translation>'%1' cannot be a node's name in the centre's PKI: use letters, digits and - _ . @ (up to 64).</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>%1 has no centre PKI (identity_ca.pem/.key, permissions_ca.pem/.key): make it with 'padrob centre pki %1'.</source>
+        <translation>%1 has no centre PKI (identity_ca.pem/.key, permissions_ca.pem/.key): make it with 'padrob centre pki %1'.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Node %1 has an identity already in %2: it is never replaced.</source>
+        <translation>Node %1 has an identity already in %2: it is never replaced.</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>the node's certificate</source>
+        <translation>the node's certificate</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the signed permissions document</source>
+        <translation>the signed permissions document</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>DDS Security: %1 is missing. Issue this node's identity with 'padrob centre pki %2 --node %3' on the computer that holds the centre's PKI, and copy the files here.</source>
+        <translation>DDS Security: %1 is missing. Issue this node's identity with 'padrob centre pki %2 --node %3' on the computer that holds the centre's PKI, and copy the files here.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>DDS Security: %1 is not a certificate. Copy the centre's identity_ca.pem again.</source>
+        <translation>DDS Security: %1 is not a certificate. Copy the centre's identity_ca.pem again.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>DDS Security: %1 is not a certificate. Issue this node's identity again with 'padrob centre pki %2 --node %3'.</source>
+        <translation>DDS Security: %1 is not a certificate. Issue this node's identity again with 'padrob centre pki %2 --node %3'.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>DDS Security: %1 was not issued by this centre's identity CA (%2). Issue this node's identity with 'padrob centre pki DIR --node %3' using the centre's PKI.</source>
+        <translation>DDS Security: %1 was not issued by this centre's identity CA (%2). Issue this node's identity with 'padrob centre pki DIR --node %3' using the centre's PKI.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>DDS Security: %1 is not valid now (expired, or this computer's clock is wrong). Check the clock, or issue a new identity for the node.</source>
+        <translation>DDS Security: %1 is not valid now (expired, or this computer's clock is wrong). Check the clock, or issue a new identity for the node.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>DDS Security: %1 is not the private key of %2. Copy the node's folder again.</source>
+        <translation>DDS Security: %1 is not the private key of %2. Copy the node's folder again.</translation>
     </message>
 </context>
 <context>
@@ -2591,7 +2705,7 @@
         <translation>Instructor: the power was cut; every valve closed</translation>
     </message>
     <message>
-        <location line="+611" />
+        <location line="+621" />
         <source>There is no drive "%1": this machine has no hydraulic drives</source>
         <translation>There is no drive "%1": this machine has no hydraulic drives</translation>
     </message>
@@ -4054,10 +4168,12 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
     </message>
     <message>
         <location line="+45" />
-        <location filename="../ide/cli/centre.cpp" line="+84" />
+        <location filename="../ide/cli/centre.cpp" line="+88" />
         <location line="+6" />
         <location line="+2" />
         <location line="+3" />
+        <location line="+3" />
+        <location line="+545" />
         <location filename="../ide/cli/export.cpp" line="+109" />
         <location filename="../ide/cli/simulate.cpp" line="+244" />
         <location filename="../ide/cli/tutorial.cpp" line="+186" />
@@ -4082,9 +4198,10 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
     </message>
     <message>
         <location line="+4" />
-        <location filename="../ide/cli/centre.cpp" line="+128" />
-        <location line="+260" />
-        <location line="+174" />
+        <location filename="../ide/cli/centre.cpp" line="-417" />
+        <location line="+261" />
+        <location line="+159" />
+        <location line="+51" />
         <location filename="../ide/cli/export.cpp" line="+12" />
         <location filename="../ide/cli/inertia.cpp" line="+204" />
         <location filename="../ide/cli/main.cpp" line="+138" />
@@ -5152,7 +5269,7 @@ Exit status: 0 the tutorial is fine (checked) or the run passed; 1 the run faile
         <translation>the tutorial has no usable demonstration (DEMO)</translation>
     </message>
     <message>
-        <location filename="../ide/cli/centre.cpp" line="-596" />
+        <location filename="../ide/cli/centre.cpp" line="-639" />
         <source>Network options (every node of a centre uses the same):
   --domain N            the centre's DDS domain, 0-232 (default 0)
   --key FILE            the centre's key (make one with 'padrob centre key FILE');
@@ -5161,6 +5278,9 @@ Exit status: 0 the tutorial is fine (checked) or the run passed; 1 the run faile
   --peer ADDRESS        discover the other computers by unicast at ADDRESS
                         (repeatable; without it, multicast)
   --loopback            this computer only (--interface 127.0.0.1 --peer 127.0.0.1)
+  --security DIR        DDS Security: authenticated, access-controlled, encrypted
+                        traffic, with the centre's PKI in DIR and this node's
+                        identity in DIR/nodes/NAME (see 'padrob centre pki')
 </source>
         <translation>Network options (every node of a centre uses the same):
   --domain N            the centre's DDS domain, 0-232 (default 0)
@@ -5170,15 +5290,18 @@ Exit status: 0 the tutorial is fine (checked) or the run passed; 1 the run faile
   --peer ADDRESS        discover the other computers by unicast at ADDRESS
                         (repeatable; without it, multicast)
   --loopback            this computer only (--interface 127.0.0.1 --peer 127.0.0.1)
+  --security DIR        DDS Security: authenticated, access-controlled, encrypted
+                        traffic, with the centre's PKI in DIR and this node's
+                        identity in DIR/nodes/NAME (see 'padrob centre pki')
 </translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+29" />
         <source>--domain must be a whole number from 0 to 232, not '%1'</source>
         <translation>--domain must be a whole number from 0 to 232, not '%1'</translation>
     </message>
     <message>
-        <location line="+49" />
+        <location line="+52" />
         <location line="+10" />
         <source>--records-server must be USER@HOST:PORT/DATABASE, not '%1'</source>
         <translation>--records-server must be USER@HOST:PORT/DATABASE, not '%1'</translation>
@@ -5267,7 +5390,7 @@ Runs until interrupted (Ctrl+C or SIGTERM), then says it is leaving.
         <translation>--records-server needs --records FILE, the station's local journal</translation>
     </message>
     <message>
-        <location line="+48" />
+        <location line="+49" />
         <source>station %1: on the centre's network (domain %2), ready
 </source>
         <translation>station %1: on the centre's network (domain %2), ready
@@ -5403,12 +5526,12 @@ Exit status: 0 done or accepted, 1 the station refused or did not answer,
     </message>
     <message>
         <location line="+36" />
-        <location line="+171" />
+        <location line="+207" />
         <source>%1 needs a number</source>
         <translation>%1 needs a number</translation>
     </message>
     <message>
-        <location line="-163" />
+        <location line="-199" />
         <source>say what to do: list, watch or send</source>
         <translation>say what to do: list, watch or send</translation>
     </message>
@@ -5428,7 +5551,7 @@ Exit status: 0 done or accepted, 1 the station refused or did not answer,
         <translation>send needs the centre's key (--key FILE)</translation>
     </message>
     <message>
-        <location line="+29" />
+        <location line="+30" />
         <source>no station answered
 </source>
         <translation>no station answered
@@ -5476,6 +5599,25 @@ Exit status: 0 done or accepted, 1 the station refused or did not answer,
         <translation>give the secret on standard input (one line)</translation>
     </message>
     <message>
+        <location line="+20" />
+        <source>expected: padrob centre pki DIR [--node NAME]...</source>
+        <translation>expected: padrob centre pki DIR [--node NAME]...</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>new centre PKI in %1 (identity CA, permissions CA, signed governance)
+</source>
+        <translation>new centre PKI in %1 (identity CA, permissions CA, signed governance)
+</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>identity and permissions of node %1 in %2
+</source>
+        <translation>identity and permissions of node %1 in %2
+</translation>
+    </message>
+    <message>
         <location line="+21" />
         <source>--stations needs a whole number from 1 to 64</source>
         <translation>--stations needs a whole number from 1 to 64</translation>
@@ -5486,7 +5628,7 @@ Exit status: 0 done or accepted, 1 the station refused or did not answer,
         <translation>no tutorial file %1 (run from Padrob's folder, or give --tutorial FILE)</translation>
     </message>
     <message>
-        <location line="+58" />
+        <location line="+81" />
         <source>only %1 of %2 stations were heard</source>
         <translation>only %1 of %2 stations were heard</translation>
     </message>
@@ -5519,10 +5661,11 @@ Exit status: 0 done or accepted, 1 the station refused or did not answer,
 </translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+15" />
         <source>Usage: padrob centre key FILE
        padrob centre seal --key FILE &lt; SECRET
        padrob centre bench [--stations N] [--seconds S] [--tutorial FILE] [--json]
+       padrob centre pki DIR [--node NAME]...
 
 key: makes a new centre key (32 random bytes) in FILE, readable by its owner only.
 Copy it to every station and instructor of the centre (padrob station --key,
@@ -5536,10 +5679,17 @@ bench: starts N headless stations (default 16) on this computer, each running th
 tutorial's demonstration in real time and streaming its state at 60 Hz, and measures
 at one instructor the state rate, the latency from station to instructor and the CPU
 used (docs/performance.md).
+
+pki: makes the centre's PKI for DDS Security in DIR (an identity CA, a permissions
+CA and the signed governance document); with --node NAME, issues node NAME's
+identity and permissions (valid 10 years) in DIR/nodes/NAME. Copy to each node
+identity_ca.pem, permissions_ca.pem, governance.p7s and its nodes/NAME folder,
+never the .key files of the CAs; then run it with --security DIR.
 </source>
         <translation>Usage: padrob centre key FILE
        padrob centre seal --key FILE &lt; SECRET
        padrob centre bench [--stations N] [--seconds S] [--tutorial FILE] [--json]
+       padrob centre pki DIR [--node NAME]...
 
 key: makes a new centre key (32 random bytes) in FILE, readable by its owner only.
 Copy it to every station and instructor of the centre (padrob station --key,
@@ -5553,10 +5703,16 @@ bench: starts N headless stations (default 16) on this computer, each running th
 tutorial's demonstration in real time and streaming its state at 60 Hz, and measures
 at one instructor the state rate, the latency from station to instructor and the CPU
 used (docs/performance.md).
+
+pki: makes the centre's PKI for DDS Security in DIR (an identity CA, a permissions
+CA and the signed governance document); with --node NAME, issues node NAME's
+identity and permissions (valid 10 years) in DIR/nodes/NAME. Copy to each node
+identity_ca.pem, permissions_ca.pem, governance.p7s and its nodes/NAME folder,
+never the .key files of the CAs; then run it with --security DIR.
 </translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+25" />
         <source>expected: padrob centre key FILE</source>
         <translation>expected: padrob centre key FILE</translation>
     </message>
@@ -8935,12 +9091,12 @@ Id: %3</translation>
         <translation>The trainer's PIN:</translation>
     </message>
     <message>
-        <location line="+341" />
+        <location line="+347" />
         <source>This tutorial cannot be loaded.</source>
         <translation>This tutorial cannot be loaded.</translation>
     </message>
     <message>
-        <location line="-192" />
+        <location line="-198" />
         <source>Guest</source>
         <translation>Guest</translation>
     </message>
@@ -8970,7 +9126,7 @@ Id: %3</translation>
         <translation>The trainee records: operators, attempts, progress (for the trainer).</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+12" />
         <source>Open</source>
         <translation>Open</translation>
     </message>
@@ -9043,13 +9199,13 @@ Id: %3</translation>
         <location line="+19" />
         <location line="+43" />
         <location line="+32" />
-        <location line="+621" />
+        <location line="+687" />
         <location line="+23" />
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location line="-692" />
+        <location line="-758" />
         <source>Speed:</source>
         <translation>Speed:</translation>
     </message>
@@ -9066,9 +9222,9 @@ Id: %3</translation>
     <message>
         <location line="-29" />
         <location line="+43" />
-        <location line="+251" />
+        <location line="+316" />
         <location line="+19" />
-        <location line="+118" />
+        <location line="+119" />
         <location line="+265" />
         <location line="+23" />
         <location line="+77" />
@@ -9076,7 +9232,7 @@ Id: %3</translation>
         <translation>Play</translation>
     </message>
     <message>
-        <location line="-1417" />
+        <location line="-1489" />
         <source>OK</source>
         <translation>OK</translation>
     </message>
@@ -9086,7 +9242,7 @@ Id: %3</translation>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location line="+788" />
+        <location line="+800" />
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc or Stop ends the attempt.</translation>
     </message>
@@ -9111,7 +9267,22 @@ Id: %3</translation>
         <translation>Stop</translation>
     </message>
     <message>
-        <location line="+164" />
+        <location line="+86" />
+        <source>On the centre's network as %1</source>
+        <translation>On the centre's network as %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>On the centre's network as %1, but without the centre's key: the instructor's commands are refused (%2)</source>
+        <translation>On the centre's network as %1, but without the centre's key: the instructor's commands are refused (%2)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Not on the centre's network: %1</source>
+        <translation>Not on the centre's network: %1</translation>
+    </message>
+    <message>
+        <location line="+132" />
         <source>%1 s of %2 s</source>
         <translation>%1 s of %2 s</translation>
     </message>
@@ -9167,6 +9338,11 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+8" />
+        <source>Paused by the instructor</source>
+        <translation>Paused by the instructor</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Overload: a relief valve is open</source>
         <translation>Overload: a relief valve is open</translation>
     </message>
@@ -9447,6 +9623,19 @@ Id: %3</translation>
     </message>
 </context>
 <context>
+    <name>studio::TrainStation</name>
+    <message>
+        <location filename="../ide/studio/centre/train_station.cpp" line="+94" />
+        <source>no key file was given (--centre-key)</source>
+        <translation>no key file was given (--centre-key)</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>DDS refused to join the domain</source>
+        <translation>DDS refused to join the domain</translation>
+    </message>
+</context>
+<context>
     <name>studio::Viewport</name>
     <message>
         <location filename="../ide/studio/view/scene_geometry.cpp" line="+158" />
@@ -9526,7 +9715,7 @@ Id: %3</translation>
 <context>
     <name>studio::main</name>
     <message>
-        <location filename="../ide/studio/main.cpp" line="+55" />
+        <location filename="../ide/studio/main.cpp" line="+58" />
         <source>Padrob Studio: write a machine's model, simulate it in real time and drive it from the operator's devices.</source>
         <translation>Padrob Studio: write a machine's model, simulate it in real time and drive it from the operator's devices.</translation>
     </message>
@@ -9542,12 +9731,12 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+3" />
-        <location line="+50" />
+        <location line="+51" />
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location line="-47" />
+        <location line="-48" />
         <source>Measure instead of working, then quit: the start-up time, N frames of a 1920x1080 window paced at 60 Hz and N back to back, with one view and with three, the solver's step periods meanwhile, and the latency of 60 key presses to the solver.</source>
         <translation>Measure instead of working, then quit: the start-up time, N frames of a 1920x1080 window paced at 60 Hz and N back to back, with one view and with three, the solver's step periods meanwhile, and the latency of 60 key presses to the solver.</translation>
     </message>
@@ -9577,7 +9766,22 @@ Id: %3</translation>
         <translation>The language of the application and the tutorials (es or en).</translation>
     </message>
     <message>
-        <location line="+45" />
+        <location line="+21" />
+        <source>With --instructor or --station-name: the centre's key, which signs the commands (without it the instructor only watches and the station refuses every command).</source>
+        <translation>With --instructor or --station-name: the centre's key, which signs the commands (without it the instructor only watches and the station refuses every command).</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>Make the Train workspace a station of the training centre named NAME (unique in the centre): it publishes its attempt and obeys the instructor's signed commands.</source>
+        <translation>Make the Train workspace a station of the training centre named NAME (unique in the centre): it publishes its attempt and obeys the instructor's signed commands.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>NAME</source>
+        <translation>NAME</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>--lang must be es or en.</source>
         <translation>--lang must be es or en.</translation>
     </message>
@@ -9587,7 +9791,7 @@ Id: %3</translation>
         <translation>--bench-frames needs a number of frames (1 or more) and --views 1 or 3.</translation>
     </message>
     <message>
-        <location line="-51" />
+        <location line="-58" />
         <source>Be a display node of the training centre: show STATION's machine from its operator's seat, driven by its state stream.</source>
         <translation>Be a display node of the training centre: show STATION's machine from its operator's seat, driven by its state stream.</translation>
     </message>
@@ -9607,12 +9811,7 @@ Id: %3</translation>
         <translation>Be the instructor's station of the training centre: watch the stations and command them.</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>With --instructor: the centre's key, which signs the commands (without it the instructor only watches).</source>
-        <translation>With --instructor: the centre's key, which signs the commands (without it the instructor only watches).</translation>
-    </message>
-    <message>
-        <location line="+5" />
+        <location line="+10" />
         <source>The training centre's DDS domain, 0-232 (default 0).</source>
         <translation>The training centre's DDS domain, 0-232 (default 0).</translation>
     </message>
@@ -9642,12 +9841,17 @@ Id: %3</translation>
         <translation>ADDRESS</translation>
     </message>
     <message>
-        <location line="+44" />
+        <location line="+51" />
         <source>--domain must be a whole number from 0 to 232.</source>
         <translation>--domain must be a whole number from 0 to 232.</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+10" />
+        <source>--station-name needs a name.</source>
+        <translation>--station-name needs a name.</translation>
+    </message>
+    <message>
+        <location line="+9" />
         <source>--view must be left, centre or right.</source>
         <translation>--view must be left, centre or right.</translation>
     </message>

@@ -76,17 +76,32 @@
 <context>
     <name>CentreBus</name>
     <message>
-        <location filename="../trainer/centre/bus.cpp" line="+160" />
+        <location filename="../trainer/centre/bus.cpp" line="+207" />
         <source>The centre's DDS domain must be a number from 0 to 232 (it is %1).</source>
         <translation>El dominio DDS del centro debe ser un número de 0 a 232 (es %1).</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+5" />
+        <source>DDS Security needs this node's name (--name), made of letters, digits and - _ . @, not '%1'.</source>
+        <translation>DDS Security necesita el nombre de este nodo (--name), hecho de letras, dígitos y - _ . @, no '%1'.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>DDS Security covers the domains 0 to 230: choose one of them for the centre (it is %1).</source>
+        <translation>DDS Security abarca los dominios 0 a 230: elija uno de ellos para el centro (es %1).</translation>
+    </message>
+    <message>
+        <location line="+23" />
         <source>Could not join the centre's network (DDS domain %1): %2. Check the centre's network interfaces and peers.</source>
         <translation>No se pudo entrar a la red del centro (dominio DDS %1): %2. Revise las interfaces de red y los pares del centro.</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+19" />
+        <source>DDS Security refused node %1's identity or permissions in %2 (%3). Check that the node's files and the centre's identity_ca.pem, permissions_ca.pem and governance.p7s come from the same 'padrob centre pki', and that the security plugins of Cyclone DDS are installed.</source>
+        <translation>DDS Security rechazó la identidad o los permisos del nodo %1 en %2 (%3). Revise que los archivos del nodo y los identity_ca.pem, permissions_ca.pem y governance.p7s del centro vengan del mismo 'padrob centre pki', y que los complementos de seguridad de Cyclone DDS estén instalados.</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>Could not join the centre's network (DDS domain %1): %2.</source>
         <translation>No se pudo entrar a la red del centro (dominio DDS %1): %2.</translation>
     </message>
@@ -123,6 +138,105 @@
         <location line="+9" />
         <source>Cannot write the centre's key file %1: %2.</source>
         <translation>No se puede escribir el archivo de clave del centro %1: %2.</translation>
+    </message>
+</context>
+<context>
+    <name>CentrePki</name>
+    <message>
+        <location filename="../trainer/centre/pki.cpp" line="+51" />
+        <source>%1 exists already: a PKI file is never replaced (remove it first if you mean to).</source>
+        <translation>%1 ya existe: un archivo de la PKI nunca se reemplaza (bórrelo antes si es lo que quiere).</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Could not write %1: %2.</source>
+        <translation>No se pudo escribir %1: %2.</translation>
+    </message>
+    <message>
+        <location line="+156" />
+        <source>OpenSSL could not make %1.</source>
+        <translation>OpenSSL no pudo crear %1.</translation>
+    </message>
+    <message>
+        <location line="+20" />
+        <source>%1 holds a centre's PKI already: it is never replaced.</source>
+        <translation>%1 ya contiene la PKI de un centro: nunca se reemplaza.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <location line="+48" />
+        <source>Could not make the folder %1.</source>
+        <translation>No se pudo crear la carpeta %1.</translation>
+    </message>
+    <message>
+        <location line="-43" />
+        <source>the CAs' keys</source>
+        <translation>las claves de las CA</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the CAs' certificates</source>
+        <translation>los certificados de las CA</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the signed governance document</source>
+        <translation>el documento de gobernanza firmado</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>'%1' cannot be a node's name in the centre's PKI: use letters, digits and - _ . @ (up to 64).</source>
+        <translation>'%1' no puede ser el nombre de un nodo en la PKI del centro: use letras, dígitos y - _ . @ (hasta 64).</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>%1 has no centre PKI (identity_ca.pem/.key, permissions_ca.pem/.key): make it with 'padrob centre pki %1'.</source>
+        <translation>%1 no tiene PKI del centro (identity_ca.pem/.key, permissions_ca.pem/.key): créela con 'padrob centre pki %1'.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Node %1 has an identity already in %2: it is never replaced.</source>
+        <translation>El nodo %1 ya tiene una identidad en %2: nunca se reemplaza.</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>the node's certificate</source>
+        <translation>el certificado del nodo</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the signed permissions document</source>
+        <translation>el documento de permisos firmado</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>DDS Security: %1 is missing. Issue this node's identity with 'padrob centre pki %2 --node %3' on the computer that holds the centre's PKI, and copy the files here.</source>
+        <translation>DDS Security: falta %1. Emita la identidad de este nodo con 'padrob centre pki %2 --node %3' en el computador que guarda la PKI del centro, y copie aquí los archivos.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>DDS Security: %1 is not a certificate. Copy the centre's identity_ca.pem again.</source>
+        <translation>DDS Security: %1 no es un certificado. Copie de nuevo el identity_ca.pem del centro.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>DDS Security: %1 is not a certificate. Issue this node's identity again with 'padrob centre pki %2 --node %3'.</source>
+        <translation>DDS Security: %1 no es un certificado. Emita de nuevo la identidad de este nodo con 'padrob centre pki %2 --node %3'.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>DDS Security: %1 was not issued by this centre's identity CA (%2). Issue this node's identity with 'padrob centre pki DIR --node %3' using the centre's PKI.</source>
+        <translation>DDS Security: %1 no lo emitió la CA de identidad de este centro (%2). Emita la identidad de este nodo con 'padrob centre pki CARPETA --node %3' usando la PKI del centro.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>DDS Security: %1 is not valid now (expired, or this computer's clock is wrong). Check the clock, or issue a new identity for the node.</source>
+        <translation>DDS Security: %1 no es válido ahora (venció, o el reloj de este computador está mal). Revise el reloj, o emita una nueva identidad para el nodo.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>DDS Security: %1 is not the private key of %2. Copy the node's folder again.</source>
+        <translation>DDS Security: %1 no es la clave privada de %2. Copie de nuevo la carpeta del nodo.</translation>
     </message>
 </context>
 <context>
@@ -2591,7 +2705,7 @@
         <translation>Instructor: se cortó la energía; todas las válvulas se cerraron</translation>
     </message>
     <message>
-        <location line="+611" />
+        <location line="+621" />
         <source>There is no drive "%1": this machine has no hydraulic drives</source>
         <translation>No hay un accionamiento "%1": esta máquina no tiene accionamientos hidráulicos</translation>
     </message>
@@ -4057,10 +4171,12 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
     </message>
     <message>
         <location line="+45" />
-        <location filename="../ide/cli/centre.cpp" line="+84" />
+        <location filename="../ide/cli/centre.cpp" line="+88" />
         <location line="+6" />
         <location line="+2" />
         <location line="+3" />
+        <location line="+3" />
+        <location line="+545" />
         <location filename="../ide/cli/export.cpp" line="+109" />
         <location filename="../ide/cli/simulate.cpp" line="+244" />
         <location filename="../ide/cli/tutorial.cpp" line="+186" />
@@ -4085,9 +4201,10 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
     </message>
     <message>
         <location line="+4" />
-        <location filename="../ide/cli/centre.cpp" line="+128" />
-        <location line="+260" />
-        <location line="+174" />
+        <location filename="../ide/cli/centre.cpp" line="-417" />
+        <location line="+261" />
+        <location line="+159" />
+        <location line="+51" />
         <location filename="../ide/cli/export.cpp" line="+12" />
         <location filename="../ide/cli/inertia.cpp" line="+204" />
         <location filename="../ide/cli/main.cpp" line="+138" />
@@ -5172,7 +5289,7 @@ registro ilegible.
         <translation>el tutorial no tiene una demostración utilizable (DEMO)</translation>
     </message>
     <message>
-        <location filename="../ide/cli/centre.cpp" line="-596" />
+        <location filename="../ide/cli/centre.cpp" line="-639" />
         <source>Network options (every node of a centre uses the same):
   --domain N            the centre's DDS domain, 0-232 (default 0)
   --key FILE            the centre's key (make one with 'padrob centre key FILE');
@@ -5181,6 +5298,9 @@ registro ilegible.
   --peer ADDRESS        discover the other computers by unicast at ADDRESS
                         (repeatable; without it, multicast)
   --loopback            this computer only (--interface 127.0.0.1 --peer 127.0.0.1)
+  --security DIR        DDS Security: authenticated, access-controlled, encrypted
+                        traffic, with the centre's PKI in DIR and this node's
+                        identity in DIR/nodes/NAME (see 'padrob centre pki')
 </source>
         <translation>Opciones de red (todos los nodos de un centro usan las mismas):
   --domain N            el dominio DDS del centro, 0-232 (por omisión 0)
@@ -5190,15 +5310,18 @@ registro ilegible.
   --peer DIRECCIÓN      descubre los otros computadores por unicast en DIRECCIÓN
                         (repetible; sin ella, multicast)
   --loopback            solo este computador (--interface 127.0.0.1 --peer 127.0.0.1)
+  --security CARPETA    DDS Security: tráfico autenticado, con control de acceso y
+                        cifrado, con la PKI del centro en CARPETA y la identidad de
+                        este nodo en CARPETA/nodes/NOMBRE (vea 'padrob centre pki')
 </translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+29" />
         <source>--domain must be a whole number from 0 to 232, not '%1'</source>
         <translation>--domain debe ser un número entero de 0 a 232, no '%1'</translation>
     </message>
     <message>
-        <location line="+49" />
+        <location line="+52" />
         <location line="+10" />
         <source>--records-server must be USER@HOST:PORT/DATABASE, not '%1'</source>
         <translation>--records-server debe ser USUARIO@SERVIDOR:PUERTO/BASE, no '%1'</translation>
@@ -5290,7 +5413,7 @@ entonces avisa que se va.
         <translation>--records-server necesita --records ARCHIVO, el registro local de la estación</translation>
     </message>
     <message>
-        <location line="+48" />
+        <location line="+49" />
         <source>station %1: on the centre's network (domain %2), ready
 </source>
         <translation>estación %1: en la red del centro (dominio %2), lista
@@ -5427,12 +5550,12 @@ Estado de salida: 0 hecho o aceptado, 1 la estación rechazó o no respondió,
     </message>
     <message>
         <location line="+36" />
-        <location line="+171" />
+        <location line="+207" />
         <source>%1 needs a number</source>
         <translation>%1 necesita un número</translation>
     </message>
     <message>
-        <location line="-163" />
+        <location line="-199" />
         <source>say what to do: list, watch or send</source>
         <translation>indique qué hacer: list, watch o send</translation>
     </message>
@@ -5452,7 +5575,7 @@ Estado de salida: 0 hecho o aceptado, 1 la estación rechazó o no respondió,
         <translation>send necesita la clave del centro (--key ARCHIVO)</translation>
     </message>
     <message>
-        <location line="+29" />
+        <location line="+30" />
         <source>no station answered
 </source>
         <translation>ninguna estación respondió
@@ -5500,6 +5623,25 @@ Estado de salida: 0 hecho o aceptado, 1 la estación rechazó o no respondió,
         <translation>entregue el secreto por la entrada estándar (una línea)</translation>
     </message>
     <message>
+        <location line="+20" />
+        <source>expected: padrob centre pki DIR [--node NAME]...</source>
+        <translation>se esperaba: padrob centre pki CARPETA [--node NOMBRE]...</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>new centre PKI in %1 (identity CA, permissions CA, signed governance)
+</source>
+        <translation>nueva PKI del centro en %1 (CA de identidad, CA de permisos, gobernanza firmada)
+</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>identity and permissions of node %1 in %2
+</source>
+        <translation>identidad y permisos del nodo %1 en %2
+</translation>
+    </message>
+    <message>
         <location line="+21" />
         <source>--stations needs a whole number from 1 to 64</source>
         <translation>--stations necesita un número entero de 1 a 64</translation>
@@ -5510,7 +5652,7 @@ Estado de salida: 0 hecho o aceptado, 1 la estación rechazó o no respondió,
         <translation>no existe el archivo de tutorial %1 (ejecute desde la carpeta de Padrob, o use --tutorial ARCHIVO)</translation>
     </message>
     <message>
-        <location line="+58" />
+        <location line="+81" />
         <source>only %1 of %2 stations were heard</source>
         <translation>solo se oyeron %1 de %2 estaciones</translation>
     </message>
@@ -5543,10 +5685,11 @@ Estado de salida: 0 hecho o aceptado, 1 la estación rechazó o no respondió,
 </translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+15" />
         <source>Usage: padrob centre key FILE
        padrob centre seal --key FILE &lt; SECRET
        padrob centre bench [--stations N] [--seconds S] [--tutorial FILE] [--json]
+       padrob centre pki DIR [--node NAME]...
 
 key: makes a new centre key (32 random bytes) in FILE, readable by its owner only.
 Copy it to every station and instructor of the centre (padrob station --key,
@@ -5560,10 +5703,17 @@ bench: starts N headless stations (default 16) on this computer, each running th
 tutorial's demonstration in real time and streaming its state at 60 Hz, and measures
 at one instructor the state rate, the latency from station to instructor and the CPU
 used (docs/performance.md).
+
+pki: makes the centre's PKI for DDS Security in DIR (an identity CA, a permissions
+CA and the signed governance document); with --node NAME, issues node NAME's
+identity and permissions (valid 10 years) in DIR/nodes/NAME. Copy to each node
+identity_ca.pem, permissions_ca.pem, governance.p7s and its nodes/NAME folder,
+never the .key files of the CAs; then run it with --security DIR.
 </source>
         <translation>Uso: padrob centre key ARCHIVO
        padrob centre seal --key ARCHIVO &lt; SECRETO
        padrob centre bench [--stations N] [--seconds S] [--tutorial ARCHIVO] [--json]
+       padrob centre pki CARPETA [--node NOMBRE]...
 
 key: crea una nueva clave del centro (32 bytes al azar) en ARCHIVO, legible solo por
 su dueño. Cópiela a cada estación e instructor del centro (padrob station --key,
@@ -5578,10 +5728,16 @@ bench: inicia N estaciones sin ventana (por omisión 16) en este computador, cad
 ejecutando la demostración del tutorial en tiempo real y transmitiendo su estado a
 60 Hz, y mide en un instructor la frecuencia de estados, la latencia de estación a
 instructor y la CPU usada (docs/performance.md).
+
+pki: crea la PKI del centro para DDS Security en CARPETA (una CA de identidad, una CA
+de permisos y el documento de gobernanza firmado); con --node NOMBRE, emite la
+identidad y los permisos del nodo NOMBRE (válidos 10 años) en CARPETA/nodes/NOMBRE.
+Copie a cada nodo identity_ca.pem, permissions_ca.pem, governance.p7s y su carpeta
+nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security CARPETA.
 </translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+25" />
         <source>expected: padrob centre key FILE</source>
         <translation>se esperaba: padrob centre key ARCHIVO</translation>
     </message>
@@ -8960,12 +9116,12 @@ Id: %3</translation>
         <translation>El PIN del instructor:</translation>
     </message>
     <message>
-        <location line="+341" />
+        <location line="+347" />
         <source>This tutorial cannot be loaded.</source>
         <translation>Este tutorial no se puede cargar.</translation>
     </message>
     <message>
-        <location line="-192" />
+        <location line="-198" />
         <source>Guest</source>
         <translation>Invitado</translation>
     </message>
@@ -8995,7 +9151,7 @@ Id: %3</translation>
         <translation>Los registros de aprendices: operadores, intentos, avance (para el instructor).</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+12" />
         <source>Open</source>
         <translation>Abrir</translation>
     </message>
@@ -9068,13 +9224,13 @@ Id: %3</translation>
         <location line="+19" />
         <location line="+43" />
         <location line="+32" />
-        <location line="+621" />
+        <location line="+687" />
         <location line="+23" />
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
     <message>
-        <location line="-692" />
+        <location line="-758" />
         <source>Speed:</source>
         <translation>Velocidad:</translation>
     </message>
@@ -9091,9 +9247,9 @@ Id: %3</translation>
     <message>
         <location line="-29" />
         <location line="+43" />
-        <location line="+251" />
+        <location line="+316" />
         <location line="+19" />
-        <location line="+118" />
+        <location line="+119" />
         <location line="+265" />
         <location line="+23" />
         <location line="+77" />
@@ -9101,7 +9257,7 @@ Id: %3</translation>
         <translation>Reproducir</translation>
     </message>
     <message>
-        <location line="-1417" />
+        <location line="-1489" />
         <source>OK</source>
         <translation>Aceptar</translation>
     </message>
@@ -9111,7 +9267,7 @@ Id: %3</translation>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location line="+788" />
+        <location line="+800" />
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc o Detener termina el intento.</translation>
     </message>
@@ -9136,7 +9292,22 @@ Id: %3</translation>
         <translation>Detener</translation>
     </message>
     <message>
-        <location line="+164" />
+        <location line="+86" />
+        <source>On the centre's network as %1</source>
+        <translation>En la red del centro como %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>On the centre's network as %1, but without the centre's key: the instructor's commands are refused (%2)</source>
+        <translation>En la red del centro como %1, pero sin la clave del centro: se rechazan las órdenes del instructor (%2)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Not on the centre's network: %1</source>
+        <translation>Fuera de la red del centro: %1</translation>
+    </message>
+    <message>
+        <location line="+132" />
         <source>%1 s of %2 s</source>
         <translation>%1 s de %2 s</translation>
     </message>
@@ -9192,6 +9363,11 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+8" />
+        <source>Paused by the instructor</source>
+        <translation>En pausa por el instructor</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Overload: a relief valve is open</source>
         <translation>Sobrecarga: una válvula de alivio está abierta</translation>
     </message>
@@ -9472,6 +9648,19 @@ Id: %3</translation>
     </message>
 </context>
 <context>
+    <name>studio::TrainStation</name>
+    <message>
+        <location filename="../ide/studio/centre/train_station.cpp" line="+94" />
+        <source>no key file was given (--centre-key)</source>
+        <translation>no se indicó un archivo de clave (--centre-key)</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>DDS refused to join the domain</source>
+        <translation>DDS no permitió entrar al dominio</translation>
+    </message>
+</context>
+<context>
     <name>studio::Viewport</name>
     <message>
         <location filename="../ide/studio/view/scene_geometry.cpp" line="+158" />
@@ -9551,7 +9740,7 @@ Id: %3</translation>
 <context>
     <name>studio::main</name>
     <message>
-        <location filename="../ide/studio/main.cpp" line="+55" />
+        <location filename="../ide/studio/main.cpp" line="+58" />
         <source>Padrob Studio: write a machine's model, simulate it in real time and drive it from the operator's devices.</source>
         <translation>Padrob Studio: escriba el modelo de una máquina, simúlelo en tiempo real y opérelo desde los dispositivos del operador.</translation>
     </message>
@@ -9567,12 +9756,12 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+3" />
-        <location line="+50" />
+        <location line="+51" />
         <source>FILE</source>
         <translation>ARCHIVO</translation>
     </message>
     <message>
-        <location line="-47" />
+        <location line="-48" />
         <source>Measure instead of working, then quit: the start-up time, N frames of a 1920x1080 window paced at 60 Hz and N back to back, with one view and with three, the solver's step periods meanwhile, and the latency of 60 key presses to the solver.</source>
         <translation>Medir en vez de trabajar, y luego salir: el tiempo de inicio, N cuadros de una ventana de 1920x1080 a 60 Hz y N seguidos, con una vista y con tres, los periodos de paso del solver mientras tanto, y la latencia de 60 pulsaciones de tecla hasta el solver.</translation>
     </message>
@@ -9602,7 +9791,22 @@ Id: %3</translation>
         <translation>El idioma de la aplicación y de los tutoriales (es o en).</translation>
     </message>
     <message>
-        <location line="+45" />
+        <location line="+21" />
+        <source>With --instructor or --station-name: the centre's key, which signs the commands (without it the instructor only watches and the station refuses every command).</source>
+        <translation>Con --instructor o --station-name: la clave del centro, que firma las órdenes (sin ella el instructor solo observa y el puesto rechaza toda orden).</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>Make the Train workspace a station of the training centre named NAME (unique in the centre): it publishes its attempt and obeys the instructor's signed commands.</source>
+        <translation>Convierte el espacio Entrenar en un puesto del centro de entrenamiento llamado NOMBRE (único en el centro): publica su intento y obedece las órdenes firmadas del instructor.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>NAME</source>
+        <translation>NOMBRE</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>--lang must be es or en.</source>
         <translation>--lang debe ser es o en.</translation>
     </message>
@@ -9612,7 +9816,7 @@ Id: %3</translation>
         <translation>--bench-frames necesita un número de cuadros (1 o más) y --views 1 o 3.</translation>
     </message>
     <message>
-        <location line="-51" />
+        <location line="-58" />
         <source>Be a display node of the training centre: show STATION's machine from its operator's seat, driven by its state stream.</source>
         <translation>Ser una pantalla del centro de entrenamiento: mostrar la máquina de PUESTO desde el asiento de su operador, movida por su flujo de estado.</translation>
     </message>
@@ -9632,12 +9836,7 @@ Id: %3</translation>
         <translation>Ser el puesto del instructor del centro de entrenamiento: observar los puestos y darles órdenes.</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>With --instructor: the centre's key, which signs the commands (without it the instructor only watches).</source>
-        <translation>Con --instructor: la clave del centro, que firma las órdenes (sin ella el instructor solo observa).</translation>
-    </message>
-    <message>
-        <location line="+5" />
+        <location line="+10" />
         <source>The training centre's DDS domain, 0-232 (default 0).</source>
         <translation>El dominio DDS del centro de entrenamiento, 0-232 (por defecto 0).</translation>
     </message>
@@ -9667,12 +9866,17 @@ Id: %3</translation>
         <translation>DIRECCIÓN</translation>
     </message>
     <message>
-        <location line="+44" />
+        <location line="+51" />
         <source>--domain must be a whole number from 0 to 232.</source>
         <translation>--domain debe ser un número entero de 0 a 232.</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+10" />
+        <source>--station-name needs a name.</source>
+        <translation>--station-name necesita un nombre.</translation>
+    </message>
+    <message>
+        <location line="+9" />
         <source>--view must be left, centre or right.</source>
         <translation>--view debe ser left, centre o right.</translation>
     </message>

@@ -9,6 +9,7 @@
 #include "ide/i18n/language.h"
 #include "trainer/centre/bus.h"
 #include "trainer/centre/instructor_node.h"
+#include "trainer/centre/pki.h"
 #include "trainer/centre/signing.h"
 #include "trainer/centre/station_node.h"
 #include "trainer/records/records_db.h"
@@ -65,7 +66,10 @@ std::string netHelp()
                            "  --interface NAME      the network interface to use (name or address; repeatable)\n"
                            "  --peer ADDRESS        discover the other computers by unicast at ADDRESS\n"
                            "                        (repeatable; without it, multicast)\n"
-                           "  --loopback            this computer only (--interface 127.0.0.1 --peer 127.0.0.1)\n");
+                           "  --loopback            this computer only (--interface 127.0.0.1 --peer 127.0.0.1)\n"
+                           "  --security DIR        DDS Security: authenticated, access-controlled, encrypted\n"
+                           "                        traffic, with the centre's PKI in DIR and this node's\n"
+                           "                        identity in DIR/nodes/NAME (see 'padrob centre pki')\n");
 }
 
 /// Takes the network options out of `args`. Returns an error message ("" fine).
@@ -94,6 +98,9 @@ std::string takeNet(std::vector<std::string>& args, NetOptions& out)
         } else if (a == "--peer") {
             if (!value(v)) return fill(trStd("padrob", "%1 needs a value"), {a});
             out.bus.peers.append(QString::fromStdString(v));
+        } else if (a == "--security") {
+            if (!value(v)) return fill(trStd("padrob", "%1 needs a value"), {a});
+            out.bus.securityDir = QString::fromStdString(v);
         } else if (a == "--loopback") {
             out.bus.interfaces = {QStringLiteral("127.0.0.1")};
             out.bus.peers = {QStringLiteral("127.0.0.1")};
@@ -298,6 +305,7 @@ int runStation(const std::vector<std::string>& argsIn)
             return latest->second;
         };
     }
+    net.bus.node = QString::fromStdString(o.name);
     auto bus = openBus(net, centre::TopicCommand);
     if (!bus) return kExitUsage;
     const std::string name = o.name;
@@ -499,6 +507,7 @@ int runInstructor(const std::vector<std::string>& argsIn)
             return kExitUsage;
         }
     }
+    net.bus.node = QString::fromStdString(name);
     auto bus = openBus(net, centre::TopicAnnounce | centre::TopicState | centre::TopicEvent | centre::TopicReply);
     if (!bus) return kExitUsage;
     centre::InstructorNode node(*bus, name, key);
@@ -628,6 +637,41 @@ int runCentreSeal(std::vector<std::string> args)
     return kExitOk;
 }
 
+/// padrob centre pki DIR [--node NAME]...: the centre's PKI for DDS Security, and node identities.
+int runCentrePki(const std::vector<std::string>& args)
+{
+    std::string dir;
+    std::vector<std::string> nodes;
+    for (std::size_t i = 1; i < args.size(); ++i) {
+        if (args[i] == "--node") {
+            if (i + 1 >= args.size()) return usageError("centre", fill(trStd("padrob", "%1 needs a value"), {args[i]}));
+            nodes.push_back(args[++i]);
+        } else if (args[i].rfind("--", 0) == 0 || !dir.empty()) {
+            return usageError("centre", fill(trStd("padrob", "unknown option '%1'"), {args[i]}));
+        } else {
+            dir = args[i];
+        }
+    }
+    if (dir.empty()) return usageError("centre", trStd("padrob", "expected: padrob centre pki DIR [--node NAME]..."));
+    const QString qdir = QString::fromStdString(dir);
+    QString error;
+    if (nodes.empty() || !QFileInfo::exists(qdir + "/identity_ca.pem")) {
+        if (!centre::pki::createCentre(qdir, &error)) {
+            printErr("padrob centre: " + error.toStdString() + "\n");
+            return kExitUsage;
+        }
+        printOut(fill(trStd("padrob", "new centre PKI in %1 (identity CA, permissions CA, signed governance)\n"), {dir}));
+    }
+    for (const std::string& n : nodes) {
+        if (!centre::pki::issueNode(qdir, QString::fromStdString(n), &error)) {
+            printErr("padrob centre: " + error.toStdString() + "\n");
+            return kExitUsage;
+        }
+        printOut(fill(trStd("padrob", "identity and permissions of node %1 in %2\n"), {n, dir + "/nodes/" + n}));
+    }
+    return kExitOk;
+}
+
 /// padrob centre bench: N headless stations streaming to one instructor on this machine.
 int runCentreBench(std::vector<std::string> args)
 {
@@ -678,15 +722,37 @@ int runCentreBench(std::vector<std::string> args)
         printErr("padrob centre: " + error.toStdString() + "\n");
         return kExitUsage;
     }
+    const std::string prefix = "bench-" + std::to_string(QCoreApplication::applicationPid()) + "-";
+    // with DDS Security every node needs an identity: issued here for this run (the PKI's
+    // CA keys must be in the folder), removed at the end
+    QStringList issued;
+    auto removeIssued = [&] {
+        for (const QString& n : issued) QDir(net.bus.securityDir + "/nodes/" + n).removeRecursively();
+    };
+    if (!net.bus.securityDir.isEmpty()) {
+        for (int i = 0; i <= stations; ++i) {
+            const QString n = QString::fromStdString(prefix + (i == 0 ? std::string("instructor") : std::to_string(i)));
+            if (!centre::pki::issueNode(net.bus.securityDir, n, &error)) {
+                printErr("padrob centre: " + error.toStdString() + "\n");
+                removeIssued();
+                return kExitUsage;
+            }
+            issued << n;
+        }
+    }
+    net.bus.node = QString::fromStdString(prefix + "instructor");
     auto bus = openBus(net, centre::TopicAnnounce | centre::TopicState | centre::TopicEvent | centre::TopicReply);
-    if (!bus) return kExitUsage;
+    if (!bus) {
+        removeIssued();
+        return kExitUsage;
+    }
     centre::InstructorNode node(*bus, "bench-instructor", key);
     // the stations: this same binary, each simulating the tutorial's machine in real time
     std::vector<std::unique_ptr<QProcess>> procs;
     QStringList netArgs{"--domain", QString::number(net.bus.domain), "--key", QString::fromStdString(net.keyFile)};
     for (const QString& i : net.bus.interfaces) netArgs += QStringList{"--interface", i};
     for (const QString& p : net.bus.peers) netArgs += QStringList{"--peer", p};
-    const std::string prefix = "bench-" + std::to_string(QCoreApplication::applicationPid()) + "-";
+    if (!net.bus.securityDir.isEmpty()) netArgs += QStringList{"--security", net.bus.securityDir};
     for (int i = 0; i < stations; ++i) {
         auto p = std::make_unique<QProcess>();
         p->setProcessChannelMode(QProcess::ForwardedErrorChannel);
@@ -703,6 +769,7 @@ int runCentreBench(std::vector<std::string> args)
             if (!p->waitForFinished(5000)) p->kill();
         }
         QDir(dir).removeRecursively();
+        removeIssued();
     };
     // every station heard, then each attempt started (the demonstration moves the machine)
     const double heardBy = nowS() + 30;
@@ -795,11 +862,13 @@ int runCentre(const std::vector<std::string>& args)
 {
     if (!args.empty() && args[0] == "bench") return runCentreBench(args);
     if (!args.empty() && args[0] == "seal") return runCentreSeal(args);
+    if (!args.empty() && args[0] == "pki") return runCentrePki(args);
     if (args.size() != 2 || args[0] != "key") {
         if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
             printOut(trStd("padrob", "Usage: padrob centre key FILE\n"
                                      "       padrob centre seal --key FILE < SECRET\n"
                                      "       padrob centre bench [--stations N] [--seconds S] [--tutorial FILE] [--json]\n"
+                                     "       padrob centre pki DIR [--node NAME]...\n"
                                      "\n"
                                      "key: makes a new centre key (32 random bytes) in FILE, readable by its owner only.\n"
                                      "Copy it to every station and instructor of the centre (padrob station --key,\n"
@@ -812,7 +881,13 @@ int runCentre(const std::vector<std::string>& args)
                                      "bench: starts N headless stations (default 16) on this computer, each running the\n"
                                      "tutorial's demonstration in real time and streaming its state at 60 Hz, and measures\n"
                                      "at one instructor the state rate, the latency from station to instructor and the CPU\n"
-                                     "used (docs/performance.md).\n"));
+                                     "used (docs/performance.md).\n"
+                                     "\n"
+                                     "pki: makes the centre's PKI for DDS Security in DIR (an identity CA, a permissions\n"
+                                     "CA and the signed governance document); with --node NAME, issues node NAME's\n"
+                                     "identity and permissions (valid 10 years) in DIR/nodes/NAME. Copy to each node\n"
+                                     "identity_ca.pem, permissions_ca.pem, governance.p7s and its nodes/NAME folder,\n"
+                                     "never the .key files of the CAs; then run it with --security DIR.\n"));
             return kExitOk;
         }
         return usageError("centre", trStd("padrob", "expected: padrob centre key FILE"));

@@ -7,6 +7,8 @@
 // node of the training centre (centre/display_window.h).
 // padrob-studio --instructor [--centre-key FILE] [NETWORK]: the instructor's station
 // (centre/instructor_window.h). NETWORK: --domain N, --loopback, --interface I, --peer A.
+// padrob-studio --station-name NAME --centre-key FILE [NETWORK] [MODEL]: the application,
+// its Train workspace a station of the training centre (centre/train_station.h).
 #include "ide/studio/app/frame_bench.h"
 #include "ide/studio/app/main_window.h"
 #include "ide/studio/train/train_page.h"
@@ -15,6 +17,7 @@
 #ifdef PADROB_HAVE_DDS
 #include "ide/studio/centre/display_window.h"
 #include "ide/studio/centre/instructor_window.h"
+#include "ide/studio/centre/train_station.h"
 #endif
 
 #include <QApplication>
@@ -114,8 +117,9 @@ int main(int argc, char** argv)
                                                     "the stations and command them."));
     const QCommandLineOption centreKey(
         QStringLiteral("centre-key"),
-        QCoreApplication::translate("studio::main", "With --instructor: the centre's key, which signs the "
-                                                    "commands (without it the instructor only watches)."),
+        QCoreApplication::translate("studio::main", "With --instructor or --station-name: the centre's key, which "
+                                                    "signs the commands (without it the instructor only watches "
+                                                    "and the station refuses every command)."),
         QCoreApplication::translate("studio::main", "FILE"));
     const QCommandLineOption domain(
         QStringLiteral("domain"),
@@ -134,7 +138,13 @@ int main(int argc, char** argv)
         QCoreApplication::translate("studio::main", "Find the centre's other computers by unicast at ADDRESS "
                                                     "(repeatable; without it, multicast)."),
         QCoreApplication::translate("studio::main", "ADDRESS"));
-    parser.addOptions({displayOf, viewSide, instructor, centreKey, domain, loopback, netInterface, peer});
+    const QCommandLineOption stationName(
+        QStringLiteral("station-name"),
+        QCoreApplication::translate("studio::main", "Make the Train workspace a station of the training centre "
+                                                    "named NAME (unique in the centre): it publishes its attempt "
+                                                    "and obeys the instructor's signed commands."),
+        QCoreApplication::translate("studio::main", "NAME"));
+    parser.addOptions({displayOf, viewSide, instructor, centreKey, domain, loopback, netInterface, peer, stationName});
 #endif
     parser.process(app);
     if (parser.isSet(lang) && parser.value(lang) != "es" && parser.value(lang) != "en") {
@@ -167,12 +177,13 @@ int main(int argc, char** argv)
     }
 
 #ifdef PADROB_HAVE_DDS
-    if (parser.isSet(displayOf) || parser.isSet(instructor)) {
-        const auto fail = [](const QString& message) {
-            std::fputs(qPrintable(message + QLatin1Char('\n')), stderr);
-            return 2;
-        };
-        trainer::centre::BusOptions net;
+    const auto fail = [](const QString& message) {
+        std::fputs(qPrintable(message + QLatin1Char('\n')), stderr);
+        return 2;
+    };
+    // the network options (--display-of, --instructor, --station-name)
+    trainer::centre::BusOptions net;
+    if (parser.isSet(displayOf) || parser.isSet(instructor) || parser.isSet(stationName)) {
         if (parser.isSet(domain)) {
             bool ok = false;
             net.domain = parser.value(domain).toInt(&ok);
@@ -185,6 +196,10 @@ int main(int argc, char** argv)
             net.interfaces = {QStringLiteral("127.0.0.1")};
             net.peers = {QStringLiteral("127.0.0.1")};
         }
+    }
+    if (parser.isSet(stationName) && parser.value(stationName).trimmed().isEmpty())
+        return fail(QCoreApplication::translate("studio::main", "--station-name needs a name."));
+    if (parser.isSet(displayOf) || parser.isSet(instructor)) {
         if (parser.isSet(instructor)) {
             studio::InstructorWindow window(net, parser.value(centreKey));
             window.show();
@@ -207,5 +222,17 @@ int main(int argc, char** argv)
     if (parser.isSet(operatorId)) window.trainPage()->setOperator(parser.value(operatorId));
     if (parser.isSet(trainerMode)) window.setKioskMode(true);  // shows it full screen
     else window.show();
+#ifdef PADROB_HAVE_DDS
+    // the Train workspace as a station of the centre (destroyed before the window: it withdraws)
+    std::unique_ptr<studio::TrainStation> trainStation;
+    if (parser.isSet(stationName)) {
+        window.setWorkspace(studio::MainWindow::Workspace::Train);
+        studio::TrainStationOptions o;
+        o.name = parser.value(stationName).trimmed();
+        o.keyFile = parser.value(centreKey);
+        o.network = net;
+        trainStation = studio::TrainStation::forPage(window.trainPage(), o);
+    }
+#endif
     return QApplication::exec();
 }

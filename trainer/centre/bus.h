@@ -41,6 +41,11 @@ struct BusOptions {
     /// The topics this node reads (Topic bits): a station reads only commands, a display
     /// announcements and states. Writers are made for every topic.
     unsigned reads = AllTopics;
+    /// DDS Security (authentication, access control, encryption): the centre's PKI folder
+    /// (padrob centre pki DIR) and this node's name in it (its identity in DIR/nodes/NAME).
+    /// Empty = no DDS Security: such a node neither sees nor reaches the secured ones.
+    QString securityDir;
+    QString node;
     /// Loopback only, unicast (the tests, a one-machine demonstration).
     static BusOptions loopback(int domain);
 };

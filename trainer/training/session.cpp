@@ -656,6 +656,16 @@ void TutorialSession::addEvent(TutorialEvent::Kind kind, double value, double pe
     m_result.events.push_back(std::move(e));
 }
 
+void TutorialSession::addInstructorEvent(const std::string& action, const std::string& sender)
+{
+    TutorialEvent e;
+    e.kind = TutorialEvent::Kind::Instructor;
+    e.t = time();
+    e.value = std::numeric_limits<double>::quiet_NaN();
+    e.detail = action + ":" + sender;
+    m_result.events.push_back(std::move(e));
+}
+
 void TutorialSession::end(const std::string& reason, bool completed)
 {
     if (m_result.ended) return;

@@ -187,6 +187,10 @@ public:
     /// as inject() takes it) or of worker `worker` (WorkerIn; −1: every worker who walked
     /// in); PowerCut: power is back. False with a translated `error` when there is none.
     bool clearFault(Fault::Kind kind, const std::string& drive = {}, QString* error = nullptr, int worker = -1);
+    /// Writes the instructor's action on the attempt into its events (Kind::Instructor,
+    /// detail "ACTION:SENDER": "start:desk", "pause:desk"…; no points), at the time now.
+    /// Works after the end too. Between steps, on the session's thread.
+    void addInstructorEvent(const std::string& action, const std::string& sender);
     /// The faults active now, in the order they were injected (StuckValve with the
     /// opening used, drives by their names as the events give them).
     std::vector<Fault> activeFaults() const { return m_faults; }

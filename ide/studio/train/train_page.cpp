@@ -521,6 +521,12 @@ QWidget* TrainPage::buildCourse()
     });
     connect(m_recordsButton, &QPushButton::clicked, this, &TrainPage::askRecordsPin);
     buttons->addWidget(m_recordsButton);
+    buttons->addSpacing(12);
+    auto* courseCentre = new QLabel;
+    courseCentre->setObjectName("CentreLinkCourse");
+    courseCentre->hide();
+    m_centreLabels << courseCentre;
+    buttons->addWidget(courseCentre);
     buttons->addStretch();
     m_openButton = new QPushButton;
     onLanguage([this] { m_openButton->setText(tr("Open")); });
@@ -987,6 +993,12 @@ QWidget* TrainPage::buildAttempt()
     bar->setContentsMargins(12, 6, 12, 6);
     auto* keys = new QLabel;
     bar->addWidget(keys);
+    bar->addSpacing(12);
+    auto* attemptCentre = new QLabel;
+    attemptCentre->setObjectName("CentreLink");
+    attemptCentre->hide();
+    m_centreLabels << attemptCentre;
+    bar->addWidget(attemptCentre);
     bar->addStretch();
     m_expertBox = new QCheckBox;
     m_expertBox->setObjectName("ShowExpert");
@@ -1022,6 +1034,7 @@ QWidget* TrainPage::buildAttempt()
         for (int i = 0; i < m_cameraBox->count(); ++i)
             m_cameraBox->setItemText(i, Viewport::cameraLabel(m_cameraBox->itemData(i).toString()));
         stop->setText(tr("Stop"));
+        showCentreLink();
     });
     layout->addLayout(bar);
     connect(stop, &QPushButton::clicked, this, &TrainPage::stopAttempt);
@@ -1068,6 +1081,64 @@ void TrainPage::startAttempt(std::shared_ptr<const trainer::InputLog> drive)
     m_attemptView->setFocus();
     if (m_attemptLive) emit attemptStarted(t);
     poll();
+}
+
+std::vector<std::shared_ptr<const trainer::Tutorial>> TrainPage::tutorials() const
+{
+    std::vector<std::shared_ptr<const trainer::Tutorial>> out;
+    for (const Entry& e : m_entries)
+        if (e.tutorial) out.push_back(e.tutorial);
+    return out;
+}
+
+bool TrainPage::startAttemptFor(const QString& id, const QString& operatorCode)
+{
+    const int i = entryOf(id);
+    if (i < 0 || !m_entries[std::size_t(i)].tutorial) return false;
+    if (m_screen == Screen::Records) showCourse();
+    if (operatorCode.trimmed() != m_operator) setOperator(operatorCode);
+    // the instructor decides: a stage still locked for the operator opens too
+    const bool unlocked = m_allUnlocked;
+    m_allUnlocked = true;
+    const bool open = openTutorial(id);
+    m_allUnlocked = unlocked;
+    if (!open) return false;
+    startAttempt();
+    return m_screen == Screen::Attempt && m_attemptLive;
+}
+
+void TrainPage::setCentreLink(CentreLink link, const QString& name, const QString& detail)
+{
+    m_centreLink = link;
+    m_centreName = name;
+    m_centreDetail = detail;
+    showCentreLink();
+}
+
+QString TrainPage::centreLinkText() const
+{
+    switch (m_centreLink) {
+    case CentreLink::Off: return {};
+    case CentreLink::Online: return tr("On the centre's network as %1").arg(m_centreName);
+    case CentreLink::NoKey:
+        return tr("On the centre's network as %1, but without the centre's key: the instructor's commands are "
+                  "refused (%2)")
+            .arg(m_centreName, m_centreDetail);
+    case CentreLink::Failed: return tr("Not on the centre's network: %1").arg(m_centreDetail);
+    }
+    return {};
+}
+
+void TrainPage::showCentreLink()
+{
+    const QString text = centreLinkText();
+    const bool warn = m_centreLink == CentreLink::NoKey || m_centreLink == CentreLink::Failed;
+    for (QLabel* l : m_centreLabels) {
+        l->setText((warn ? QStringLiteral("⚠ ") : QStringLiteral("● ")) + text);
+        l->setToolTip(text);
+        l->setStyleSheet(warn ? "QLabel { color: #b26a00; font-weight: bold; }" : "QLabel { color: #1b7f3b; }");
+        l->setVisible(!text.isEmpty());
+    }
 }
 
 void TrainPage::aimSeatAtFirstGoal(const trainer::Tutorial& t)
@@ -1245,6 +1316,7 @@ void TrainPage::updateHud(const TrainFrame& f)
                 for (const QString& w : st->warnings) warnings << w.toHtmlEscaped();
         }
     }
+    if (f.paused && m_attemptLive && !f.ended) warnings << tr("Paused by the instructor");
     if (p.overload) warnings << tr("Overload: a relief valve is open");
     if (p.nearWorker) warnings << tr("Too close to a worker (%1 m)").arg(num(p.workerDistance, 2));
     if (p.clearance >= 0 && p.clearance < t->scoring().nearDistance)

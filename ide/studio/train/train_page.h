@@ -200,6 +200,26 @@ public:
     QLabel* startTitle() const { return m_startTitle; }
     QLabel* resultScore() const { return m_resultScore; }
 
+    // the training centre (docs/training-centre.md): the workspace as a station of the
+    // centre (centre/train_station.h drives it through these)
+    /// The tutorials the course offers (those that loaded), in the course's order.
+    std::vector<std::shared_ptr<const trainer::Tutorial>> tutorials() const;
+    TutorialRunner* runner() const { return m_runner; }
+    /// A live attempt (the operator's commands) is on: running, paused, or ended but
+    /// not yet taken by onFinished.
+    bool attemptLive() const { return m_attemptLive; }
+    /// Starts an attempt at tutorial `id` for operator `operatorCode` ("" the guest) as
+    /// if the trainee had chosen it, locked or not (the instructor decides). False
+    /// when the tutorial is unknown or cannot start.
+    bool startAttemptFor(const QString& id, const QString& operatorCode);
+    /// What the network indicator says (the attempt's bar and the course screen).
+    enum class CentreLink { Off, Online, NoKey, Failed };
+    /// `name`: the station's name; `detail`: why it failed (translated), or the
+    /// instructor who paused the attempt.
+    void setCentreLink(CentreLink link, const QString& name, const QString& detail = {});
+    /// The indicator's text now ("" when off).
+    QString centreLinkText() const;
+
 signals:
     /// An attempt with live commands began (the station's commands go to the runner) …
     void attemptStarted(std::shared_ptr<const trainer::Tutorial> tutorial);
@@ -336,6 +356,11 @@ private:
     QLabel* m_hintLabel = nullptr;
     QLabel* m_warningLabel = nullptr;
     QString m_hudText, m_hintText, m_warningText;
+    // the training centre's indicator (centre/train_station.h)
+    QList<QLabel*> m_centreLabels;
+    CentreLink m_centreLink = CentreLink::Off;
+    QString m_centreName, m_centreDetail;
+    void showCentreLink();
     // result
     QLabel* m_resultHeading = nullptr;
     QLabel* m_resultStars = nullptr;

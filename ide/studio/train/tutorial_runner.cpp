@@ -45,6 +45,13 @@ struct TutorialRunner::Shared {
     std::shared_ptr<const trainer::InputLog> ghostLog;
     trainer::StationProfile ghostProfile;
 
+    struct Task {
+        SessionTask task;
+        std::function<void(bool, const QString&)> done;
+        long generation = 0;
+    };
+    std::vector<Task> tasks;  // under control
+
     std::mutex commandMutex;
     std::vector<double> commands;
     std::atomic<unsigned> commandVersion{0};
@@ -142,6 +149,7 @@ struct TutorialRunner::Run {
         f->speed = speed;
         f->duration = log ? duration : 0.0;
         f->ended = session->ended();
+        f->faults = session->activeFaults();
         if (ghost) f->ghost = captureSnapshot(ghost->session->simulation(), bundle);
         if (f->ended) {
             if (!output) {
@@ -296,6 +304,16 @@ void TutorialRunner::setCommands(std::span<const double> u)
     m_shared->commandVersion.fetch_add(1, std::memory_order_release);
 }
 
+void TutorialRunner::runInSession(SessionTask task, std::function<void(bool, const QString&)> done, long generation)
+{
+    {
+        std::lock_guard lock(m_shared->control);
+        m_shared->tasks.push_back({std::move(task), std::move(done), generation});
+        ++m_shared->controlVersion;
+    }
+    m_shared->wake.notify_all();
+}
+
 std::shared_ptr<const TrainFrame> TutorialRunner::latest() const
 {
     std::lock_guard lock(m_shared->frameMutex);
@@ -331,6 +349,7 @@ void TutorialRunner::loop()
         double seekTo = 0.0;
         std::shared_ptr<const trainer::InputLog> ghostLog;
         trainer::StationProfile ghostProfile;
+        std::vector<Shared::Task> tasks;
         {
             std::unique_lock lock(sh.control);
             if (sh.quit) return;
@@ -357,7 +376,21 @@ void TutorialRunner::loop()
                 }
                 paused = sh.paused;
                 speed = sh.speed;
+                tasks = std::exchange(sh.tasks, {});
             }
+        }
+        // the instructor's work on the session, between two steps (before a stop: its
+        // event comes before the end's)
+        for (Shared::Task& t : tasks) {
+            bool ok = false;
+            QString error = QStringLiteral("not-running");
+            if (run && (t.generation == 0 || t.generation == run->generation)) {
+                error.clear();
+                ok = t.task(*run->session, error);
+            }
+            if (t.done)
+                QMetaObject::invokeMethod(
+                    this, [done = std::move(t.done), ok, error] { done(ok, error); }, Qt::QueuedConnection);
         }
         if (run && ghostNow) {
             run->ghost.reset();

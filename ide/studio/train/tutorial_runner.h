@@ -34,6 +34,7 @@
 #include <QString>
 
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <span>
 #include <thread>
@@ -55,6 +56,8 @@ struct TrainFrame {
     std::shared_ptr<const trainer::RunOutput> output;
     /// The ghost's machine now (setGhost; nullptr without one): the same bundle.
     std::shared_ptr<const Snapshot> ghost;
+    /// The faults the instructor injected that are active now (TutorialSession::activeFaults).
+    std::vector<trainer::Fault> faults;
 };
 
 class TutorialRunner : public QObject {
@@ -107,6 +110,18 @@ public:
 
     /// The newest frame; nullptr without a session.
     std::shared_ptr<const TrainFrame> latest() const;
+
+    /// Work on the session itself (the training centre's instructor: inject / clear a
+    /// fault, write an instructor event): `task` runs in the runner thread between two
+    /// steps (paused too) on the session of generation `generation` (0: whichever runs
+    /// then), and a frame is published after it. `done` (may be empty) gets the task's
+    /// result in the GUI thread: false with the task's `error`, or "not-running" when
+    /// that session is gone or was never handed over. Thread-safe.
+    using SessionTask = std::function<bool(trainer::TutorialSession& session, QString& error)>;
+    void runInSession(SessionTask task, std::function<void(bool ok, const QString& error)> done = {},
+                      long generation = 0);
+    /// The generation of the session start() made last (TrainFrame::generation).
+    long generation() const { return m_generation; }
 
 signals:
     /// The session ended (completed, failed or stopped): latest()->output holds the result.

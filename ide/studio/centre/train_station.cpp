@@ -1,0 +1,436 @@
+#include "ide/studio/centre/train_station.h"
+
+#include "trainer/training/faults.h"
+
+#include <QCoreApplication>
+#include <QCryptographicHash>
+#include <QDateTime>
+#include <QFile>
+#include <QFileInfo>
+#include <QStringList>
+#include <QSysInfo>
+#include <QTimer>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace studio {
+
+namespace {
+
+using namespace trainer::centre;
+
+std::int64_t wallMs() { return QDateTime::currentMSecsSinceEpoch(); }
+
+QString fileHash(const std::string& path)
+{
+    QFile f(QString::fromStdString(path));
+    if (!f.open(QIODevice::ReadOnly)) return {};
+    return QString::fromLatin1(QCryptographicHash::hash(f.readAll(), QCryptographicHash::Sha256).toHex());
+}
+
+/// The Train page as the station's host.
+class PageHost : public TrainStation::Host {
+public:
+    explicit PageHost(TrainPage* page) : m_page(page), m_runner(page->runner()) {}
+    std::vector<std::shared_ptr<const trainer::Tutorial>> tutorials() const override { return m_page->tutorials(); }
+    QString language() const override { return TrainPage::language(); }
+    std::shared_ptr<const TrainFrame> attemptFrame() const override
+    {
+        if (!m_page->attemptLive()) return nullptr;
+        auto f = m_page->runner()->latest();
+        return f && f->snapshot ? f : nullptr;
+    }
+    std::shared_ptr<const trainer::Tutorial> attemptTutorial() const override { return m_page->tutorial(); }
+    QString attemptOperator() const override { return m_page->operatorId(); }
+    std::shared_ptr<const TrainFrame> latestFrame() const override { return m_runner->latest(); }
+    long startAttempt(const QString& id, const QString& op) override
+    {
+        return m_page->startAttemptFor(id, op) ? m_page->runner()->generation() : 0;
+    }
+    void setPaused(bool paused) override { m_page->runner()->setPaused(paused); }
+    void stopAttempt() override { m_page->stopAttempt(); }
+    void runInSession(TutorialRunner::SessionTask task, std::function<void(bool, const QString&)> done,
+                      long generation) override
+    {
+        m_page->runner()->runInSession(std::move(task), std::move(done), generation);
+    }
+    void setLink(TrainPage::CentreLink link, const QString& name, const QString& detail) override
+    {
+        m_page->setCentreLink(link, name, detail);
+    }
+
+private:
+    QPointer<TrainPage> m_page;
+    TutorialRunner* m_runner;  // outlives the station (MainWindow owns it)
+};
+
+/// forPage(): the station owns its host.
+class PageStation : public TrainStation {
+public:
+    PageStation(std::unique_ptr<PageHost> host, TrainStationOptions o)
+        : TrainStation(host.get(), std::move(o)), m_ownHost(std::move(host))
+    {
+    }
+    ~PageStation() override { shutdown(); }  // before the host goes
+
+private:
+    std::unique_ptr<PageHost> m_ownHost;
+};
+
+}  // namespace
+
+std::unique_ptr<TrainStation> TrainStation::forPage(TrainPage* page, TrainStationOptions options)
+{
+    return std::make_unique<PageStation>(std::make_unique<PageHost>(page), std::move(options));
+}
+
+TrainStation::TrainStation(Host* host, TrainStationOptions options, QObject* parent)
+    : QObject(parent), m_host(host), m_o(std::move(options))
+{
+    CentreKey key;
+    if (m_o.keyFile.isEmpty()) {
+        m_problem = tr("no key file was given (--centre-key)");
+    } else {
+        QString error;
+        m_hasKey = key.load(m_o.keyFile, &error);
+        if (!m_hasKey) m_problem = error;
+    }
+    m_guard = std::make_unique<CommandGuard>(m_hasKey ? key : CentreKey());
+    BusOptions net = m_o.network;
+    net.reads = TopicCommand;
+    QString busError;
+    m_bus = Bus::open(net, &busError);
+    if (!m_bus) {
+        m_problem = busError.isEmpty() ? tr("DDS refused to join the domain") : busError;
+        m_host->setLink(TrainPage::CentreLink::Failed, m_o.name, m_problem);
+        return;
+    }
+    m_host->setLink(m_hasKey ? TrainPage::CentreLink::Online : TrainPage::CentreLink::NoKey, m_o.name, m_problem);
+    m_announce.node = m_o.name.toStdString();
+    m_announce.role = "station";
+    m_announce.host = QSysInfo::machineHostName().toStdString();
+    m_announce.pid = static_cast<int>(QCoreApplication::applicationPid());
+    m_announce.startedMs = static_cast<std::uint64_t>(wallMs());
+    const auto all = m_host->tutorials();
+    announceFor(all.empty() ? nullptr : all.front().get());
+    m_timer = new QTimer(this);
+    m_timer->setTimerType(Qt::PreciseTimer);
+    m_timer->setInterval(4);
+    connect(m_timer, &QTimer::timeout, this, &TrainStation::tick);
+    m_timer->start();
+    m_publisher = std::thread([this] { publishLoop(); });
+}
+
+TrainStation::~TrainStation() { shutdown(); }
+
+void TrainStation::shutdown()
+{
+    if (m_timer) m_timer->stop();
+    if (m_publisher.joinable()) {
+        {
+            std::lock_guard lock(m_publishMutex);
+            m_quit = true;
+        }
+        m_publishWake.notify_all();
+        m_publisher.join();
+    }
+    if (m_bus) m_bus->withdraw(m_o.name.toStdString());
+    m_bus.reset();
+}
+
+void TrainStation::publishLoop()
+{
+    using Clock = std::chrono::steady_clock;
+    const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / m_o.stateRate));
+    auto next = Clock::now();
+    for (;;) {
+        {
+            std::unique_lock lock(m_publishMutex);
+            if (m_publishWake.wait_until(lock, next, [this] { return m_quit; })) return;
+        }
+        m_bus->publish(buildState());
+        next += period;
+        const auto now = Clock::now();
+        if (next < now - period) next = now;  // far behind: do not race to catch up
+    }
+}
+
+void TrainStation::announceFor(const trainer::Tutorial* tutorial)
+{
+    if (!m_bus) return;
+    const std::string modelFile = tutorial ? tutorial->modelFile : std::string();
+    if (!m_announce.tutorials.empty() && modelFile == m_announcedModel) return;
+    m_announcedModel = modelFile;
+    m_announce.model = QFileInfo(QString::fromStdString(modelFile)).completeBaseName().toStdString();
+    m_announce.modelHash = fileHash(modelFile).toStdString();
+    m_announce.tutorials.clear();
+    for (const auto& t : m_host->tutorials())
+        if (t->modelFile == modelFile) m_announce.tutorials.push_back(t->spec.id);
+    m_announce.language = m_host->language().toStdString();
+    m_bus->announce(m_announce);
+}
+
+std::shared_ptr<const trainer::Tutorial> TrainStation::findTutorial(const std::string& id) const
+{
+    for (const auto& t : m_host->tutorials())
+        if (t->spec.id == id) return t;
+    return nullptr;
+}
+
+namespace {
+
+std::string statusOf(const TrainFrame* f, bool live)
+{
+    if (!f) return "idle";
+    if (f->ended || !live) return "ended";
+    return f->paused ? "paused" : "running";
+}
+
+}  // namespace
+
+std::string TrainStation::status() const
+{
+    return statusOf(m_attempt ? m_attempt->frame.get() : nullptr, m_host->attemptFrame() != nullptr);
+}
+
+void TrainStation::tick()
+{
+    if (!m_bus) return;
+    // the live attempt's newest frame (or the last attempt's, held)
+    if (auto f = m_host->attemptFrame()) {
+        if (!m_attempt || m_attempt->frame->generation != f->generation) {
+            Attempt a;
+            a.tutorial = m_host->attemptTutorial();
+            a.operatorCode = m_host->attemptOperator().toStdString();
+            m_attempt = std::move(a);
+            if (m_attempt->tutorial) announceFor(m_attempt->tutorial.get());
+        }
+        m_attempt->frame = std::move(f);
+    } else if (m_attempt) {
+        // the attempt just ended and the page took it: its last frame (the end's events)
+        auto last = m_host->latestFrame();
+        if (last && last->snapshot && last->generation == m_attempt->frame->generation) m_attempt->frame = std::move(last);
+    }
+    for (const Command& c : m_bus->takeCommands())
+        if (c.target == m_announce.node) handle(c);
+    if (m_pending && !m_host->attemptFrame()) {
+        const PendingStart p = *m_pending;
+        m_pending.reset();
+        doStart(p);
+    }
+    publishEvents();
+    std::lock_guard lock(m_publishMutex);
+    m_published.attempt = m_attempt;
+    m_published.live = m_host->attemptFrame() != nullptr;
+}
+
+State TrainStation::buildState()
+{
+    Published p;
+    {
+        std::lock_guard lock(m_publishMutex);
+        p = m_published;
+    }
+    // the runner's newest frame while the attempt is live (the GUI's copy lags behind it)
+    std::shared_ptr<const TrainFrame> frame = p.attempt ? p.attempt->frame : nullptr;
+    if (p.live && frame) {
+        auto newest = m_host->latestFrame();
+        if (newest && newest->snapshot && newest->generation == frame->generation) frame = std::move(newest);
+    }
+    State s;
+    s.station = m_announce.node;
+    s.seq = m_stateSeq++;
+    s.sentUs = wallUs();
+    s.status = statusOf(frame.get(), p.live);
+    if (!frame || !p.attempt->tutorial) return s;
+    const TrainFrame& f = *frame;
+    const trainer::Tutorial& t = *p.attempt->tutorial;
+    const Snapshot& snap = *f.snapshot;
+    s.simTime = snap.t;
+    s.q.assign(snap.theta.data(), snap.theta.data() + snap.theta.size());
+    s.commands.reserve(std::size_t(snap.u.size()));
+    for (Eigen::Index i = 0; i < snap.u.size(); ++i) s.commands.push_back(float(snap.u[i]));
+    s.tutorial = t.spec.id;
+    s.operatorCode = p.attempt->operatorCode;
+    const trainer::SessionProgress& progress = f.progress;
+    s.attemptTime = progress.t;
+    s.goal = progress.goal;
+    s.goals = int(t.spec.goals.size());
+    s.clearance = progress.clearance;
+    s.workerDistance = progress.workerDistance;
+    if (f.output) {  // the score is known once the attempt has ended
+        s.score = f.output->result.score;
+        s.endReason = f.output->result.endReason;
+    }
+    if (progress.overload) s.warnings |= WarnOverload;
+    if (progress.nearWorker) s.warnings |= WarnNearWorker;
+    if (progress.clearance >= 0 && progress.clearance < t.scoring().nearDistance) s.warnings |= WarnNearScene;
+    for (const trainer::Fault& fault : f.faults) {
+        s.warnings |= WarnFault;
+        s.faults += (s.faults.empty() ? "" : ",") + std::string(trainer::Fault::key(fault.kind)) +
+                    (fault.drive.empty() ? "" : ":" + fault.drive);
+    }
+    return s;
+}
+
+void TrainStation::publishEvents()
+{
+    if (!m_attempt || !m_attempt->frame || !m_attempt->tutorial) return;
+    const TrainFrame& f = *m_attempt->frame;
+    if (f.generation != m_generation) {
+        m_generation = f.generation;
+        m_publishedEvents = 0;
+    }
+    const std::string lang = m_host->language().toStdString();
+    for (; m_publishedEvents < f.events.size(); ++m_publishedEvents) {
+        const trainer::TutorialEvent& e = f.events[m_publishedEvents];
+        Event out;
+        out.station = m_announce.node;
+        out.seq = m_eventSeq++;
+        out.t = e.t;
+        out.tutorial = m_attempt->tutorial->spec.id;
+        out.kind = trainer::TutorialEvent::key(e.kind);
+        out.text = e.text(m_attempt->tutorial.get(), lang).toStdString();
+        out.detail = e.detail;
+        out.value = e.value;
+        out.penalty = e.penalty;
+        m_bus->publish(out);
+    }
+}
+
+void TrainStation::reply(const Command& c, bool accepted, const std::string& message)
+{
+    if (!m_bus) return;
+    Reply r;
+    r.station = m_announce.node;
+    r.sender = c.sender;
+    r.nonce = c.nonce;
+    r.accepted = accepted;
+    r.message = message;
+    m_bus->reply(r);
+}
+
+void TrainStation::instructorEvent(const std::string& action, const std::string& sender, long generation)
+{
+    m_host->runInSession(
+        [action, sender](trainer::TutorialSession& s, QString&) {
+            s.addInstructorEvent(action, sender);
+            return true;
+        },
+        {}, generation);
+}
+
+bool TrainStation::doStart(const PendingStart& p)
+{
+    const long g = m_host->startAttempt(QString::fromStdString(p.tutorial), QString::fromStdString(p.operatorCode));
+    if (g == 0) return false;
+    instructorEvent(p.action, p.sender, g);
+    return true;
+}
+
+void TrainStation::handle(const Command& c)
+{
+    std::string why;
+    if (!m_guard->accept(c, wallMs(), why)) {
+        reply(c, false, why);
+        return;
+    }
+    const std::string st = status();
+    const bool going = st == "running" || st == "paused";
+    const long generation = m_attempt && m_attempt->frame ? m_attempt->frame->generation : 0;
+    bool done = false;
+    if (c.kind == "start" || c.kind == "reset") {
+        PendingStart p;
+        p.action = c.kind;
+        p.sender = c.sender;
+        if (c.kind == "start") {
+            p.tutorial = c.arg;
+            p.operatorCode = c.arg2;
+        } else if (m_attempt && m_attempt->tutorial) {
+            p.tutorial = m_attempt->tutorial->spec.id;
+            p.operatorCode = m_attempt->operatorCode;
+        }
+        if (p.tutorial.empty()) {
+            const auto all = m_host->tutorials();
+            if (m_attempt && m_attempt->tutorial) p.tutorial = m_attempt->tutorial->spec.id;
+            else if (!all.empty()) p.tutorial = all.front()->spec.id;
+        }
+        if (!findTutorial(p.tutorial)) {
+            why = "unknown-tutorial";
+        } else if (m_host->attemptFrame()) {
+            // the attempt on now ends first (aborted, recorded as the trainee's Stop
+            // does), then the new one starts (tick())
+            if (going) m_host->stopAttempt();
+            m_pending = p;
+            done = true;
+        } else {
+            m_pending.reset();
+            done = doStart(p);
+            if (!done) why = "unknown-tutorial";
+        }
+    } else if (c.kind == "pause") {
+        done = st == "running";
+        if (done) {
+            m_host->setPaused(true);
+            instructorEvent("pause", c.sender, generation);
+        } else {
+            why = "not-running";
+        }
+    } else if (c.kind == "resume") {
+        done = st == "paused";
+        if (done) {
+            instructorEvent("resume", c.sender, generation);
+            m_host->setPaused(false);
+        } else {
+            why = "not-paused";
+        }
+    } else if (c.kind == "stop") {
+        done = going;
+        if (done) {
+            instructorEvent("stop", c.sender, generation);
+            m_host->stopAttempt();
+        } else {
+            why = "not-running";
+        }
+    } else if (c.kind == "inject" || c.kind == "clear") {
+        trainer::Fault f;
+        if (!trainer::Fault::fromKey(c.arg, &f.kind)) {
+            why = "unknown-fault";
+        } else if (!going) {
+            why = "not-running";
+        } else {
+            f.drive = c.arg2;
+            const bool inject = c.kind == "inject";
+            if (inject && f.kind == trainer::Fault::Kind::StuckValve) f.opening = c.value;
+            if (inject && f.kind == trainer::Fault::Kind::WorkerIn) {
+                // arg2 "x,y,z" [m]: where the person walks to
+                const QStringList xyz = QString::fromStdString(c.arg2).split(',');
+                f.drive.clear();
+                if (xyz.size() == 3) f.where = {xyz[0].toDouble(), xyz[1].toDouble(), xyz[2].toDouble()};
+                f.worker = std::isnan(c.value) ? 0 : static_cast<int>(c.value);
+            }
+            const double value = c.value;
+            // the session does it in the runner's thread; the reply waits for its answer
+            QPointer<TrainStation> self(this);
+            m_host->runInSession(
+                [f, inject, value](trainer::TutorialSession& s, QString& error) {
+                    if (inject) return s.inject(f, &error);
+                    const bool worker = f.kind == trainer::Fault::Kind::WorkerIn;
+                    const int which = worker && !std::isnan(value) ? static_cast<int>(value) : -1;
+                    return s.clearFault(f.kind, worker ? std::string() : f.drive, &error, which);
+                },
+                [self, c](bool ok, const QString& error) {
+                    if (self) self->reply(c, ok, ok ? std::string("done") : error.toStdString());
+                },
+                generation);
+            return;
+        }
+    } else {
+        why = "unknown-command";
+    }
+    reply(c, done, done ? std::string("done") : why);
+}
+
+}  // namespace studio

@@ -1,0 +1,303 @@
+// The Train workspace as a station of the training centre (ide/studio/centre/
+// train_station.h; padrob-studio --station-name NAME --centre-key FILE --loopback): the
+// main window (a real window under Xvfb) on a loopback DDS domain of its own, and an
+// instructor (trainer::centre::InstructorNode) in the same process on its own Bus. The
+// instructor sees the station announce its model, hash and tutorials; `start T0 OP-1`
+// runs T0 in the Train workspace for OP-1 (the attempt's clock advances); `pause`
+// stops the clock; `inject power-cut` shows in the state's faults and in the attempt's
+// events; `resume` goes on; a command under another key is refused (bad-signature) and
+// changes nothing; `stop` ends the attempt aborted with every instructor action in its
+// events, in order; the station withdraws when it is destroyed. A screenshot of the
+// attempt with the network indicator.
+
+#include "tests/studio/gui_test.h"
+#include "ide/i18n/language.h"
+#include "ide/studio/app/main_window.h"
+#include "ide/studio/centre/train_station.h"
+#include "ide/studio/train/train_page.h"
+#include "ide/studio/train/tutorial_runner.h"
+#include "ide/studio/view/viewport.h"
+#include "trainer/centre/instructor_node.h"
+#include "trainer/centre/signing.h"
+#include "trainer/records/records_db.h"
+
+#include <QApplication>
+#include <QCryptographicHash>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QLabel>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <algorithm>
+#include <memory>
+#include <optional>
+#include <unistd.h>
+
+using namespace studio;
+using studio::test::screenshotPath;
+using studio::test::settle;
+namespace centre = trainer::centre;
+
+class TrainStationTest : public QObject {
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+    QString m_keyFile;
+    const int m_domain = 1 + static_cast<int>(::getpid() % 230);
+    const std::string m_name = "TS-studio-" + std::to_string(::getpid());
+    const std::string m_desk = "desk-" + std::to_string(::getpid());
+    std::unique_ptr<MainWindow> m_window;
+    std::unique_ptr<TrainStation> m_station;
+    std::unique_ptr<centre::Bus> m_bus;
+    std::unique_ptr<centre::InstructorNode> m_instructor;
+    QElapsedTimer m_clock;
+
+    TrainPage* page() const { return m_window->trainPage(); }
+    void poll() { m_instructor->poll(m_clock.nsecsElapsed() * 1e-9); }
+    const centre::StationView* view() const
+    {
+        const auto& all = m_instructor->stations();
+        const auto it = all.find(m_name);
+        return it == all.end() ? nullptr : &it->second;
+    }
+    template <class F>
+    bool waitFor(F done, int ms = 10000)
+    {
+        return QTest::qWaitFor([&] {
+            poll();
+            return done();
+        }, ms);
+    }
+    /// Sends a command and waits for its reply.
+    std::optional<centre::Reply> command(const std::string& kind, const std::string& arg = {},
+                                         const std::string& arg2 = {})
+    {
+        const std::uint64_t n = m_instructor->send(m_name, kind, arg, arg2);
+        if (n == 0) return std::nullopt;
+        waitFor([&] { return m_instructor->reply(n).has_value(); });
+        return m_instructor->reply(n);
+    }
+    std::string status() const { return view() && view()->hasState ? view()->state.status : std::string(); }
+    double attemptTime() const { return view() && view()->hasState ? view()->state.attemptTime : -1.0; }
+    bool hasEvent(const std::string& kind, const std::string& detail) const
+    {
+        if (!view()) return false;
+        for (const centre::Event& e : view()->events)
+            if (e.kind == kind && e.detail == detail) return true;
+        return false;
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName("PadrobTest");
+        QCoreApplication::setApplicationName("padrob-studio-train-station-test");
+        QSettings().clear();
+        const QString db = trainer::records::RecordsDb::defaultSqlitePath();
+        for (const char* suffix : {"", "-wal", "-shm"}) QFile::remove(db + suffix);
+        QVERIFY(i18n::install("en"));
+        QVERIFY(m_dir.isValid());
+        m_keyFile = m_dir.filePath("centre.key");
+        QString error;
+        QVERIFY2(centre::CentreKey::create(m_keyFile, &error), qPrintable(error));
+        centre::CentreKey key;
+        QVERIFY2(key.load(m_keyFile, &error), qPrintable(error));
+        m_clock.start();
+
+        m_window = std::make_unique<MainWindow>();
+        m_window->openInitial(QString());
+        m_window->resize(1600, 1000);
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+        m_window->setWorkspace(MainWindow::Workspace::Train);
+        settle();
+
+        // the station: as padrob-studio --station-name NAME --centre-key FILE --loopback
+        TrainStationOptions o;
+        o.name = QString::fromStdString(m_name);
+        o.keyFile = m_keyFile;
+        o.network = centre::BusOptions::loopback(m_domain);
+        m_station = TrainStation::forPage(page(), o);
+        QVERIFY2(m_station->online(), qPrintable(m_station->problem()));
+        QVERIFY(m_station->hasKey());
+
+        m_bus = centre::Bus::open(centre::BusOptions::loopback(m_domain), &error);
+        QVERIFY2(m_bus, qPrintable(error));
+        m_instructor = std::make_unique<centre::InstructorNode>(*m_bus, m_desk, key);
+        m_instructor->announce();
+    }
+
+    void cleanupTestCase()
+    {
+        m_station.reset();
+        m_instructor.reset();
+        m_bus.reset();
+        m_window.reset();
+    }
+
+    void announcesItself()
+    {
+        QVERIFY2(waitFor([&] { return view() && view()->hasState; }), "the station is not heard");
+        const centre::Announce& a = view()->announce;
+        QCOMPARE(a.role, std::string("station"));
+        QCOMPARE(a.model, std::string("liner_manipulator"));
+        QFile model(QStringLiteral(PADROB_SOURCE_DIR "/models/liner_manipulator.pad"));
+        QVERIFY(model.open(QIODevice::ReadOnly));
+        QCOMPARE(QString::fromStdString(a.modelHash),
+                 QString::fromLatin1(QCryptographicHash::hash(model.readAll(), QCryptographicHash::Sha256).toHex()));
+        QVERIFY(std::find(a.tutorials.begin(), a.tutorials.end(), "T0") != a.tutorials.end());
+        QCOMPARE(status(), std::string("idle"));
+        QVERIFY(page()->centreLinkText().contains("On the centre's network as " + QString::fromStdString(m_name)));
+    }
+
+    void startRunsTheTutorialForTheOperator()
+    {
+        const auto r = command("start", "T0", "OP-1");
+        QVERIFY(r && r->accepted);
+        QCOMPARE(page()->screen(), TrainPage::Screen::Attempt);
+        QCOMPARE(QString::fromStdString(page()->tutorial()->spec.id), QString("T0"));
+        QCOMPARE(page()->operatorId(), QString("OP-1"));
+        QVERIFY(page()->attemptLive());
+        QVERIFY(waitFor([&] { return status() == "running" && attemptTime() > 0.5; }));
+        QCOMPARE(view()->state.tutorial, std::string("T0"));
+        QCOMPARE(view()->state.operatorCode, std::string("OP-1"));
+        QVERIFY(!view()->state.q.empty());
+        QVERIFY(waitFor([&] { return hasEvent("instructor", "start:" + m_desk); }));
+        // the states come at about 60 Hz
+        const std::uint64_t seq0 = view()->state.seq;
+        QTest::qWait(1000);
+        poll();
+        const double rate = double(view()->state.seq - seq0);
+        QVERIFY2(rate > 45 && rate < 75, qPrintable(QString::number(rate)));
+    }
+
+    void pauseStopsTheClock()
+    {
+        const auto r = command("pause");
+        QVERIFY(r && r->accepted);
+        QVERIFY(waitFor([&] { return status() == "paused"; }));
+        QTest::qWait(100);
+        poll();
+        const double t = attemptTime();
+        QTest::qWait(600);
+        poll();
+        QCOMPARE(attemptTime(), t);
+        QVERIFY(waitFor([&] { return hasEvent("instructor", "pause:" + m_desk); }));
+        // pausing again is refused
+        const auto again = command("pause");
+        QVERIFY(again && !again->accepted);
+        QCOMPARE(again->message, std::string("not-running"));
+    }
+
+    void powerCutIsInTheStateAndTheEvents()
+    {
+        const auto r = command("inject", "power-cut");
+        QVERIFY(r && r->accepted);
+        QCOMPARE(r->message, std::string("done"));
+        QVERIFY(waitFor([&] { return view()->state.faults.find("power-cut") != std::string::npos; }));
+        QVERIFY(view()->state.warnings & centre::WarnFault);
+        QVERIFY(waitFor([&] { return hasEvent("fault", "power-cut"); }));
+        const auto f = m_window->tutorialRunner()->latest();
+        QVERIFY(f);
+        bool inSession = false;
+        for (const auto& e : f->events) inSession |= e.kind == trainer::TutorialEvent::Kind::Fault;
+        QVERIFY(inSession);
+        // an unknown drive: the session's own sentence
+        const auto bad = command("inject", "hose-burst", "NO SUCH DRIVE");
+        QVERIFY(bad && !bad->accepted);
+        QVERIFY(bad->message != "done" && !bad->message.empty());
+        const auto unknown = command("inject", "meteor");
+        QVERIFY(unknown && !unknown->accepted);
+        QCOMPARE(unknown->message, std::string("unknown-fault"));
+
+        const auto resumed = command("resume");
+        QVERIFY(resumed && resumed->accepted);
+        const double t = attemptTime();
+        QVERIFY(waitFor([&] { return status() == "running" && attemptTime() > t + 0.3; }));
+    }
+
+    void anotherKeyIsRefused()
+    {
+        centre::InstructorNode intruder(*m_bus, "intruder", centre::CentreKey::fromBytes(QByteArray(32, 'x')));
+        const std::uint64_t n = intruder.send(m_name, "stop");
+        QVERIFY(n != 0);
+        QVERIFY(QTest::qWaitFor([&] {
+            intruder.poll(m_clock.nsecsElapsed() * 1e-9);
+            return intruder.reply(n).has_value();
+        }, 10000));
+        QVERIFY(!intruder.reply(n)->accepted);
+        QCOMPARE(intruder.reply(n)->message, std::string("bad-signature"));
+        QTest::qWait(300);
+        poll();
+        QCOMPARE(status(), std::string("running"));
+        QCOMPARE(page()->screen(), TrainPage::Screen::Attempt);
+        const auto unknown = command("fly");
+        QVERIFY(unknown && !unknown->accepted);
+        QCOMPARE(unknown->message, std::string("unknown-command"));
+    }
+
+    void screenshotWithTheIndicator()
+    {
+        settle(500);
+        auto* label = page()->findChild<QLabel*>("CentreLink");
+        QVERIFY(label && label->isVisible());
+        QVERIFY(label->text().contains(QString::fromStdString(m_name)));
+        QVERIFY(m_window->grab().save(screenshotPath("train_station_en.png")));
+    }
+
+    void stopEndsTheAttemptAbortedWithTheInstructorsActions()
+    {
+        const auto r = command("stop");
+        QVERIFY(r && r->accepted);
+        QVERIFY(waitFor([&] { return status() == "ended"; }));
+        QTRY_VERIFY_WITH_TIMEOUT(page()->screen() == TrainPage::Screen::Result, 10000);
+        QVERIFY(page()->lastRun());
+        const trainer::TutorialResult& res = page()->lastRun()->result;
+        QCOMPARE(res.endReason, std::string("aborted"));
+        std::vector<std::string> actions;
+        for (const auto& e : res.events) {
+            if (e.kind == trainer::TutorialEvent::Kind::Instructor) actions.push_back(e.detail);
+            if (e.kind == trainer::TutorialEvent::Kind::Fault) actions.push_back("fault:" + e.detail);
+        }
+        const std::vector<std::string> expected{"start:" + m_desk, "pause:" + m_desk, "fault:power-cut",
+                                                "resume:" + m_desk, "stop:" + m_desk};
+        QCOMPARE(actions, expected);
+        QVERIFY(waitFor([&] { return hasEvent("aborted", ""); }));
+        // stopping again is refused
+        const auto again = command("stop");
+        QVERIFY(again && !again->accepted);
+        QCOMPARE(again->message, std::string("not-running"));
+        // start again, for another operator, then the instructor's reset ends it aborted
+        const auto start = command("start", "T0", "OP-2");
+        QVERIFY(start && start->accepted);
+        QVERIFY(waitFor([&] { return status() == "running" && view()->state.operatorCode == "OP-2"; }));
+        const long g = m_window->tutorialRunner()->generation();
+        const auto reset = command("reset");
+        QVERIFY(reset && reset->accepted);
+        QVERIFY(waitFor([&] { return m_window->tutorialRunner()->generation() != g && status() == "running"; }));
+        QVERIFY(waitFor([&] { return hasEvent("instructor", "reset:" + m_desk); }));
+        QCOMPARE(page()->operatorId(), QString("OP-2"));
+    }
+
+    void withdrawsWhenClosed()
+    {
+        m_station.reset();
+        QVERIFY(waitFor([&] { return view() && view()->presence == "left"; }));
+    }
+};
+
+int main(int argc, char** argv)
+{
+    QSurfaceFormat::setDefaultFormat(Viewport::surfaceFormat());
+    QApplication app(argc, argv);
+    TrainStationTest test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "train_station_test.moc"
