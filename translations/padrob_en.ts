@@ -6100,7 +6100,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::DisplayView</name>
     <message>
-        <location filename="../ide/studio/centre/display_view.cpp" line="+112" />
+        <location filename="../ide/studio/centre/display_view.cpp" line="+114" />
         <source>Waiting for station %1…</source>
         <translation>Waiting for station %1…</translation>
     </message>
@@ -6123,12 +6123,12 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::DisplayWindow</name>
     <message>
-        <location filename="../ide/studio/centre/display_window.cpp" line="+29" />
+        <location filename="../ide/studio/centre/display_window.cpp" line="+30" />
         <source>This display cannot join the training centre's network (DDS domain %1): %2</source>
         <translation>This display cannot join the training centre's network (DDS domain %1): %2</translation>
     </message>
     <message>
-        <location line="+54" />
+        <location line="+64" />
         <source>left screen</source>
         <translation>left screen</translation>
     </message>
@@ -6494,7 +6494,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::InstructorWindow</name>
     <message>
-        <location filename="../ide/studio/centre/instructor_window.cpp" line="+264" />
+        <location filename="../ide/studio/centre/instructor_window.cpp" line="+268" />
         <source>up</source>
         <translation>up</translation>
     </message>
@@ -7081,7 +7081,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::MainWindow</name>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+173" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+174" />
         <source>Export</source>
         <translation>Export</translation>
     </message>
@@ -9199,13 +9199,13 @@ Id: %3</translation>
         <location line="+19" />
         <location line="+43" />
         <location line="+32" />
-        <location line="+687" />
+        <location line="+690" />
         <location line="+23" />
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location line="-758" />
+        <location line="-761" />
         <source>Speed:</source>
         <translation>Speed:</translation>
     </message>
@@ -9222,7 +9222,7 @@ Id: %3</translation>
     <message>
         <location line="-29" />
         <location line="+43" />
-        <location line="+316" />
+        <location line="+319" />
         <location line="+19" />
         <location line="+119" />
         <location line="+265" />
@@ -9232,7 +9232,7 @@ Id: %3</translation>
         <translation>Play</translation>
     </message>
     <message>
-        <location line="-1489" />
+        <location line="-1492" />
         <source>OK</source>
         <translation>OK</translation>
     </message>
@@ -9242,7 +9242,7 @@ Id: %3</translation>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location line="+800" />
+        <location line="+803" />
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc or Stop ends the attempt.</translation>
     </message>
@@ -9630,7 +9630,7 @@ Id: %3</translation>
         <translation>no key file was given (--centre-key)</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+13" />
         <source>DDS refused to join the domain</source>
         <translation>DDS refused to join the domain</translation>
     </message>
@@ -9663,7 +9663,7 @@ Id: %3</translation>
         <translation>Graphic %1 (body %2): mesh "%3" is drawn as a box: %4.</translation>
     </message>
     <message>
-        <location filename="../ide/studio/view/viewport.cpp" line="+214" />
+        <location filename="../ide/studio/view/viewport.cpp" line="+292" />
         <source>Iso</source>
         <translation>Iso</translation>
     </message>
@@ -9689,11 +9689,12 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+117" />
+        <location line="+122" />
         <source>The 3D view needs OpenGL 3.3, which this system does not provide.</source>
         <translation>The 3D view needs OpenGL 3.3, which this system does not provide.</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="-108" />
         <location line="+24" />
         <source>The 3D view's shaders do not build: %1</source>
         <translation>The 3D view's shaders do not build: %1</translation>
@@ -9715,7 +9716,7 @@ Id: %3</translation>
 <context>
     <name>studio::main</name>
     <message>
-        <location filename="../ide/studio/main.cpp" line="+58" />
+        <location filename="../ide/studio/main.cpp" line="+60" />
         <source>Padrob Studio: write a machine's model, simulate it in real time and drive it from the operator's devices.</source>
         <translation>Padrob Studio: write a machine's model, simulate it in real time and drive it from the operator's devices.</translation>
     </message>
@@ -9777,11 +9778,27 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+3" />
+        <location line="+12" />
         <source>NAME</source>
         <translation>NAME</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="-9" />
+        <source>DDS Security: authenticated, access-controlled, encrypted traffic, with the centre's PKI in DIR and this node's identity in DIR/nodes/NAME (see 'padrob centre pki').</source>
+        <translation>DDS Security: authenticated, access-controlled, encrypted traffic, with the centre's PKI in DIR and this node's identity in DIR/nodes/NAME (see 'padrob centre pki').</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>DIR</source>
+        <translation>DIR</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>With --instructor or --display-of: this node's name in the centre (its identity in the PKI with --security). Default: instructor@HOST, display-STATION-VIEW.</source>
+        <translation>With --instructor or --display-of: this node's name in the centre (its identity in the PKI with --security). Default: instructor@HOST, display-STATION-VIEW.</translation>
+    </message>
+    <message>
+        <location line="+9" />
         <source>--lang must be es or en.</source>
         <translation>--lang must be es or en.</translation>
     </message>
@@ -9791,7 +9808,7 @@ Id: %3</translation>
         <translation>--bench-frames needs a number of frames (1 or more) and --views 1 or 3.</translation>
     </message>
     <message>
-        <location line="-58" />
+        <location line="-71" />
         <source>Be a display node of the training centre: show STATION's machine from its operator's seat, driven by its state stream.</source>
         <translation>Be a display node of the training centre: show STATION's machine from its operator's seat, driven by its state stream.</translation>
     </message>
@@ -9841,12 +9858,12 @@ Id: %3</translation>
         <translation>ADDRESS</translation>
     </message>
     <message>
-        <location line="+51" />
+        <location line="+64" />
         <source>--domain must be a whole number from 0 to 232.</source>
         <translation>--domain must be a whole number from 0 to 232.</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+15" />
         <source>--station-name needs a name.</source>
         <translation>--station-name needs a name.</translation>
     </message>

@@ -6125,7 +6125,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::DisplayView</name>
     <message>
-        <location filename="../ide/studio/centre/display_view.cpp" line="+112" />
+        <location filename="../ide/studio/centre/display_view.cpp" line="+114" />
         <source>Waiting for station %1…</source>
         <translation>Esperando al puesto %1…</translation>
     </message>
@@ -6148,12 +6148,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::DisplayWindow</name>
     <message>
-        <location filename="../ide/studio/centre/display_window.cpp" line="+29" />
+        <location filename="../ide/studio/centre/display_window.cpp" line="+30" />
         <source>This display cannot join the training centre's network (DDS domain %1): %2</source>
         <translation>Esta pantalla no puede unirse a la red del centro de entrenamiento (dominio DDS %1): %2</translation>
     </message>
     <message>
-        <location line="+54" />
+        <location line="+64" />
         <source>left screen</source>
         <translation>pantalla izquierda</translation>
     </message>
@@ -6519,7 +6519,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::InstructorWindow</name>
     <message>
-        <location filename="../ide/studio/centre/instructor_window.cpp" line="+264" />
+        <location filename="../ide/studio/centre/instructor_window.cpp" line="+268" />
         <source>up</source>
         <translation>en línea</translation>
     </message>
@@ -7106,7 +7106,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::MainWindow</name>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+173" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+174" />
         <source>Export</source>
         <translation>Exportar</translation>
     </message>
@@ -9224,13 +9224,13 @@ Id: %3</translation>
         <location line="+19" />
         <location line="+43" />
         <location line="+32" />
-        <location line="+687" />
+        <location line="+690" />
         <location line="+23" />
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
     <message>
-        <location line="-758" />
+        <location line="-761" />
         <source>Speed:</source>
         <translation>Velocidad:</translation>
     </message>
@@ -9247,7 +9247,7 @@ Id: %3</translation>
     <message>
         <location line="-29" />
         <location line="+43" />
-        <location line="+316" />
+        <location line="+319" />
         <location line="+19" />
         <location line="+119" />
         <location line="+265" />
@@ -9257,7 +9257,7 @@ Id: %3</translation>
         <translation>Reproducir</translation>
     </message>
     <message>
-        <location line="-1489" />
+        <location line="-1492" />
         <source>OK</source>
         <translation>Aceptar</translation>
     </message>
@@ -9267,7 +9267,7 @@ Id: %3</translation>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location line="+800" />
+        <location line="+803" />
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc o Detener termina el intento.</translation>
     </message>
@@ -9655,7 +9655,7 @@ Id: %3</translation>
         <translation>no se indicó un archivo de clave (--centre-key)</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+13" />
         <source>DDS refused to join the domain</source>
         <translation>DDS no permitió entrar al dominio</translation>
     </message>
@@ -9688,7 +9688,7 @@ Id: %3</translation>
         <translation>Gráfico %1 (cuerpo %2): la malla "%3" se dibuja como una caja: %4.</translation>
     </message>
     <message>
-        <location filename="../ide/studio/view/viewport.cpp" line="+214" />
+        <location filename="../ide/studio/view/viewport.cpp" line="+292" />
         <source>Iso</source>
         <translation>Iso</translation>
     </message>
@@ -9714,11 +9714,12 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+117" />
+        <location line="+122" />
         <source>The 3D view needs OpenGL 3.3, which this system does not provide.</source>
         <translation>La vista 3D necesita OpenGL 3.3, que este sistema no ofrece.</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="-108" />
         <location line="+24" />
         <source>The 3D view's shaders do not build: %1</source>
         <translation>Los shaders de la vista 3D no se compilan: %1</translation>
@@ -9740,7 +9741,7 @@ Id: %3</translation>
 <context>
     <name>studio::main</name>
     <message>
-        <location filename="../ide/studio/main.cpp" line="+58" />
+        <location filename="../ide/studio/main.cpp" line="+60" />
         <source>Padrob Studio: write a machine's model, simulate it in real time and drive it from the operator's devices.</source>
         <translation>Padrob Studio: escriba el modelo de una máquina, simúlelo en tiempo real y opérelo desde los dispositivos del operador.</translation>
     </message>
@@ -9802,11 +9803,27 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+3" />
+        <location line="+12" />
         <source>NAME</source>
         <translation>NOMBRE</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="-9" />
+        <source>DDS Security: authenticated, access-controlled, encrypted traffic, with the centre's PKI in DIR and this node's identity in DIR/nodes/NAME (see 'padrob centre pki').</source>
+        <translation>DDS Security: tráfico autenticado, con control de acceso y cifrado, con la PKI del centro en CARPETA y la identidad de este nodo en CARPETA/nodes/NOMBRE (vea 'padrob centre pki').</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>DIR</source>
+        <translation>CARPETA</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>With --instructor or --display-of: this node's name in the centre (its identity in the PKI with --security). Default: instructor@HOST, display-STATION-VIEW.</source>
+        <translation>Con --instructor o --display-of: el nombre de este nodo en el centro (su identidad en la PKI con --security). Por omisión: instructor@HOST, display-PUESTO-VISTA.</translation>
+    </message>
+    <message>
+        <location line="+9" />
         <source>--lang must be es or en.</source>
         <translation>--lang debe ser es o en.</translation>
     </message>
@@ -9816,7 +9833,7 @@ Id: %3</translation>
         <translation>--bench-frames necesita un número de cuadros (1 o más) y --views 1 o 3.</translation>
     </message>
     <message>
-        <location line="-58" />
+        <location line="-71" />
         <source>Be a display node of the training centre: show STATION's machine from its operator's seat, driven by its state stream.</source>
         <translation>Ser una pantalla del centro de entrenamiento: mostrar la máquina de PUESTO desde el asiento de su operador, movida por su flujo de estado.</translation>
     </message>
@@ -9866,12 +9883,12 @@ Id: %3</translation>
         <translation>DIRECCIÓN</translation>
     </message>
     <message>
-        <location line="+51" />
+        <location line="+64" />
         <source>--domain must be a whole number from 0 to 232.</source>
         <translation>--domain debe ser un número entero de 0 a 232.</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+15" />
         <source>--station-name needs a name.</source>
         <translation>--station-name necesita un nombre.</translation>
     </message>

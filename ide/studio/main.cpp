@@ -6,7 +6,9 @@
 // padrob-studio --display-of STATION [--view left|centre|right] [NETWORK]: a display
 // node of the training centre (centre/display_window.h).
 // padrob-studio --instructor [--centre-key FILE] [NETWORK]: the instructor's station
-// (centre/instructor_window.h). NETWORK: --domain N, --loopback, --interface I, --peer A.
+// (centre/instructor_window.h). NETWORK: --domain N, --loopback, --interface I, --peer A,
+// --security DIR (DDS Security; the node's identity is DIR/nodes/NAME: --name NAME for the
+// instructor and the display, the station's own name for --station-name).
 // padrob-studio --station-name NAME --centre-key FILE [NETWORK] [MODEL]: the application,
 // its Train workspace a station of the training centre (centre/train_station.h).
 #include "ide/studio/app/frame_bench.h"
@@ -144,7 +146,20 @@ int main(int argc, char** argv)
                                                     "named NAME (unique in the centre): it publishes its attempt "
                                                     "and obeys the instructor's signed commands."),
         QCoreApplication::translate("studio::main", "NAME"));
-    parser.addOptions({displayOf, viewSide, instructor, centreKey, domain, loopback, netInterface, peer, stationName});
+    const QCommandLineOption security(
+        QStringLiteral("security"),
+        QCoreApplication::translate("studio::main", "DDS Security: authenticated, access-controlled, encrypted "
+                                                    "traffic, with the centre's PKI in DIR and this node's identity "
+                                                    "in DIR/nodes/NAME (see 'padrob centre pki')."),
+        QCoreApplication::translate("studio::main", "DIR"));
+    const QCommandLineOption nodeName(
+        QStringLiteral("name"),
+        QCoreApplication::translate("studio::main", "With --instructor or --display-of: this node's name in the "
+                                                    "centre (its identity in the PKI with --security). Default: "
+                                                    "instructor@HOST, display-STATION-VIEW."),
+        QCoreApplication::translate("studio::main", "NAME"));
+    parser.addOptions({displayOf, viewSide, instructor, centreKey, domain, loopback, netInterface, peer, stationName,
+                       security, nodeName});
 #endif
     parser.process(app);
     if (parser.isSet(lang) && parser.value(lang) != "es" && parser.value(lang) != "en") {
@@ -196,6 +211,11 @@ int main(int argc, char** argv)
             net.interfaces = {QStringLiteral("127.0.0.1")};
             net.peers = {QStringLiteral("127.0.0.1")};
         }
+        // DDS Security: this node's identity is DIR/nodes/NAME (the windows choose a
+        // default NAME when none is given: instructor@HOST, display-STATION-VIEW)
+        net.securityDir = parser.value(security);
+        if (parser.isSet(stationName)) net.node = parser.value(stationName).trimmed();
+        else if (parser.isSet(nodeName)) net.node = parser.value(nodeName).trimmed();
     }
     if (parser.isSet(stationName) && parser.value(stationName).trimmed().isEmpty())
         return fail(QCoreApplication::translate("studio::main", "--station-name needs a name."));

@@ -9,6 +9,7 @@
 #include "ide/studio/centre/display_window.h"
 #include "ide/studio/centre/instructor_window.h"
 #include "ide/studio/view/viewport.h"
+#include "trainer/centre/pki.h"
 #include "trainer/centre/signing.h"
 #include "trainer/training/faults.h"
 
@@ -21,12 +22,14 @@
 #include <QPlainTextEdit>
 #include <QProcess>
 #include <QPushButton>
+#include <QScopeGuard>
 #include <QSignalSpy>
 #include <QSurfaceFormat>
 #include <QTableWidget>
 #include <QTemporaryDir>
 
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <unistd.h>
 
@@ -471,12 +474,131 @@ private slots:
         QVERIFY(!InstructorWindow::refusalText("bad-signature").isEmpty());
         QVERIFY(InstructorWindow::refusalText("bad-signature") != "bad-signature");
     }
+
+    // ---- DDS Security: padrob-studio's nodes with --security DIR
+
+    void aSecuredStationIsSeenOnlyWithAnIdentity()
+    {
+        // the centre's PKI, and identities for the station and the instructor window
+        const QString pki = m_dir.filePath("pki");
+        const QString station = QStringLiteral("S-secure-%1").arg(::getpid());
+        const QString instructorName = QStringLiteral("instructor-studio-%1").arg(::getpid());
+        QString error;
+        QVERIFY2(centre::pki::createCentre(pki, &error), qPrintable(error));
+        QVERIFY2(centre::pki::issueNode(pki, station, &error), qPrintable(error));
+        QVERIFY2(centre::pki::issueNode(pki, instructorName, &error), qPrintable(error));
+        const int domain = 1 + static_cast<int>((::getpid() + 115) % 230);  // DDS Security: 0-230
+
+        QProcess secured;
+        secured.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        secured.start(QStringLiteral(PADROB_CLI),
+                      {"station", kTut0, "--name", station, "--demo", "--for", "120", "--domain",
+                       QString::number(domain), "--loopback", "--key", m_keyFile, "--security", pki});
+        QVERIFY(secured.waitForStarted(5000));
+        const auto stop = qScopeGuard([&] {
+            secured.kill();
+            secured.waitForFinished(5000);
+        });
+
+        // the instructor window as `padrob-studio --instructor --security PKI --name NAME`
+        centre::BusOptions net = centre::BusOptions::loopback(domain);
+        net.securityDir = pki;
+        net.node = instructorName;
+        InstructorWindow w(net, m_keyFile);
+        QVERIFY2(w.canCommand(), qPrintable(w.findChild<QLabel*>("KeyLabel")->text()));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const auto row = [&] {
+            QTableWidget* t = w.table();
+            for (int r = 0; r < t->rowCount(); ++r)
+                if (t->item(r, 0) && t->item(r, 0)->text() == station) return r;
+            return -1;
+        };
+        const auto status = [&] {
+            const int r = row();
+            return r < 0 || !w.table()->item(r, InstructorWindow::ColStatus) ? QString()
+                                                                            : w.table()->item(r, InstructorWindow::ColStatus)->text();
+        };
+        QVERIFY2(QTest::qWaitFor([&] { return status() == "idle"; }, 30000), "the secured station is seen");
+        QVERIFY(w.selectStation(station));
+        w.sendCommand("start", "T0", "OP-SEC");
+        QVERIFY2(QTest::qWaitFor([&] { return w.replyText().contains("done"); }, 10000), qPrintable(w.replyText()));
+        QVERIFY(QTest::qWaitFor([&] { return status() == "running"; }, 5000));
+        QVERIFY(QTest::qWaitFor([&] { return !w.view()->theta().empty(); }, 5000));
+
+        // a display without DDS Security on the same domain, in its own process (Cyclone
+        // has one domain per process, secured or not): nothing of the secured station, ever
+        QProcess plain;
+        plain.setProcessChannelMode(QProcess::ForwardedChannels);
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("PADROB_PLAIN_DISPLAY", station + QLatin1Char(' ') + QString::number(domain));
+        plain.setProcessEnvironment(env);
+        plain.start(QCoreApplication::applicationFilePath(), {});
+        QVERIFY(plain.waitForStarted(5000));
+        QVERIFY(QTest::qWaitFor([&] { return plain.state() == QProcess::NotRunning; }, 30000));
+        QCOMPARE(plain.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(plain.exitCode(), 0);  // 3: it saw the station; 4: it could not open its bus
+        QCOMPARE(status(), QStringLiteral("running"));  // meanwhile the secured instructor saw it all along
+
+        // a secured display without its identity: said in the window, no crash
+        centre::BusOptions secureDisplay = centre::BusOptions::loopback(domain);
+        secureDisplay.securityDir = pki;
+        DisplayWindow missing(station, DisplayView::Left, secureDisplay);
+        QVERIFY(!missing.busError().isEmpty());
+        QVERIFY2(missing.busError().contains(DisplayWindow::defaultNodeName(station, DisplayView::Left)),
+                 qPrintable(missing.busError()));
+        QCOMPARE(missing.view()->overlayText(), missing.busError());
+        QCOMPARE(DisplayWindow::defaultNodeName("S 1/x", DisplayView::Right), QStringLiteral("display-S_1_x-right"));
+        // with its identity (its own process, as a display PC) it sees the station
+        QVERIFY2(centre::pki::issueNode(pki, DisplayWindow::defaultNodeName(station, DisplayView::Centre), &error),
+                 qPrintable(error));
+        QProcess securedDisplay;
+        securedDisplay.setProcessChannelMode(QProcess::ForwardedChannels);
+        env.insert("PADROB_PLAIN_DISPLAY", station + QLatin1Char(' ') + QString::number(domain) + QLatin1Char(' ') + pki);
+        securedDisplay.setProcessEnvironment(env);
+        securedDisplay.start(QCoreApplication::applicationFilePath(), {});
+        QVERIFY(securedDisplay.waitForStarted(5000));
+        QVERIFY(QTest::qWaitFor([&] { return securedDisplay.state() == QProcess::NotRunning; }, 30000));
+        QCOMPARE(securedDisplay.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(securedDisplay.exitCode(), 3);
+        // an instructor window with security but no identity: said, watching nothing
+        centre::BusOptions noIdentity = net;
+        noIdentity.node = QStringLiteral("nobody");
+        InstructorWindow refused(noIdentity, m_keyFile);
+        QVERIFY(!refused.canCommand());
+        QVERIFY2(refused.findChild<QLabel*>("KeyLabel")->text().contains("nobody"),
+                 qPrintable(refused.findChild<QLabel*>("KeyLabel")->text()));
+    }
 };
+
+/// PADROB_PLAIN_DISPLAY="STATION DOMAIN [PKI]": a display window (with DDS Security when
+/// PKI is given) that watches STATION for 5 s (aSecuredStationIsSeenOnlyWithAnIdentity).
+/// Exit 0: it saw nothing of it; 3: it saw an announcement or a state; 4: its bus did not open.
+int plainDisplay(const QString& spec)
+{
+    const QStringList parts = spec.split(QLatin1Char(' '));
+    centre::BusOptions o = centre::BusOptions::loopback(parts.value(1).toInt());
+    o.securityDir = parts.value(2);
+    DisplayWindow d(parts.value(0), DisplayView::Centre, o);
+    if (!d.busError().isEmpty()) {
+        std::fprintf(stderr, "plain display: %s\n", qPrintable(d.busError()));
+        return 4;
+    }
+    d.resize(640, 360);
+    d.show();
+    // seen: its states, not just its announcement
+    QTest::qWaitFor([&] { return d.feed().buffer().size() > 1; }, o.securityDir.isEmpty() ? 5000 : 20000);
+    const bool saw = d.feed().bundle() || !d.feed().latest().station.empty() || d.feed().buffer().size() > 0 ||
+                     !d.view()->theta().empty() || d.feed().presence(centreClock()) != DisplayFeed::Presence::Waiting;
+    if (saw && o.securityDir.isEmpty()) std::fprintf(stderr, "plain display: it saw the secured station\n");
+    return saw ? 3 : 0;
+}
 
 int main(int argc, char** argv)
 {
     QSurfaceFormat::setDefaultFormat(Viewport::surfaceFormat());
     QApplication app(argc, argv);
+    if (qEnvironmentVariableIsSet("PADROB_PLAIN_DISPLAY")) return plainDisplay(qEnvironmentVariable("PADROB_PLAIN_DISPLAY"));
     CentreTest test;
     return QTest::qExec(&test, argc, argv);
 }

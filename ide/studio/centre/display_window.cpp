@@ -23,6 +23,7 @@ DisplayWindow::DisplayWindow(const QString& station, DisplayView::Screen screen,
 
     centre::BusOptions o = bus;
     o.reads = centre::TopicAnnounce | centre::TopicState;
+    if (o.node.isEmpty()) o.node = defaultNodeName(station, screen);
     QString error;
     m_bus = centre::Bus::open(o, &error);
     if (!m_bus) {
@@ -51,6 +52,16 @@ DisplayWindow::DisplayWindow(const QString& station, DisplayView::Screen screen,
 DisplayWindow::~DisplayWindow()
 {
     if (m_bus && !m_node.empty()) m_bus->withdraw(m_node);
+}
+
+QString DisplayWindow::defaultNodeName(const QString& station, DisplayView::Screen screen)
+{
+    static const char* const kSides[] = {"left", "centre", "right"};
+    QString name = QStringLiteral("display-%1-%2").arg(station, QLatin1String(kSides[int(screen)]));
+    // a name the centre's PKI takes (letters, digits, - _ . @): anything else becomes '_'
+    for (QChar& c : name)
+        if (!(c.isLetterOrNumber() && c.unicode() < 128) && c != '-' && c != '_' && c != '.' && c != '@') c = '_';
+    return name.left(64);
 }
 
 bool DisplayWindow::parseScreen(const QString& word, DisplayView::Screen* screen)

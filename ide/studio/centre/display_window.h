@@ -23,6 +23,8 @@ class DisplayWindow : public QWidget {
     Q_OBJECT
 public:
     /// Joins the centre on `bus` (its `reads` are set here) and shows `station`'s screen.
+    /// With DDS Security (bus.securityDir) the node's identity is bus.node, by default
+    /// defaultNodeName(station, screen).
     DisplayWindow(const QString& station, DisplayView::Screen screen, const trainer::centre::BusOptions& bus,
                   QWidget* parent = nullptr);
     ~DisplayWindow() override;
@@ -31,6 +33,9 @@ public:
     const DisplayFeed& feed() const { return m_feed; }
     /// Why the window cannot join the centre (translated; "" when it did).
     QString busError() const { return m_busError; }
+
+    /// "display-STATION-VIEW", made fit for a name in the centre's PKI.
+    static QString defaultNodeName(const QString& station, DisplayView::Screen screen);
 
     /// --view's words: "left", "centre" (or "center"), "right". False for anything else.
     static bool parseScreen(const QString& word, DisplayView::Screen* screen);

@@ -126,13 +126,17 @@ InstructorWindow::InstructorWindow(const centre::BusOptions& bus, const QString&
     // the network
     centre::BusOptions o = bus;
     o.reads = centre::TopicAnnounce | centre::TopicState | centre::TopicEvent | centre::TopicReply;
+    // its name: the one given; with DDS Security instructor@HOST, like `padrob instructor`
+    // (its identity in the PKI); else one name per window, as a station refuses a command
+    // whose nonce is not above the last one it took from that name
+    if (o.node.isEmpty()) {
+        o.node = QStringLiteral("instructor@") + QSysInfo::machineHostName();
+        if (o.securityDir.isEmpty()) o.node += QLatin1Char(':') + QString::number(QCoreApplication::applicationPid());
+    }
     QString error;
     m_bus = centre::Bus::open(o, &error);
     if (m_bus) {
-        // one name per window: a station refuses a command whose nonce is not above the
-        // last one it took from that name
-        m_nodeName = "instructor@" + QSysInfo::machineHostName().toStdString() + ":" +
-                     std::to_string(QCoreApplication::applicationPid());
+        m_nodeName = o.node.toStdString();
         m_node = std::make_unique<centre::InstructorNode>(*m_bus, m_nodeName, m_key, DisplayFeed::kSilentAfter);
         m_node->announce();
         m_poll->setTimerType(Qt::PreciseTimer);

@@ -33,7 +33,8 @@ class InstructorWindow : public QMainWindow {
     Q_OBJECT
 public:
     /// Joins the centre on `bus` (its `reads` are set here) with the key in `keyFile`
-    /// ("" none: watching only).
+    /// ("" none: watching only). Its name is bus.node, by default instructor@HOST:PID, or
+    /// instructor@HOST with DDS Security (bus.securityDir: its identity in the PKI).
     InstructorWindow(const trainer::centre::BusOptions& bus, const QString& keyFile, QWidget* parent = nullptr);
     ~InstructorWindow() override;
 

@@ -100,6 +100,7 @@ TrainStation::TrainStation(Host* host, TrainStationOptions options, QObject* par
     m_guard = std::make_unique<CommandGuard>(m_hasKey ? key : CentreKey());
     BusOptions net = m_o.network;
     net.reads = TopicCommand;
+    net.node = m_o.name;  // with DDS Security, its identity in the PKI (DIR/nodes/NAME)
     QString busError;
     m_bus = Bus::open(net, &busError);
     if (!m_bus) {
