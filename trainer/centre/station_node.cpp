@@ -143,7 +143,7 @@ void StationNode::tick(double nowS)
         m_nextState = std::max(m_nextState + 1.0 / m_o.stateRate, nowS - 0.5 / m_o.stateRate);
     }
     if (m_recording && nowS >= m_nextRecord) {
-        m_records->update(m_events);
+        m_records->update(m_session->events());
         m_nextRecord = nowS + 1.0;
     }
 }
@@ -183,13 +183,10 @@ void StationNode::publishState(double /*nowS*/)
 
 void StationNode::publishEvents()
 {
-    if (m_session) {
-        const std::vector<TutorialEvent>& ev = m_session->events();
-        for (; m_sessionEvents < ev.size(); ++m_sessionEvents) m_events.push_back(ev[m_sessionEvents]);
-    }
     const std::string lang = m_o.language.toStdString();
-    for (; m_published < m_events.size(); ++m_published) {
-        const TutorialEvent& e = m_events[m_published];
+    const std::vector<TutorialEvent>& events = m_session->events();
+    for (; m_published < events.size(); ++m_published) {
+        const TutorialEvent& e = events[m_published];
         Event out;
         out.station = m_o.name;
         out.seq = m_eventSeq++;
@@ -206,17 +203,8 @@ void StationNode::publishEvents()
 
 void StationNode::instructorEvent(const Command& c, const std::string& what)
 {
-    TutorialEvent e;
-    e.kind = TutorialEvent::Kind::Instructor;
-    e.t = m_session ? m_session->time() : 0.0;
-    e.detail = what + ":" + c.sender;
-    e.value = std::numeric_limits<double>::quiet_NaN();
-    // keep the order: the session's events so far come first
-    if (m_session) {
-        const std::vector<TutorialEvent>& ev = m_session->events();
-        for (; m_sessionEvents < ev.size(); ++m_sessionEvents) m_events.push_back(ev[m_sessionEvents]);
-    }
-    m_events.push_back(std::move(e));
+    // in the session's own list, so its record and its stream keep the order
+    m_session->addInstructorEvent(what, c.sender);
 }
 
 bool StationNode::start(const std::string& tutorialId, const std::string& operatorCode, std::string& why)
@@ -233,8 +221,7 @@ bool StationNode::start(const std::string& tutorialId, const std::string& operat
     }
     m_tutorial = t;
     m_session = std::make_unique<TutorialSession>(m_tutorial);
-    m_events.clear();
-    m_sessionEvents = m_published = 0;
+    m_published = 0;
     m_engine.reset();
     if (m_o.demoInput && !m_tutorial->demoFile.empty()) {
         auto log = std::make_shared<InputLog>();
@@ -265,7 +252,7 @@ void StationNode::finishRecord(bool aborted)
 {
     if (!m_recording) return;
     publishEvents();
-    m_records->finish(m_events, m_session->result(), aborted);
+    m_records->finish(m_session->events(), m_session->result(), aborted);
     m_recording = false;
 }
 

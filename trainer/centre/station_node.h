@@ -98,9 +98,7 @@ private:
     std::unique_ptr<StationRecords> m_records;
     bool m_recording = false;  ///< an attempt's record is open
     std::vector<double> m_input;
-    std::vector<TutorialEvent> m_events;  ///< the session's and the instructor's, in order
-    std::size_t m_sessionEvents = 0;      ///< how many of the session's are in m_events
-    std::size_t m_published = 0;          ///< how many of m_events went out
+    std::size_t m_published = 0;  ///< how many of the session's events went out
     std::string m_status = "idle";
     std::string m_operator;
     double m_simOffset = 0.0;  ///< wall time minus simulation time while running [s]
