@@ -6224,7 +6224,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>The model %1 was not drawn (does it have errors?).</translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+35" />
         <source>The simulation does not run.</source>
         <translation>The simulation does not run.</translation>
     </message>
@@ -7081,12 +7081,12 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::MainWindow</name>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+174" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+175" />
         <source>Export</source>
         <translation>Export</translation>
     </message>
     <message>
-        <location line="+317" />
+        <location line="+338" />
         <location line="+2" />
         <source>Model</source>
         <translation>Model</translation>
@@ -7122,7 +7122,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Station</translation>
     </message>
     <message>
-        <location line="-149" />
+        <location line="-170" />
         <source>Leave Trainer Mode</source>
         <translation>Leave Trainer Mode</translation>
     </message>
@@ -7132,7 +7132,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Trainer's PIN:</translation>
     </message>
     <message>
-        <location line="+157" />
+        <location line="+178" />
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -7237,13 +7237,13 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>&amp;Load…</translation>
     </message>
     <message>
-        <location line="-120" />
-        <location line="+213" />
+        <location line="-141" />
+        <location line="+245" />
         <source>Load Scene</source>
         <translation>Load Scene</translation>
     </message>
     <message>
-        <location line="-92" />
+        <location line="-103" />
         <source>&amp;None</source>
         <translation>&amp;None</translation>
     </message>
@@ -7306,7 +7306,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>&amp;Keyboard Controls…</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+39" />
         <location line="+11" />
         <source>C %1</source>
         <translation>C %1</translation>
@@ -7350,13 +7350,13 @@ never the .key files of the CAs; then run it with --security DIR.
 %2</translation>
     </message>
     <message>
-        <location line="-196" />
-        <location line="+264" />
+        <location line="-228" />
+        <location line="+296" />
         <source>Padrob models (*.pad);;All files (*)</source>
         <translation>Padrob models (*.pad);;All files (*)</translation>
     </message>
     <message numerus="yes">
-        <location line="-473" />
+        <location line="-505" />
         <source>%n attempt(s) kept while the trainee records could not be written were added to them.</source>
         <translation>
             <numerusform>%n attempt kept while the trainee records could not be written was added to them.</numerusform>
@@ -7369,7 +7369,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>The trainee records cannot be opened: %1</translation>
     </message>
     <message>
-        <location line="+340" />
+        <location line="+361" />
         <source>Se&amp;ttings</source>
         <translation>Se&amp;ttings</translation>
     </message>
@@ -7379,7 +7379,27 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>&amp;Language</translation>
     </message>
     <message>
-        <location line="+29" />
+        <location line="+1" />
+        <source>L&amp;ighting</source>
+        <translation>L&amp;ighting</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>&amp;Automatic: at the vertices on a software OpenGL, else at every pixel</source>
+        <translation>&amp;Automatic: at the vertices on a software OpenGL, else at every pixel</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>At every &amp;pixel (finer)</source>
+        <translation>At every &amp;pixel (finer)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>At the &amp;vertices (faster)</source>
+        <translation>At the &amp;vertices (faster)</translation>
+    </message>
+    <message>
+        <location line="+32" />
         <source>%1 (%2)</source>
         <comment>a drive and its bank</comment>
         <translation>%1 (%2)</translation>
@@ -9638,7 +9658,7 @@ Id: %3</translation>
 <context>
     <name>studio::Viewport</name>
     <message>
-        <location filename="../ide/studio/view/scene_geometry.cpp" line="+158" />
+        <location filename="../ide/studio/view/scene_geometry.cpp" line="+164" />
         <source>no file named</source>
         <translation>no file named</translation>
     </message>
@@ -9663,7 +9683,7 @@ Id: %3</translation>
         <translation>Graphic %1 (body %2): mesh "%3" is drawn as a box: %4.</translation>
     </message>
     <message>
-        <location filename="../ide/studio/view/viewport.cpp" line="+292" />
+        <location filename="../ide/studio/view/viewport.cpp" line="+331" />
         <source>Iso</source>
         <translation>Iso</translation>
     </message>
@@ -9689,13 +9709,13 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+117" />
-        <location line="+122" />
+        <location line="+136" />
         <source>The 3D view needs OpenGL 3.3, which this system does not provide.</source>
         <translation>The 3D view needs OpenGL 3.3, which this system does not provide.</translation>
     </message>
     <message>
-        <location line="-108" />
-        <location line="+24" />
+        <location line="-115" />
+        <location line="+30" />
         <source>The 3D view's shaders do not build: %1</source>
         <translation>The 3D view's shaders do not build: %1</translation>
     </message>
@@ -9716,7 +9736,7 @@ Id: %3</translation>
 <context>
     <name>studio::main</name>
     <message>
-        <location filename="../ide/studio/main.cpp" line="+60" />
+        <location filename="../ide/studio/main.cpp" line="+61" />
         <source>Padrob Studio: write a machine's model, simulate it in real time and drive it from the operator's devices.</source>
         <translation>Padrob Studio: write a machine's model, simulate it in real time and drive it from the operator's devices.</translation>
     </message>
@@ -9732,12 +9752,12 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+3" />
-        <location line="+51" />
+        <location line="+59" />
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location line="-48" />
+        <location line="-56" />
         <source>Measure instead of working, then quit: the start-up time, N frames of a 1920x1080 window paced at 60 Hz and N back to back, with one view and with three, the solver's step periods meanwhile, and the latency of 60 key presses to the solver.</source>
         <translation>Measure instead of working, then quit: the start-up time, N frames of a 1920x1080 window paced at 60 Hz and N back to back, with one view and with three, the solver's step periods meanwhile, and the latency of 60 key presses to the solver.</translation>
     </message>
@@ -9767,7 +9787,12 @@ Id: %3</translation>
         <translation>The language of the application and the tutorials (es or en).</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+4" />
+        <source>Where the 3D view computes its light: at every pixel (finer), at the vertices (faster on a software OpenGL), or auto: at the vertices on a software OpenGL, at every pixel on a GPU. Without it, the choice made in Settings &gt; Lighting (auto at first; --bench-frames: auto).</source>
+        <translation>Where the 3D view computes its light: at every pixel (finer), at the vertices (faster on a software OpenGL), or auto: at the vertices on a software OpenGL, at every pixel on a GPU. Without it, the choice made in Settings &gt; Lighting (auto at first; --bench-frames: auto).</translation>
+    </message>
+    <message>
+        <location line="+25" />
         <source>With --instructor or --station-name: the centre's key, which signs the commands (without it the instructor only watches and the station refuses every command).</source>
         <translation>With --instructor or --station-name: the centre's key, which signs the commands (without it the instructor only watches and the station refuses every command).</translation>
     </message>
@@ -9803,12 +9828,17 @@ Id: %3</translation>
         <translation>--lang must be es or en.</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+11" />
+        <source>--lighting must be auto, pixel or vertex.</source>
+        <translation>--lighting must be auto, pixel or vertex.</translation>
+    </message>
+    <message>
+        <location line="+18" />
         <source>--bench-frames needs a number of frames (1 or more) and --views 1 or 3.</source>
         <translation>--bench-frames needs a number of frames (1 or more) and --views 1 or 3.</translation>
     </message>
     <message>
-        <location line="-71" />
+        <location line="-87" />
         <source>Be a display node of the training centre: show STATION's machine from its operator's seat, driven by its state stream.</source>
         <translation>Be a display node of the training centre: show STATION's machine from its operator's seat, driven by its state stream.</translation>
     </message>
@@ -9858,7 +9888,7 @@ Id: %3</translation>
         <translation>ADDRESS</translation>
     </message>
     <message>
-        <location line="+64" />
+        <location line="+80" />
         <source>--domain must be a whole number from 0 to 232.</source>
         <translation>--domain must be a whole number from 0 to 232.</translation>
     </message>

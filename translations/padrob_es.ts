@@ -6249,7 +6249,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>El modelo %1 no se dibujó (¿tiene errores?).</translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+35" />
         <source>The simulation does not run.</source>
         <translation>La simulación no avanza.</translation>
     </message>
@@ -7106,12 +7106,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::MainWindow</name>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+174" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+175" />
         <source>Export</source>
         <translation>Exportar</translation>
     </message>
     <message>
-        <location line="+317" />
+        <location line="+338" />
         <location line="+2" />
         <source>Model</source>
         <translation>Modelo</translation>
@@ -7147,7 +7147,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Puesto</translation>
     </message>
     <message>
-        <location line="-149" />
+        <location line="-170" />
         <source>Leave Trainer Mode</source>
         <translation>Salir del modo quiosco</translation>
     </message>
@@ -7157,7 +7157,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>PIN del instructor:</translation>
     </message>
     <message>
-        <location line="+157" />
+        <location line="+178" />
         <source>&amp;File</source>
         <translation>&amp;Archivo</translation>
     </message>
@@ -7262,13 +7262,13 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>&amp;Cargar…</translation>
     </message>
     <message>
-        <location line="-120" />
-        <location line="+213" />
+        <location line="-141" />
+        <location line="+245" />
         <source>Load Scene</source>
         <translation>Cargar escena</translation>
     </message>
     <message>
-        <location line="-92" />
+        <location line="-103" />
         <source>&amp;None</source>
         <translation>&amp;Ninguna</translation>
     </message>
@@ -7331,7 +7331,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>&amp;Controles de teclado…</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+39" />
         <location line="+11" />
         <source>C %1</source>
         <translation>C %1</translation>
@@ -7375,13 +7375,13 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 %2</translation>
     </message>
     <message>
-        <location line="-196" />
-        <location line="+264" />
+        <location line="-228" />
+        <location line="+296" />
         <source>Padrob models (*.pad);;All files (*)</source>
         <translation>Modelos Padrob (*.pad);;Todos los archivos (*)</translation>
     </message>
     <message numerus="yes">
-        <location line="-473" />
+        <location line="-505" />
         <source>%n attempt(s) kept while the trainee records could not be written were added to them.</source>
         <translation>
             <numerusform>Se agregó a los registros de los aprendices %n intento guardado mientras no se podían escribir.</numerusform>
@@ -7394,7 +7394,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>No se pueden abrir los registros de los aprendices: %1</translation>
     </message>
     <message>
-        <location line="+340" />
+        <location line="+361" />
         <source>Se&amp;ttings</source>
         <translation>&amp;Configuración</translation>
     </message>
@@ -7404,7 +7404,27 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>&amp;Idioma</translation>
     </message>
     <message>
-        <location line="+29" />
+        <location line="+1" />
+        <source>L&amp;ighting</source>
+        <translation>I&amp;luminación</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>&amp;Automatic: at the vertices on a software OpenGL, else at every pixel</source>
+        <translation>&amp;Automática: en los vértices con un OpenGL por software; si no, en cada píxel</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>At every &amp;pixel (finer)</source>
+        <translation>En cada &amp;píxel (más fina)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>At the &amp;vertices (faster)</source>
+        <translation>En los &amp;vértices (más rápida)</translation>
+    </message>
+    <message>
+        <location line="+32" />
         <source>%1 (%2)</source>
         <comment>a drive and its bank</comment>
         <translation>%1 (%2)</translation>
@@ -9663,7 +9683,7 @@ Id: %3</translation>
 <context>
     <name>studio::Viewport</name>
     <message>
-        <location filename="../ide/studio/view/scene_geometry.cpp" line="+158" />
+        <location filename="../ide/studio/view/scene_geometry.cpp" line="+164" />
         <source>no file named</source>
         <translation>no se indicó un archivo</translation>
     </message>
@@ -9688,7 +9708,7 @@ Id: %3</translation>
         <translation>Gráfico %1 (cuerpo %2): la malla "%3" se dibuja como una caja: %4.</translation>
     </message>
     <message>
-        <location filename="../ide/studio/view/viewport.cpp" line="+292" />
+        <location filename="../ide/studio/view/viewport.cpp" line="+331" />
         <source>Iso</source>
         <translation>Iso</translation>
     </message>
@@ -9714,13 +9734,13 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+117" />
-        <location line="+122" />
+        <location line="+136" />
         <source>The 3D view needs OpenGL 3.3, which this system does not provide.</source>
         <translation>La vista 3D necesita OpenGL 3.3, que este sistema no ofrece.</translation>
     </message>
     <message>
-        <location line="-108" />
-        <location line="+24" />
+        <location line="-115" />
+        <location line="+30" />
         <source>The 3D view's shaders do not build: %1</source>
         <translation>Los shaders de la vista 3D no se compilan: %1</translation>
     </message>
@@ -9741,7 +9761,7 @@ Id: %3</translation>
 <context>
     <name>studio::main</name>
     <message>
-        <location filename="../ide/studio/main.cpp" line="+60" />
+        <location filename="../ide/studio/main.cpp" line="+61" />
         <source>Padrob Studio: write a machine's model, simulate it in real time and drive it from the operator's devices.</source>
         <translation>Padrob Studio: escriba el modelo de una máquina, simúlelo en tiempo real y opérelo desde los dispositivos del operador.</translation>
     </message>
@@ -9757,12 +9777,12 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+3" />
-        <location line="+51" />
+        <location line="+59" />
         <source>FILE</source>
         <translation>ARCHIVO</translation>
     </message>
     <message>
-        <location line="-48" />
+        <location line="-56" />
         <source>Measure instead of working, then quit: the start-up time, N frames of a 1920x1080 window paced at 60 Hz and N back to back, with one view and with three, the solver's step periods meanwhile, and the latency of 60 key presses to the solver.</source>
         <translation>Medir en vez de trabajar, y luego salir: el tiempo de inicio, N cuadros de una ventana de 1920x1080 a 60 Hz y N seguidos, con una vista y con tres, los periodos de paso del solver mientras tanto, y la latencia de 60 pulsaciones de tecla hasta el solver.</translation>
     </message>
@@ -9792,7 +9812,12 @@ Id: %3</translation>
         <translation>El idioma de la aplicación y de los tutoriales (es o en).</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+4" />
+        <source>Where the 3D view computes its light: at every pixel (finer), at the vertices (faster on a software OpenGL), or auto: at the vertices on a software OpenGL, at every pixel on a GPU. Without it, the choice made in Settings &gt; Lighting (auto at first; --bench-frames: auto).</source>
+        <translation>Dónde calcula la luz la vista 3D: en cada píxel (pixel, más fina), en los vértices (vertex, más rápida con un OpenGL por software) o auto: en los vértices con un OpenGL por software y en cada píxel con una GPU. Sin ella, lo elegido en Configuración &gt; Iluminación (auto al principio; con --bench-frames: auto).</translation>
+    </message>
+    <message>
+        <location line="+25" />
         <source>With --instructor or --station-name: the centre's key, which signs the commands (without it the instructor only watches and the station refuses every command).</source>
         <translation>Con --instructor o --station-name: la clave del centro, que firma las órdenes (sin ella el instructor solo observa y el puesto rechaza toda orden).</translation>
     </message>
@@ -9828,12 +9853,17 @@ Id: %3</translation>
         <translation>--lang debe ser es o en.</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+11" />
+        <source>--lighting must be auto, pixel or vertex.</source>
+        <translation>--lighting debe ser auto, pixel o vertex.</translation>
+    </message>
+    <message>
+        <location line="+18" />
         <source>--bench-frames needs a number of frames (1 or more) and --views 1 or 3.</source>
         <translation>--bench-frames necesita un número de cuadros (1 o más) y --views 1 o 3.</translation>
     </message>
     <message>
-        <location line="-71" />
+        <location line="-87" />
         <source>Be a display node of the training centre: show STATION's machine from its operator's seat, driven by its state stream.</source>
         <translation>Ser una pantalla del centro de entrenamiento: mostrar la máquina de PUESTO desde el asiento de su operador, movida por su flujo de estado.</translation>
     </message>
@@ -9883,7 +9913,7 @@ Id: %3</translation>
         <translation>DIRECCIÓN</translation>
     </message>
     <message>
-        <location line="+64" />
+        <location line="+80" />
         <source>--domain must be a whole number from 0 to 232.</source>
         <translation>--domain debe ser un número entero de 0 a 232.</translation>
     </message>

@@ -25,6 +25,7 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QElapsedTimer>
+#include <QSettings>
 #include <QSurfaceFormat>
 
 #include <clocale>
@@ -100,7 +101,15 @@ int main(int argc, char** argv)
         QStringLiteral("lang"),
         QCoreApplication::translate("studio::main", "The language of the application and the tutorials (es or en)."),
         QStringLiteral("es|en"));
-    parser.addOptions({scene, bench, views, json, trainerMode, operatorId, lang});
+    const QCommandLineOption lighting(
+        QStringLiteral("lighting"),
+        QCoreApplication::translate("studio::main",
+                                    "Where the 3D view computes its light: at every pixel (finer), at the vertices "
+                                    "(faster on a software OpenGL), or auto: at the vertices on a software OpenGL, "
+                                    "at every pixel on a GPU. Without it, the choice made in Settings > Lighting "
+                                    "(auto at first; --bench-frames: auto)."),
+        QStringLiteral("auto|pixel|vertex"));
+    parser.addOptions({scene, bench, views, json, trainerMode, operatorId, lang, lighting});
 #ifdef PADROB_HAVE_DDS
     // the training centre (docs/training-centre.md)
     const QCommandLineOption displayOf(
@@ -169,6 +178,22 @@ int main(int argc, char** argv)
         return 2;
     }
     const QString model = parser.positionalArguments().value(0);
+    // the 3D views' lighting: the option, else the one chosen last (not when measuring)
+    {
+        studio::Viewport::Lighting l = studio::Viewport::Lighting::Automatic;
+        if (parser.isSet(lighting)) {
+            if (!studio::Viewport::lightingFromName(parser.value(lighting), l)) {
+                std::fputs(qPrintable(QCoreApplication::translate("studio::main",
+                                                                  "--lighting must be auto, pixel or vertex.") +
+                                      QLatin1Char('\n')),
+                           stderr);
+                return 2;
+            }
+        } else if (!parser.isSet(bench)) {
+            studio::Viewport::lightingFromName(QSettings().value(QStringLiteral("view/lighting")).toString(), l);
+        }
+        studio::Viewport::setLighting(l);
+    }
 
     if (parser.isSet(bench)) {
         studio::FrameBenchOptions options;

@@ -92,7 +92,7 @@ private slots:
         const Run r = runStudio({QStringLiteral("--help")}, home.path(), 60000);
         QVERIFY(r.finished);
         QCOMPARE(r.exitCode, 0);
-        for (const char* option : {"--scene", "--bench-frames", "--views", "--json", "[MODEL]"})
+        for (const char* option : {"--scene", "--bench-frames", "--views", "--json", "--lighting", "[MODEL]"})
             QVERIFY2(r.out.contains(option), option);
     }
 
@@ -105,6 +105,27 @@ private slots:
             QVERIFY(r.finished);
             QCOMPARE(r.exitCode, 2);
             QVERIFY(r.err.contains("--bench-frames"));
+        }
+    }
+
+    void lightingIsChosenOnTheCommandLine()
+    {
+        QTemporaryDir home;
+        const Run bad = runStudio({"--lighting", "gouraud", "--bench-frames", "2"}, home.path(), 60000);
+        QVERIFY(bad.finished);
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains("--lighting must be auto, pixel or vertex"), bad.err.constData());
+        // the bench says where the light was computed: as asked, and by itself on llvmpipe
+        for (const char* lighting : {"pixel", "vertex", "auto"}) {
+            const Run r = runStudio({"--bench-frames", "2", "--views", "1", "--json", "--lighting", lighting},
+                                    home.path());
+            QVERIFY2(r.finished && r.exitCode == 0, r.err.constData());
+            const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+            const bool software = o["renderer"].toString().contains("llvmpipe");
+            const QString expected = QLatin1String(lighting) == QLatin1String("auto")
+                                         ? QString::fromLatin1(software ? "vertex" : "pixel")
+                                         : QString::fromLatin1(lighting);
+            QCOMPARE(o["lighting"].toString(), expected);
         }
     }
 
@@ -128,6 +149,7 @@ private slots:
         QCOMPARE(o["window"]["height"].toInt(), 1080);
         QVERIFY(o["cpus"].toInt() >= 1);
         QVERIFY(o.contains("renderer"));
+        QVERIFY(o["lighting"].toString() == "vertex" || o["lighting"].toString() == "pixel");
         // start-up: from the process's start, and from main() (not longer)
         QVERIFY(o["startup_ms"].toDouble() > 0);
         QVERIFY(o["startup_from_main_ms"].toDouble() > 0);

@@ -294,6 +294,58 @@ private slots:
         w.editor()->undo();
     }
 
+    void settingsLightingRedrawsEveryViewAndIsRemembered()
+    {
+        // (the recent files as they were: opening a model adds to them)
+        struct Restore {
+            QVariant recent = QSettings().value("recentFiles");
+            ~Restore()
+            {
+                Viewport::setLighting(Viewport::Lighting::Automatic);
+                QSettings().remove("view/lighting");
+                if (recent.isValid()) QSettings().setValue("recentFiles", recent);
+                else QSettings().remove("recentFiles");
+            }
+        } restore;
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QMenu* menu = w.findChild<QMenu*>("LightingMenu");
+        QVERIFY(menu);
+        QCOMPARE(menu->actions().size(), 3);
+        auto* automatic = w.findChild<QAction*>("Lighting_auto");
+        auto* pixel = w.findChild<QAction*>("Lighting_pixel");
+        auto* vertex = w.findChild<QAction*>("Lighting_vertex");
+        QVERIFY(automatic && pixel && vertex);
+        QVERIFY(automatic->isChecked());
+        QVERIFY(!pixel->text().isEmpty() && !vertex->text().isEmpty());
+        QVERIFY(openAndWait(w, QStringLiteral(PADROB_SOURCE_DIR "/models/liner_manipulator.pad")));
+        QApplication::processEvents();
+        Viewport* view = w.viewports()->viewport(0);
+        pixel->trigger();
+        QCOMPARE(Viewport::lighting(), Viewport::Lighting::PerPixel);
+        QCOMPARE(QSettings().value("view/lighting").toString(), QStringLiteral("pixel"));
+        QVERIFY(!view->lightsPerVertex());
+        const QImage atPixels = view->grabFramebuffer();
+        vertex->trigger();
+        QVERIFY(vertex->isChecked() && !pixel->isChecked());
+        QCOMPARE(Viewport::lighting(), Viewport::Lighting::PerVertex);
+        QCOMPARE(QSettings().value("view/lighting").toString(), QStringLiteral("vertex"));
+        QVERIFY(view->lightsPerVertex());
+        const QImage atVertices = view->grabFramebuffer();
+        QVERIFY(atPixels != atVertices);  // the same model, shaded otherwise
+        // translated with the rest of the menus
+        const QString english = vertex->text();
+        chooseLanguage(w, "es");
+        QTRY_COMPARE(vertex->text(), QStringLiteral("En los &vértices (más rápida)"));
+        QCOMPARE(menu->title(), QStringLiteral("I&luminación"));
+        QVERIFY(vertex->isChecked());
+        chooseLanguage(w, "en");
+        QTRY_COMPARE(vertex->text(), english);
+        automatic->trigger();
+        QCOMPARE(Viewport::lighting(), Viewport::Lighting::Automatic);
+    }
+
     void opensEveryBundledModel()
     {
         MainWindow w;
@@ -308,7 +360,8 @@ private slots:
             // the view draws it
             QApplication::processEvents();
             const QImage image = w.viewports()->viewport(0)->grabFramebuffer();
-            QVERIFY2(colourCount(image) > 50, qPrintable(f.fileName()));
+            // (lit at the vertices here, on llvmpipe: a flat face is one colour)
+            QVERIFY2(colourCount(image) > 30, qPrintable(f.fileName()));
         }
     }
 

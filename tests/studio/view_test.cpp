@@ -143,6 +143,20 @@ QImage render(Viewport& view)
     return view.grabFramebuffer();
 }
 
+/// The liner manipulator in the SAG mill, in `view` shown at 1280 × 720.
+bool showLinerInMill(Viewport& view)
+{
+    auto bundle = modelBundle(QStringLiteral("liner_manipulator.pad"));
+    const studio::SceneFile mill = studio::loadSceneFile(millScenePath());
+    if (!bundle || !mill.bundle) return false;
+    view.resize(1280, 720);
+    view.show();
+    if (!QTest::qWaitForWindowExposed(&view)) return false;
+    view.setBundle(bundle);
+    view.setScene(mill.bundle);
+    return true;
+}
+
 /// A shown viewport of 800 × 600.
 struct Shown {
     Viewport view;
@@ -403,14 +417,27 @@ private slots:
         QImage image[3];
         const DisplayMode modes[3] = {DisplayMode::Schematic, DisplayMode::Dressed, DisplayMode::Both};
         const char* names[3] = {"schematic", "dressed", "both"};
+        struct Restore {
+            ~Restore() { Viewport::setLighting(Viewport::Lighting::Automatic); }
+        } restore;
         for (int k = 0; k < 3; ++k) {
             shown.view.setDisplayMode(modes[k]);
+            // lit at every pixel, then at the vertices: the same picture, with fewer
+            // shades (a flat face takes one colour)
+            Viewport::setLighting(Viewport::Lighting::PerPixel);
+            const QImage pixel = render(shown.view);
+            save(pixel, base + QLatin1Char('_') + QLatin1String(names[k]) + QStringLiteral("_lit_pixel"));
+            Viewport::setLighting(Viewport::Lighting::PerVertex);
             image[k] = render(shown.view);
             save(image[k], base + QLatin1Char('_') + QLatin1String(names[k]));
-            const Stats s = stats(image[k]);
             const QString what = file + QLatin1Char(' ') + QLatin1String(names[k]);
-            QVERIFY2(s.distinct > 100, qPrintable(QStringLiteral("%1: %2 colours").arg(what).arg(s.distinct)));
-            QVERIFY2(s.content > 0.02, qPrintable(QStringLiteral("%1: %2 drawn").arg(what).arg(s.content)));
+            const QImage& vertex = image[k];
+            for (const auto& [lit, minimum] : {std::pair{&pixel, 100}, std::pair{&vertex, 40}}) {
+                const Stats s = stats(*lit);
+                QVERIFY2(s.distinct > minimum, qPrintable(QStringLiteral("%1: %2 colours").arg(what).arg(s.distinct)));
+                QVERIFY2(s.content > 0.02, qPrintable(QStringLiteral("%1: %2 drawn").arg(what).arg(s.content)));
+            }
+            QVERIFY2(difference(pixel, image[k]) < 0.01, qPrintable(what));
         }
         QVERIFY2(countPixels(image[0], purple) > 150, qPrintable(file));  // the bodies' bars
         QVERIFY2(countPixels(image[0], green) > 50, qPrintable(file));    // the joints (and the y axis)
@@ -860,6 +887,89 @@ private slots:
             strip.box(Eigen::Vector3d(1, 1, 1));
             strip.append(flipped);
             QCOMPARE(studio::closedWinding(strip, 0, std::uint32_t(strip.indices.size()), 1e-6), 0);
+            // a tube: its inner wall faces the axis, its two ends outwards
+            studio::MeshBuilder t;
+            t.tube(1.0, 0.6, 2.0);
+            QCOMPARE(studio::closedWinding(t, 0, std::uint32_t(t.indices.size()), 1e-6), 1);
+        }
+
+        // large faces cut into a grid (for lighting at the vertices): still closed solids,
+        // no edge longer than asked, neighbouring faces cut alike
+        {
+            const double edge = 0.3;
+            auto longest = [](const studio::MeshBuilder& m) {
+                double out = 0;
+                for (std::size_t k = 0; k + 2 < m.indices.size(); k += 3) {
+                    for (int e = 0; e < 3; ++e) {
+                        const float* a = m.vertices[m.indices[k + e]].position;
+                        const float* b = m.vertices[m.indices[k + (e + 1) % 3]].position;
+                        out = std::max(out, double(std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2])));
+                    }
+                }
+                return out;
+            };
+            studio::MeshBuilder box;
+            box.setMaxEdge(edge);
+            box.box(Eigen::Vector3d(1, 2, 3));
+            // 4 × 7 × 10 cuts: 2 (7·10 + 10·4 + 4·7) quads
+            QCOMPARE(box.indices.size(), std::size_t(3 * 2 * 2 * (70 + 40 + 28)));
+            QCOMPARE(studio::closedWinding(box, 0, std::uint32_t(box.indices.size()), 1e-6), 1);
+            QVERIFY(longest(box) <= edge * std::sqrt(2.0) + 1e-6);  // a cell's diagonal
+            // placed turned and moved, the cuts follow the placed lengths
+            studio::MeshBuilder placed;
+            placed.setMaxEdge(edge);
+            Eigen::Affine3d turn = Eigen::Affine3d::Identity();
+            turn.rotate(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()));
+            turn.translation() = Eigen::Vector3d(5, -2, 1);
+            placed.setTransform(turn);
+            placed.box(Eigen::Vector3d(1, 2, 3));
+            QCOMPARE(placed.indices.size(), box.indices.size());
+            QCOMPARE(studio::closedWinding(placed, 0, std::uint32_t(placed.indices.size()), 1e-6), 1);
+            for (int shape = 0; shape < 3; ++shape) {
+                studio::MeshBuilder m;
+                m.setMaxEdge(edge);
+                if (shape == 0) m.cylinder(1.0, 0.0, 2.0);
+                if (shape == 1) m.tube(1.0, 0.6, 2.0);
+                if (shape == 2) m.cone(1.0, 2.0);
+                studio::MeshBuilder coarse;
+                if (shape == 0) coarse.cylinder(1.0, 0.0, 2.0);
+                if (shape == 1) coarse.tube(1.0, 0.6, 2.0);
+                if (shape == 2) coarse.cone(1.0, 2.0);
+                QCOMPARE(studio::closedWinding(m, 0, std::uint32_t(m.indices.size()), 1e-6), 1);
+                QCOMPARE(studio::closedWinding(coarse, 0, std::uint32_t(coarse.indices.size()), 1e-6), 1);
+                QVERIFY(m.indices.size() > coarse.indices.size());
+                QCOMPARE(m.bounds().min(), coarse.bounds().min());
+                QCOMPARE(m.bounds().max(), coarse.bounds().max());
+            }
+            // without a maximum, as before: one quad a face
+            studio::MeshBuilder plain;
+            plain.box(Eigen::Vector3d(10, 20, 30));
+            QCOMPARE(plain.indices.size(), std::size_t(36));
+        }
+
+        // which side of a plane, and whether the near plane's rectangle cuts a solid open:
+        // a tube along z (radius 1, bore 0.6, 2 long)
+        {
+            studio::MeshBuilder t;
+            t.tube(1.0, 0.6, 2.0);
+            studio::CullPart part;
+            part.range = {0, std::uint32_t(t.indices.size())};
+            part.box = t.bounds();
+            part.winding = studio::closedWinding(t, 0, part.range.count, 1e-6);
+            QCOMPARE(studio::planeSide(t, part, Eigen::Vector4d(0, 0, 1, 5)), 1);    // z ≥ −5: all kept
+            QCOMPARE(studio::planeSide(t, part, Eigen::Vector4d(0, 0, 1, -5)), -1);  // z ≥ 5: all cut away
+            QCOMPARE(studio::planeSide(t, part, Eigen::Vector4d(1, 0, 0, 0)), 0);    // x ≥ 0: cut through
+            auto quadAt = [](const Eigen::Vector3d& c, double h) {
+                return std::array<Eigen::Vector3d, 4>{c + Eigen::Vector3d(-h, -h, 0), c + Eigen::Vector3d(h, -h, 0),
+                                                      c + Eigen::Vector3d(h, h, 0), c + Eigen::Vector3d(-h, h, 0)};
+            };
+            QVERIFY(studio::solidClearOf(t, part, quadAt(Eigen::Vector3d(0, 0, 0), 0.05), 0.01));   // in the bore
+            QVERIFY(studio::solidClearOf(t, part, quadAt(Eigen::Vector3d(3, 0, 0), 0.05), 0.01));   // far outside
+            QVERIFY(studio::solidClearOf(t, part, quadAt(Eigen::Vector3d(1.5, 0, 0), 0.05), 0.01)); // beside it
+            QVERIFY(!studio::solidClearOf(t, part, quadAt(Eigen::Vector3d(0.8, 0, 0), 0.05), 0.01));  // in the wall
+            QVERIFY(!studio::solidClearOf(t, part, quadAt(Eigen::Vector3d(1.0, 0, 0), 0.05), 0.01));  // across it
+            // within the margin of the bore
+            QVERIFY(!studio::solidClearOf(t, part, quadAt(Eigen::Vector3d(0.57, 0, 0), 0.01), 0.05));
         }
 
         // the mill and the machine: many closed solids; the pictures are the same with
@@ -888,15 +998,25 @@ private slots:
         view.setBundle(bundle);
         view.setScene(mill.bundle);
         QVERIFY(Viewport::backFaceCulling());  // the default
+        struct Restore {
+            ~Restore() { Viewport::setLighting(Viewport::Lighting::Automatic); }
+        } restore;
         auto compare = [&](const QString& name) {
-            Viewport::setBackFaceCulling(false);
-            const QImage all = render(view);
-            Viewport::setBackFaceCulling(true);
-            const QImage culled = render(view);
-            const double d = difference(all, culled);
-            qInfo("%s: %.5f of the pixels differ with culling", qPrintable(name), d);
-            QVERIFY2(d < 0.0005, qPrintable(name));
-            QVERIFY(stats(culled).distinct > 50);
+            for (const auto lighting : {Viewport::Lighting::PerPixel, Viewport::Lighting::PerVertex}) {
+                Viewport::setLighting(lighting);
+                Viewport::setBackFaceCulling(false);
+                const QImage all = render(view);
+                Viewport::setBackFaceCulling(true);
+                const QImage culled = render(view);
+                const double d = difference(all, culled);
+                qInfo("%s, lit at %s: %.5f of the pixels differ with culling", qPrintable(name),
+                      lighting == Viewport::Lighting::PerPixel ? "every pixel" : "the vertices", d);
+                // silhouettes only: where a culled back face met a front face at the same depth
+                // (the longest, the feed-end head's opening rim seen from below: a line one
+                // pixel wide, 0.11 % of the pixels)
+                QVERIFY2(d < 0.0015, qPrintable(name));
+                QVERIFY(stats(culled).distinct > 50);
+            }
         };
         for (const QString& name : {QStringLiteral("Iso"), QStringLiteral("Operator seat"), QStringLiteral("Front"),
                                     QStringLiteral("Side"), QStringLiteral("Top")}) {
@@ -920,6 +1040,77 @@ private slots:
         compare(QStringLiteral("both"));
         view.setDisplayMode(DisplayMode::Schematic);
         compare(QStringLiteral("schematic"));
+    }
+
+    void lightingAtTheVerticesLooksLikeLightingAtEveryPixel()
+    {
+        // Automatic: at the vertices on a software OpenGL (llvmpipe here), at every pixel
+        // on a GPU; the choice is every viewport's at its next frame
+        struct Restore {
+            ~Restore() { Viewport::setLighting(Viewport::Lighting::Automatic); }
+        } restore;
+        QCOMPARE(Viewport::lighting(), Viewport::Lighting::Automatic);
+        for (const char* name : {"auto", "pixel", "vertex"}) {
+            Viewport::Lighting l{};
+            QVERIFY(Viewport::lightingFromName(QLatin1String(name), l));
+            QCOMPARE(Viewport::lightingName(l), QLatin1String(name));
+        }
+        Viewport::Lighting unknown = Viewport::Lighting::PerPixel;
+        QVERIFY(!Viewport::lightingFromName(QStringLiteral("gouraud"), unknown));
+        QCOMPARE(unknown, Viewport::Lighting::PerPixel);
+
+        Viewport view;
+        QVERIFY(showLinerInMill(view));
+        render(view);
+        qInfo("OpenGL renderer: %s", qPrintable(view.renderer()));
+        QVERIFY(!view.renderer().isEmpty());
+        const bool software = view.renderer().contains(QLatin1String("llvmpipe"), Qt::CaseInsensitive) ||
+                              view.renderer().contains(QLatin1String("softpipe"), Qt::CaseInsensitive);
+        QCOMPARE(view.lightsPerVertex(), software);
+
+        // mean difference per channel, and the pixels that differ by more than 24 of 255
+        auto compare = [](const QImage& a, const QImage& b, double& mean, double& far) {
+            const QImage x = a.convertToFormat(QImage::Format_RGB32), y = b.convertToFormat(QImage::Format_RGB32);
+            double sum = 0;
+            long n = 0;
+            for (int r = 0; r < x.height(); ++r) {
+                const auto* p = reinterpret_cast<const QRgb*>(x.constScanLine(r));
+                const auto* q = reinterpret_cast<const QRgb*>(y.constScanLine(r));
+                for (int c = 0; c < x.width(); ++c) {
+                    sum += std::abs(qRed(p[c]) - qRed(q[c])) + std::abs(qGreen(p[c]) - qGreen(q[c])) +
+                           std::abs(qBlue(p[c]) - qBlue(q[c]));
+                    n += channelDiff(p[c], q[c]) > 24 ? 1 : 0;
+                }
+            }
+            mean = sum / (3.0 * x.width() * x.height());
+            far = static_cast<double>(n) / (x.width() * x.height());
+        };
+        for (const QString& camera : {QStringLiteral("Iso"), QStringLiteral("Operator seat")}) {
+            QVERIFY(view.setCamera(camera));
+            Viewport::setLighting(Viewport::Lighting::PerPixel);
+            const QImage pixel = render(view);
+            QVERIFY(!view.lightsPerVertex());
+            Viewport::setLighting(Viewport::Lighting::PerVertex);
+            const QImage vertex = render(view);
+            QVERIFY(view.lightsPerVertex());
+            const QString tag = camera == QLatin1String("Iso") ? QStringLiteral("iso") : QStringLiteral("seat");
+            save(pixel, QStringLiteral("scene_mill_") + tag + QStringLiteral("_lit_pixel"));
+            save(vertex, QStringLiteral("scene_mill_") + tag + QStringLiteral("_lit_vertex"));
+            double mean = 0, far = 0;
+            compare(pixel, vertex, mean, far);
+            qInfo("%s: lit at the vertices, a pixel differs by %.2f of 255 on average; %.4f of the pixels by more "
+                  "than 24",
+                  qPrintable(camera), mean, far);
+            QVERIFY2(mean < 3.0, qPrintable(camera));
+            QVERIFY2(far < 0.02, qPrintable(camera));
+            // the workers' vests and hats, and the lamps, stand out alike
+            using Test = std::function<bool(int, int, int)>;
+            for (const Test& test : {Test(vestOrange), Test(lampWhite)}) {
+                const int a = countPixels(pixel, test), b = countPixels(vertex, test);
+                QVERIFY2(std::abs(a - b) <= std::max(50, a / 5),
+                         qPrintable(QStringLiteral("%1: %2 and %3").arg(camera).arg(a).arg(b)));
+            }
+        }
     }
 
     void sceneLampsGlowAndLightTheirSurroundings()

@@ -247,11 +247,10 @@ int runFrameBench(const FrameBenchOptions& o)
     result.insert("window", QJsonObject{{"width", window.width()}, {"height", window.height()}});
     result.insert("cpus", QThread::idealThreadCount());
     {
-        Viewport* v = layout->viewport(0);
-        v->makeCurrent();
-        const auto* renderer = v->context() ? v->context()->functions()->glGetString(GL_RENDERER) : nullptr;
-        result.insert("renderer", renderer ? QString::fromLatin1(reinterpret_cast<const char*>(renderer)) : QString());
-        v->doneCurrent();
+        const Viewport* v = layout->viewport(0);
+        result.insert("renderer", v->renderer());
+        // where the light is computed (Viewport::setLighting, --lighting)
+        result.insert("lighting", v->lightsPerVertex() ? QStringLiteral("vertex") : QStringLiteral("pixel"));
     }
 
     // ---- the simulation, every drive following a slow sine
@@ -431,7 +430,8 @@ int runFrameBench(const FrameBenchOptions& o)
         out << "padrob-studio frame bench: " << QFileInfo(model).fileName()
             << (sceneFile.isEmpty() ? QString() : " in " + QFileInfo(sceneFile).fileName()) << ", window "
             << window.width() << " x " << window.height() << ", " << frames << " frames per measurement, "
-            << result["renderer"].toString() << ", " << QThread::idealThreadCount() << " CPUs\n";
+            << result["renderer"].toString() << ", " << QThread::idealThreadCount() << " CPUs, lit "
+            << (result["lighting"].toString() == "vertex" ? "at the vertices" : "at every pixel") << "\n";
         if (result.contains("scene_error")) out << "scene not used: " << result["scene_error"].toString() << "\n";
         out << "start-up to the first drawn frame: " << fmt(result["startup_ms"].toDouble(), 0)
             << " ms from the process's start (" << fmt(startupMain, 0) << " ms from main)\n";

@@ -80,7 +80,7 @@ QString docsDir()
 struct MainWindow::MenuItems {
     QMenu *file = nullptr, *examples = nullptr, *edit = nullptr, *view = nullptr, *camera = nullptr, *scene = nullptr,
           *screens = nullptr, *simulation = nullptr, *speed = nullptr, *settings = nullptr, *language = nullptr,
-          *help = nullptr;
+          *lighting = nullptr, *help = nullptr;
     QAction *newModel = nullptr, *open = nullptr, *save = nullptr, *saveAs = nullptr, *quit = nullptr;
     QAction *undo = nullptr, *redo = nullptr, *apply = nullptr, *inertia = nullptr;
     QAction *fitAll = nullptr, *loadScene = nullptr, *noScene = nullptr, *frames = nullptr, *separate = nullptr;
@@ -90,6 +90,7 @@ struct MainWindow::MenuItems {
     std::vector<std::pair<QAction*, int>> screenCounts;
     std::vector<std::pair<QAction*, double>> speeds;
     std::vector<std::pair<QAction*, QString>> languages;  ///< with the language's code
+    std::vector<std::pair<QAction*, Viewport::Lighting>> lightings;
 };
 
 MainWindow::MainWindow(QWidget* parent)
@@ -466,6 +467,27 @@ void MainWindow::buildMenus()
         languages->addAction(a);
         m.languages.emplace_back(a, code);
     }
+    // Settings ▸ Lighting: where the 3D views compute their light (Viewport::setLighting);
+    // remembered, and every view redrawn at once
+    m.lighting = m.settings->addMenu(QString());
+    m.lighting->setObjectName("LightingMenu");
+    auto* lightings = new QActionGroup(this);
+    lightings->setExclusive(true);
+    for (Viewport::Lighting l : {Viewport::Lighting::Automatic, Viewport::Lighting::PerPixel,
+                                 Viewport::Lighting::PerVertex}) {
+        QAction* a = m.lighting->addAction(QString(), this, [l] {
+            Viewport::setLighting(l);
+            QSettings().setValue("view/lighting", Viewport::lightingName(l));
+            for (QWidget* w : QApplication::allWidgets()) {
+                if (auto* v = qobject_cast<Viewport*>(w)) v->renderNow();
+            }
+        });
+        a->setObjectName("Lighting_" + Viewport::lightingName(l));
+        a->setCheckable(true);
+        a->setChecked(l == Viewport::lighting());
+        lightings->addAction(a);
+        m.lightings.emplace_back(a, l);
+    }
 
     // Help
     m.help = menuBar()->addMenu(QString());
@@ -538,6 +560,17 @@ void MainWindow::retranslate()
     m.keyboard->setText(tr("&Keyboard Controls…"));
     m.settings->setTitle(tr("Se&ttings"));
     m.language->setTitle(tr("&Language"));
+    m.lighting->setTitle(tr("L&ighting"));
+    for (const auto& [action, l] : m.lightings) {
+        switch (l) {
+        case Viewport::Lighting::Automatic:
+            action->setText(tr("&Automatic: at the vertices on a software OpenGL, else at every pixel"));
+            break;
+        case Viewport::Lighting::PerPixel: action->setText(tr("At every &pixel (finer)")); break;
+        case Viewport::Lighting::PerVertex: action->setText(tr("At the &vertices (faster)")); break;
+        }
+        action->setChecked(l == Viewport::lighting());
+    }
     for (const auto& [action, code] : m.languages) action->setChecked(code == i18n::current());
     m.help->setTitle(tr("&Help"));
     m.reference->setText(tr("Model &Language Reference"));

@@ -52,12 +52,48 @@ void MeshBuilder::quad(const Vector3d& a, const Vector3d& b, const Vector3d& c, 
     triangle(i0, i2, i3);
 }
 
+int MeshBuilder::pieces(double length, const Vector3d& direction) const
+{
+    if (!(m_maxEdge > 0)) return 1;
+    const double placed = std::abs(length) * (m_transform.linear() * direction).norm();
+    // at most 64 a side: a face far larger than the lamps' reach needs no finer grid
+    return static_cast<int>(std::clamp(std::ceil(placed / m_maxEdge - 1e-9), 1.0, 64.0));
+}
+
+void MeshBuilder::grid(const Vector3d& a, const Vector3d& b, const Vector3d& d, const Vector3d& n, int nab,
+                       int nad)
+{
+    if (nab <= 1 && nad <= 1) {
+        quad(a, b, b + d - a, d, n);
+        return;
+    }
+    const std::uint32_t first = static_cast<std::uint32_t>(vertices.size());
+    const Vector3d ab = b - a, ad = d - a;
+    for (int j = 0; j <= nad; ++j) {
+        for (int i = 0; i <= nab; ++i) vertex(a + ab * (double(i) / nab) + ad * (double(j) / nad), n);
+    }
+    const auto row = static_cast<std::uint32_t>(nab + 1);
+    for (int j = 0; j < nad; ++j) {
+        for (int i = 0; i < nab; ++i) {
+            const std::uint32_t p = first + static_cast<std::uint32_t>(j) * row + static_cast<std::uint32_t>(i);
+            triangle(p, p + 1, p + row + 1);
+            triangle(p, p + row + 1, p + row);
+        }
+    }
+}
+
 void MeshBuilder::box(const Vector3d& size)
 {
     const Vector3d h = 0.5 * size;
-    // one quad per face, counter-clockwise seen from outside
+    // cut alike along each axis on every face, so that neighbouring faces share their edges
+    std::array<int, 3> cuts{};
+    for (int axis = 0; axis < 3; ++axis) {
+        cuts[static_cast<std::size_t>(axis)] = pieces(size[axis], Vector3d::Unit(axis));
+    }
+    // one quad (or grid) per face, counter-clockwise seen from outside
     for (int axis = 0; axis < 3; ++axis) {
         const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+        const int nu = cuts[static_cast<std::size_t>(u)], nv = cuts[static_cast<std::size_t>(v)];
         for (int s = -1; s <= 1; s += 2) {
             Vector3d n = Vector3d::Zero();
             n[axis] = s;
@@ -68,8 +104,73 @@ void MeshBuilder::box(const Vector3d& size)
                 p[v] = cv * h[v];
                 return p;
             };
-            if (s > 0) quad(corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, 1), n);
-            else quad(corner(-1, -1), corner(-1, 1), corner(1, 1), corner(1, -1), n);
+            if (s > 0) grid(corner(-1, -1), corner(1, -1), corner(-1, 1), n, nu, nv);
+            else grid(corner(-1, -1), corner(-1, 1), corner(1, -1), n, nv, nu);
+        }
+    }
+}
+
+void MeshBuilder::wall(double r, double z0, double z1, int segments, bool inward)
+{
+    const double step = 2 * std::numbers::pi / segments;
+    const int rows = pieces(z1 - z0, Vector3d::UnitZ());
+    const double sign = inward ? -1 : 1;
+    const std::uint32_t first = static_cast<std::uint32_t>(vertices.size());
+    for (int j = 0; j <= rows; ++j) {
+        const double z = z0 + (z1 - z0) * j / rows;
+        for (int k = 0; k <= segments; ++k) {
+            const double c = std::cos(k * step), s = std::sin(k * step);
+            vertex(Vector3d(r * c, r * s, z), sign * Vector3d(c, s, 0));
+        }
+    }
+    const auto row = static_cast<std::uint32_t>(segments + 1);
+    for (int j = 0; j < rows; ++j) {
+        for (int k = 0; k < segments; ++k) {
+            const std::uint32_t p = first + static_cast<std::uint32_t>(j) * row + static_cast<std::uint32_t>(k);
+            // counter-clockwise seen from the side the normal points to
+            if (inward) {
+                triangle(p, p + row + 1, p + 1);
+                triangle(p, p + row, p + row + 1);
+            } else {
+                triangle(p, p + 1, p + row + 1);
+                triangle(p, p + row + 1, p + row);
+            }
+        }
+    }
+}
+
+void MeshBuilder::disc(double r0, double r1, double z, bool up, int segments)
+{
+    const double step = 2 * std::numbers::pi / segments;
+    const int rings = std::max(pieces(r1 - r0, Vector3d::UnitX()), pieces(r1 - r0, Vector3d::UnitY()));
+    const Vector3d n(0, 0, up ? 1 : -1);
+    const auto row = static_cast<std::uint32_t>(segments + 1);
+    const bool fan = !(r0 > 0);
+    const std::uint32_t centre = fan ? vertex(Vector3d(0, 0, z), n) : 0;
+    const std::uint32_t first = static_cast<std::uint32_t>(vertices.size());
+    for (int j = fan ? 1 : 0; j <= rings; ++j) {
+        const double r = r0 + (r1 - r0) * j / rings;
+        for (int k = 0; k <= segments; ++k) vertex(Vector3d(r * std::cos(k * step), r * std::sin(k * step), z), n);
+    }
+    auto face = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        if (up) triangle(a, b, c);
+        else triangle(a, c, b);
+    };
+    // rows of the ring vertices from the inside out; the centre's fan first
+    if (fan) {
+        for (int k = 0; k < segments; ++k) {
+            const std::uint32_t p = first + static_cast<std::uint32_t>(k);
+            face(centre, p, p + 1);
+        }
+    }
+    const int quadRows = fan ? rings - 1 : rings;
+    for (int j = 0; j < quadRows; ++j) {
+        for (int k = 0; k < segments; ++k) {
+            const std::uint32_t in = first + static_cast<std::uint32_t>(j) * row + static_cast<std::uint32_t>(k);
+            const std::uint32_t out = in + row;
+            // inner k, outer k, outer k+1, inner k+1: counter-clockwise seen from +z
+            face(in, out, out + 1);
+            face(in, out + 1, in + 1);
         }
     }
 }
@@ -88,67 +189,20 @@ void MeshBuilder::bar(const Vector3d& a, const Vector3d& b, double width)
 
 void MeshBuilder::cylinder(double r, double z0, double z1, int segments)
 {
-    const double step = 2 * std::numbers::pi / segments;
-    // side: smooth normals
-    const std::uint32_t first = static_cast<std::uint32_t>(vertices.size());
-    for (int k = 0; k <= segments; ++k) {
-        const double c = std::cos(k * step), s = std::sin(k * step);
-        vertex(Vector3d(r * c, r * s, z0), Vector3d(c, s, 0));
-        vertex(Vector3d(r * c, r * s, z1), Vector3d(c, s, 0));
-    }
-    for (int k = 0; k < segments; ++k) {
-        const std::uint32_t a = first + 2 * k;
-        triangle(a, a + 2, a + 3);
-        triangle(a, a + 3, a + 1);
-    }
-    // caps: flat
-    for (int end = 0; end < 2; ++end) {
-        const double z = end ? z1 : z0;
-        const Vector3d n(0, 0, end ? 1 : -1);
-        const std::uint32_t centre = vertex(Vector3d(0, 0, z), n);
-        for (int k = 0; k <= segments; ++k) vertex(Vector3d(r * std::cos(k * step), r * std::sin(k * step), z), n);
-        for (int k = 0; k < segments; ++k) {
-            if (end) triangle(centre, centre + 1 + k, centre + 2 + k);
-            else triangle(centre, centre + 2 + k, centre + 1 + k);
-        }
-    }
+    // side: smooth normals; caps: flat
+    wall(r, z0, z1, segments, false);
+    disc(0, r, z0, false, segments);
+    disc(0, r, z1, true, segments);
 }
 
 void MeshBuilder::tube(double ro, double ri, double l, int segments)
 {
-    const double step = 2 * std::numbers::pi / segments;
     const double z0 = -0.5 * l, z1 = 0.5 * l;
-    for (int wall = 0; wall < 2; ++wall) {
-        const double r = wall ? ri : ro;
-        const double sign = wall ? -1 : 1;  // the inner wall faces the axis
-        const std::uint32_t first = static_cast<std::uint32_t>(vertices.size());
-        for (int k = 0; k <= segments; ++k) {
-            const double c = std::cos(k * step), s = std::sin(k * step);
-            vertex(Vector3d(r * c, r * s, z0), sign * Vector3d(c, s, 0));
-            vertex(Vector3d(r * c, r * s, z1), sign * Vector3d(c, s, 0));
-        }
-        for (int k = 0; k < segments; ++k) {
-            const std::uint32_t a = first + 2 * k;
-            triangle(a, a + 2, a + 3);
-            triangle(a, a + 3, a + 1);
-        }
-    }
+    wall(ro, z0, z1, segments, false);
+    wall(ri, z0, z1, segments, true);  // the inner wall faces the axis
     // annular ends
-    for (int end = 0; end < 2; ++end) {
-        const double z = end ? z1 : z0;
-        const Vector3d n(0, 0, end ? 1 : -1);
-        const std::uint32_t first = static_cast<std::uint32_t>(vertices.size());
-        for (int k = 0; k <= segments; ++k) {
-            const double c = std::cos(k * step), s = std::sin(k * step);
-            vertex(Vector3d(ro * c, ro * s, z), n);
-            vertex(Vector3d(ri * c, ri * s, z), n);
-        }
-        for (int k = 0; k < segments; ++k) {
-            const std::uint32_t a = first + 2 * k;
-            triangle(a, a + 2, a + 3);
-            triangle(a, a + 3, a + 1);
-        }
-    }
+    disc(ri, ro, z0, false, segments);
+    disc(ri, ro, z1, true, segments);
 }
 
 void MeshBuilder::ellipsoid(double a, double b, double c, int slices, int stacks)
@@ -190,10 +244,7 @@ void MeshBuilder::cone(double r, double l, int segments)
         const std::uint32_t a = first + 2 * k;
         triangle(a, a + 2, a + 1);
     }
-    const Vector3d n(0, 0, -1);
-    const std::uint32_t centre = vertex(Vector3d::Zero(), n);
-    for (int k = 0; k <= segments; ++k) vertex(Vector3d(r * std::cos(k * step), r * std::sin(k * step), 0), n);
-    for (int k = 0; k < segments; ++k) triangle(centre, centre + 2 + k, centre + 1 + k);
+    disc(0, r, 0, false, segments);
 }
 
 bool MeshBuilder::prism(double h, const std::vector<double>& xy)

@@ -38,12 +38,24 @@ public:
     void setTransform(const Eigen::Affine3d& transform);
     void resetTransform() { setTransform(Eigen::Affine3d::Identity()); }
 
+    /// Longest edge wanted across flat and round faces [m, after the transform]; 0 (the
+    /// default): none. Boxes, cylinders, tubes and cones added from now on have their
+    /// faces cut into a grid no coarser than this (shared edges cut alike, so solids stay
+    /// closed), so that light computed at the vertices (Viewport's per-vertex shading)
+    /// still shows a lamp's pool of light across a large face.
+    void setMaxEdge(double length) { m_maxEdge = length > 0 ? length : 0; }
+    double maxEdge() const { return m_maxEdge; }
+
     /// Adds a vertex (shape frame) and returns its index.
     std::uint32_t vertex(const Eigen::Vector3d& p, const Eigen::Vector3d& n);
     void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c);
     /// A flat quad a-b-c-d (in order around it) with normal n.
     void quad(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
               const Eigen::Vector3d& d, const Eigen::Vector3d& n);
+    /// The parallelogram a, b, b + d − a, d (counter-clockwise seen from where n points),
+    /// cut into nab × nad quads.
+    void grid(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& d,
+              const Eigen::Vector3d& n, int nab, int nad);
 
     /// Box with full edge lengths `size`, centred at the origin.
     void box(const Eigen::Vector3d& size);
@@ -74,7 +86,18 @@ public:
     Eigen::AlignedBox3d bounds() const;
 
 private:
+    /// Into how many pieces a length (shape frame) along `direction` is cut: 1 without
+    /// a maximum edge.
+    int pieces(double length, const Eigen::Vector3d& direction) const;
+    /// The round wall of radius r along z from z0 to z1, its normals outwards (or towards
+    /// the axis), cut along z.
+    void wall(double r, double z0, double z1, int segments, bool inward);
+    /// The flat ring r0 ≤ ρ ≤ r1 (a disc when r0 = 0) at height z, facing +z when `up`,
+    /// cut into rings.
+    void disc(double r0, double r1, double z, bool up, int segments);
+
     Eigen::Vector3f m_color{0.6f, 0.6f, 0.6f};
+    double m_maxEdge = 0;
     Eigen::Affine3d m_transform = Eigen::Affine3d::Identity();
     Eigen::Matrix3d m_normalMatrix = Eigen::Matrix3d::Identity();
 };

@@ -34,6 +34,11 @@ const Vector3d kSliderGrey(0.74, 0.74, 0.76);
 const Vector3d kAnchorGrey(0.32, 0.32, 0.34);
 const Vector3d kPlaceholder(0.95, 0.20, 0.85);
 
+/// The longest edge of a graphic's faces [m]: the viewport may light at the vertices
+/// (on software OpenGL), and a lamp's pool of light on a large face (a mill's liner, its
+/// floor) needs vertices this close to show.
+constexpr double kLitEdge = 1.0;
+
 /// A loaded mesh file, kept while the file is unchanged (reloading a model after an
 /// edit does not read its meshes again).
 struct MeshCacheKey {
@@ -118,6 +123,7 @@ bool addGraphic(MeshBuilder& m, const solver::GraphicSpec& g, const QString& mod
     t.linear() = solver::shapeRotation(g);
     m.setTransform(t);
     m.setColor(g.color);
+    m.setMaxEdge(kLitEdge);
     const std::vector<double>& d = g.dims;
     auto need = [&](std::size_t n) { return d.size() >= n; };
     using solver::ShapeKind;
@@ -559,6 +565,63 @@ std::shared_ptr<const SceneDressing> sceneDressing(const std::shared_ptr<const M
     for (auto e = cache.begin(); e != cache.end();) e = e->second.expired() ? cache.erase(e) : std::next(e);
     cache[scene->serial] = out;
     return out;
+}
+
+int planeSide(const MeshBuilder& mesh, const CullPart& part, const Eigen::Vector4d& plane)
+{
+    bool kept = false, cut = false;
+    const std::uint32_t end = std::min<std::uint32_t>(part.range.first + part.range.count,
+                                                      static_cast<std::uint32_t>(mesh.indices.size()));
+    for (std::uint32_t i = part.range.first; i < end; ++i) {
+        const float* p = mesh.vertices[mesh.indices[i]].position;
+        const double s = plane.x() * p[0] + plane.y() * p[1] + plane.z() * p[2] + plane.w();
+        (s >= -1e-6 ? kept : cut) = true;
+        if (kept && cut) return 0;
+    }
+    return cut ? -1 : 1;
+}
+
+bool solidClearOf(const MeshBuilder& mesh, const CullPart& part, const std::array<Vector3d, 4>& quad,
+                  double margin)
+{
+    Eigen::AlignedBox3d near;
+    for (const Vector3d& q : quad) near.extend(q);
+    near.min().array() -= margin;
+    near.max().array() += margin;
+    if (!near.intersects(part.box)) return true;
+    const std::uint32_t end = std::min<std::uint32_t>(part.range.first + part.range.count,
+                                                      static_cast<std::uint32_t>(mesh.indices.size()));
+    auto at = [&](std::uint32_t i) {
+        const float* p = mesh.vertices[mesh.indices[i]].position;
+        return Vector3d(p[0], p[1], p[2]);
+    };
+    for (std::uint32_t i = part.range.first; i + 2 < end; i += 3) {
+        Eigen::AlignedBox3d t(at(i));
+        t.extend(at(i + 1));
+        t.extend(at(i + 2));
+        if (t.intersects(near)) return false;
+    }
+    // none near it: the quad is all inside the solid or all outside; a ray from its
+    // centre (in a direction no edge of a box or a round shape lies along) crosses the
+    // surface an odd number of times from inside
+    const Vector3d origin = 0.25 * (quad[0] + quad[1] + quad[2] + quad[3]);
+    const Vector3d dir = Vector3d(0.5771, 0.5774, 0.5779).normalized();
+    int crossings = 0;
+    for (std::uint32_t i = part.range.first; i + 2 < end; i += 3) {
+        // Möller–Trumbore
+        const Vector3d a = at(i), e1 = at(i + 1) - a, e2 = at(i + 2) - a;
+        const Vector3d h = dir.cross(e2);
+        const double det = e1.dot(h);
+        if (std::abs(det) < 1e-15) continue;
+        const Vector3d s = origin - a;
+        const double u = s.dot(h) / det;
+        if (u < 0 || u > 1) continue;
+        const Vector3d q = s.cross(e1);
+        const double v = dir.dot(q) / det;
+        if (v < 0 || u + v > 1) continue;
+        if (e2.dot(q) / det > 0) ++crossings;
+    }
+    return crossings % 2 == 0;
 }
 
 Eigen::AlignedBox3d worldBounds(const SceneGeometry& geometry, const std::vector<Isometry3d>& X_wb,

@@ -27,6 +27,7 @@
 
 #include <QStringList>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -47,6 +48,19 @@ struct CullPart {
     Eigen::AlignedBox3d box;  ///< of its vertices, in the range's frame
     int winding = 0;
 };
+
+/// Where a part's triangles (indices of `mesh`) lie against a plane (n, d) of the
+/// part's own frame, kept where n·x + d ≥ 0: +1 all kept, −1 all cut away, 0 cut through.
+int planeSide(const MeshBuilder& mesh, const CullPart& part, const Eigen::Vector4d& plane);
+
+/// True when a closed solid (a part whose winding is not 0) neither crosses nor holds
+/// the quad (its corners in order, in the part's frame, grown by `margin`): the near
+/// plane's visible rectangle, which then shows none of the solid's inside, so that its
+/// back faces may be culled. Conservative: a triangle whose box meets the quad's counts
+/// as crossing it; inside or out is told by how many triangles a ray from the quad's
+/// centre crosses.
+bool solidClearOf(const MeshBuilder& mesh, const CullPart& part, const std::array<Eigen::Vector3d, 4>& quad,
+                  double margin);
 
 /// Part of a joint's schematic drawn on one body (to highlight the joint).
 struct JointPiece {

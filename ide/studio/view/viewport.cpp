@@ -19,6 +19,7 @@
 #include <QWindow>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -66,6 +67,7 @@ const char* const kSeat = "Operator seat";
 
 int g_samples = 0;  // multisampling of new viewports (Viewport::setSamples)
 bool g_cullFaces = true;  // Viewport::setBackFaceCulling
+std::atomic<Viewport::Lighting> g_lighting{Viewport::Lighting::Automatic};  // Viewport::setLighting
 
 Matrix4f scaled(const Isometry3d& pose, const Vector3d& scale)
 {
@@ -158,7 +160,7 @@ QSurfaceFormat Viewport::surfaceFormat()
     f.setVersion(3, 3);
     f.setProfile(QSurfaceFormat::CoreProfile);
     f.setDepthBufferSize(24);
-    f.setStencilBufferSize(8);
+    f.setStencilBufferSize(0);  // none used (llvmpipe's depth test is a little cheaper without)
     f.setSamples(g_samples);
     return f;
 }
@@ -181,6 +183,43 @@ void Viewport::setBackFaceCulling(bool on)
 bool Viewport::backFaceCulling()
 {
     return g_cullFaces;
+}
+
+void Viewport::setLighting(Lighting lighting)
+{
+    g_lighting = lighting;
+}
+
+Viewport::Lighting Viewport::lighting()
+{
+    return g_lighting;
+}
+
+QString Viewport::lightingName(Lighting lighting)
+{
+    switch (lighting) {
+    case Lighting::PerPixel: return QStringLiteral("pixel");
+    case Lighting::PerVertex: return QStringLiteral("vertex");
+    case Lighting::Automatic: break;
+    }
+    return QStringLiteral("auto");
+}
+
+bool Viewport::lightingFromName(const QString& name, Lighting& lighting)
+{
+    for (Lighting l : {Lighting::Automatic, Lighting::PerPixel, Lighting::PerVertex}) {
+        if (name == lightingName(l)) {
+            lighting = l;
+            return true;
+        }
+    }
+    return false;
+}
+
+bool Viewport::lightsPerVertex() const
+{
+    const Lighting l = g_lighting;
+    return l == Lighting::PerVertex || (l == Lighting::Automatic && m_softwareGl);
 }
 
 // ---- model and poses ---------------------------------------------------------------
@@ -415,6 +454,13 @@ void Viewport::initializeGL()
         return;
     }
     connect(m_context.get(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::releaseGl, Qt::UniqueConnection);
+    // a software rasteriser (Mesa's llvmpipe, softpipe; the classic swrast) lights at the
+    // vertices when the lighting is Automatic
+    m_renderer = QString::fromLatin1(reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+    m_softwareGl = m_renderer.contains(QLatin1String("llvmpipe"), Qt::CaseInsensitive) ||
+                   m_renderer.contains(QLatin1String("softpipe"), Qt::CaseInsensitive) ||
+                   m_renderer.contains(QLatin1String("software rasterizer"), Qt::CaseInsensitive) ||
+                   m_renderer.contains(QLatin1String("swrast"), Qt::CaseInsensitive);
     // the background, and the solids' program without lamps (the others when a scene needs them)
     m_background = std::make_unique<QOpenGLShaderProgram>();
     const bool background =
@@ -430,23 +476,29 @@ void Viewport::initializeGL()
     }
     m_backgroundBottom = m_background->uniformLocation("uBottom");
     m_backgroundTop = m_background->uniformLocation("uTop");
-    if (!buildProgram(m_programs[0], 0)) return;
+    if (!buildProgram(m_programs[0], 0, false)) return;
     createMesh(m_modelMesh);
     createMesh(m_sceneMesh);
     m_glReady = true;
 }
 
-bool Viewport::buildProgram(Program& p, int lamps)
+bool Viewport::buildProgram(Program& p, int lamps, bool perVertex)
 {
-    // viewport.frag with LAMP_COUNT defined (after its #version line)
-    QFile file(QStringLiteral(":/studio/shaders/viewport.frag"));
-    QByteArray fragment = file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-    const qsizetype eol = fragment.indexOf('\n');
-    fragment.insert(eol < 0 ? 0 : eol + 1, QByteArray("#define LAMP_COUNT ") + QByteArray::number(lamps) + '\n');
+    auto read = [](const QString& name) {
+        QFile file(QStringLiteral(":/studio/shaders/") + name);
+        return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+    };
+    // lighting.glsl, with LAMP_COUNT defined, after the #version line of the stage that
+    // lights: the fragment shader, or the vertex shader
+    const QByteArray lighting = "#define LAMP_COUNT " + QByteArray::number(lamps) + '\n' + read("lighting.glsl");
+    QByteArray vertex = read(perVertex ? "viewport_vertex.vert" : "viewport.vert");
+    QByteArray fragment = read(perVertex ? "viewport_vertex.frag" : "viewport.frag");
+    QByteArray& lit = perVertex ? vertex : fragment;
+    const qsizetype eol = lit.indexOf('\n');
+    lit.insert(eol < 0 ? 0 : eol + 1, lighting);
     p.program = std::make_unique<QOpenGLShaderProgram>();
-    const bool ok =
-        p.program->addShaderFromSourceFile(QOpenGLShader::Vertex, QStringLiteral(":/studio/shaders/viewport.vert")) &&
-        p.program->addShaderFromSourceCode(QOpenGLShader::Fragment, fragment) && p.program->link();
+    const bool ok = p.program->addShaderFromSourceCode(QOpenGLShader::Vertex, vertex) &&
+                    p.program->addShaderFromSourceCode(QOpenGLShader::Fragment, fragment) && p.program->link();
     if (!ok) {
         if (!m_glFailed) emit problem(tr("The 3D view's shaders do not build: %1").arg(p.program->log()));
         m_glFailed = true;
@@ -494,6 +546,7 @@ void Viewport::releaseGl()
         mesh->uploaded = false;
     }
     for (Program& p : m_programs) p.program.reset();
+    for (Program& p : m_vertexPrograms) p.program.reset();
     m_program = nullptr;
     m_background.reset();
     m_glReady = false;
@@ -753,33 +806,41 @@ void Viewport::drawSlots(bool schematic, bool dressed)
         if (lit) setTint(kHighlight, 0.85f);
         if (dressed) {
             if (g.dressed[k].empty()) drawRange(g.bars[k], m_slotMatrices[k]);
-            else drawParts(g.dressedParts[k], m_slotMatrices[k], nullptr);
+            else drawParts(g.mesh, g.dressedParts[k], m_slotMatrices[k], nullptr);
         }
         if (schematic) drawRange(g.schematic[k], m_slotMatrices[k]);
         if (lit) setTint(Vector3f::Zero(), 0.0f);
     }
 }
 
-void Viewport::drawParts(const std::vector<CullPart>& parts, const Matrix4f& model, const Eigen::Vector4d* cut)
+void Viewport::drawParts(const MeshBuilder& mesh, const std::vector<CullPart>& parts, const Matrix4f& model,
+                         const Eigen::Vector4d* cut)
 {
     // per part: 0 both sides drawn, +1 / −1 back / front faces culled, 2 not drawn
     const Eigen::Matrix4d world = model.cast<double>();
-    const Eigen::Matrix4d eye = (m_view * model).cast<double>();
+    // the near plane's visible rectangle and the cut, in the parts' frame
+    const Eigen::Matrix4d toPart = world.inverse();
+    std::array<Vector3d, 4> quad;
+    for (std::size_t c = 0; c < 4; ++c) quad[c] = (toPart * m_nearQuad[c].homogeneous()).head<3>();
+    const Eigen::Vector4d plane = cut ? Eigen::Vector4d(world.transpose() * *cut) : Eigen::Vector4d::Zero();
     m_partModes.resize(parts.size());
     for (std::size_t k = 0; k < parts.size(); ++k) {
         const CullPart& p = parts[k];
         signed char mode = 0;
         if (g_cullFaces && (p.winding != 0 || cut)) {
-            int kept = 0;
-            bool clear = true;  // all of it beyond the near plane
-            for (int c = 0; c < 8; ++c) {
-                const Eigen::Vector4d x = p.box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)).homogeneous();
-                if (-(eye.row(2).dot(x)) < 1.5 * m_near) clear = false;
-                if (cut && cut->dot(world * x) >= -1e-6) ++kept;
+            int side = 1;  // +1 whole, −1 all cut away, 0 cut open (its inside shows)
+            if (cut) {
+                int kept = 0;
+                for (int c = 0; c < 8; ++c) {
+                    const Vector3d x = p.box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c));
+                    if (plane.head<3>().dot(x) + plane.w() >= -1e-6) ++kept;
+                }
+                side = kept == 8 ? 1 : kept == 0 ? -1 : planeSide(mesh, p, plane);
             }
-            if (cut && kept == 0) mode = 2;          // all cut away: it would draw nothing
-            else if (cut && kept < 8) mode = 0;      // cut open: its inside shows
-            else if (clear) mode = static_cast<signed char>(p.winding);
+            if (side < 0) mode = 2;  // it would draw nothing
+            else if (side > 0 && p.winding != 0 && solidClearOf(mesh, p, quad, 0.25 * m_near + 1e-4)) {
+                mode = static_cast<signed char>(p.winding);
+            }
         }
         m_partModes[k] = mode;
     }
@@ -834,11 +895,10 @@ void Viewport::paintGL()
     const bool scene = m_dressing && !m_dressing->mesh.indices.empty();
     if (scene && !m_sceneMesh.uploaded) upload(m_sceneMesh, m_dressing->mesh);
     const SceneGeometry& g = *m_geometry;
-    const int lamps = lampCount();
-    Program& program = m_programs[static_cast<std::size_t>(lamps)];
-    if (!program.program && !buildProgram(program, lamps)) return;
-    m_program = &program;
-    m_u = program.u;
+    m_lamps = lampCount();
+    const bool perVertex = lightsPerVertex();
+    Program* solids = program(m_lamps, perVertex);
+    if (!solids) return;
 
     m_modelMesh.vao->bind();
     glDisable(GL_CULL_FACE);
@@ -863,40 +923,40 @@ void Viewport::paintGL()
         }
     }
     const Eigen::Matrix4d projection64 = m_camera.projectionMatrix(aspect(), centre, radius, farthest);
-    const Matrix4f projection = projection64.cast<float>();
+    m_projection = projection64.cast<float>();
     m_near = projection64(2, 3) / (projection64(2, 2) - 1);  // (p23 = −2fn/(f−n), p22 = −(f+n)/(f−n))
-    const Vector3f upEye = m_view.topLeftCorner<3, 3>() * Vector3f::UnitZ();
-    m_program->program->bind();
-    glUniformMatrix4fv(m_u.view, 1, GL_FALSE, m_view.data());
-    glUniformMatrix4fv(m_u.projection, 1, GL_FALSE, projection.data());
-    glUniform3f(m_u.upEye, upEye.x(), upEye.y(), upEye.z());
-    glUniform1i(m_u.lit, 1);
-    glUniform1f(m_u.fadeRadius, 0.0f);
-    glUniform2f(m_u.fadeCentre, 0.0f, 0.0f);
-    glUniform4f(m_u.clipPlane, 0.0f, 0.0f, 0.0f, 1.0f);
-    setLights(lamps);
-    setTint(Vector3f::Zero(), 0.0f);
-    setAlpha(1.0f);
+    // the near plane's visible rectangle, in the world: (±1, ±1, −1) of the clip cube
+    const Eigen::Matrix4d unproject = (projection64 * m_view.cast<double>()).inverse();
+    for (std::size_t c = 0; c < 4; ++c) {
+        const Eigen::Vector4d x = unproject * Eigen::Vector4d(c == 1 || c == 2 ? 1 : -1, c >= 2 ? 1 : -1, -1, 1);
+        m_nearQuad[c] = x.head<3>() / x.w();
+    }
+    useProgram(*solids);
 
     for (int s = 0; s < g.slotCount(); ++s) {
         m_slotMatrices[static_cast<std::size_t>(s)] = bodyPose(s - 1).matrix().cast<float>();
     }
 
-    // the solids (the model, the scene, the world axes): first their depth alone, then
-    // their colour, without depth writes, where they are nearest. A software renderer
-    // (llvmpipe) then shades every pixel once instead of once per layer of the mill
-    // (liners, their backs, the shell behind): with the same program and state in
-    // both passes the depths are the same, and with GL_LEQUAL the same fragment wins
-    // as in a single pass (the last one drawn at the nearest depth).
+    // the solids (the model, the scene, the world axes). Lit at every pixel: first their
+    // depth alone, then their colour, without depth writes, where they are nearest, so
+    // that every pixel is shaded once instead of once per layer of the mill (liners, the
+    // shell behind): with the same program and state in both passes the depths are the
+    // same, and with GL_LEQUAL the same fragment wins as in a single pass (the last one
+    // drawn at the nearest depth). Lit at the vertices, a pixel costs little more than
+    // its depth test: one pass.
     const bool schematic = m_mode == DisplayMode::Schematic;
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    drawSolids(schematic);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDepthMask(GL_FALSE);
+    if (!perVertex) {
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        drawSolids(schematic);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glDepthMask(GL_FALSE);
+    }
     drawSolids(schematic);
 
     // background, a vertical gradient, after the solids: only where none was drawn
-    // (it lies on the far plane; a scene that fills the view then costs no more)
+    // (it lies on the far plane; a scene that fills the view then costs a depth test a
+    // pixel, 1 ms of a 1920 × 1080 frame on llvmpipe, and drawn first, twice that)
+    glDepthMask(GL_FALSE);
     m_background->bind();
     m_background->setUniformValue(m_backgroundBottom, QVector3D(0.12f, 0.13f, 0.15f));
     m_background->setUniformValue(m_backgroundTop, QVector3D(0.31f, 0.33f, 0.37f));
@@ -904,8 +964,11 @@ void Viewport::paintGL()
     glDepthMask(GL_TRUE);
     m_program->program->bind();
 
-    // ground grid: transparent lines fading out, after the solids (a scene has its floor)
-    if (m_showGrid && !scene) {
+    // ground grid: transparent lines fading out, after the solids (a scene has its floor);
+    // the fade is per pixel (a line spans the grid): viewport.frag's
+    Program* flat = m_showGrid && !scene ? program(m_lamps, false) : nullptr;
+    if (flat) {
+        if (flat != solids) useProgram(*flat);
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(GL_FALSE);
@@ -918,6 +981,7 @@ void Viewport::paintGL()
         setAlpha(1.0f);
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
+        if (flat != solids) useProgram(*solids);
     }
 
     // the ghost: the same machine at other poses, translucent, tinted blue; no depth
@@ -982,6 +1046,31 @@ void Viewport::paintGL()
     m_frameTimes[static_cast<std::size_t>(m_frameCount % static_cast<int>(m_frameTimes.size()))] = ms;
     ++m_frameCount;
     emit frameTimed(ms);
+}
+
+Viewport::Program* Viewport::program(int lamps, bool perVertex)
+{
+    Program& p = (perVertex ? m_vertexPrograms : m_programs)[static_cast<std::size_t>(lamps)];
+    if (!p.program && !buildProgram(p, lamps, perVertex)) return nullptr;
+    return &p;
+}
+
+void Viewport::useProgram(Program& p)
+{
+    m_program = &p;
+    m_u = p.u;
+    p.program->bind();
+    const Vector3f upEye = m_view.topLeftCorner<3, 3>() * Vector3f::UnitZ();
+    glUniformMatrix4fv(m_u.view, 1, GL_FALSE, m_view.data());
+    glUniformMatrix4fv(m_u.projection, 1, GL_FALSE, m_projection.data());
+    glUniform3f(m_u.upEye, upEye.x(), upEye.y(), upEye.z());
+    glUniform1i(m_u.lit, 1);
+    glUniform1f(m_u.fadeRadius, 0.0f);
+    glUniform2f(m_u.fadeCentre, 0.0f, 0.0f);
+    glUniform4f(m_u.clipPlane, 0.0f, 0.0f, 0.0f, 1.0f);
+    setLights(m_lamps);
+    setTint(Vector3f::Zero(), 0.0f);
+    setAlpha(1.0f);
 }
 
 int Viewport::lampCount() const
@@ -1056,7 +1145,7 @@ void Viewport::drawScene()
     glUniform1i(m_u.lit, 1);
     // the scene's closed solids that the plane leaves whole: their back faces culled
     const Eigen::Vector4d cut(normal.x(), normal.y(), normal.z(), -(normal.dot(eye) + nearest));
-    drawParts(d.solidParts, Matrix4f::Identity(), nearest > 0 ? &cut : nullptr);
+    drawParts(d.mesh, d.solidParts, Matrix4f::Identity(), nearest > 0 ? &cut : nullptr);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CLIP_DISTANCE0);
     glUniform4f(m_u.clipPlane, 0.0f, 0.0f, 0.0f, 1.0f);

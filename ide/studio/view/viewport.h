@@ -93,6 +93,25 @@ public:
     /// pictures are the same either way, culling only skips triangles that cannot show).
     static void setBackFaceCulling(bool on);
     static bool backFaceCulling();
+    /// Where the light is computed: at every pixel (the finer picture: highlights and
+    /// lamps' pools exact across every face), at the vertices (Gouraud shading: a pixel
+    /// takes its triangle's blend, large faces being cut into a grid for it, and one
+    /// pass instead of a depth pass and a colour pass), or Automatic (the default): at
+    /// the vertices on a software OpenGL (Mesa llvmpipe, softpipe), where a frame's cost
+    /// is its pixels', at every pixel on a GPU. Every viewport follows a change at its
+    /// next frame.
+    enum class Lighting { Automatic, PerPixel, PerVertex };
+    static void setLighting(Lighting lighting);
+    static Lighting lighting();
+    /// "auto", "pixel", "vertex" (for command lines and settings), and back; false for
+    /// another word.
+    static QString lightingName(Lighting lighting);
+    static bool lightingFromName(const QString& name, Lighting& lighting);
+    /// This viewport lights at the vertices (lighting() resolved against its OpenGL,
+    /// known once it has drawn).
+    bool lightsPerVertex() const;
+    /// Its OpenGL's renderer (GL_RENDERER), once it has drawn ("" before).
+    QString renderer() const { return m_renderer; }
 
     /// The model to draw (nullptr: an empty scene). Builds its meshes (once per bundle)
     /// and draws it at its initial pose until setPoses; frames the camera on a new
@@ -232,10 +251,14 @@ private:
     int lampCount() const;
     void drawRange(const DrawRange& range, const Eigen::Matrix4f& model, unsigned mode = 0x0004 /*GL_TRIANGLES*/);
     void drawSlots(bool schematic, bool dressed);
-    /// Draws `parts` (consecutive ranges) with `model`, culling the back faces of the
-    /// closed solids that the near plane and `cut` (a world plane, kept where
-    /// n·x + d ≥ 0; nullptr for none) do not cut open, and not drawing those it cuts away.
-    void drawParts(const std::vector<CullPart>& parts, const Eigen::Matrix4f& model, const Eigen::Vector4d* cut);
+    /// Draws `parts` (consecutive ranges of `mesh`) with `model`, culling the back faces
+    /// of the closed solids that the near plane and `cut` (a world plane, kept where
+    /// n·x + d ≥ 0; nullptr for none) do not cut open, and not drawing those it cuts
+    /// away. Whether they are cut is found from their boxes, and for the boxes that the
+    /// near plane's rectangle or the cut meets, from their triangles (solidClearOf,
+    /// planeSide): a mill's shell around the eye, its head and floor are culled.
+    void drawParts(const MeshBuilder& mesh, const std::vector<CullPart>& parts, const Eigen::Matrix4f& model,
+                   const Eigen::Vector4d* cut);
     void drawActuators(int onlyJoint);
     void setTint(const Eigen::Vector3f& rgb, float amount);
     void setAlpha(float alpha);
@@ -277,9 +300,20 @@ private:
                 lightColor = -1, lightRange = -1;
         } u;
     };
-    /// Builds `program` for `lamps` lamps (false, and problem(), when it does not build).
-    bool buildProgram(Program& program, int lamps);
-    std::array<Program, kMaxLamps + 1> m_programs;  ///< by lamp count, built when first needed
+    /// Builds `program` for `lamps` lamps, lit at every pixel or at the vertices (false,
+    /// and problem(), when it does not build).
+    bool buildProgram(Program& program, int lamps, bool perVertex);
+    /// The program for this many lamps, built when first needed (nullptr when it does
+    /// not build).
+    Program* program(int lamps, bool perVertex);
+    /// Binds `p` and sets this frame's uniforms in it (camera, lamps, no tint, opaque).
+    void useProgram(Program& p);
+    std::array<Program, kMaxLamps + 1> m_programs;        ///< lit at every pixel, by lamp count
+    std::array<Program, kMaxLamps + 1> m_vertexPrograms;  ///< lit at the vertices, by lamp count
+    QString m_renderer;       ///< GL_RENDERER
+    bool m_softwareGl = false;  ///< m_renderer is a software rasteriser
+    Eigen::Matrix4f m_projection = Eigen::Matrix4f::Identity();  ///< this frame's
+    int m_lamps = 0;                                             ///< this frame's
     Program* m_program = nullptr;                   ///< this frame's
     Program::Uniforms m_u;                          ///< m_program's uniforms
     std::unique_ptr<QOpenGLShaderProgram> m_background;
@@ -288,6 +322,7 @@ private:
     GlMesh m_sceneMesh;
     Eigen::Matrix4f m_view = Eigen::Matrix4f::Identity();
     double m_near = 0;                  ///< this frame's near plane distance [m]
+    std::array<Eigen::Vector3d, 4> m_nearQuad;  ///< this frame's near plane's visible rectangle (world)
     std::vector<signed char> m_partModes;  ///< drawParts' scratch
     std::vector<Eigen::Matrix4f> m_slotMatrices;  ///< per slot, this frame
 

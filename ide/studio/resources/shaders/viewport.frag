@@ -1,67 +1,23 @@
 #version 330 core
-// Key light from the upper left, a cool fill from the right, and a hemisphere
-// ambient (brighter from the sky) so that faces turned differently read differently:
-// the daylight, dimmed inside a scene with lamps, whose point lights then add up.
-// The side facing the viewer is lit, whatever the triangles' winding.
-// LAMP_COUNT (0 … 4) is defined by the viewport, which builds one program per count:
-// with a constant count the loop over the lamps is unrolled, and llvmpipe (software
-// GL, where a frame's cost is its fragments') no longer indexes uLightEye per pixel.
-#ifndef LAMP_COUNT
-#define LAMP_COUNT 0
-#endif
+// Padrob viewport, lit at every pixel: shade() is lighting.glsl's, which the viewport
+// puts here, after the #version line.
 in vec3 vNormal;
 in vec3 vColor;
 in vec3 vEye;
 in vec3 vWorld;
 
-uniform int uLit;            // 0: flat colour (grid lines)
+uniform int uLit;            // 0: flat colour (grid lines, lamps)
 uniform vec4 uTint;          // rgb, and how much of it replaces the colour (highlight)
 uniform float uAlpha;
-uniform vec3 uUpEye;         // world up (z) in eye space
 uniform vec2 uFadeCentre;    // grid fade: centre (world x, y)
 uniform float uFadeRadius;   // 0: no fade
-uniform float uDaylight;     // 1 outdoors; less inside a scene with lamps
-uniform vec3 uLightEye[4];   // the point lights' (lamps') positions, eye space; LAMP_COUNT of them
-uniform vec3 uLightColor;
-uniform float uLightRange;   // a lamp lights half as much this far away [m]
 
 out vec4 fragColor;
 
 void main()
 {
     vec3 base = mix(vColor, uTint.rgb, uTint.a);
-    vec3 color = base;
-    if (uLit != 0) {
-        vec3 n = normalize(vNormal);
-        vec3 v = normalize(-vEye);
-        if (dot(n, v) < 0.0) n = -n;
-        vec3 key = normalize(vec3(-0.45, 0.60, 0.66));
-        vec3 fill = normalize(vec3(0.75, -0.15, 0.45));
-        float hemi = 0.5 + 0.5 * dot(n, normalize(uUpEye));
-        vec3 ambient = mix(vec3(0.16, 0.15, 0.14), vec3(0.30, 0.31, 0.34), hemi);
-        float diffuse = 0.70 * max(dot(n, key), 0.0);
-        vec3 fillLight = vec3(0.22, 0.24, 0.28) * max(dot(n, fill), 0.0);
-        vec3 h = normalize(key + v);
-        // pow(x, 40) as x^32 · x^8: llvmpipe's pow is a log2 and an exp2 per pixel
-        float x = max(dot(n, h), 0.0);
-        float x2 = x * x;
-        float x4 = x2 * x2;
-        float x8 = x4 * x4;
-        float x16 = x8 * x8;
-        float x32 = x16 * x16;
-        float specular = 0.20 * (x32 * x8);
-        vec3 light = uDaylight * (ambient + vec3(diffuse) + fillLight);
-        vec3 shine = vec3(uDaylight * specular);
-        // the lamps: diffuse only, fading with the square of the distance
-        float range2 = uLightRange * uLightRange;
-        for (int i = 0; i < LAMP_COUNT; ++i) {
-            vec3 d = uLightEye[i] - vEye;
-            float r2 = dot(d, d);
-            float lit = max(dot(n, d), 0.0) * inversesqrt(max(r2, 1e-8));
-            light += uLightColor * (lit * range2 / (range2 + r2));
-        }
-        color = base * light + shine;
-    }
+    vec3 color = uLit != 0 ? shade(base, vNormal, vEye) : base;
     float alpha = uAlpha;
     if (uFadeRadius > 0.0) {
         float d = length(vWorld.xy - uFadeCentre);
