@@ -567,6 +567,22 @@ int runInstructor(const std::vector<std::string>& argsIn)
         printErr("padrob instructor: " + fill(trStd("padrob", "station %1 did not answer"), {station}) + "\n");
         return kExitModelErrors;
     }
+    // heard is not yet matched: wait until DDS has matched every live station's command
+    // reader (a command written before would be lost), then a moment for the station to
+    // match this process's reply reader the same way
+    auto live = [&] {
+        int n = 0;
+        for (const auto& [name, v] : node.stations()) n += v.presence == "up" ? 1 : 0;
+        return std::max(n, 1);
+    };
+    while (nowS() < end && bus->commandReaders() < live()) {
+        bus->wait(20);
+        node.poll(nowS());
+    }
+    for (const double settle = std::min(end, nowS() + 0.2); nowS() < settle;) {
+        bus->wait(20);
+        node.poll(nowS());
+    }
     const std::uint64_t nonce = node.send(station, kind, arg, arg2, value);
     while (nowS() < end && !node.reply(nonce)) {
         bus->wait(20);

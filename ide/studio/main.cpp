@@ -1,4 +1,5 @@
-// padrob-studio [--scene FILE] [--lang es|en] [MODEL]: the application (see app/main_window.h).
+// padrob-studio [--scene FILE] [--lang es|en] [--lighting auto|pixel|vertex] [MODEL]: the
+// application (see app/main_window.h).
 // padrob-studio --trainer [--operator ID] [--lang es|en]: kiosk mode, only the Train
 // workspace, full screen (Ctrl+Shift+F12 and the trainer's PIN leave it).
 // padrob-studio --bench-frames N [--scene FILE] [--views 1|3] [--json] [MODEL]: how

@@ -384,6 +384,13 @@ bool Bus::publish(const Event& e)
     return d->check(dds_write(d->writers[2], &s));
 }
 
+int Bus::commandReaders() const
+{
+    dds_publication_matched_status_t status{};
+    if (dds_get_publication_matched_status(d->writers[3], &status) < 0) return 0;
+    return static_cast<int>(status.current_count);
+}
+
 bool Bus::send(const Command& c)
 {
     padrob_centre_Command s{};

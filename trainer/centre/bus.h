@@ -80,6 +80,11 @@ public:
     std::vector<Command> takeCommands();
     std::vector<Reply> takeReplies();
 
+    /// How many readers of this node's commands DDS has matched: the stations' (only
+    /// stations read commands). A command written before a station's reader is matched
+    /// never reaches it (commands are volatile), so a new process waits for it.
+    int commandReaders() const;
+
     /// Blocks until something arrives on a topic this Bus reads or `timeoutMs` passes.
     void wait(int timeoutMs);
 

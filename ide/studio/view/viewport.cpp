@@ -15,6 +15,7 @@
 #include <QOpenGLShaderProgram>
 #include <QOpenGLVertexArrayObject>
 #include <QPainter>
+#include <QTimer>
 #include <QWheelEvent>
 #include <QWindow>
 
@@ -140,6 +141,9 @@ Viewport::Viewport(QWidget* parent) : QWidget(parent)
     m_container->setFocusPolicy(Qt::NoFocus);
     m_container->setAttribute(Qt::WA_TransparentForMouseEvents);
     m_container->setGeometry(rect());
+    m_frameTimer.setSingleShot(true);
+    m_frameTimer.setTimerType(Qt::PreciseTimer);
+    connect(&m_frameTimer, &QTimer::timeout, this, &Viewport::renderNow);
     setBundle(nullptr);
 }
 
@@ -619,8 +623,14 @@ bool Viewport::prepareGl()
 
 void Viewport::requestFrame()
 {
-    // not exposed: the expose event draws
-    if (m_surface && m_surface->isExposed()) m_surface->requestUpdate();
+    // not exposed: the expose event draws. Else at once, or kMinFramePeriodMs after the
+    // last frame began, whichever is later: QWindow::requestUpdate would wait for the
+    // platform's next update tick (1000 / refresh rate ms, a whole frame at 60 Hz), so
+    // that a frame asked for by the 60 Hz poll was drawn up to 16 ms late, and a frame
+    // that takes 14 ms to draw came every 22 ms instead of every 16.7
+    if (!m_surface || !m_surface->isExposed() || m_frameTimer.isActive()) return;
+    const qint64 since = m_frameClock.isValid() ? m_frameClock.elapsed() : kMinFramePeriodMs;
+    m_frameTimer.start(static_cast<int>(std::max<qint64>(0, kMinFramePeriodMs - since)));
 }
 
 void Viewport::renderNow()
@@ -629,6 +639,8 @@ void Viewport::renderNow()
     const qreal dpr = m_surface->devicePixelRatio();
     const QSize size = (QSizeF(m_surface->size()) * dpr).toSize();
     if (size.isEmpty()) return;
+    m_frameTimer.stop();  // this frame shows what was asked for
+    m_frameClock.start();
     glBindFramebuffer(GL_FRAMEBUFFER, m_context->defaultFramebufferObject());
     drawFrame(size.width(), size.height(), true);
     m_context->swapBuffers(m_surface);

@@ -45,6 +45,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <QElapsedTimer>
 #include <QHash>
 #include <QImage>
 #include <QList>
@@ -52,6 +53,7 @@
 #include <QPoint>
 #include <QPointer>
 #include <QSurfaceFormat>
+#include <QTimer>
 #include <QWidget>
 
 #include <array>
@@ -342,6 +344,11 @@ private:
     // interaction
     QPoint m_lastMouse;
     bool m_dragging = false;
+
+    // frames: drawn when asked for (requestFrame), at most one per kMinFramePeriodMs
+    static constexpr qint64 kMinFramePeriodMs = 15;
+    QTimer m_frameTimer;         ///< single shot: the next frame asked for
+    QElapsedTimer m_frameClock;  ///< since the last frame on screen began
 
     // timing
     std::array<double, 31> m_frameTimes{};
