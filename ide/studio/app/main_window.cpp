@@ -580,7 +580,9 @@ void MainWindow::retranslate()
     statusBar()->clearMessage();
     if (m_recordsNote) m_recordsNote->setText(recordsNoteText());
     updateModelLabel();
-    m_shownStep = -1;  // the time and the real-time factor again, in the new language
+    // the time and the real-time factor again, in the new language
+    m_shownStep = m_labelStep = -1;
+    m_labelClock.invalidate();
     if (m_timeLabel) poll();
     updateTitle();
 }
@@ -821,7 +823,8 @@ void MainWindow::applyBundle(std::shared_ptr<const ModelBundle> bundle)
     m_sliders->setBundle(bundle);
     setStationModel(bundle);
     m_shownSerial = bundle->serial;
-    m_shownStep = -1;
+    m_shownStep = m_labelStep = -1;
+    m_labelClock.invalidate();
     statusBar()->showMessage(tr("Model applied: %n bodies", nullptr, bundle->model->nb), 4000);
 }
 
@@ -839,7 +842,8 @@ void MainWindow::reset()
 {
     m_runner->reset();
     m_sliders->reset();
-    m_shownStep = -1;
+    m_shownStep = m_labelStep = -1;
+    m_labelClock.invalidate();
 }
 
 void MainWindow::setSpeed(double speed) { m_runner->setSpeed(speed); }
@@ -847,16 +851,27 @@ void MainWindow::setSpeed(double speed) { m_runner->setSpeed(speed); }
 void MainWindow::poll()
 {
     const std::shared_ptr<const Snapshot> s = m_runner->latest();
+    // the status bar's figures ten times a second while running: at every frame, the
+    // status bar was laid out and painted 60 times a second, on the thread that draws
+    const bool labels = !m_labelClock.isValid() || m_labelClock.elapsed() >= 100 || (s && !s->running);
     if (s && s->bundle == m_bundle && s->step != m_shownStep) {
         m_shownStep = s->step;
         m_viewports->setSnapshot(s);
-        m_timeLabel->setText(tr("t = %1 s").arg(QLocale().toString(s->t, 'f', 3)));
-        m_rtLabel->setText(s->running ? tr("real time ×%1, %2 µs/step, %n overrun(s)", nullptr, static_cast<int>(s->overruns))
-                                              .arg(QLocale().toString(s->realTimeFactor, 'f', 2),
-                                                   QLocale().toString(s->stepMicros, 'f', 0))
-                                        : tr("paused"));
     }
-    m_frameLabel->setText(tr("frame %1 ms").arg(QLocale().toString(m_viewports->frameMillis(), 'f', 1)));
+    if (s && s->bundle == m_bundle && labels && (s->step != m_labelStep || s->running != m_labelRunning)) {
+        m_labelStep = s->step;
+        m_labelRunning = s->running;
+        m_timeLabel->setText(tr("t = %1 s").arg(QLocale().toString(s->t, 'f', 3)));
+        m_rtLabel->setText(s->running ? tr("real time ×%1, %2 µs/step, %n overrun(s)", nullptr,
+                                           static_cast<int>(s->overruns))
+                                            .arg(QLocale().toString(s->realTimeFactor, 'f', 2),
+                                                 QLocale().toString(s->stepMicros, 'f', 0))
+                                      : tr("paused"));
+    }
+    if (labels) {
+        m_labelClock.start();
+        m_frameLabel->setText(tr("frame %1 ms").arg(QLocale().toString(m_viewports->frameMillis(), 'f', 1)));
+    }
     updateHud();
 }
 

@@ -25,6 +25,7 @@
 
 #include "ide/studio/model/model_bundle.h"
 
+#include <QElapsedTimer>
 #include <QMainWindow>
 #include <QPointer>
 
@@ -206,6 +207,9 @@ private:
     QTimer* m_pollTimer = nullptr;
     quint64 m_shownSerial = 0;
     long m_shownStep = -1;
+    QElapsedTimer m_labelClock;  ///< since the status bar's figures were last set
+    long m_labelStep = -1;       ///< the step they show
+    bool m_labelRunning = false;
 };
 
 }  // namespace studio
