@@ -340,8 +340,10 @@ private slots:
         QTRY_COMPARE(vertex->text(), QStringLiteral("En los &vértices (más rápida)"));
         QCOMPARE(menu->title(), QStringLiteral("I&luminación"));
         QVERIFY(vertex->isChecked());
+        QVERIFY(menu->grab().save(screenshotPath("app_menu_lighting_es.png")));
         chooseLanguage(w, "en");
         QTRY_COMPARE(vertex->text(), english);
+        QVERIFY(menu->grab().save(screenshotPath("app_menu_lighting_en.png")));
         automatic->trigger();
         QCOMPARE(Viewport::lighting(), Viewport::Lighting::Automatic);
     }

@@ -131,22 +131,26 @@ QByteArray smimeSign(const QByteArray& doc, X509* cert, EVP_PKEY* key)
     return bioBytes(out.get());
 }
 
-Cert readCert(const QString& file)
+/// The PEM file's object, read by `read` (PEM_read_bio_X509, PEM_read_bio_PrivateKey);
+/// empty when the file cannot be read or holds none.
+template <typename Out, typename Read>
+Out readPem(const QString& file, Read read)
 {
     QFile f(file);
     if (!f.open(QIODevice::ReadOnly)) return {};
     const QByteArray pem = f.readAll();
     Bio b(BIO_new_mem_buf(pem.constData(), static_cast<int>(pem.size())));
-    return Cert(PEM_read_bio_X509(b.get(), nullptr, nullptr, nullptr));
+    return Out(read(b.get(), nullptr, nullptr, nullptr));
+}
+
+Cert readCert(const QString& file)
+{
+    return readPem<Cert>(file, PEM_read_bio_X509);
 }
 
 Key readKey(const QString& file)
 {
-    QFile f(file);
-    if (!f.open(QIODevice::ReadOnly)) return {};
-    const QByteArray pem = f.readAll();
-    Bio b(BIO_new_mem_buf(pem.constData(), static_cast<int>(pem.size())));
-    return Key(PEM_read_bio_PrivateKey(b.get(), nullptr, nullptr, nullptr));
+    return readPem<Key>(file, PEM_read_bio_PrivateKey);
 }
 
 QString domains() { return QStringLiteral("<domains><id_range><min>0</min><max>230</max></id_range></domains>"); }
