@@ -1,13 +1,13 @@
 #pragma once
 // The models and states the benchmarks run on: example files from models/ and
-// generated chains and trees (solver/model/generate.h), compiled once per process.
+// generated chains and trees (bench/generate.h), compiled once per process.
 
 #include "solver/compile/compile.h"
 #include "solver/core/model.h"
 #include "solver/core/state.h"
 #include "solver/integrate/simulation.h"
-#include "solver/model/generate.h"
-#include "solver/model/load.h"
+#include "bench/generate.h"
+#include "solver/pipeline.h"
 
 #include <cmath>
 #include <fstream>
@@ -35,7 +35,7 @@ inline std::string exampleText(const std::string& name)
 /// Loads and compiles model text; throws when it has errors.
 inline std::shared_ptr<const solver::Model> compileText(const std::string& text, const std::string& file)
 {
-    solver::LoadedModel loaded = solver::loadModelText(text, file);
+    solver::CompiledModel loaded = solver::compileText(text, file);
     solver::Diagnostics diags(file);
     auto model = solver::compileLoaded(loaded, diags);
     if (!model) throw std::runtime_error(file + " does not compile");

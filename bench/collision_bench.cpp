@@ -14,10 +14,10 @@
 namespace {
 
 struct MillScene {
-    solver::LoadedModel machine =
-        solver::loadModelFile(std::string(PADROB_SOURCE_DIR) + "/models/liner_manipulator.pad");
-    solver::LoadedModel scene =
-        solver::loadModelFile(std::string(PADROB_SOURCE_DIR) + "/resources/scenes/sag_mill.pad");
+    solver::CompiledModel machine =
+        solver::compileFile(std::string(PADROB_SOURCE_DIR) + "/models/liner_manipulator.pad");
+    solver::CompiledModel scene =
+        solver::compileFile(std::string(PADROB_SOURCE_DIR) + "/resources/scenes/sag_mill.pad");
     std::shared_ptr<const solver::Model> model = bench::example("liner_manipulator.pad");
     solver::Diagnostics diags;
     solver::CollisionWorld world{machine.spec, *model, &scene.spec, diags};

@@ -20,7 +20,7 @@
 //  - the reference: the thesis's Newton–Euler system A·X = B (solver/reference/
 //    newton_euler.h), assembled and LU-solved per evaluation, and a classic RK4 over
 //    it (4 solves + the update; modes, commands and applied loads held, no events);
-//  - scaling: generated chains and trees (solver/model/generate.h) of 10 … 1000
+//  - scaling: generated chains and trees (bench/generate.h) of 10 … 1000
 //    bodies, RK4 steps as above, and the exponent p of time ∝ n^p by least squares
 //    on log–log.
 // Allocations in the step loop are not counted here (that needs the global operator
@@ -35,8 +35,8 @@
 #include "solver/dynamics/forward_dynamics.h"
 #include "solver/integrate/simulation.h"
 #include "solver/kinematics/kinematics.h"
-#include "solver/model/generate.h"
-#include "solver/model/load.h"
+#include "bench/generate.h"
+#include "solver/pipeline.h"
 #include "solver/reference/newton_euler.h"
 #ifdef PADROB_HAVE_MUJOCO
 #include "ide/cli/mujoco_bench.h"
@@ -388,7 +388,7 @@ bool benchScaling(const StepOptions& so, int runs, Scaling& out, std::string& er
         std::vector<ScalingPoint>& points = tree ? out.tree : out.chain;
         for (int n : kScalingSizes) {
             const std::string text = tree ? solver::treeModelText(n) : solver::chainModelText(n);
-            solver::LoadedModel loaded = solver::loadModelText(text, tree ? "tree.pad" : "chain.pad");
+            solver::CompiledModel loaded = solver::compileText(text, tree ? "tree.pad" : "chain.pad");
             solver::Diagnostics diags("generated.pad");
             std::shared_ptr<const solver::Model> model = solver::compileLoaded(loaded, diags);
             if (!model) {

@@ -3,7 +3,7 @@
 #include "ide/i18n/diagnostic_text.h"
 #include "ide/i18n/language.h"
 #include "solver/compile/compile.h"
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 
 #include <charconv>
 #include <cmath>
@@ -88,7 +88,7 @@ void printDiagnostic(std::FILE* f, const solver::Diagnostic& d)
 
 std::shared_ptr<const solver::Model> loadAndCompile(const std::string& path, int& status)
 {
-    const solver::LoadedModel loaded = solver::loadModelFile(path);
+    const solver::CompiledModel loaded = solver::compileFile(path);
     bool io = false;
     for (const solver::Diagnostic& d : loaded.diagnostics) {
         if (d.severity == solver::Severity::Error || d.code == "io-error") printDiagnostic(stderr, d);

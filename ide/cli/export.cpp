@@ -10,7 +10,7 @@
 #endif
 #include "solver/compile/compile.h"
 #include "solver/io/mjcf.h"
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 
 #include "ide/i18n/language.h"
 

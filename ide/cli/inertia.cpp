@@ -5,7 +5,7 @@
 #include "ide/cli/cli_io.h"
 
 #include "solver/inertia/solid_inertia.h"
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 
 #include "ide/i18n/diagnostic_text.h"
 #include "ide/i18n/language.h"
@@ -209,7 +209,7 @@ int runInertia(const std::vector<std::string>& args)
     const std::string& file = files[0];
 
     // load and check the model
-    solver::LoadedModel m = solver::loadModelFile(file);
+    solver::CompiledModel m = solver::compileFile(file);
     bool io = false;
     for (const solver::Diagnostic& d : m.diagnostics) {
         printDiagnostic(stderr, d);
@@ -305,7 +305,7 @@ int runInertia(const std::vector<std::string>& args)
         }
         updated = std::move(next);
     }
-    solver::LoadedModel check = solver::loadModelText(updated, file);
+    solver::CompiledModel check = solver::compileText(updated, file);
     bool same = check.ok() && check.spec.bodies.size() == m.spec.bodies.size() && check.spec.joints.size() == m.spec.joints.size() &&
                 check.spec.graphics.size() == m.spec.graphics.size();
     for (const Computed& c : computed) {

@@ -14,7 +14,7 @@ using solver::BodySpec;
 using solver::DriveSpec;
 using solver::JointSpec;
 using solver::JointType;
-using solver::LoadedModel;
+using solver::CompiledModel;
 using solver::Topology;
 
 namespace {
@@ -40,7 +40,7 @@ std::string row(std::initializer_list<std::pair<std::string, int>> cells)
 std::string vec(const Eigen::Vector3d& v) { return shown(v.x()) + " " + shown(v.y()) + " " + shown(v.z()); }
 
 /// Role of each spec joint: "independent", "dependent" or "loop-closure" (the JSON's values).
-std::vector<std::string> roles(const LoadedModel& m)
+std::vector<std::string> roles(const CompiledModel& m)
 {
     std::vector<std::string> r(m.spec.joints.size(), "independent");
     const Topology& t = *m.topology;
@@ -68,7 +68,7 @@ std::string typeText(JointType t)
     return solver::jointTypeName(t);
 }
 
-const DriveSpec* driveOf(const LoadedModel& m, int jointId)
+const DriveSpec* driveOf(const CompiledModel& m, int jointId)
 {
     for (const DriveSpec& d : m.spec.drives) {
         if (d.joint == jointId) return &d;
@@ -80,7 +80,7 @@ const char* coordinateUnit(JointType t) { return t == JointType::Revolute ? "rad
 
 std::string label(int id, const std::string& name) { return name.empty() ? std::to_string(id) : std::to_string(id) + " " + name; }
 
-std::string jointIds(const LoadedModel& m, const std::vector<int>& indices)
+std::string jointIds(const CompiledModel& m, const std::vector<int>& indices)
 {
     std::string s;
     for (int j : indices) s += (s.empty() ? "" : ", ") + std::to_string(m.spec.joints[static_cast<std::size_t>(j)].id);
@@ -103,7 +103,7 @@ std::string driveText(const DriveSpec& d, JointType t)
 
 }  // namespace
 
-std::string infoText(const LoadedModel& m)
+std::string infoText(const CompiledModel& m)
 {
     const Topology& t = *m.topology;
     std::string out;
@@ -162,7 +162,7 @@ std::string infoText(const LoadedModel& m)
     return out;
 }
 
-std::string infoJson(const LoadedModel& m)
+std::string infoJson(const CompiledModel& m)
 {
     const Topology& t = *m.topology;
     JsonWriter w;

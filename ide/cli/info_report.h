@@ -3,16 +3,16 @@
 // loop closures, chains, degrees of freedom, total mass — as text or as JSON
 // (the JSON format is documented in docs/cli.md and is stable).
 
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 
 #include <string>
 
 namespace ide::cli {
 
 /// Human-readable report of a model that loaded without errors.
-std::string infoText(const solver::LoadedModel& model);
+std::string infoText(const solver::CompiledModel& model);
 
 /// JSON report (format "padrob-info", version 1) of a model that loaded without errors.
-std::string infoJson(const solver::LoadedModel& model);
+std::string infoJson(const solver::CompiledModel& model);
 
 }  // namespace ide::cli

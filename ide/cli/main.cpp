@@ -14,7 +14,7 @@
 #include "ide/cli/centre.h"
 #endif
 #include "ide/i18n/language.h"
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 
 #include <QCoreApplication>
 #include <QLocale>
@@ -102,7 +102,7 @@ std::string infoHelp()
 bool isHelp(const std::string& a) { return a == "-h" || a == "--help"; }
 
 /// Prints a model's diagnostics; returns the exit status it deserves.
-int report(const solver::LoadedModel& m, std::FILE* f)
+int report(const solver::CompiledModel& m, std::FILE* f)
 {
     bool io = false;
     for (const solver::Diagnostic& d : m.diagnostics) {
@@ -115,7 +115,7 @@ int report(const solver::LoadedModel& m, std::FILE* f)
 
 /// The summary line of `padrob check` for one file: "FILE: ok", "FILE: ok (N warnings)",
 /// "FILE: N errors, M warnings".
-std::string checkSummary(const std::string& file, const solver::LoadedModel& m)
+std::string checkSummary(const std::string& file, const solver::CompiledModel& m)
 {
     const int errors = static_cast<int>(m.diagnostics.errorCount());
     const int warnings = static_cast<int>(m.diagnostics.warningCount());
@@ -141,7 +141,7 @@ int runCheck(const std::vector<std::string>& args)
     if (files.empty()) return ide::cli::usageError("check", trStd("padrob", "no model given"));
     int status = kOk;
     for (const std::string& file : files) {
-        solver::LoadedModel m = solver::loadModelFile(file);
+        solver::CompiledModel m = solver::compileFile(file);
         int s = report(m, stdout);
         status = std::max(status, s);
         if (s == kUsage) continue;
@@ -166,7 +166,7 @@ int runInfo(const std::vector<std::string>& args)
     }
     if (files.empty()) return ide::cli::usageError("info", trStd("padrob", "no model given"));
     if (files.size() != 1) return ide::cli::usageError("info", trStd("padrob", "give one model"));
-    solver::LoadedModel m = solver::loadModelFile(files[0]);
+    solver::CompiledModel m = solver::compileFile(files[0]);
     if (!m.ok() || !m.topology) {
         int s = report(m, stderr);
         return s == kOk ? kModelErrors : s;

@@ -14,7 +14,7 @@
 #include "trainer/station/profile_store.h"
 #include "trainer/station/station_engine.h"
 #include "solver/kinematics/kinematics.h"
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 
 #include "ide/i18n/diagnostic_text.h"
 #include "ide/i18n/language.h"

@@ -27,7 +27,7 @@
 #include "solver/core/data.h"
 #include "solver/core/diagnostic.h"
 #include "solver/core/model.h"
-#include "solver/model/model_spec.h"
+#include "solver/spec/model_spec.h"
 
 #include <Eigen/Geometry>
 

@@ -1,5 +1,7 @@
 #include "solver/compile/compile.h"
 
+#include "solver/compile/initial_configuration.h"
+#include "solver/core/data.h"
 #include "solver/kinematics/joint_geometry.h"
 
 #include <algorithm>
@@ -96,9 +98,16 @@ CompiledDrive compileDrive(const DriveSpec& spec, const JointSpec& joint, const 
 
 }  // namespace
 
-std::shared_ptr<const Model> compileModel(const ModelSpec& spec, const Topology& topo,
-                                          Diagnostics& diags)
+CompileResult compileModel(const ModelSpec& spec, Diagnostics& diags)
 {
+    const std::size_t errorsBefore = diags.errorCount();
+
+    // 1-2. the graph; T 1 checks and the initial guess of every coordinate (per spec joint)
+    Topology topo = analyzeTopology(spec, diags);
+    Eigen::VectorXd theta;
+    initialGuess(spec, topo, theta, diags);
+
+    // 3. cut joints
     // a loop-closure joint is a constraint, not a coordinate: it cannot carry a drive,
     // and its limits are not enforced (the spanning tree takes driven joints first, so
     // this only happens when every joint of a loop is driven)
@@ -124,8 +133,6 @@ std::shared_ptr<const Model> compileModel(const ModelSpec& spec, const Topology&
                           trText("Diagnostics", "put the limits on another joint of the loop (a tree joint)"));
         }
     }
-    if (driveOnCut) return nullptr;
-
     auto model = std::make_shared<Model>();
     Model& m = *model;
     const int nb = static_cast<int>(topo.treeJoints.size());
@@ -182,9 +189,6 @@ std::shared_ptr<const Model> compileModel(const ModelSpec& spec, const Topology&
     m.theta0.resize(nbs);
     m.thetaDot0.resize(nbs);
     m.dependent.assign(nbs, 0);
-    for (int j : topo.dependent) {
-        if (treeOfJoint[static_cast<std::size_t>(j)] >= 0) m.dependent[treeOfJoint[static_cast<std::size_t>(j)]] = 1;
-    }
 
     for (int i = 0; i < nb; ++i) {
         const int j = topo.treeJoints[static_cast<std::size_t>(i)];
@@ -218,24 +222,14 @@ std::shared_ptr<const Model> compileModel(const ModelSpec& spec, const Topology&
             }
         }
 
-        // initial coordinate and rate
-        const double theta0 = topo.theta0[static_cast<std::size_t>(j)];
-        m.theta0[i] = theta0;
-        const double vi = joint.vi.value_or(0.0);
+        // the initial guess (the loops are closed below)
+        m.theta0[i] = theta[j];
 
-        // T 1 length law, limits
+        // T 1 length law
         if (joint.type == JointType::Actuator) {
-            const ActuatorLengthLaw law = geometry.lengthLaw();
-            m.lengthLaw[i] = law;
+            m.lengthLaw[i] = geometry.lengthLaw();
             m.cl1[i] = joint.cl1;
             m.cl2[i] = joint.cl2;
-            actuatorLimits(joint, law, theta0, m.lower[i], m.upper[i]);
-            const double rate = law.lengthRate(theta0);
-            m.thetaDot0[i] = rate != 0 ? vi / rate : 0.0;
-        } else {
-            m.lower[i] = joint.ll.value_or(-kInf);
-            m.upper[i] = joint.ul.value_or(kInf);
-            m.thetaDot0[i] = vi;
         }
     }
 
@@ -310,13 +304,39 @@ std::shared_ptr<const Model> compileModel(const ModelSpec& spec, const Topology&
         }
         m.forces.push_back(std::move(f));
     }
-    return model;
-}
 
-std::shared_ptr<const Model> compileLoaded(const LoadedModel& loaded, Diagnostics& diags)
-{
-    if (!loaded.ok() || !loaded.topology) return nullptr;
-    return compileModel(loaded.spec, *loaded.topology, diags);
+    // 5. the initial configuration: loops closed at QI, dependent coordinates
+    Data data(m);
+    const LoopAssembly loops = assembleInitialConfiguration(spec, topo, m, data, theta, diags);
+    for (int c : loops.dependent) m.dependent[static_cast<std::size_t>(c)] = 1;
+
+    // 6. limits on θ, and the initial rates, at θ0
+    for (int i = 0; i < nb; ++i) {
+        const JointSpec& joint = spec.joints[static_cast<std::size_t>(topo.treeJoints[static_cast<std::size_t>(i)])];
+        const double theta0 = m.theta0[i];
+        const double vi = joint.vi.value_or(0.0);
+        if (joint.type == JointType::Actuator) {
+            actuatorLimits(joint, m.lengthLaw[i], theta0, m.lower[i], m.upper[i]);
+            const double rate = m.lengthLaw[i].lengthRate(theta0);
+            m.thetaDot0[i] = rate != 0 ? vi / rate : 0.0;
+        } else {
+            m.lower[i] = joint.ll.value_or(-kInf);
+            m.upper[i] = joint.ul.value_or(kInf);
+            m.thetaDot0[i] = vi;
+        }
+    }
+
+    // 7. every joint moves mass; the total mass
+    checkMovesMass(spec, topo, m, data, loops, diags);
+    for (const BodySpec& b : spec.bodies) {
+        if (b.id != 0 && b.hasMass) topo.totalMass += b.mass;
+    }
+
+    CompileResult result;
+    if (driveOnCut || diags.errorCount() > errorsBefore) return result;
+    result.topology = std::move(topo);
+    result.model = std::move(model);
+    return result;
 }
 
 }  // namespace solver

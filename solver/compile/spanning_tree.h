@@ -4,7 +4,7 @@
 // how the tree is oriented, and how it splits into serial chains.
 
 #include "solver/compile/topology.h"
-#include "solver/model/model_spec.h"
+#include "solver/spec/model_spec.h"
 
 #include <vector>
 

@@ -1,21 +1,23 @@
 #pragma once
-// Topology and initial-configuration analysis of a checked ModelSpec:
-// spanning tree from ground, loop-closure (cut) joints, kinematic chains,
-// independent/dependent coordinates, and the global checks that need geometry
-// (T 1 lengths reachable, body connected to ground, every joint/loop moves mass,
-// loop closures satisfiable at QI).
+// Topology: the joint graph of a checked ModelSpec — spanning tree from ground,
+// loop-closure (cut) joints, kinematic chains, bodies that ground does not reach —
+// and, once compileModel (compile.h) has closed the loops on the compiled model,
+// what follows from the geometry: the degrees of freedom, which coordinates are
+// independent and which follow from the loops, and the initial configuration.
 //
-// OWNER: analysis helper. This header is the contract; see the .cpp for details.
+// Indices here are the spec's: body index 0 is ground, then the spec's bodies in
+// file order; joint indices are positions in spec.joints. The compiled Model
+// renumbers them in tree order (Model::jointId, Model::bodyId give the ids back).
 
 #include "solver/core/diagnostic.h"
-#include "solver/model/model_spec.h"
+#include "solver/spec/model_spec.h"
 
-#include <optional>
 #include <vector>
 
 namespace solver {
 
 struct Topology {
+    // ---- the graph (analyzeTopology) ----------------------------------------
     /// Body index → modeler id. Index 0 is ground (id 0); then the spec's bodies in
     /// file order (a written `B 0` is ground, not a second body).
     std::vector<int> bodyIds;
@@ -27,6 +29,11 @@ struct Topology {
     /// Serial kinematic chains: runs of tree joints (spec indices) from ground or a
     /// branching body to a leaf or the next branching body.
     std::vector<std::vector<int>> chains;
+    /// Per spec joint: body index of side 1 and of side 2 (-1 for a body that does not exist).
+    std::vector<int> side1Body;
+    std::vector<int> side2Body;
+
+    // ---- filled by compileModel, from the compiled model ----------------------
     std::vector<int> independent;   ///< tree joints whose coordinates are degrees of freedom
     std::vector<int> dependent;     ///< tree joints whose coordinates follow from loop closures
     int dof = 0;
@@ -35,11 +42,6 @@ struct Topology {
     /// independent joints; solved for dependent and cut joints). Units of the joint's
     /// coordinate (rad, or m for T 1 and T 2).
     std::vector<double> q0;
-
-    // added by the analysis (after the fields above, which other code relies on)
-    /// Per spec joint: body index of side 1 and of side 2 (-1 for a body that does not exist).
-    std::vector<int> side1Body;
-    std::vector<int> side2Body;
     /// Per spec joint: its kinematic coordinate θ in the initial configuration: as q0,
     /// except for T 1, where it is the joint angle [rad] instead of the length.
     std::vector<double> theta0;
@@ -48,8 +50,10 @@ struct Topology {
     int closureRank = 0;
 };
 
-/// Analyses a spec that passed the local checks (no errors so far). Adds its own
-/// diagnostics; returns the topology when it found no errors.
-std::optional<Topology> analyzeTopology(const ModelSpec& spec, Diagnostics& diags);
+/// The graph of a spec that passed the local checks (solver/spec/validate.h): the
+/// spanning tree (spanning_tree.h), cut joints and chains; an error
+/// "body-not-connected" for every body that ground does not reach. Fills the graph
+/// fields of the Topology; the others stay empty until compileModel.
+Topology analyzeTopology(const ModelSpec& spec, Diagnostics& diags);
 
 }  // namespace solver

@@ -28,8 +28,8 @@
 // the dynamics hold them closed as constraints (solver/dynamics/constraints.h).
 // Everything indexed by tree index stays as it is.
 
-#include "solver/kinematics/joint_geometry.h"
-#include "solver/model/model_spec.h"
+#include "solver/core/actuator_law.h"
+#include "solver/core/kinds.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -59,9 +59,9 @@ struct CompiledDrive {
     double setLow = 0, setHigh = 0;
 };
 
-/// A magnitude law (MagnitudeSpec compiled: TABLE Q's joint as a tree index).
+/// A magnitude law (the spec's MagnitudeSpec compiled: TABLE Q's joint as a tree index).
 struct CompiledMagnitude {
-    MagnitudeSpec::Kind kind = MagnitudeSpec::Kind::Constant;
+    MagnitudeKind kind = MagnitudeKind::Constant;
     double value = 0, amplitude = 0, frequency = 0, phase = 0, offset = 0;
     int joint = -1;  ///< TableJoint: tree index; the table's abscissa is that joint's modeler coordinate
     std::vector<double> x, y;  ///< table abscissae (increasing) and values

@@ -68,7 +68,7 @@ Vector3d upDirection(const Model& model)
 double evaluateMagnitude(const CompiledMagnitude& mag, double t, const Model& model,
                          const State& state)
 {
-    using Kind = MagnitudeSpec::Kind;
+    using Kind = MagnitudeKind;
     switch (mag.kind) {
     case Kind::Constant:
         return mag.value;

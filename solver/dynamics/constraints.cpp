@@ -1,5 +1,12 @@
 #include "solver/dynamics/constraints.h"
 
+#include "solver/dynamics/mass_matrix.h"
+#include "solver/kinematics/kinematics.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/SVD>
+
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 
@@ -279,6 +286,224 @@ CutReading readCut(const Model& model, const Data& data, int k)
         break;
     }
     return out;
+}
+
+bool constraintRowIsLength(ConstraintKind kind, int row)
+{
+    switch (kind) {
+    case ConstraintKind::Revolute:
+    case ConstraintKind::Weld:
+        return row < 3;
+    case ConstraintKind::Prismatic:
+        return row >= 3;
+    }
+    return false;
+}
+
+Eigen::MatrixXd constraintJacobianAt(const Model& model, const State& state, Data& data)
+{
+    forwardKinematics(model, state, data);
+    collectConstraints(model, state, data.constraints);
+    if (data.constraints.empty()) return Eigen::MatrixXd(0, model.nb);
+    constraintJacobian(model, data, nullptr);
+    return data.G;
+}
+
+// ---------------------------------------------------------------- corrections
+
+namespace {
+
+/// M's rows and columns of the joints `free` (M_FF).
+Eigen::MatrixXd freeBlock(const Eigen::MatrixXd& M, const std::vector<int>& free)
+{
+    const auto nf = static_cast<Eigen::Index>(free.size());
+    Eigen::MatrixXd mff(nf, nf);
+    for (Eigen::Index a = 0; a < nf; ++a) {
+        for (Eigen::Index b = 0; b < nf; ++b) mff(a, b) = M(free[a], free[b]);
+    }
+    return mff;
+}
+
+Eigen::MatrixXd massMatrixAt(const Model& model, const State& state, Data& data)
+{
+    forwardKinematics(model, state, data);
+    Eigen::MatrixXd M;
+    massMatrix(model, data, M);
+    return M;
+}
+
+}  // namespace
+
+Eigen::VectorXd constraintCorrection(const Eigen::MatrixXd& M, const std::vector<int>& free,
+                                     const Eigen::MatrixXd& G, const Eigen::VectorXd& target)
+{
+    const auto nf = static_cast<Eigen::Index>(free.size());
+    Eigen::VectorXd out = Eigen::VectorXd::Zero(M.rows());
+    if (nf == 0 || G.rows() == 0) return out;
+    Eigen::MatrixXd gf(G.rows(), nf);
+    for (Eigen::Index a = 0; a < nf; ++a) gf.col(a) = G.col(free[a]);
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(freeBlock(M, free));
+    const Eigen::MatrixXd minvGt = ldlt.solve(gf.transpose());  // M_FF⁻¹ G_Fᵀ
+    const Eigen::MatrixXd S = gf * minvGt;
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(S, Eigen::ComputeThinU | Eigen::ComputeThinV);
+    svd.setThreshold(1e-10);
+    const Eigen::VectorXd mu = svd.solve(target);
+    const Eigen::VectorXd d = minvGt * mu;
+    for (Eigen::Index a = 0; a < nf; ++a) {
+        if (std::isfinite(d[a])) out[free[a]] = d[a];
+    }
+    return out;
+}
+
+Eigen::VectorXd freeResponse(const Eigen::MatrixXd& M, const std::vector<int>& free,
+                             const Eigen::VectorXd& impulse, const Eigen::MatrixXd& G,
+                             const Eigen::VectorXd& rates)
+{
+    const auto nf = static_cast<Eigen::Index>(free.size());
+    Eigen::VectorXd rhs(nf);
+    for (Eigen::Index a = 0; a < nf; ++a) rhs[a] = impulse[free[a]];
+    const Eigen::VectorXd dq = freeBlock(M, free).ldlt().solve(rhs);
+    Eigen::VectorXd out = Eigen::VectorXd::Zero(impulse.size());
+    for (Eigen::Index a = 0; a < nf; ++a) {
+        if (std::isfinite(dq[a])) out[free[a]] = dq[a];
+    }
+    if (G.rows() > 0) out -= constraintCorrection(M, free, G, G * (rates + out));
+    return out;
+}
+
+bool projectOntoConstraints(const Model& model, State& state, Data& data, const std::vector<int>& free)
+{
+    if (!hasConstraints(model, state)) return true;
+    // positions: Gauss–Newton, each step the mass-weighted least change
+    constexpr double tol = 1e-12;
+    bool closed = false;
+    Eigen::VectorXd phi;
+    for (int it = 0; it < 20; ++it) {
+        forwardKinematics(model, state, data);
+        collectConstraints(model, state, data.constraints);
+        constraintResidual(model, data, data.constraints, phi);
+        if (phi.lpNorm<Eigen::Infinity>() <= tol) {
+            closed = true;
+            break;
+        }
+        const Eigen::MatrixXd G = constraintJacobianAt(model, state, data);
+        const Eigen::MatrixXd M = massMatrixAt(model, state, data);
+        state.q -= constraintCorrection(M, free, G, phi);
+    }
+    if (!closed) {
+        forwardKinematics(model, state, data);
+        constraintResidual(model, data, data.constraints, phi);
+        closed = phi.lpNorm<Eigen::Infinity>() <= 1e-9;  // close enough to go on
+    }
+    // velocities: the plastic-impact projection
+    const Eigen::MatrixXd G = constraintJacobianAt(model, state, data);
+    const Eigen::MatrixXd M = massMatrixAt(model, state, data);
+    state.qd -= constraintCorrection(M, free, G, G * state.qd);
+    return closed;
+}
+
+// ---------------------------------------------------------------- initial assembly
+
+AssemblyResult assembleLoops(const Model& model, Data& data, const std::vector<int>& unknowns,
+                             Eigen::VectorXd& theta, const AssemblyOptions& options)
+{
+    AssemblyResult result;
+    const auto n = static_cast<Eigen::Index>(unknowns.size());
+    const double scale = options.lengthScale > 0 ? options.lengthScale : 1.0;
+
+    // the cut joints' rows, at rest (welds are not assembled)
+    State at;
+    at.q = theta;
+    at.qd = Eigen::VectorXd::Zero(model.nb);
+    collectConstraints(model, at, data.constraints);
+    const auto m = static_cast<Eigen::Index>(constraintRowTotal(data.constraints));
+
+    // Φ and G come with their length rows divided by Model::lengthScale: `unscale`
+    // gives them back in m, `rowScale` divides them by the assembly's scale instead;
+    // prismatic columns are multiplied by the scale
+    Eigen::VectorXd unscale = Eigen::VectorXd::Ones(m), rowScale = Eigen::VectorXd::Ones(m);
+    {
+        Eigen::Index row = 0;
+        for (const Constraint& c : data.constraints) {
+            for (int r = 0; r < constraintRowCount(c.kind); ++r, ++row) {
+                if (!constraintRowIsLength(c.kind, r)) continue;
+                unscale[row] = model.lengthScale;
+                rowScale[row] = model.lengthScale / scale;
+            }
+        }
+    }
+    Eigen::VectorXd colScale = Eigen::VectorXd::Ones(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (model.jointType[static_cast<std::size_t>(unknowns[i])] == JointType::Prismatic) colScale[i] = scale;
+    }
+
+    Eigen::VectorXd phi;  // as constraintResidual gives it
+    auto evaluate = [&](const Eigen::VectorXd& th) {
+        at.q = th;
+        forwardKinematics(model, at, data);
+        constraintResidual(model, data, data.constraints, phi);
+        return rowScale.cwiseProduct(phi).squaredNorm();
+    };
+    auto keep = [&] {
+        result.residual = unscale.cwiseProduct(phi);
+        result.residualNorm = result.residual.norm();
+    };
+
+    double cost = evaluate(theta);
+    keep();
+    if (result.residualNorm <= options.tolerance || n == 0) {
+        result.converged = result.residualNorm <= options.tolerance;
+        return result;
+    }
+
+    Eigen::MatrixXd js(m, n);
+    double mu = -1;
+    for (int it = 0; it < options.maxIterations; ++it) {
+        result.iterations = it + 1;
+
+        // scaled Jacobian of the unknowns at the current point
+        cost = evaluate(theta);
+        constraintJacobian(model, data, nullptr);
+        for (Eigen::Index i = 0; i < n; ++i) {
+            js.col(i) = rowScale.cwiseProduct(data.G.col(unknowns[i])) * colScale[i];
+        }
+        const Eigen::VectorXd phiS = rowScale.cwiseProduct(phi);
+        const Eigen::MatrixXd jtj = js.transpose() * js;
+        const Eigen::VectorXd g = js.transpose() * phiS;
+        const double maxDiag = std::max(jtj.diagonal().maxCoeff(), 1e-300);
+        if (mu < 0) mu = 1e-9 * maxDiag;
+        if (g.norm() <= 1e-15 * std::max(1.0, std::sqrt(cost))) break;  // stationary
+
+        // damped step, more damping until the cost decreases
+        bool accepted = false;
+        for (int tries = 0; tries < 40 && !accepted; ++tries) {
+            Eigen::MatrixXd a = jtj;
+            a.diagonal().array() += mu;
+            const Eigen::VectorXd stepS = -a.ldlt().solve(g);
+            Eigen::VectorXd trial = theta;
+            for (Eigen::Index i = 0; i < n; ++i) trial[unknowns[i]] += colScale[i] * stepS[i];
+            const double trialCost = evaluate(trial);
+            if (std::isfinite(trialCost) && trialCost < cost) {
+                const double stepNorm = stepS.norm();
+                theta = trial;
+                cost = trialCost;
+                keep();
+                mu = std::max(mu / 10, 1e-15 * maxDiag);
+                accepted = true;
+                if (stepNorm <= 1e-15) it = options.maxIterations;  // no progress left
+            } else {
+                mu *= 10;
+            }
+        }
+        if (!accepted) break;  // no descent: a (local) least-squares minimum
+        if (result.residualNorm <= options.tolerance) break;
+    }
+
+    // the kinematics at the returned point
+    at.q = theta;
+    forwardKinematics(model, at, data);
+    result.converged = result.residualNorm <= options.tolerance;
+    return result;
 }
 
 }  // namespace solver

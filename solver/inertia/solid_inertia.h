@@ -14,7 +14,7 @@
 // Dynamics", table of mass moments of inertia (box, cylinder, sphere, cone, ellipsoid).
 
 #include "solver/core/diagnostic.h"
-#include "solver/model/model_spec.h"
+#include "solver/spec/model_spec.h"
 
 #include <Eigen/Core>
 

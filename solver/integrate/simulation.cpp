@@ -491,73 +491,7 @@ void Simulation::unpackState()
     }
 }
 
-namespace {
-
-/// M's rows and columns of the joints `free` (M_FF).
-Eigen::MatrixXd freeBlock(const Eigen::MatrixXd& M, const std::vector<int>& free)
-{
-    const auto nf = static_cast<Eigen::Index>(free.size());
-    Eigen::MatrixXd mff(nf, nf);
-    for (Eigen::Index a = 0; a < nf; ++a) {
-        for (Eigen::Index b = 0; b < nf; ++b) mff(a, b) = M(free[a], free[b]);
-    }
-    return mff;
-}
-
-/// Δ (dim nb) on the joints `free` (the others held) with Δ_F = M_FF⁻¹ G_Fᵀ μ and
-/// G_F Δ_F = target: the mass-weighted least change that moves the constraint rows
-/// G by `target` (minimum-norm μ when the rows are redundant or conflicting).
-Eigen::VectorXd constraintCorrection(const Eigen::MatrixXd& M, const std::vector<int>& free,
-                                     const Eigen::MatrixXd& G, const Eigen::VectorXd& target)
-{
-    const auto nf = static_cast<Eigen::Index>(free.size());
-    Eigen::VectorXd out = Eigen::VectorXd::Zero(M.rows());
-    if (nf == 0 || G.rows() == 0) return out;
-    Eigen::MatrixXd gf(G.rows(), nf);
-    for (Eigen::Index a = 0; a < nf; ++a) gf.col(a) = G.col(free[a]);
-    const Eigen::LDLT<Eigen::MatrixXd> ldlt(freeBlock(M, free));
-    const Eigen::MatrixXd minvGt = ldlt.solve(gf.transpose());  // M_FF⁻¹ G_Fᵀ
-    const Eigen::MatrixXd S = gf * minvGt;
-    Eigen::JacobiSVD<Eigen::MatrixXd> svd(S, Eigen::ComputeThinU | Eigen::ComputeThinV);
-    svd.setThreshold(1e-10);
-    const Eigen::VectorXd mu = svd.solve(target);
-    const Eigen::VectorXd d = minvGt * mu;
-    for (Eigen::Index a = 0; a < nf; ++a) {
-        if (std::isfinite(d[a])) out[free[a]] = d[a];
-    }
-    return out;
-}
-
-/// The rate change (dim nb; 0 on the held joints) of the joints `free` under the
-/// generalized impulse `impulse` (dim nb), every other joint held, the constraints
-/// G kept: M_FF Δθ̇_F = impulse_F + G_Fᵀ μ with G (θ̇ + Δθ̇) = 0, where θ̇ = `rates`
-/// (pass zeros for the response alone). Without constraints (G has no rows):
-/// M_FF Δθ̇_F = impulse_F.
-Eigen::VectorXd freeResponse(const Eigen::MatrixXd& M, const std::vector<int>& free, const Eigen::VectorXd& impulse,
-                             const Eigen::MatrixXd& G, const Eigen::VectorXd& rates)
-{
-    const auto nf = static_cast<Eigen::Index>(free.size());
-    Eigen::VectorXd rhs(nf);
-    for (Eigen::Index a = 0; a < nf; ++a) rhs[a] = impulse[free[a]];
-    const Eigen::VectorXd dq = freeBlock(M, free).ldlt().solve(rhs);
-    Eigen::VectorXd out = Eigen::VectorXd::Zero(impulse.size());
-    for (Eigen::Index a = 0; a < nf; ++a) {
-        if (std::isfinite(dq[a])) out[free[a]] = dq[a];
-    }
-    if (G.rows() > 0) out -= constraintCorrection(M, free, G, G * (rates + out));
-    return out;
-}
-
-}  // namespace
-
-Eigen::MatrixXd Simulation::constraintJacobianNow()
-{
-    forwardKinematics(*m_model, m_state, m_data);
-    collectConstraints(*m_model, m_state, m_data.constraints);
-    if (m_data.constraints.empty()) return Eigen::MatrixXd(0, m_model->nb);
-    constraintJacobian(*m_model, m_data, nullptr);
-    return m_data.G;
-}
+Eigen::MatrixXd Simulation::constraintJacobianNow() { return constraintJacobianAt(*m_model, m_state, m_data); }
 
 std::vector<char> Simulation::freeMask() const
 {
@@ -575,32 +509,7 @@ bool Simulation::project(const std::vector<char>& held)
     for (int j = 0; j < m.nb; ++j) {
         if (mask[j] && !held[j]) free.push_back(j);
     }
-    // positions: Gauss–Newton, each step the mass-weighted least change
-    constexpr double tol = 1e-12;
-    bool closed = false;
-    Eigen::VectorXd phi;
-    for (int it = 0; it < 20; ++it) {
-        forwardKinematics(m, m_state, m_data);
-        collectConstraints(m, m_state, m_data.constraints);
-        constraintResidual(m, m_data, m_data.constraints, phi);
-        if (phi.lpNorm<Eigen::Infinity>() <= tol) {
-            closed = true;
-            break;
-        }
-        const Eigen::MatrixXd G = constraintJacobianNow();
-        const Eigen::MatrixXd M = massMatrixNow();
-        m_state.q -= constraintCorrection(M, free, G, phi);
-    }
-    if (!closed) {
-        forwardKinematics(m, m_state, m_data);
-        constraintResidual(m, m_data, m_data.constraints, phi);
-        closed = phi.lpNorm<Eigen::Infinity>() <= 1e-9;  // close enough to go on
-    }
-    // velocities: the plastic-impact projection
-    const Eigen::MatrixXd G = constraintJacobianNow();
-    const Eigen::MatrixXd M = massMatrixNow();
-    m_state.qd -= constraintCorrection(M, free, G, G * m_state.qd);
-    return closed;
+    return projectOntoConstraints(m, m_state, m_data, free);
 }
 
 Eigen::MatrixXd Simulation::massMatrixNow()

@@ -4,7 +4,7 @@
 // the Integrator (SUNDIALS). One per thread: the solver thread, a test or the
 // `padrob simulate` command each own theirs; the Model is shared read-only.
 //
-// Modes and events (issue 3 items 4 and 6):
+// Modes and events:
 //  - A free joint with limits has two event functions θ − lower and upper − θ;
 //    when one falls through zero the joint stops at the limit: θ̇ becomes −e·θ̇
 //    (e = Model::restitution, 0 = inelastic) through a generalized impulse that
@@ -20,7 +20,9 @@
 //    driven by that force, stalls or yields. It closes when the joint's rate
 //    reaches the commanded rate again (the force is then within the limits).
 //  - Closed loops and welds (Model::cuts, State::welds) are constraints of the
-//    dynamics. After every step the state is projected back onto them (positions
+//    dynamics (solver/dynamics/constraints.h, the one implementation the compiler's
+//    initial assembly uses too). After every step the state is projected back onto
+//    them (projectOntoConstraints: positions
 //    by Gauss–Newton, velocities by the plastic-impact projection, both weighted by
 //    the mass matrix and moving only the free coordinates), so they drift by no
 //    more than the projection's tolerance (1e-12, scaled). Velocity jumps (a new
@@ -35,7 +37,7 @@
 //    bodies that move apart is a plastic impact: momentum is conserved.
 // Each switch is reported as a SimulationEvent.
 //
-// Drive faults (setDriveFault, issue 10): an instructor bursts a hydraulic drive's hose.
+// Drive faults (setDriveFault): an instructor bursts a hydraulic drive's hose.
 // The fault belongs to this Simulation and its state, never to the shared Model: the
 // Simulation then runs on a private copy of the model whose faulted drives are
 // replaced by their fault's law (model() stays the model as compiled). Like a new
@@ -228,8 +230,10 @@ private:
     /// the free coordinates that are not held. False when the positions cannot be
     /// brought within tolerance.
     bool project(const std::vector<char>& held);
+    /// Per joint: 1 when its acceleration is not prescribed.
     std::vector<char> freeMask() const;
-    void assemble();  ///< project(), holding m_held (or nothing, when that fails)  ///< per joint: 1 when its acceleration is not prescribed
+    /// project(), holding m_held (or nothing, when that fails).
+    void assemble();
     void packState();
     void unpackState();
 };

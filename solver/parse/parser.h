@@ -3,10 +3,10 @@
 //
 // The parser checks what one statement can tell on its own (keywords, numbers,
 // options, what a statement requires); the checks that relate statements to each
-// other are in solver/model/validate.h. All problems are collected.
+// other are in solver/spec/validate.h. All problems are collected.
 
 #include "solver/core/diagnostic.h"
-#include "solver/model/model_spec.h"
+#include "solver/spec/model_spec.h"
 
 #include <string_view>
 

@@ -2,7 +2,7 @@
 // Writes a ModelSpec back as model-language text. Parsing the output gives the
 // same model (values exact: numbers are written in their shortest round-trip form).
 
-#include "solver/model/model_spec.h"
+#include "solver/spec/model_spec.h"
 
 #include <string>
 

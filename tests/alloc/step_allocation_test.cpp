@@ -6,8 +6,8 @@
 #include "solver/dynamics/forward_dynamics.h"
 #include "solver/integrate/simulation.h"
 #include "solver/kinematics/kinematics.h"
-#include "solver/model/generate.h"
-#include "solver/model/load.h"
+#include "bench/generate.h"
+#include "solver/pipeline.h"
 
 #include <gtest/gtest.h>
 
@@ -39,10 +39,9 @@ namespace {
 
 std::shared_ptr<const solver::Model> liner()
 {
-    solver::LoadedModel loaded = solver::loadModelFile(std::string(PADROB_SOURCE_DIR) + "/models/liner_manipulator.pad");
+    solver::CompiledModel loaded = solver::compileFile(std::string(PADROB_SOURCE_DIR) + "/models/liner_manipulator.pad");
     EXPECT_TRUE(loaded.ok());
-    solver::Diagnostics d;
-    return solver::compileLoaded(loaded, d);
+    return loaded.model;
 }
 
 }  // namespace
@@ -92,10 +91,9 @@ namespace {
 
 std::shared_ptr<const solver::Model> fromText(const std::string& text)
 {
-    solver::LoadedModel loaded = solver::loadModelText(text, "generated.pad");
+    solver::CompiledModel loaded = solver::compileText(text, "generated.pad");
     EXPECT_TRUE(loaded.ok());
-    solver::Diagnostics d;
-    return solver::compileLoaded(loaded, d);
+    return loaded.model;
 }
 
 /// Steps of 1 ms with every drive's command changed before every step (a sine per
@@ -146,7 +144,7 @@ TEST(StepAllocation, ImpulsesOnFreeJointsAllocateNothing)
     // joints an impulse (the articulated-body algorithm with impulses), and the passive
     // joints hit and leave their limits
     int events = 0;
-    EXPECT_EQ(commandedStepAllocations(fromText(solver::chainModelText(30)), 2000, &events), 0)
+    EXPECT_EQ(commandedStepAllocations(fromText(bench::chainModelText(30)), 2000, &events), 0)
         << "2000 RK4 steps of a 30-link chain";
     EXPECT_GT(events, 0) << "the limits were to be hit on the way";
 }

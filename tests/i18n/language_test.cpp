@@ -3,7 +3,7 @@
 // chooses the first language, and the model layer's diagnostics come out translated.
 #include "ide/i18n/diagnostic_text.h"
 #include "ide/i18n/language.h"
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 
 #include <QCoreApplication>
 #include <QLocale>
@@ -51,7 +51,7 @@ TEST(Language, ModelDiagnosticsAreTranslatedWithTheirArguments)
 {
     English restore;
     // a misspelt keyword: message and hint with the word and the guess in them
-    const solver::LoadedModel m = solver::loadModelText("GRAVITY 0 0 -9.81\nBB 1 1 1 1 1\n", "m.pad");
+    const solver::CompiledModel m = solver::compileText("GRAVITY 0 0 -9.81\nBB 1 1 1 1 1\n", "m.pad");
     const solver::Diagnostic* unknown = nullptr;
     for (const solver::Diagnostic& d : m.diagnostics) {
         if (d.code == "unknown-keyword") unknown = &d;
@@ -77,7 +77,7 @@ TEST(Language, ModelFilesReadPointDecimalsUnderASpanishCLocale)
     const char* previous = std::setlocale(LC_ALL, nullptr);
     const std::string saved = previous ? previous : "C";
     if (!std::setlocale(LC_ALL, "es_CL.UTF-8")) GTEST_SKIP() << "the es_CL.UTF-8 locale is not installed (scripts/install-deps.sh makes it)";
-    const solver::LoadedModel m = solver::loadModelText("GRAVITY 0 0 -9.81\nB 1 1.5 0.25 0.25 0.125\nC 1 QI 0.5\n"
+    const solver::CompiledModel m = solver::compileText("GRAVITY 0 0 -9.81\nB 1 1.5 0.25 0.25 0.125\nC 1 QI 0.5\n"
                                                          "B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 -1\nB2 1 P2 0 0 1 A2 1 0 0 R2 0 0 -1\n", "m.pad");
     std::setlocale(LC_ALL, saved.c_str());
     ASSERT_FALSE(m.diagnostics.hasErrors()) << (m.diagnostics.empty() ? "" : m.diagnostics.items().front().format());

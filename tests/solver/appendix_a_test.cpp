@@ -10,7 +10,7 @@
 // while body 2 (15.1982 + 73.4487 ≥ 73.4487), body 4 (2.07742 + 3.89517 = 5.97259
 // ≥ 4.38325) and bodies 7–9 (equal moments) are possible.
 
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 #include "model_texts.h"
 
 #include <gtest/gtest.h>
@@ -86,7 +86,7 @@ TEST(AppendixA, TextIsTheThesisText)
 
 TEST(AppendixA, UnchangedGivesExactlyTheDecimalCommaError)
 {
-    LoadedModel m = loadModelText(kAppendixA, "m.pad");
+    CompiledModel m = compileText(kAppendixA, "m.pad");
     ASSERT_EQ(m.diagnostics.errorCount(), 1u) << listing(m.diagnostics);
     // the error, and the warnings of the bodies that were read (body 4 is not checked:
     // its numbers are incomplete)
@@ -106,7 +106,7 @@ TEST(AppendixA, UnchangedGivesExactlyTheDecimalCommaError)
 
 TEST(AppendixA, CorrectedLoadsWithTheTriangleWarnings)
 {
-    LoadedModel m = loadModelText(solver::test::appendixACorrected(), "m.pad");
+    CompiledModel m = compileText(solver::test::appendixACorrected(), "m.pad");
     ASSERT_EQ(m.diagnostics.size(), 3u) << listing(m.diagnostics);
     EXPECT_EQ(m.diagnostics.items()[0].format(), kTriangle3);
     EXPECT_EQ(m.diagnostics.items()[1].format(), kTriangle5);
@@ -125,7 +125,7 @@ TEST(AppendixA, CorrectedLoadsWithTheTriangleWarnings)
 
 TEST(AppendixA, CorrectedSpecHasTheThesisValues)
 {
-    LoadedModel m = loadModelText(solver::test::appendixACorrected(), "m.pad");
+    CompiledModel m = compileText(solver::test::appendixACorrected(), "m.pad");
     const ModelSpec& s = m.spec;
     ASSERT_EQ(s.bodies.size(), 10u);  // B 0 … B 9
     ASSERT_EQ(s.joints.size(), 9u);
@@ -159,7 +159,7 @@ TEST(AppendixA, LinerManipulatorModel)
 {
     const std::filesystem::path file = std::filesystem::path(PADROB_SOURCE_DIR) / "models" / "liner_manipulator.pad";
     if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " does not exist yet";
-    LoadedModel m = loadModelFile(file.string());
+    CompiledModel m = compileFile(file.string());
     EXPECT_EQ(m.diagnostics.errorCount(), 0u) << listing(m.diagnostics);
     // the same three warnings as Appendix A, and nothing else
     ASSERT_EQ(m.diagnostics.size(), 3u) << listing(m.diagnostics);

@@ -4,7 +4,7 @@
 //
 // Temporary files live in a fresh folder under temp_directory_path() (temp_dir.h).
 
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 #include "temp_dir.h"
 
 #include <gtest/gtest.h>
@@ -56,7 +56,7 @@ TEST(BadInput, RandomBytesAreABinaryFile)
     const auto nul = junk.find('\0');
     ASSERT_NE(nul, std::string::npos);  // 4096 random bytes hold a NUL (seed 7: several)
 
-    LoadedModel m = loadModelText(junk, "m.pad");
+    CompiledModel m = compileText(junk, "m.pad");
     ASSERT_EQ(m.diagnostics.size(), 1u) << listing(m.diagnostics);
     const Diagnostic& d = m.diagnostics.items()[0];
     EXPECT_EQ(d.code, "binary-file");
@@ -81,7 +81,7 @@ TEST(BadInput, RandomBytesWithoutNulAreABinaryFile)
     }
     ASSERT_GT(controls * 20, junk.size());  // more than 5 %
 
-    LoadedModel m = loadModelText(junk, "m.pad");
+    CompiledModel m = compileText(junk, "m.pad");
     ASSERT_EQ(m.diagnostics.size(), 1u) << listing(m.diagnostics);
     EXPECT_EQ(m.diagnostics.items()[0].format(), "m.pad:1:1: error: this is not a text file (" +
                                                      std::to_string(controls) +
@@ -98,7 +98,7 @@ TEST(BadInput, PngImageIsABinaryFile)
     ASSERT_EQ(png.size(), 29u);
     TempDir dir;
     const std::string file = dir.write("picture.png", png);
-    LoadedModel m = loadModelFile(file);
+    CompiledModel m = compileFile(file);
     ASSERT_EQ(m.diagnostics.size(), 1u) << listing(m.diagnostics);
     EXPECT_EQ(m.diagnostics.items()[0].code, "binary-file");
     EXPECT_EQ(m.diagnostics.items()[0].format(),
@@ -110,7 +110,7 @@ TEST(BadInput, PngImageIsABinaryFile)
 TEST(BadInput, AFewControlCharactersAreNotABinaryFile)
 {
     // one stray control character in a short model is reported where it is
-    LoadedModel m = loadModelText("B 1 1 1 1 1\x1B\n", "m.pad");
+    CompiledModel m = compileText("B 1 1 1 1 1\x1B\n", "m.pad");
     ASSERT_EQ(m.diagnostics.size(), 1u) << listing(m.diagnostics);
     EXPECT_EQ(m.diagnostics.items()[0].format(),
               "m.pad:1:12: error: unexpected control character (code 27) [delete it; a model file is plain text]");
@@ -123,7 +123,7 @@ TEST(BadInput, FileOfSeventeenMegabytesIsTooLarge)
     TempDir dir;
     const std::string file = dir.write("huge.pad", std::string(17u * 1024u * 1024u, '#'));
     ASSERT_EQ(fs::file_size(file), 17u * 1024u * 1024u);
-    LoadedModel m = loadModelFile(file);
+    CompiledModel m = compileFile(file);
     ASSERT_EQ(m.diagnostics.size(), 1u) << listing(m.diagnostics);
     const Diagnostic& d = m.diagnostics.items()[0];
     EXPECT_EQ(d.code, "io-error");
@@ -139,7 +139,7 @@ TEST(BadInput, FileJustOverTheLimitSaysByHowMuch)
 {
     TempDir dir;
     const std::string file = dir.write("big.pad", std::string(kMaxModelFileBytes + 1, '#'));
-    LoadedModel m = loadModelFile(file);
+    CompiledModel m = compileFile(file);
     ASSERT_EQ(m.diagnostics.size(), 1u) << listing(m.diagnostics);
     // not "16 MB; the limit is 16 MB"
     EXPECT_EQ(m.diagnostics.items()[0].message, "the file is too large for a model file (16.1 MB; the limit is 16 MB)");
@@ -156,7 +156,7 @@ TEST(BadInput, FileAtTheLimitIsRead)
     TempDir dir;
     const std::string file = dir.write("limit.pad", text);
     const auto t0 = std::chrono::steady_clock::now();
-    LoadedModel m = loadModelFile(file);
+    CompiledModel m = compileFile(file);
     EXPECT_LT(secondsSince(t0), 10.0);
     EXPECT_TRUE(m.diagnostics.empty()) << listing(m.diagnostics);
     EXPECT_TRUE(m.topology.has_value());
@@ -171,7 +171,7 @@ TEST(BadInput, LineOfAMillionTokensIsFast)
     line += " x";
     ASSERT_GT(line.size(), 980000u);
     const auto t0 = std::chrono::steady_clock::now();
-    LoadedModel m = loadModelText(line + "\n", "m.pad");
+    CompiledModel m = compileText(line + "\n", "m.pad");
     EXPECT_LT(secondsSince(t0), 2.0);
     ASSERT_EQ(m.diagnostics.size(), 2u) << listing(m.diagnostics);
     EXPECT_EQ(m.diagnostics.items()[0].format(), "m.pad:1:19: error: GRAVITY: unexpected number 1 [remove it]");
@@ -186,7 +186,7 @@ TEST(BadInput, LineOfAMillionCharactersCountsCharacters)
     for (int k = 0; k < 1000000; ++k) name += "ñ";
     const std::string line = "B 1 NAME \"" + name + "\" CG 0 x 0";
     const auto t0 = std::chrono::steady_clock::now();
-    LoadedModel m = loadModelText(line, "m.pad");
+    CompiledModel m = compileText(line, "m.pad");
     EXPECT_LT(secondsSince(t0), 2.0);
     ASSERT_EQ(m.diagnostics.size(), 1u) << listing(m.diagnostics);
     // `B 1 NAME "` is 10 characters, the name 1,000,000, then `" CG 0 ` (7): x is 1,000,018
@@ -200,7 +200,7 @@ TEST(BadInput, ManyErrorsAreCappedNotStored)
 {
     std::string text;
     for (int k = 0; k < 20000; ++k) text += "x\n";
-    LoadedModel m = loadModelText(text, "m.pad");
+    CompiledModel m = compileText(text, "m.pad");
     EXPECT_EQ(m.diagnostics.errorCount(), 20000u);
     ASSERT_EQ(m.diagnostics.size(), Diagnostics::kDefaultLimit + 1);
     EXPECT_TRUE(m.diagnostics.truncated());
@@ -215,7 +215,7 @@ TEST(BadInput, ManyErrorsAreCappedNotStored)
 
 TEST(BadInput, NanAndInfinityLiterals)
 {
-    LoadedModel m = loadModelText(R"pad(GRAVITY nan INF -Infinity
+    CompiledModel m = compileText(R"pad(GRAVITY nan INF -Infinity
 B 1 10 NaN 1 1
 C 1 QI +inf
 B1 0 P1 0 0 0 A1 0 0 1 R1 0 1 0
@@ -239,7 +239,7 @@ B nan
 
 TEST(BadInput, HugeAndTinyNumbers)
 {
-    LoadedModel m = loadModelText(R"pad(GRAVITY 1e308 -1.7976931348623157e308 1e-400
+    CompiledModel m = compileText(R"pad(GRAVITY 1e308 -1.7976931348623157e308 1e-400
 B 1 1e309 1 1 1
 B 2 1 1 1 -2e308
 )pad",
@@ -254,7 +254,7 @@ B 2 1 1 1 -2e308
 
 TEST(BadInput, IdsNearIntMax)
 {
-    LoadedModel ok = loadModelText(R"pad(B 2147483646 1 1 1 1
+    CompiledModel ok = compileText(R"pad(B 2147483646 1 1 1 1
 B +2147483647 1 1 1 1
 C 02147483647
 B1 0 P1 0 0 0 A1 0 0 1 R1 0 1 0
@@ -274,7 +274,7 @@ B2 2147483647 P2 0 0 0 A2 0 0 1 R2 0 1 0
     ASSERT_TRUE(ok.topology.has_value());
     EXPECT_EQ(ok.topology->dof, 2);
 
-    LoadedModel bad = loadModelText(R"pad(B 2147483648
+    CompiledModel bad = compileText(R"pad(B 2147483648
 B -2147483648
 B 2147483647.0
 B 2.147483647e9
@@ -301,7 +301,7 @@ TEST(BadInput, MissingFile)
 {
     TempDir dir;
     const std::string file = dir.path("does-not-exist.pad");
-    LoadedModel m = loadModelFile(file);
+    CompiledModel m = compileFile(file);
     ASSERT_EQ(m.diagnostics.size(), 1u);
     EXPECT_EQ(m.diagnostics.items()[0].code, "io-error");
     EXPECT_EQ(m.diagnostics.items()[0].pos, (SourcePos{0, 0}));
@@ -314,7 +314,7 @@ TEST(BadInput, DirectoryIsNotAModel)
 {
     TempDir dir;
     fs::create_directories(dir.path("models.pad"));
-    LoadedModel m = loadModelFile(dir.path("models.pad"));
+    CompiledModel m = compileFile(dir.path("models.pad"));
     ASSERT_EQ(m.diagnostics.size(), 1u);
     EXPECT_EQ(m.diagnostics.items()[0].code, "io-error");
     EXPECT_EQ(m.diagnostics.items()[0].format(),
@@ -331,7 +331,7 @@ TEST(BadInput, Latin1FileLoadsWithAWarning)
                              "B1 0 P1 0 0 0 A1 0 0 1 R1 0 1 0\nB2 1 P2 0 0 0 A2 0 0 1 R2 0 1 0\n";
     TempDir dir;
     const std::string file = dir.write("latin1.pad", text);
-    LoadedModel m = loadModelFile(file);
+    CompiledModel m = compileFile(file);
     ASSERT_EQ(m.diagnostics.size(), 1u) << listing(m.diagnostics);
     const Diagnostic& d = m.diagnostics.items()[0];
     EXPECT_EQ(d.code, "not-utf8");
@@ -350,7 +350,7 @@ TEST(BadInput, Latin1ColumnsCountOneCharacterPerByte)
     // read as Latin-1, every byte is a character: "ñ" in UTF-8 (2 bytes) is "Ã±" here,
     // and the warning's column agrees with the error's on the same line
     const std::string text = "B 1 NAME \"\xC3\xB1\xF1\" 4,5\n";
-    LoadedModel m = loadModelText(text, "m.pad");
+    CompiledModel m = compileText(text, "m.pad");
     ASSERT_EQ(m.diagnostics.size(), 2u) << listing(m.diagnostics);
     EXPECT_EQ(m.diagnostics.items()[0].code, "not-utf8");
     EXPECT_EQ(m.diagnostics.items()[0].pos, (SourcePos{1, 13}));
@@ -362,7 +362,7 @@ TEST(BadInput, Latin1ColumnsCountOneCharacterPerByte)
 TEST(BadInput, Latin1WarningListedInLineOrder)
 {
     // an error above the first non-UTF-8 byte is listed first
-    LoadedModel m = loadModelText("GRAVTY 0 0 -9.81\n// mu\xF1" "eca\n", "m.pad");
+    CompiledModel m = compileText("GRAVTY 0 0 -9.81\n// mu\xF1" "eca\n", "m.pad");
     ASSERT_EQ(m.diagnostics.size(), 2u) << listing(m.diagnostics);
     EXPECT_EQ(m.diagnostics.items()[0].format(),
               "m.pad:1:1: error: unknown keyword 'GRAVTY' [did you mean 'GRAVITY'?]");
@@ -377,13 +377,13 @@ TEST(BadInput, ByteOrderMarkAndCrlf)
         if (c == '\n') crlf += '\r';
         crlf += c;
     }
-    LoadedModel ok = loadModelText("\xEF\xBB\xBF" + crlf, "m.pad");
+    CompiledModel ok = compileText("\xEF\xBB\xBF" + crlf, "m.pad");
     EXPECT_TRUE(ok.diagnostics.empty()) << listing(ok.diagnostics);
     ASSERT_TRUE(ok.topology.has_value());
     EXPECT_EQ(ok.spec.bodies[0].name, "arm");
     EXPECT_EQ(ok.spec.bodies[0].src.pos, (SourcePos{1, 1}));  // the BOM is not a character
 
-    LoadedModel bad = loadModelText("\xEF\xBB\xBF" "B 1 1 1 1 x\r\nB 2 1 1 1 4,5\r\nGRAVITY 0 0\r\n", "m.pad");
+    CompiledModel bad = compileText("\xEF\xBB\xBF" "B 1 1 1 1 x\r\nB 2 1 1 1 4,5\r\nGRAVITY 0 0\r\n", "m.pad");
     ASSERT_EQ(bad.diagnostics.size(), 3u) << listing(bad.diagnostics);
     EXPECT_EQ(bad.diagnostics.items()[0].format(),
               "m.pad:1:11: error: body 1: 'x' is not a number [numbers look like 12, -0.5, .2 or 1e-3]");
@@ -397,7 +397,7 @@ TEST(BadInput, ByteOrderMarkAndCrlf)
 TEST(BadInput, EmptyAndBlankFiles)
 {
     for (const std::string text : {"", "\n", "   \t\n\r\n// only a comment\n# another\n", "\xEF\xBB\xBF"}) {
-        LoadedModel m = loadModelText(text, "m.pad");
+        CompiledModel m = compileText(text, "m.pad");
         EXPECT_TRUE(m.diagnostics.empty()) << listing(m.diagnostics);
         EXPECT_TRUE(m.ok());
         EXPECT_TRUE(m.spec.bodies.empty());

@@ -6,7 +6,7 @@
 // checks only to reach a warning (not-perpendicular, inertia-triangle) are complete,
 // connected models, so the topology analysis runs on them too.
 
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 #include "temp_dir.h"
 
 #include <gtest/gtest.h>
@@ -57,7 +57,7 @@ std::string listing(const Diagnostics& diags)
 
 /// Compares the diagnostics with the expected ones, in order, and checks that the
 /// position and severity fields agree with the formatted text.
-void expectDiagnostics(const LoadedModel& m, const std::vector<Expected>& expected)
+void expectDiagnostics(const CompiledModel& m, const std::vector<Expected>& expected)
 {
     const auto& items = m.diagnostics.items();
     ASSERT_EQ(items.size(), expected.size()) << "diagnostics:\n" << listing(m.diagnostics);
@@ -880,7 +880,7 @@ class DiagnosticsTable : public testing::TestWithParam<Case> {};
 TEST_P(DiagnosticsTable, ExactDiagnostics)
 {
     const Case& c = GetParam();
-    LoadedModel m = loadModelText(c.text, "m.pad");
+    CompiledModel m = compileText(c.text, "m.pad");
     expectDiagnostics(m, c.expected);
     bool anyError = false;
     for (const Diagnostic& d : m.diagnostics) anyError = anyError || d.severity == Severity::Error;
@@ -894,7 +894,7 @@ INSTANTIATE_TEST_SUITE_P(Check, DiagnosticsTable, testing::ValuesIn(cases()),
 
 TEST(Diagnostics, IdOfIntMaxIsReadExactly)
 {
-    LoadedModel m = loadModelText(R"pad(B 2147483647 2 1 1 1
+    CompiledModel m = compileText(R"pad(B 2147483647 2 1 1 1
 C 2147483647
 B1 0 P1 0 0 0 A1 0 0 1 R1 0 1 0
 B2 2147483647 P2 0 0 0 A2 0 0 1 R2 0 1 0
@@ -923,7 +923,7 @@ TEST(Diagnostics, AllErrorsAreCollectedInLineOrder)
 {
     // five independent mistakes, found by the parser (lines 2, 9) and by the checks
     // (lines 1, 3, 10): all five are listed, top to bottom
-    LoadedModel m = loadModelText(R"pad(B 1 -5 1 1 1
+    CompiledModel m = compileText(R"pad(B 1 -5 1 1 1
 B 2 10 1 1 4,5
 C 1 LL 1 UL -1
 B1 0 P1 0 0 0 A1 0 0 1 R1 0 1 0
@@ -953,14 +953,14 @@ TEST(Diagnostics, ModelWithOneErrorHasNoTopology)
 {
     // the same model loads and is analysed without the error, and is not with it
     const std::string good = std::string(kRevolute) + "D 1 HYD VMAX 1\n";
-    LoadedModel ok = loadModelText(good, "m.pad");
+    CompiledModel ok = compileText(good, "m.pad");
     EXPECT_TRUE(ok.diagnostics.empty()) << listing(ok.diagnostics);
     EXPECT_TRUE(ok.ok());
     ASSERT_TRUE(ok.topology.has_value());
     EXPECT_EQ(ok.topology->dof, 1);
     EXPECT_EQ(ok.topology->totalMass, 1.0);
 
-    LoadedModel bad = loadModelText(good + "D 1 HYD VMAX 2\n", "m.pad");
+    CompiledModel bad = compileText(good + "D 1 HYD VMAX 2\n", "m.pad");
     EXPECT_EQ(bad.diagnostics.errorCount(), 1u);
     EXPECT_FALSE(bad.ok());
     EXPECT_FALSE(bad.topology.has_value());
@@ -968,7 +968,7 @@ TEST(Diagnostics, ModelWithOneErrorHasNoTopology)
 
 TEST(Diagnostics, ForceKindsAreParsed)
 {
-    LoadedModel m = loadModelText(R"pad(B 1 10 1 1 1
+    CompiledModel m = compileText(R"pad(B 1 10 1 1 1
 C 1 T 2 LL 0 UL 1
 B1 0 P1 0 0 0 A1 0 0 1 R1 0 1 0
 B2 1 P2 0 0 0 A2 0 0 1 R2 0 1 0
@@ -1058,9 +1058,9 @@ G 6 B 1 ELLIPSOID 1 2 3 MASS 3
 G 7 B 0 PRISM 0.1 0 0 1 0 0 1
 G 8 B 1 MESH "meshes/part.stl" SCALE 0.001
 )pad";
-    LoadedModel m = loadModelText(text, tmp.path("m.pad"));
+    CompiledModel m = compileText(text, tmp.path("m.pad"));
     // the same model read from elsewhere does not find its mesh
-    LoadedModel elsewhere = loadModelText(text, "m.pad");
+    CompiledModel elsewhere = compileText(text, "m.pad");
 
     EXPECT_TRUE(m.diagnostics.empty()) << listing(m.diagnostics);
     expectDiagnostics(elsewhere, {{"mesh-not-found",
@@ -1105,7 +1105,7 @@ G 8 B 1 MESH "meshes/part.stl" SCALE 0.001
 
 TEST(Diagnostics, DriveKindsAreParsed)
 {
-    LoadedModel m = loadModelText(R"pad(B 1 10 1 1 1
+    CompiledModel m = compileText(R"pad(B 1 10 1 1 1
 B 2 10 1 1 1
 B 3 10 1 1 1
 B 4 10 1 1 1
@@ -1168,7 +1168,7 @@ D 5 PNEU F -200
 TEST(Diagnostics, WarningsDoNotStopTheModel)
 {
     // a warning is reported, the model still loads and is analysed
-    LoadedModel m = loadModelText(R"pad(B 1 5 1 1 3
+    CompiledModel m = compileText(R"pad(B 1 5 1 1 3
 C 1
 B1 0 P1 0 0 0 A1 0 0 1 R1 0 1 0.001
 B2 1 P2 0 0 0 A2 0 0 1 R2 0 1 0

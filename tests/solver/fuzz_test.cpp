@@ -4,7 +4,7 @@
 // it makes thousands of mutants with fixed seeds: byte flips, token deletion,
 // duplication and swaps, inserted tokens (huge numbers, NaN, "4,5", quotes,
 // keywords, …), cut, deleted, duplicated and joined lines, random bytes (invalid
-// UTF-8, NUL, control characters). For every mutant, loadModelText must return in
+// UTF-8, NUL, control characters). For every mutant, compileText must return in
 // time, and its diagnostics must be well formed:
 //   - each has a position inside the text: 1 ≤ line ≤ number of lines, and
 //     1 ≤ column ≤ the length of that line in characters + 1 (whole-file
@@ -15,7 +15,7 @@
 // On a failure the mutant is printed (escaped) with its seed and index.
 
 #include "model_texts.h"
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 #include "solver/parse/parser.h"
 #include "solver/parse/writer.h"
 #include "temp_dir.h"
@@ -106,7 +106,7 @@ struct Outcome {
 };
 
 /// The first invariant that the loaded model `m` of `text` breaks, or "".
-std::string firstProblem(const LoadedModel& m, const std::string& text, const std::string& file)
+std::string firstProblem(const CompiledModel& m, const std::string& text, const std::string& file)
 {
     const std::vector<int> lengths = lineLengths(text);
     for (const Diagnostic& d : m.diagnostics) {
@@ -136,7 +136,7 @@ std::string firstProblem(const LoadedModel& m, const std::string& text, const st
     if (m.ok()) {
         // a model that loads writes out and reads back as the same model
         const std::string written = parse::writeModel(m.spec);
-        LoadedModel back = loadModelText(written, file);
+        CompiledModel back = compileText(written, file);
         if (!back.ok()) return "its written form does not load:\n" + written;
         if (parse::writeModel(back.spec) != written) return "its written form does not read back the same:\n" + written;
     }
@@ -148,7 +148,7 @@ Outcome checkInvariants(const std::string& text, const std::string& file = "m.pa
 {
     Outcome out;
     const auto t0 = std::chrono::steady_clock::now();
-    const LoadedModel m = loadModelText(text, file);
+    const CompiledModel m = compileText(text, file);
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out.loaded = m.ok();
     out.problem = firstProblem(m, text, file);

@@ -4,7 +4,7 @@
 // number in its shortest round-trip form.
 
 #include "model_texts.h"
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 #include "solver/parse/parser.h"
 #include "solver/parse/writer.h"
 #include "temp_dir.h"
@@ -259,7 +259,7 @@ TEST(RoundTrip, EveryStatementOptionAndShape)
     // the model is valid (with its mesh in place), so the round trip covers a real model
     const test::TempDir tmp("roundtrip_test");
     tmp.write("meshes/part.stl", "solid part\nendsolid part\n");
-    LoadedModel m = loadModelText(kEveryStatement, tmp.path("m.pad"));
+    CompiledModel m = compileText(kEveryStatement, tmp.path("m.pad"));
     EXPECT_TRUE(m.diagnostics.empty()) << listing(m.diagnostics);
 
     expectRoundTrip(kEveryStatement);
@@ -315,7 +315,7 @@ TEST(RoundTrip, EveryModelInModelsFolder)
     std::error_code ec;
     for (const auto& entry : fs::directory_iterator(dir, ec)) {
         if (entry.path().extension() != ".pad") continue;
-        LoadedModel m = loadModelFile(entry.path().string());
+        CompiledModel m = compileFile(entry.path().string());
         if (!m.ok()) continue;  // only models that load
         SCOPED_TRACE(entry.path().string());
         std::ifstream in(entry.path(), std::ios::binary);

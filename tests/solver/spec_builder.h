@@ -4,7 +4,7 @@
 // joint its C line plus B1, B2 (and CL for T 1). Keyword values get the columns
 // given to the setters (default: see each setter).
 
-#include "solver/model/model_spec.h"
+#include "solver/spec/model_spec.h"
 
 #include <Eigen/Core>
 

@@ -4,10 +4,9 @@
 // and prismatic joints, centres of mass off the frame origin, products of inertia,
 // a branching tree, every kind of drive).
 
-#include "solver/compile/compile.h"
 #include "solver/core/model.h"
 #include "solver/integrate/simulation.h"
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 
 #include <gtest/gtest.h>
 
@@ -31,31 +30,28 @@ inline std::string modelPath(const std::string& name)
     return std::string(PADROB_SOURCE_DIR) + "/models/" + name;
 }
 
-/// Loads and compiles; on any error fails the current test (listing the
+/// The compiled model; on any error fails the current test (listing the
 /// diagnostics) and returns nullptr.
-inline std::shared_ptr<const Model> compileLoadedOrFail(const LoadedModel& loaded)
+inline std::shared_ptr<const Model> modelOrFail(const CompiledModel& compiled)
 {
-    Diagnostics diags(loaded.spec.file);
-    std::shared_ptr<const Model> model = compileLoaded(loaded, diags);
-    if (!model) {
+    if (!compiled.model) {
         std::string all;
-        for (const Diagnostic& d : loaded.diagnostics) all += d.format() + "\n";
-        for (const Diagnostic& d : diags) all += d.format() + "\n";
+        for (const Diagnostic& d : compiled.diagnostics) all += d.format() + "\n";
         ADD_FAILURE() << "model did not compile:\n" << all;
     }
-    return model;
+    return compiled.model;
 }
 
 inline std::shared_ptr<const Model> compileText(const std::string& text,
                                                 const std::string& file = "<text>")
 {
-    return compileLoadedOrFail(loadModelText(text, file));
+    return modelOrFail(solver::compileText(text, file));
 }
 
 /// A file of models/ by name, e.g. "pendulum.pad".
 inline std::shared_ptr<const Model> compileExample(const std::string& name)
 {
-    return compileLoadedOrFail(loadModelFile(modelPath(name)));
+    return modelOrFail(compileFile(modelPath(name)));
 }
 
 /// A branching tree of 7 bodies: joint 1 revolute about a tilted axis from the ground;

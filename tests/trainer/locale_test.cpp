@@ -4,7 +4,7 @@
 // the parsers and writers must not depend on it (docs/glossary.md: model files always use
 // the point). Skipped where the locale is not installed (scripts/install-deps.sh makes it).
 
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 #include "solver/parse/writer.h"
 #include "trainer/input/input_log.h"
 #include "trainer/training/camera_path.h"
@@ -54,7 +54,7 @@ const char* const kModel =
     "B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 -1\n"
     "B2 1 P2 0 0 1 A2 1 0 0 R2 0 0 -1\n";
 
-std::string problems(const solver::LoadedModel& m)
+std::string problems(const solver::CompiledModel& m)
 {
     std::string s;
     for (const solver::Diagnostic& d : m.diagnostics) s += d.format() + "\n";
@@ -68,7 +68,7 @@ TEST(SpanishLocale, ModelFilesKeepThePoint)
     SpanishLocale es;
     if (!es.ok()) GTEST_SKIP() << kNoLocale;
     ASSERT_STREQ(std::localeconv()->decimal_point, ",");  // the C library's numbers are 1,5 now
-    const solver::LoadedModel m = solver::loadModelText(kModel, "es.pad");
+    const solver::CompiledModel m = solver::compileText(kModel, "es.pad");
     ASSERT_TRUE(m.ok()) << problems(m);
     const solver::BodySpec* bob = m.spec.body(1);
     ASSERT_NE(bob, nullptr);
@@ -82,14 +82,14 @@ TEST(SpanishLocale, ModelFilesKeepThePoint)
     EXPECT_EQ(m.spec.joints[0].ll, -1.25);
     EXPECT_EQ(m.spec.joints[0].ul, 1.25);
     // a decimal comma is an error under es_CL too, as everywhere
-    const solver::LoadedModel comma = solver::loadModelText("B 1 1,5 1 1 1\n", "comma.pad");
+    const solver::CompiledModel comma = solver::compileText("B 1 1,5 1 1 1\n", "comma.pad");
     EXPECT_FALSE(comma.ok());
     // and the writer writes the point
     const std::string text = solver::parse::writeModel(m.spec);
     EXPECT_NE(text.find(" 1.5 "), std::string::npos) << text;
     EXPECT_EQ(text.find("1,5"), std::string::npos) << text;
     EXPECT_EQ(solver::parse::formatNumber(0.125), "0.125");
-    const solver::LoadedModel again = solver::loadModelText(text, "again.pad");
+    const solver::CompiledModel again = solver::compileText(text, "again.pad");
     ASSERT_TRUE(again.ok()) << problems(again);
     EXPECT_EQ(again.spec.body(1)->mass, 1.5);
 }

@@ -262,15 +262,13 @@ TEST(ProfileStore, ImportTakesAFreeNameAndRefusesBadFiles)
     EXPECT_EQ(ProfileStore::fileNameFor("a/b:c"), "a_b_c.json");
 }
 
-#include "solver/compile/compile.h"
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 
 TEST(ShippedProfiles, LinerManipulatorGamepadAndConsoleLoadAndMapEveryDrive)
 {
     const QString modelPath = PADROB_SOURCE_DIR "/models/liner_manipulator.pad";
-    const solver::LoadedModel loaded = solver::loadModelFile(modelPath.toStdString());
-    solver::Diagnostics diags(loaded.spec.file);
-    const auto model = solver::compileLoaded(loaded, diags);
+    const solver::CompiledModel loaded = solver::compileFile(modelPath.toStdString());
+    const auto model = loaded.model;
     ASSERT_TRUE(model);
     const QList<DriveInfo> drives = drivesOf(*model);
     ASSERT_EQ(drives.size(), 9);

@@ -4,7 +4,7 @@
 
 #include "solver/compile/compile.h"
 #include "solver/core/text_file.h"
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 #include "solver/parse/lexer.h"
 #include "trainer/input/input_log.h"
 #include "trainer/training/camera_path.h"
@@ -58,7 +58,7 @@ void checkText(const LocalText& t, const Text& what, Diagnostics& d)
 }
 
 /// The errors of a model (or scene) file, each in its own file, into the tutorial's list.
-void copyErrors(const solver::LoadedModel& loaded, const std::string& file, Diagnostics& diags)
+void copyErrors(const solver::CompiledModel& loaded, const std::string& file, Diagnostics& diags)
 {
     for (const solver::Diagnostic& d : loaded.diagnostics) {
         if (d.severity != solver::Severity::Error) continue;
@@ -127,7 +127,7 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
 
     // the model
     tut->modelFile = resolvePath(tut->directory, s.modelPath);
-    solver::LoadedModel loaded = solver::loadModelFile(tut->modelFile);
+    solver::CompiledModel loaded = solver::compileFile(tut->modelFile);
     if (!loaded.ok()) {
         copyErrors(loaded, tut->modelFile, diags);
         diags.error("model-errors", s.modelPos,
@@ -149,7 +149,7 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
     // the scene
     if (!s.scenePath.empty()) {
         tut->sceneFile = resolvePath(tut->directory, s.scenePath);
-        solver::LoadedModel scene = solver::loadModelFile(tut->sceneFile);
+        solver::CompiledModel scene = solver::compileFile(tut->sceneFile);
         if (!scene.ok()) {
             copyErrors(scene, tut->sceneFile, diags);
             diags.error("scene-errors", s.scenePos,

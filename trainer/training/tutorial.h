@@ -11,7 +11,7 @@
 
 #include "solver/core/diagnostic.h"
 #include "solver/core/model.h"
-#include "solver/model/model_spec.h"
+#include "solver/spec/model_spec.h"
 #include "trainer/station/profile.h"
 
 #include <Eigen/Core>

@@ -7,7 +7,7 @@
 // indentation, its NAME and its trailing comment when the statement is replaced.
 
 #include "solver/inertia/solid_inertia.h"
-#include "solver/model/model_spec.h"
+#include "solver/spec/model_spec.h"
 
 #include <QString>
 

@@ -2,7 +2,7 @@
 
 #include "ide/studio/dialogs/b_statement.h"
 #include "ide/i18n/diagnostic_text.h"
-#include "solver/model/validate.h"
+#include "solver/spec/validate.h"
 #include "solver/parse/parser.h"
 #include "solver/parse/writer.h"
 

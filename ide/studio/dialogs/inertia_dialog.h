@@ -14,7 +14,7 @@
 
 #include "ide/studio/model/model_bundle.h"
 #include "solver/inertia/solid_inertia.h"
-#include "solver/model/model_spec.h"
+#include "solver/spec/model_spec.h"
 
 #include <QDialog>
 #include <QString>

@@ -1,6 +1,6 @@
 #include "ide/studio/editor/model_document.h"
 
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 
 #include <QCoreApplication>
 #include <QCryptographicHash>

@@ -11,7 +11,7 @@ std::shared_ptr<const ModelBundle> makeBundle(const QString& text, const QString
 {
     static std::atomic<quint64> counter{0};
     const std::string name = filePath.isEmpty() ? std::string("<untitled>") : filePath.toStdString();
-    auto loaded = std::make_shared<solver::LoadedModel>(solver::loadModelText(text.toStdString(), name));
+    auto loaded = std::make_shared<solver::CompiledModel>(solver::compileText(text.toStdString(), name));
     diagnostics.append(loaded->diagnostics);
     if (!loaded->ok() || !loaded->topology) return nullptr;
     solver::Diagnostics compileDiags(name);

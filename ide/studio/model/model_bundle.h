@@ -6,7 +6,7 @@
 // a bundle: the widgets keep the last good one (DESIGN: nothing half-loaded).
 
 #include "solver/core/model.h"
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 
 #include <QString>
 
@@ -17,7 +17,7 @@ namespace studio {
 struct ModelBundle {
     /// The model as written: statements with source positions, graphics (G), names,
     /// and its topology (chains, loops, independent/dependent joints). ok() is true.
-    std::shared_ptr<const solver::LoadedModel> loaded;
+    std::shared_ptr<const solver::CompiledModel> loaded;
     /// The compiled model (tree numbering: bodies and joints by tree index).
     std::shared_ptr<const solver::Model> model;
     /// The file it came from ("" when never saved): mesh paths are relative to its folder.

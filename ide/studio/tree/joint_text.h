@@ -7,7 +7,7 @@
 // (a reader who also edits the model, where '.' is the decimal point, does not take
 // "2.500 kg" for two and a half). None of these texts goes into a model file.
 
-#include "solver/model/model_spec.h"
+#include "solver/spec/model_spec.h"
 
 #include <QLocale>
 #include <QString>

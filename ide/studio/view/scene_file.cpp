@@ -1,7 +1,7 @@
 #include "ide/studio/view/scene_file.h"
 
 #include "ide/i18n/diagnostic_text.h"
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 
 #include <QCoreApplication>
 #include <QDir>

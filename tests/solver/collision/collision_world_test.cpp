@@ -3,7 +3,7 @@
 #include "solver/collision/collision_world.h"
 
 #include "solver/kinematics/kinematics.h"
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 #include "tests/solver/test_models.h"
 #include "tests/solver/temp_dir.h"
 
@@ -28,16 +28,16 @@ const char* kPendulum =
     "G 2 B 0 BOX 0.2 0.2 0.2 POS 0 0 0.3\n";  // the machine's own support, joined through C 1
 
 struct World {
-    LoadedModel machine;
-    LoadedModel scene;
+    CompiledModel machine;
+    CompiledModel scene;
     std::shared_ptr<const Model> model;
     std::unique_ptr<Data> data;
     std::unique_ptr<CollisionWorld> world;
 
     World(const std::string& machineText, const std::string& sceneText, const std::string& file = "<text>")
-        : machine(loadModelText(machineText, file)), scene(loadModelText(sceneText, file))
+        : machine(compileText(machineText, file)), scene(compileText(sceneText, file))
     {
-        model = test::compileLoadedOrFail(machine);
+        model = test::modelOrFail(machine);
         if (!model) return;
         data = std::make_unique<Data>(*model);
         Diagnostics diags;
@@ -131,9 +131,9 @@ TEST(CollisionWorld, MeshesComeFromTheirFiles)
     // the unit cube, moved so that its top is at z = −1.5
     const std::string scene = "G 1 B 0 MESH \"cube.obj\" POS -0.5 -0.5 -2.5\nG 2 B 0 MESH \"missing.obj\"\n";
     const std::string file = dir.path("scene.pad");
-    LoadedModel machine = loadModelText(kPendulum, file);
-    LoadedModel sceneModel = loadModelText(scene, file);
-    auto model = test::compileLoadedOrFail(machine);
+    CompiledModel machine = compileText(kPendulum, file);
+    CompiledModel sceneModel = compileText(scene, file);
+    auto model = test::modelOrFail(machine);
     ASSERT_TRUE(model);
     Diagnostics diags;
     CollisionWorld world(machine.spec, *model, &sceneModel.spec, diags);
@@ -161,10 +161,10 @@ TEST(CollisionWorld, TheLinerManipulatorStandsClearInsideTheSagMill)
 {
     const std::string machinePath = test::modelPath("liner_manipulator.pad");
     const std::string scenePath = std::string(PADROB_SOURCE_DIR) + "/resources/scenes/sag_mill.pad";
-    LoadedModel machine = loadModelFile(machinePath);
-    LoadedModel scene = loadModelFile(scenePath);
+    CompiledModel machine = compileFile(machinePath);
+    CompiledModel scene = compileFile(scenePath);
     ASSERT_TRUE(scene.ok());
-    auto model = test::compileLoadedOrFail(machine);
+    auto model = test::modelOrFail(machine);
     ASSERT_TRUE(model);
     Diagnostics diags;
     CollisionWorld world(machine.spec, *model, &scene.spec, diags);

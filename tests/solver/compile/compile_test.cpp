@@ -3,7 +3,7 @@
 #include "solver/core/data.h"
 #include "solver/core/state.h"
 #include "solver/kinematics/kinematics.h"
-#include "solver/kinematics/positions.h"
+#include "tests/solver/spec_oracle.h"
 #include "tests/solver/dynamics/random_states.h"
 #include "tests/solver/test_models.h"
 
@@ -238,10 +238,10 @@ TEST(Compile, ReversedJointsGetNegativeAxisSign)
 }
 
 // The body poses of the compiled model equal those of the topology analysis
-// (solver/kinematics/positions.h, which works on the spec) at random coordinates.
-void expectPosesAgreeWithTopology(const LoadedModel& loaded)
+// (tests/solver/spec_oracle.h, which works on the spec) at random coordinates.
+void expectPosesAgreeWithTopology(const CompiledModel& loaded)
 {
-    const auto model = test::compileLoadedOrFail(loaded);
+    const auto model = test::modelOrFail(loaded);
     ASSERT_TRUE(model);
     const Model& m = *model;
     const Topology& topo = *loaded.topology;
@@ -256,7 +256,7 @@ void expectPosesAgreeWithTopology(const LoadedModel& loaded)
         for (std::size_t j = 0; j < loaded.spec.joints.size(); ++j) {
             theta[static_cast<Eigen::Index>(j)] = s.q[m.jointIndex(loaded.spec.joints[j].id)];
         }
-        const std::vector<Eigen::Isometry3d> X = bodyPoses(topo, geometry, theta);
+        const std::vector<Eigen::Isometry3d> X = test::bodyPoses(topo, geometry, theta);
         for (std::size_t b = 1; b < topo.bodyIds.size(); ++b) {
             const int i = m.bodyIndex(topo.bodyIds[b]);
             EXPECT_TRUE(data.X_wb[i].matrix().isApprox(X[b].matrix(), 1e-12))
@@ -267,12 +267,12 @@ void expectPosesAgreeWithTopology(const LoadedModel& loaded)
 
 TEST(Compile, PosesAgreeWithTheTopologyAnalysis)
 {
-    expectPosesAgreeWithTopology(loadModelText(test::kZooModel));
-    expectPosesAgreeWithTopology(loadModelText(test::kCylinderArmModel));
+    expectPosesAgreeWithTopology(compileText(test::kZooModel));
+    expectPosesAgreeWithTopology(compileText(test::kCylinderArmModel));
     for (const char* name : {"pendulum.pad", "double_pendulum.pad", "incline_slider.pad",
                              "liner_manipulator.pad"}) {
         SCOPED_TRACE(name);
-        expectPosesAgreeWithTopology(loadModelFile(test::modelPath(name)));
+        expectPosesAgreeWithTopology(compileFile(test::modelPath(name)));
     }
 }
 
@@ -468,11 +468,12 @@ D 1 MOTOR T0 1 W0 1
 D 2 MOTOR T0 1 W0 1
 D 3 MOTOR T0 1 W0 1
 )";
-    const LoadedModel loaded = loadModelText(text, "loop.pad");
-    ASSERT_TRUE(loaded.ok());
-    ASSERT_EQ(loaded.topology->loopJoints.size(), 1u);
-    Diagnostics diags(loaded.spec.file);
-    EXPECT_EQ(compileModel(loaded.spec, *loaded.topology, diags), nullptr);
+    // (the model loads as text; compiling it fails)
+    const CompiledModel loaded = compileText(text, "loop.pad");
+    Diagnostics graph(loaded.spec.file);
+    ASSERT_EQ(analyzeTopology(loaded.spec, graph).loopJoints.size(), 1u);
+    EXPECT_EQ(loaded.model, nullptr);
+    const Diagnostics& diags = loaded.diagnostics;
     bool driven = false, limits = false;
     for (const Diagnostic& d : diags) {
         if (d.code == "loop-joint-driven") {
@@ -493,11 +494,10 @@ D 3 MOTOR T0 1 W0 1
 
 TEST(Compile, ModelWithErrorsGivesNothing)
 {
-    const LoadedModel loaded = loadModelText("B 1 1 1 1 1\nC 1\nB1 0 P1 0 0 0 A1 0 0 0 R1 1 0 0\n");
+    const CompiledModel loaded = compileText("B 1 1 1 1 1\nC 1\nB1 0 P1 0 0 0 A1 0 0 0 R1 1 0 0\n");
     ASSERT_FALSE(loaded.ok());
-    Diagnostics diags;
-    EXPECT_EQ(compileLoaded(loaded, diags), nullptr);
-    EXPECT_TRUE(diags.empty());
+    EXPECT_EQ(loaded.model, nullptr);
+    EXPECT_FALSE(loaded.topology);
 }
 
 TEST(Compile, DataIsSizedForTheModel)

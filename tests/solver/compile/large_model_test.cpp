@@ -1,8 +1,8 @@
 // Large models: the checks stay linear-ish and exact past the dense mass-matrix limit,
 // and a model beyond the size limit gets one clear error.
 
-#include "solver/model/load.h"
-#include "solver/model/validate.h"
+#include "solver/pipeline.h"
+#include "solver/spec/validate.h"
 
 #include <gtest/gtest.h>
 
@@ -27,7 +27,7 @@ std::string chain(std::size_t n, bool masslessLeaf)
 
 TEST(LargeModel, LongChainBeyondTheDenseLimitLoads)
 {
-    solver::LoadedModel m = solver::loadModelText(chain(3000, false), "chain.pad");
+    solver::CompiledModel m = solver::compileText(chain(3000, false), "chain.pad");
     ASSERT_TRUE(m.ok()) << (m.diagnostics.empty() ? "" : m.diagnostics.items()[0].format());
     ASSERT_TRUE(m.topology);
     EXPECT_EQ(m.topology->dof, 3000);
@@ -38,7 +38,7 @@ TEST(LargeModel, MasslessLeafOfALongChainIsFound)
 {
     // the leaf's tiny diagonal entry (0 kg m²) sits beside the root's ~1e6 kg m²:
     // the exact per-joint sums find it without a relative tolerance over the whole matrix
-    solver::LoadedModel m = solver::loadModelText(chain(3000, true), "chain.pad");
+    solver::CompiledModel m = solver::compileText(chain(3000, true), "chain.pad");
     ASSERT_EQ(m.diagnostics.size(), 1u);
     EXPECT_EQ(m.diagnostics.items()[0].code, "joint-moves-no-mass");
     EXPECT_EQ(m.diagnostics.items()[0].pos, (solver::SourcePos{4 * 3000 - 2, 1}));
@@ -49,7 +49,7 @@ TEST(LargeModel, TooManyBodiesIsOneClearError)
 {
     std::string text;
     for (std::size_t i = 1; i <= solver::kMaxBodies + 5; ++i) text += "B " + std::to_string(i) + " 1 1 1 1\n";
-    solver::LoadedModel m = solver::loadModelText(text, "many.pad");
+    solver::CompiledModel m = solver::compileText(text, "many.pad");
     ASSERT_FALSE(m.ok());
     EXPECT_EQ(m.diagnostics.items()[0].format(),
               "many.pad:10001:1: error: the model has 10005 bodies; Padrob takes at most 10000 "

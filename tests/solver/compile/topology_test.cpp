@@ -1,7 +1,8 @@
 #include "solver/compile/topology.h"
 
+#include "solver/compile/compile.h"
 #include "solver/kinematics/joint_geometry.h"
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 #include "tests/solver/model_texts.h"
 #include "tests/solver/spec_builder.h"
 
@@ -18,6 +19,13 @@ namespace {
 using Eigen::Vector3d;
 using test::side;
 constexpr double kPi = std::numbers::pi;
+
+// the topology as compiled (the graph, the loops closed at QI on the compiled model);
+// nullopt with errors
+std::optional<Topology> analyze(const ModelSpec& spec, Diagnostics& diags)
+{
+    return compileModel(spec, diags).topology;
+}
 
 // the diagnostics with a code
 std::vector<Diagnostic> withCode(const Diagnostics& diags, const std::string& code)
@@ -37,7 +45,7 @@ std::string listing(const Diagnostics& diags)
 }
 
 // exactly one diagnostic with this code; checks severity and position
-Diagnostic single(const LoadedModel& m, const std::string& code, Severity severity, int line,
+Diagnostic single(const CompiledModel& m, const std::string& code, Severity severity, int line,
                   int column)
 {
     const auto found = withCode(m.diagnostics, code);
@@ -53,7 +61,7 @@ Diagnostic single(const LoadedModel& m, const std::string& code, Severity severi
 
 TEST(Topology, LinerManipulatorAppendixA)
 {
-    const LoadedModel m = loadModelText(solver::test::appendixACorrected(), "m.pad");
+    const CompiledModel m = compileText(solver::test::appendixACorrected(), "m.pad");
     ASSERT_TRUE(m.ok()) << listing(m.diagnostics);
     ASSERT_TRUE(m.topology.has_value());
     const Topology& t = *m.topology;
@@ -131,7 +139,7 @@ FourBarByHand fourBarByHand(double crank, const Eigen::Vector2d& d = Eigen::Vect
 
 TEST(Topology, FourBarTreeCutJointAndDependentAngles)
 {
-    const LoadedModel m = loadModelText(kFourBar, "m.pad");
+    const CompiledModel m = compileText(kFourBar, "m.pad");
     ASSERT_TRUE(m.ok()) << listing(m.diagnostics);
     const Topology& t = *m.topology;
 
@@ -161,7 +169,7 @@ TEST(Topology, FourBarAssemblesFromAStraightGuess)
     std::string text = kFourBar;
     text.replace(text.find("C 2 QI -0.5"), 11, "C 2");
     text.replace(text.find("C 3 QI -2.5"), 11, "C 3");
-    const LoadedModel m = loadModelText(text, "m.pad");
+    const CompiledModel m = compileText(text, "m.pad");
     ASSERT_TRUE(m.ok()) << listing(m.diagnostics);
     const Topology& t = *m.topology;
     EXPECT_EQ(t.closureRank, 2);
@@ -193,7 +201,7 @@ C 7
 B1 5 P1 1.5 0 0 A1 0 0 1 R1 1 0 0
 B2 0 P2 -2 0 0 A2 0 0 1 R2 1 0 0
 )";
-    const LoadedModel m = loadModelText(text, "m.pad");
+    const CompiledModel m = compileText(text, "m.pad");
     ASSERT_TRUE(m.ok()) << listing(m.diagnostics);
     const Topology& t = *m.topology;
     EXPECT_EQ(t.treeJoints, (std::vector<int>{0, 1, 4, 2, 5}));
@@ -221,7 +229,7 @@ TEST(Topology, DrivenJointsEnterTheTreeFirst)
     // and the driven joint 4 is the one kept independent, at the QI that gives the crank 60°
     std::string text = std::string(kFourBar) + "D 4 HYD VMAX 0.5\n";
     text.replace(text.find("C 4\n"), 4, "C 4 QI 1.851449659039601\n");
-    const LoadedModel m = loadModelText(text, "m.pad");
+    const CompiledModel m = compileText(text, "m.pad");
     ASSERT_TRUE(m.ok()) << listing(m.diagnostics);
     const Topology& t = *m.topology;
     EXPECT_EQ(t.treeJoints, (std::vector<int>{3, 0, 1}));
@@ -262,7 +270,7 @@ D 1 HYD VMAX 1
 
 TEST(Topology, SliderCrankRevoluteCut)
 {
-    const LoadedModel m = loadModelText(kSliderCrank, "m.pad");
+    const CompiledModel m = compileText(kSliderCrank, "m.pad");
     ASSERT_TRUE(m.ok()) << listing(m.diagnostics);
     const Topology& t = *m.topology;
     EXPECT_EQ(t.treeJoints, (std::vector<int>{0, 1, 2}));
@@ -300,7 +308,7 @@ TEST(Topology, SliderCrankPrismaticCut)
     b.set(3, "QI", 0.3, 7);
     b.joint(4, JointType::Prismatic, side(0, Vector3d::Zero()), side(3, Vector3d::Zero()));
     Diagnostics diags("m.pad");
-    const auto t = analyzeTopology(b.spec, diags);
+    const auto t = analyze(b.spec, diags);
     ASSERT_TRUE(t.has_value()) << listing(diags);
     EXPECT_EQ(t->loopJoints, (std::vector<int>{3}));
     EXPECT_EQ(t->closureRank, 2);
@@ -338,7 +346,7 @@ B2 0 P2 4 0 0 A2 0 0 1 R2 1 0 0
 
 TEST(Topology, LoopUnsatisfiable)
 {
-    const LoadedModel m = loadModelText(kLinkTooShort, "m.pad");
+    const CompiledModel m = compileText(kLinkTooShort, "m.pad");
     EXPECT_FALSE(m.ok());
     EXPECT_FALSE(m.topology.has_value());
     EXPECT_EQ(m.diagnostics.errorCount(), 1u) << listing(m.diagnostics);
@@ -355,16 +363,16 @@ TEST(Topology, LoopUnsatisfiable)
 TEST(Topology, LoopUnsatisfiableResidualIsTheGap)
 {
     // the same through the C++ spec: the least-squares residual is the 1 m gap
-    const LoadedModel m = loadModelText(kLinkTooShort, "m.pad");
+    const CompiledModel m = compileText(kLinkTooShort, "m.pad");
     Diagnostics diags("m.pad");
-    EXPECT_FALSE(analyzeTopology(m.spec, diags).has_value());
+    EXPECT_FALSE(analyze(m.spec, diags).has_value());
     ASSERT_EQ(withCode(diags, "loop-unsatisfiable").size(), 1u);
 
     // crank at 0.5 rad instead: the gap is |D − A| − 2 with A = (cos 0.5, sin 0.5)
     ModelSpec spec = m.spec;
     spec.joints[0].qi = 0.5;
     Diagnostics diags2("m.pad");
-    EXPECT_FALSE(analyzeTopology(spec, diags2).has_value());
+    EXPECT_FALSE(analyze(spec, diags2).has_value());
     const auto found = withCode(diags2, "loop-unsatisfiable");
     ASSERT_EQ(found.size(), 1u);
     const double gap = std::hypot(4 - std::cos(0.5), std::sin(0.5)) - 2;
@@ -390,7 +398,7 @@ C 2
 B1 3 P1 0 0 0 A1 0 0 1 R1 1 0 0
 B2 4 P2 1 0 0 A2 0 0 1 R2 1 0 0
 )";
-    const LoadedModel m = loadModelText(text, "m.pad");
+    const CompiledModel m = compileText(text, "m.pad");
     EXPECT_FALSE(m.ok());
     const auto found = withCode(m.diagnostics, "body-not-connected");
     ASSERT_EQ(found.size(), 3u) << listing(m.diagnostics);
@@ -421,7 +429,7 @@ C 2 NAME "wrist"
 B1 1 P1 1 0 0 A1 0 0 1 R1 1 0 0
 B2 2 P2 0 0 0 A2 0 0 1 R2 1 0 0
 )";
-    const LoadedModel m = loadModelText(text, "m.pad");
+    const CompiledModel m = compileText(text, "m.pad");
     EXPECT_FALSE(m.ok());
     EXPECT_EQ(m.diagnostics.errorCount(), 1u) << listing(m.diagnostics);
     const Diagnostic d = single(m, "joint-moves-no-mass", Severity::Error, 6, 1);
@@ -445,7 +453,7 @@ C 2
 B1 1 P1 1 0 0 A1 0 0 1 R1 1 0 0
 B2 2 P2 0 0 0 A2 0 0 1 R2 1 0 0
 )";
-    const LoadedModel m = loadModelText(text, "m.pad");
+    const CompiledModel m = compileText(text, "m.pad");
     EXPECT_FALSE(m.ok());
     const Diagnostic d = single(m, "joint-moves-no-mass", Severity::Error, 6, 1);
     EXPECT_EQ(d.message.rfind("joint 2 moves no mass: ", 0), 0u) << d.message;
@@ -453,7 +461,7 @@ B2 2 P2 0 0 0 A2 0 0 1 R2 1 0 0
     // the same point mass off the axis is fine
     std::string moved = text;
     moved.replace(moved.find("CG 0 0 0.5"), 10, "CG 0.2 0 0");
-    const LoadedModel ok = loadModelText(moved, "m.pad");
+    const CompiledModel ok = compileText(moved, "m.pad");
     EXPECT_TRUE(ok.ok()) << listing(ok.diagnostics);
 }
 
@@ -465,7 +473,7 @@ TEST(Topology, JointMovesNoMassPrismaticLeaf)
     b.joint(1, JointType::Revolute, side(0, Vector3d::Zero()), side(1, Vector3d::Zero()));
     b.joint(2, JointType::Prismatic, side(1, Vector3d::Zero()), side(2, Vector3d::Zero()), "claw");
     Diagnostics diags("m.pad");
-    EXPECT_FALSE(analyzeTopology(b.spec, diags).has_value());
+    EXPECT_FALSE(analyze(b.spec, diags).has_value());
     ASSERT_EQ(diags.size(), 1u) << listing(diags);
     EXPECT_EQ(diags.items()[0].code, "joint-moves-no-mass");
     EXPECT_EQ(diags.items()[0].pos, (SourcePos{6, 1}));
@@ -488,7 +496,7 @@ C 2
 B1 1 P1 0 0 0.2 A1 0 0 1 R1 1 0 0
 B2 2 P2 0 0 0 A2 0 0 1 R2 1 0 0
 )";
-    const LoadedModel m = loadModelText(text, "m.pad");
+    const CompiledModel m = compileText(text, "m.pad");
     EXPECT_FALSE(m.ok());
     const auto found = withCode(m.diagnostics, "joint-moves-no-mass");
     ASSERT_EQ(found.size(), 2u) << listing(m.diagnostics);
@@ -514,7 +522,7 @@ B1 1 P1 0 0 0 A1 1 0 0 R1 0 1 0
 B2 2 P2 0 -0.8 0 A2 1 0 0 R2 0 1 0
 CL1 0.030 0 -.200 CL2 0.030 .650 0
 )";
-    const LoadedModel m = loadModelText(text, "m.pad");
+    const CompiledModel m = compileText(text, "m.pad");
     EXPECT_TRUE(m.ok()) << listing(m.diagnostics);
     EXPECT_EQ(m.topology->dof, 2);
     EXPECT_NEAR(m.topology->totalMass, 306, 0);
@@ -535,7 +543,7 @@ TEST(Topology, LoopThatMovesNoMass)
     b.set(3, "QI", -2.5, 7);
     b.joint(4, JointType::Revolute, side(3, Vector3d(1.5, 0, 0)), side(0, Vector3d(2, 0, 0)));
     Diagnostics diags("m.pad");
-    EXPECT_FALSE(analyzeTopology(b.spec, diags).has_value());
+    EXPECT_FALSE(analyze(b.spec, diags).has_value());
     ASSERT_EQ(diags.size(), 1u) << listing(diags);
     EXPECT_EQ(diags.items()[0].code, "joint-moves-no-mass");
     EXPECT_EQ(diags.items()[0].pos, (SourcePos{4, 1}));
@@ -567,7 +575,7 @@ TEST(Topology, ActuatorQiUnreachable)
     // 0        1         2
     // 123456789012345678901234567890
     // C 2 T 1 QI 2.1
-    const LoadedModel m = loadModelText(boomWith("C 2 T 1 QI 2.1"), "m.pad");
+    const CompiledModel m = compileText(boomWith("C 2 T 1 QI 2.1"), "m.pad");
     EXPECT_FALSE(m.ok());
     EXPECT_EQ(m.diagnostics.errorCount(), 1u) << listing(m.diagnostics);
     const Diagnostic d = single(m, "actuator-unreachable", Severity::Error, 6, 12);
@@ -583,7 +591,7 @@ TEST(Topology, ActuatorQiUnreachable)
 TEST(Topology, ActuatorLimitsUnreachable)
 {
     // C 2 T 1 LL 1.2 UL 1.7 QI 1.5: LL at column 12, UL at column 19
-    const LoadedModel m = loadModelText(boomWith("C 2 T 1 LL 1.2 UL 1.7 QI 1.5"), "m.pad");
+    const CompiledModel m = compileText(boomWith("C 2 T 1 LL 1.2 UL 1.7 QI 1.5"), "m.pad");
     EXPECT_FALSE(m.ok());
     const auto found = withCode(m.diagnostics, "actuator-unreachable");
     ASSERT_EQ(found.size(), 2u) << listing(m.diagnostics);
@@ -601,8 +609,8 @@ TEST(Topology, ActuatorLimitsUnreachable)
 TEST(Topology, ActuatorConstantLength)
 {
     // CL1 and CL2 on the joint axis (x through the joint point): the length is 0.5 m at any angle
-    const LoadedModel m =
-        loadModelText(boomWith("C 2 T 1 QI 0.5", "CL1 0.2 0 0 CL2 0.7 -0.8 0"), "m.pad");
+    const CompiledModel m =
+        compileText(boomWith("C 2 T 1 QI 0.5", "CL1 0.2 0 0 CL2 0.7 -0.8 0"), "m.pad");
     EXPECT_FALSE(m.ok());
     EXPECT_EQ(m.diagnostics.errorCount(), 1u) << listing(m.diagnostics);
     const Diagnostic d = single(m, "actuator-constant-length", Severity::Error, 9, 5);
@@ -617,7 +625,7 @@ TEST(Topology, ActuatorConstantLength)
 
 TEST(Topology, ActuatorDeadPointWithoutUpperLimit)
 {
-    const LoadedModel m = loadModelText(boomWith("C 2 T 1 LL 1.3"), "m.pad");
+    const CompiledModel m = compileText(boomWith("C 2 T 1 LL 1.3"), "m.pad");
     EXPECT_TRUE(m.ok()) << listing(m.diagnostics);
     const Diagnostic d = single(m, "actuator-dead-point", Severity::Warning, 6, 1);
     EXPECT_EQ(d.message, "joint 2's actuator reaches a dead point inside its stroke: its length is "
@@ -633,7 +641,7 @@ TEST(Topology, ActuatorDeadPointWithoutUpperLimit)
 
 TEST(Topology, ActuatorDeadPointsWithoutLimits)
 {
-    const LoadedModel m = loadModelText(boomWith("C 2 T 1"), "m.pad");
+    const CompiledModel m = compileText(boomWith("C 2 T 1"), "m.pad");
     EXPECT_TRUE(m.ok()) << listing(m.diagnostics);
     const auto found = withCode(m.diagnostics, "actuator-dead-point");
     ASSERT_EQ(found.size(), 2u) << listing(m.diagnostics);
@@ -649,7 +657,7 @@ TEST(Topology, ActuatorDeadPointsWithoutLimits)
 
 TEST(Topology, ActuatorDefaultQiBetweenLimits)
 {
-    const LoadedModel m = loadModelText(boomWith("C 2 T 1 LL 1.4 UL 1.6"), "m.pad");
+    const CompiledModel m = compileText(boomWith("C 2 T 1 LL 1.4 UL 1.6"), "m.pad");
     ASSERT_TRUE(m.ok()) << listing(m.diagnostics);
     EXPECT_TRUE(m.diagnostics.empty()) << listing(m.diagnostics);
     EXPECT_NEAR(m.topology->q0[1], 1.5, 1e-12);
@@ -663,7 +671,7 @@ TEST(Topology, ReversedJointInTheTree)
     b.body(1, 2.0, Vector3d(0.1, 0.1, 0.1));
     b.joint(1, JointType::Revolute, side(1, Vector3d(-1, 0, 0)), side(0, Vector3d::Zero()));
     Diagnostics diags("m.pad");
-    const auto t = analyzeTopology(b.spec, diags);
+    const auto t = analyze(b.spec, diags);
     ASSERT_TRUE(t.has_value()) << listing(diags);
     EXPECT_TRUE(t->reversed[0]);
     EXPECT_EQ(t->parentBody, (std::vector<int>{-1, 0}));
@@ -676,7 +684,7 @@ TEST(Topology, ReversedJointInTheTree)
 TEST(Topology, EmptyModel)
 {
     Diagnostics diags("m.pad");
-    const auto t = analyzeTopology(ModelSpec{}, diags);
+    const auto t = analyze(ModelSpec{}, diags);
     ASSERT_TRUE(t.has_value());
     EXPECT_EQ(t->bodyIds, std::vector<int>{0});
     EXPECT_EQ(t->dof, 0);

@@ -1,4 +1,5 @@
 #include "solver/dynamics/applied_forces.h"
+#include "solver/spec/model_spec.h"
 
 #include <gtest/gtest.h>
 

@@ -378,9 +378,9 @@ Renumbered renumber(const ModelSpec& spec, std::mt19937& rng)
     return out;
 }
 
-void expectOrderIndependent(const LoadedModel& loaded, unsigned seed)
+void expectOrderIndependent(const CompiledModel& loaded, unsigned seed)
 {
-    const auto a = test::compileLoadedOrFail(loaded);
+    const auto a = test::modelOrFail(loaded);
     ASSERT_TRUE(a);
     std::mt19937 rng(seed);
     for (int version = 0; version < 3; ++version) {
@@ -435,9 +435,9 @@ void expectOrderIndependent(const LoadedModel& loaded, unsigned seed)
 
 TEST(ForwardDynamics, OutputDoesNotDependOnIdsOrStatementOrder)
 {
-    expectOrderIndependent(loadModelFile(test::modelPath("liner_manipulator.pad")), 51);
-    expectOrderIndependent(loadModelText(test::kZooModel), 52);
-    expectOrderIndependent(loadModelText(test::kCylinderArmModel), 53);
+    expectOrderIndependent(compileFile(test::modelPath("liner_manipulator.pad")), 51);
+    expectOrderIndependent(compileText(test::kZooModel), 52);
+    expectOrderIndependent(compileText(test::kCylinderArmModel), 53);
 }
 
 }  // namespace

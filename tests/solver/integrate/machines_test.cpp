@@ -38,12 +38,12 @@ double loopGap(const Simulation& sim)
 
 TEST(Excavator, LoadsWithItsBucketLoop)
 {
-    const LoadedModel loaded = loadModelFile(test::modelPath("excavator.pad"));
+    const CompiledModel loaded = compileFile(test::modelPath("excavator.pad"));
     ASSERT_TRUE(loaded.ok());
     EXPECT_TRUE(loaded.diagnostics.empty()) << loaded.diagnostics.items()[0].format();
     ASSERT_TRUE(loaded.topology);
     EXPECT_EQ(loaded.topology->dof, 4);  // slew and three cylinders
-    const auto model = test::compileLoadedOrFail(loaded);
+    const auto model = test::modelOrFail(loaded);
     ASSERT_TRUE(model);
     EXPECT_EQ(model->nb, 6);
     ASSERT_EQ(model->cuts.size(), 1u);

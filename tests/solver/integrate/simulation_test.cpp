@@ -6,7 +6,7 @@
 #include "solver/compile/compile.h"
 #include "solver/integrate/simulation.h"
 #include "solver/kinematics/kinematics.h"
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 
 #include "tests/solver/test_models.h"
 
@@ -19,23 +19,9 @@ using namespace solver;
 
 namespace {
 
-std::shared_ptr<const Model> compileText(const std::string& text)
-{
-    LoadedModel loaded = loadModelText(text, "m.pad");
-    EXPECT_TRUE(loaded.ok()) << (loaded.diagnostics.empty() ? "" : loaded.diagnostics.items()[0].format());
-    Diagnostics d("m.pad");
-    auto model = compileLoaded(loaded, d);
-    EXPECT_TRUE(model) << (d.empty() ? "" : d.items()[0].format());
-    return model;
-}
+std::shared_ptr<const Model> compileModelText(const std::string& text) { return test::compileText(text, "m.pad"); }
 
-std::shared_ptr<const Model> compileFile(const std::string& name)
-{
-    LoadedModel loaded = loadModelFile(std::string(PADROB_SOURCE_DIR) + "/models/" + name);
-    EXPECT_TRUE(loaded.ok());
-    Diagnostics d;
-    return compileLoaded(loaded, d);
-}
+std::shared_ptr<const Model> compileModelFile(const std::string& name) { return test::compileExample(name); }
 
 SimulationOptions adaptive(double rtol)
 {
@@ -90,7 +76,7 @@ Eigen::MatrixXd trajectory(const std::shared_ptr<const Model>& model, const Simu
 
 TEST(Simulation, PendulumPeriodMatchesTheLargeAmplitudeFormula)
 {
-    auto model = compileFile("pendulum.pad");
+    auto model = compileModelFile("pendulum.pad");
     ASSERT_TRUE(model);
     Simulation sim(model, adaptive(1e-11));
     // analytic period of a compound pendulum: I = m L² + Ixx about the pivot, amplitude 0.1 rad
@@ -116,7 +102,7 @@ TEST(Simulation, PendulumPeriodMatchesTheLargeAmplitudeFormula)
 
 TEST(Simulation, AdaptiveIntegratorConservesEnergyOfAPassiveModel)
 {
-    auto model = compileText(kDoublePendulum);
+    auto model = compileModelText(kDoublePendulum);
     ASSERT_TRUE(model);
     Simulation sim(model, adaptive(1e-11));
     const double e0 = mechanicalEnergy(*model, sim.data());
@@ -139,7 +125,7 @@ TEST(Simulation, Rk4ConvergesWithOrderFour)
     std::string text = kDoublePendulum;
     text.replace(text.find("QI 1.0"), 6, "QI 0.3");
     text.replace(text.find("QI -0.6 VI 1.5"), 14, "QI -0.2");
-    auto model = compileText(text);
+    auto model = compileModelText(text);
     ASSERT_TRUE(model);
     const Eigen::MatrixXd ref = trajectory(model, adaptive(1e-13));
     std::vector<double> errors;
@@ -156,7 +142,7 @@ TEST(Simulation, Rk4ConvergesWithOrderFour)
 
 TEST(Simulation, PrismaticJointUnderGravityAndItsLimitTime)
 {
-    auto model = compileFile("incline_slider.pad");
+    auto model = compileModelFile("incline_slider.pad");
     ASSERT_TRUE(model);
     Simulation sim(model, adaptive(1e-12));
     std::vector<SimulationEvent> ev;
@@ -188,7 +174,7 @@ B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 1
 B2 1 P2 0 0 0 A2 1 0 0 R2 0 0 1
 )";
     {
-        auto model = compileText(text + "D 1 HYD VMAX 0.1 FMAX 2000\n");
+        auto model = compileModelText(text + "D 1 HYD VMAX 0.1 FMAX 2000\n");
         Simulation sim(model, rk4(1e-3));
         sim.setCommand(0, 1.0);
         std::vector<SimulationEvent> ev;
@@ -203,7 +189,7 @@ B2 1 P2 0 0 0 A2 1 0 0 R2 0 0 1
         EXPECT_NEAR(sim.state().q[0], 0.3, 1e-12);
     }
     {
-        auto model = compileText(text + "D 1 HYD VMAX 0.1 FMAX 500\n");
+        auto model = compileModelText(text + "D 1 HYD VMAX 0.1 FMAX 500\n");
         Simulation sim(model, adaptive(1e-10));
         sim.setCommand(0, 1.0);
         std::vector<SimulationEvent> ev;
@@ -223,7 +209,7 @@ B2 1 P2 0 0 0 A2 1 0 0 R2 0 0 1
 
 TEST(Simulation, LinerManipulatorHoldsStillWithEveryValveClosed)
 {
-    auto model = compileFile("liner_manipulator.pad");
+    auto model = compileModelFile("liner_manipulator.pad");
     ASSERT_TRUE(model);
     Simulation sim(model, rk4(1e-3));
     const Eigen::VectorXd q0 = sim.state().q;
@@ -252,8 +238,8 @@ B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 -1
 B2 12 P2 0 0 0.5 A2 1 0 0 R2 0 0 -1
 B 12 2.0 0.02 0.01 0.01 NAME "upper"
 )";
-    auto a = compileText(kDoublePendulum);
-    auto b = compileText(renumbered);
+    auto a = compileModelText(kDoublePendulum);
+    auto b = compileModelText(renumbered);
     ASSERT_TRUE(a && b);
     Simulation sa(a, rk4(1e-3)), sb(b, rk4(1e-3));
     std::vector<SimulationEvent> ev;
@@ -269,7 +255,7 @@ B 12 2.0 0.02 0.01 0.01 NAME "upper"
 TEST(Simulation, ADivergingModelStopsWithTheTimeAndTheJoint)
 {
     // a stiff spring integrated with a far too long step blows up
-    auto model = compileText(R"(
+    auto model = compileModelText(R"(
 B 1 1 0.1 0.1 0.1
 C 7 T 2 QI 0.1 NAME "slider"
 B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 1
@@ -289,7 +275,7 @@ TEST(Simulation, AFailureCarriesATranslatableTextOfItsEnglishMessage)
 {
     // the diverging slider above: the simulation's sentence (time, joint) holds the
     // integrator's cause as a phrase of its own
-    auto model = compileText(R"(
+    auto model = compileModelText(R"(
 B 1 1 0.1 0.1 0.1
 C 7 T 2 QI 0.1 NAME "slider"
 B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 1
@@ -326,7 +312,7 @@ F 1 SPRING B1 0 P1 0 0 -1 B2 1 P2 0 0 0 K 1e12 L0 1
 TEST(Simulation, RestitutionBouncesAJointOffItsLimit)
 {
     // a block falling 0.5 m onto the lower stop of a vertical slider
-    auto model = compileText(R"(
+    auto model = compileModelText(R"(
 RESTITUTION 0.5
 B 1 2 0.1 0.1 0.1
 C 1 T 2 LL 0 QI 0.5
@@ -355,7 +341,7 @@ TEST(Simulation, AJointLeavesItsLimitWhenTheDynamicsPullItAway)
 {
     // a 100 kg block resting on the lower stop of a vertical slider; a force ramping
     // up from 0 to 2000 N over 1 s lifts it off when it exceeds the weight, at t = 0.4905 s
-    auto model = compileText(R"(
+    auto model = compileModelText(R"(
 B 1 100 1 1 1
 C 1 T 2 LL 0 QI 0
 B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 1
@@ -381,7 +367,7 @@ F 1 POINT B 1 P 0 0 0 DIR 0 0 1 MAG TABLE T 0 0 1 2000
 
 TEST(Simulation, AHydraulicCylinderStallsAtItsLimitAndLeavesItWhenCommandedBack)
 {
-    auto model = compileText(R"(
+    auto model = compileModelText(R"(
 B 1 100 1 1 1
 C 1 T 2 LL 0 UL 0.25 QI 0.2
 B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 1
@@ -415,7 +401,7 @@ TEST(Simulation, AReliefValveOpensUnderAnOverloadAndClosesWhenItPasses)
     // lifting 100 kg at 0.1 m/s needs 981 N; an extra 500 N pushes down from 0.2 s to
     // 0.4 s, beyond the 1200 N relief setting: the valve opens, the load sinks, and
     // when the push ends the cylinder accelerates it back to its commanded rate
-    auto model = compileText(R"(
+    auto model = compileModelText(R"(
 B 1 100 1 1 1
 C 1 T 2 LL 0 UL 2 QI 0.5
 B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 1
@@ -451,7 +437,7 @@ TEST(Simulation, ASuddenHydraulicStartSwingsAHangingLoadInsteadOfJerkingIt)
     // a hydraulic carriage on a horizontal rail carries a 1 m pendulum with a point-like
     // 10 kg bob; when the carriage starts at 0.2 m/s at once, the rod (which can only
     // pull along itself) leaves the bob's horizontal velocity at 0: θ̇ = −0.2 / 1 rad/s
-    auto model = compileText(R"(
+    auto model = compileModelText(R"(
 B 1 50 1 1 1 NAME "carriage"
 B 2 10 1e-9 1e-9 1e-9 NAME "bob"
 C 1 T 2 QI 0

@@ -1,7 +1,6 @@
 #include "solver/kinematics/kinematics.h"
 
-#include "solver/compile/mass_check.h"
-#include "solver/kinematics/positions.h"
+#include "tests/solver/spec_oracle.h"
 #include "tests/solver/dynamics/random_states.h"
 #include "tests/solver/test_models.h"
 
@@ -158,15 +157,15 @@ TEST(Kinematics, VelocitiesAndAccelerationsAgainstFiniteDifferences)
 
 // ------------------------------------------------------------------ energy
 
-// E = ½θ̇ᵀMθ̇ + Σ −m g·c, with M from the topology analysis's composite-rigid-body mass matrix
-void checkEnergy(const LoadedModel& loaded, unsigned seed)
+// E = ½θ̇ᵀMθ̇ + Σ −m g·c, with M from the spec oracle's composite-rigid-body mass matrix (tests/solver/spec_oracle.h)
+void checkEnergy(const CompiledModel& loaded, unsigned seed)
 {
-    const auto model = test::compileLoadedOrFail(loaded);
+    const auto model = test::modelOrFail(loaded);
     ASSERT_TRUE(model);
     const Model& m = *model;
     const Topology& topo = *loaded.topology;
     const std::vector<JointGeometry> geometry = makeJointGeometries(loaded.spec);
-    std::vector<BodyInertia> inertia(topo.bodyIds.size());
+    std::vector<test::BodyInertia> inertia(topo.bodyIds.size());
     for (std::size_t b = 1; b < topo.bodyIds.size(); ++b) {
         const BodySpec* body = loaded.spec.body(topo.bodyIds[b]);
         if (!body || !body->hasMass) continue;
@@ -187,8 +186,8 @@ void checkEnergy(const LoadedModel& loaded, unsigned seed)
             ASSERT_EQ(loaded.spec.joints[topo.treeJoints[i]].id, m.jointId[i]);
             theta[topo.treeJoints[i]] = s.q[i];
         }
-        const std::vector<Eigen::Isometry3d> X = bodyPoses(topo, geometry, theta);
-        const Eigen::MatrixXd M = treeMassMatrix(topo, geometry, X, inertia);
+        const std::vector<Eigen::Isometry3d> X = test::bodyPoses(topo, geometry, theta);
+        const Eigen::MatrixXd M = test::treeMassMatrix(topo, geometry, X, inertia);
         double potential = 0;
         for (std::size_t b = 1; b < topo.bodyIds.size(); ++b) {
             potential -= inertia[b].mass * m.gravity.dot(X[b] * inertia[b].cg);
@@ -203,12 +202,12 @@ void checkEnergy(const LoadedModel& loaded, unsigned seed)
 
 TEST(Kinematics, EnergyEqualsHalfQdotMQdotPlusPotential)
 {
-    checkEnergy(loadModelText(test::kZooModel), 31);
-    checkEnergy(loadModelText(test::kCylinderArmModel), 32);
+    checkEnergy(compileText(test::kZooModel), 31);
+    checkEnergy(compileText(test::kCylinderArmModel), 32);
     for (const char* name : {"pendulum.pad", "double_pendulum.pad", "incline_slider.pad",
                              "liner_manipulator.pad"}) {
         SCOPED_TRACE(name);
-        checkEnergy(loadModelFile(test::modelPath(name)), 33);
+        checkEnergy(compileFile(test::modelPath(name)), 33);
     }
 }
 

@@ -20,7 +20,7 @@
 #include "solver/collision/collision_world.h"
 #include "solver/kinematics/inverse.h"
 #include "solver/kinematics/kinematics.h"
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 #include "tests/solver/test_models.h"
 
 #include <gtest/gtest.h>
@@ -174,8 +174,8 @@ struct Clearances {
 /// The station in the mill: the model, the scene, and clearance worlds against the
 /// scene and against its workers alone.
 struct Station {
-    LoadedModel machine = loadModelFile(test::modelPath("liner_station.pad"));
-    LoadedModel scene = loadModelFile(std::string(PADROB_SOURCE_DIR) + "/resources/scenes/sag_mill.pad");
+    CompiledModel machine = compileFile(test::modelPath("liner_station.pad"));
+    CompiledModel scene = compileFile(std::string(PADROB_SOURCE_DIR) + "/resources/scenes/sag_mill.pad");
     std::shared_ptr<const Model> model;
     std::unique_ptr<Data> data;
     std::unique_ptr<CollisionWorld> world, people;
@@ -188,7 +188,7 @@ struct Station {
     Station()
     {
         EXPECT_TRUE(scene.ok());
-        model = test::compileLoadedOrFail(machine);
+        model = test::modelOrFail(machine);
         if (!model || !scene.ok()) return;
         data = std::make_unique<Data>(*model);
         Diagnostics diags;

@@ -1,11 +1,11 @@
-#include "solver/model/generate.h"
+#include "bench/generate.h"
 
 #include <algorithm>
 #include <charconv>
 #include <stdexcept>
 #include <vector>
 
-namespace solver {
+namespace bench {
 
 namespace {
 
@@ -87,4 +87,4 @@ std::string treeModelText(int n, const GeneratedModelOptions& options)
     return linksText("binary tree of " + std::to_string(n) + " links", n, parent, depth, side, options);
 }
 
-}  // namespace solver
+}  // namespace bench

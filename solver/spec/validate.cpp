@@ -1,4 +1,4 @@
-#include "solver/model/validate.h"
+#include "solver/spec/validate.h"
 
 #include <Eigen/Eigenvalues>
 

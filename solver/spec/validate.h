@@ -6,7 +6,7 @@
 // (connectivity, T 1 reach, loops, mass moved) are in solver/compile/topology.h.
 
 #include "solver/core/diagnostic.h"
-#include "solver/model/model_spec.h"
+#include "solver/spec/model_spec.h"
 
 namespace solver {
 

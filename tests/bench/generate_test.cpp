@@ -1,12 +1,11 @@
-// The scaling models (solver/model/generate.h) are valid model text: they load and
+// The scaling models (bench/generate.h) are valid model text: they load and
 // compile without a diagnostic, have n bodies, the drives and limits they promise,
 // and simulate.
 
-#include "solver/model/generate.h"
+#include "bench/generate.h"
 
-#include "solver/compile/compile.h"
 #include "solver/integrate/simulation.h"
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 
 #include <gtest/gtest.h>
 
@@ -18,14 +17,16 @@
 namespace solver {
 namespace {
 
-std::shared_ptr<const Model> compileText(const std::string& text, const std::string& name)
+using bench::chainModelText;
+using bench::treeModelText;
+using bench::GeneratedModelOptions;
+
+// compiled, without a single diagnostic
+std::shared_ptr<const Model> compileClean(const std::string& text, const std::string& name)
 {
-    LoadedModel loaded = loadModelText(text, name);
-    for (const Diagnostic& d : loaded.diagnostics) ADD_FAILURE() << d.format();
-    Diagnostics diags(name);
-    std::shared_ptr<const Model> model = compileLoaded(loaded, diags);
-    for (const Diagnostic& d : diags) ADD_FAILURE() << d.format();
-    return model;
+    const CompiledModel compiled = solver::compileText(text, name);
+    for (const Diagnostic& d : compiled.diagnostics) ADD_FAILURE() << d.format();
+    return compiled.model;
 }
 
 int drives(const Model& m)
@@ -39,7 +40,7 @@ TEST(GeneratedModel, ChainsLoadCompileAndHaveNBodies)
 {
     for (int n : {1, 2, 10, 100, 1000}) {
         SCOPED_TRACE(n);
-        auto m = compileText(chainModelText(n), "chain.pad");
+        auto m = compileClean(chainModelText(n), "chain.pad");
         ASSERT_TRUE(m);
         EXPECT_EQ(m->nb, n);
         EXPECT_TRUE(m->cuts.empty());
@@ -58,7 +59,7 @@ TEST(GeneratedModel, TreesLoadCompileAndHaveNBodies)
 {
     for (int n : {1, 3, 10, 100, 1000}) {
         SCOPED_TRACE(n);
-        auto m = compileText(treeModelText(n), "tree.pad");
+        auto m = compileClean(treeModelText(n), "tree.pad");
         ASSERT_TRUE(m);
         EXPECT_EQ(m->nb, n);
         EXPECT_TRUE(m->cuts.empty());
@@ -73,7 +74,7 @@ TEST(GeneratedModel, TreesLoadCompileAndHaveNBodies)
 
 TEST(GeneratedModel, ChainIsThreeDimensional)
 {
-    auto m = compileText(chainModelText(4), "chain.pad");
+    auto m = compileClean(chainModelText(4), "chain.pad");
     ASSERT_TRUE(m);
     // joint axes alternate x, y (the joint frame's first column, in the parent)
     EXPECT_TRUE(m->X_pj[0].linear().col(0).isApprox(Eigen::Vector3d::UnitX()));
@@ -88,7 +89,7 @@ TEST(GeneratedModel, OptionsAreHonoured)
     o.limit = 0;
     o.driveLimit = 0.1;  // no drive: not used
     o.linkMass = 2.5;
-    auto m = compileText(chainModelText(7, o), "chain.pad");
+    auto m = compileClean(chainModelText(7, o), "chain.pad");
     ASSERT_TRUE(m);
     EXPECT_EQ(drives(*m), 0);
     EXPECT_FALSE(std::isfinite(m->lower[3]));
@@ -100,7 +101,7 @@ TEST(GeneratedModel, OptionsAreHonoured)
 TEST(GeneratedModel, DrivenChainAndTreeSimulate)
 {
     for (const std::string& text : {chainModelText(30), treeModelText(30)}) {
-        auto m = compileText(text, "generated.pad");
+        auto m = compileClean(text, "generated.pad");
         ASSERT_TRUE(m);
         Simulation sim(m, SimulationOptions{});
         std::vector<SimulationEvent> events;

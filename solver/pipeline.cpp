@@ -1,7 +1,8 @@
-#include "solver/model/load.h"
+#include "solver/pipeline.h"
 
+#include "solver/compile/compile.h"
 #include "solver/core/text_file.h"
-#include "solver/model/validate.h"
+#include "solver/spec/validate.h"
 #include "solver/parse/parser.h"
 
 #include <cstdint>
@@ -135,37 +136,47 @@ bool decode(std::string_view raw, std::string& out, Diagnostics& diags)
     return true;
 }
 
-LoadedModel loadDecoded(std::string_view text, const std::string& file, const std::string& baseDir)
+std::string baseDirOf(const std::string& file)
 {
-    LoadedModel m;
-    m.diagnostics.setFile(file);
-    m.spec = parse::parseModel(text, m.diagnostics);
-    m.spec.file = file;
+    std::string baseDir;
+    if (!file.empty() && file[0] != '<') baseDir = std::filesystem::path(file).parent_path().string();
+    return baseDir.empty() ? std::string(".") : baseDir;
+}
+
+/// validate and compile `m.spec`, into m (whose diagnostics may hold the parser's)
+void checkAndCompile(CompiledModel& m, const std::string& baseDir)
+{
     validateModel(m.spec, m.diagnostics, baseDir);
     // the checks of the whole geometry need every statement right
     if (!m.diagnostics.hasErrors()) {
-        m.topology = analyzeTopology(m.spec, m.diagnostics);
-        if (m.diagnostics.hasErrors()) m.topology.reset();
+        CompileResult compiled = compileModel(m.spec, m.diagnostics);
+        m.topology = std::move(compiled.topology);
+        m.model = std::move(compiled.model);
+        if (m.diagnostics.hasErrors()) {
+            m.topology.reset();
+            m.model.reset();
+        }
     }
     m.diagnostics.sortByPosition();
-    return m;
 }
 
 }  // namespace
 
-LoadedModel loadModelText(std::string_view text, const std::string& file)
+CompiledModel compileText(std::string_view text, const std::string& file)
 {
     Diagnostics pre(file);
     std::string decoded;
     if (!decode(text, decoded, pre)) {
-        LoadedModel m;
+        CompiledModel m;
         m.spec.file = file;
         m.diagnostics = std::move(pre);
         return m;
     }
-    std::string baseDir;
-    if (!file.empty() && file[0] != '<') baseDir = std::filesystem::path(file).parent_path().string();
-    LoadedModel m = loadDecoded(decoded, file, baseDir.empty() ? std::string(".") : baseDir);
+    CompiledModel m;
+    m.diagnostics.setFile(file);
+    m.spec = parse::parseModel(decoded, m.diagnostics);
+    m.spec.file = file;
+    checkAndCompile(m, baseDirOf(file));
     if (!pre.empty()) {
         pre.append(m.diagnostics);
         m.diagnostics = std::move(pre);
@@ -174,7 +185,7 @@ LoadedModel loadModelText(std::string_view text, const std::string& file)
     return m;
 }
 
-LoadedModel loadModelFile(const std::string& path)
+CompiledModel compileFile(const std::string& path)
 {
     Diagnostics diags(path);
     std::optional<std::string> text =
@@ -182,12 +193,21 @@ LoadedModel loadModelFile(const std::string& path)
                      trText("Diagnostics", "a model is a short text; put meshes in their own files (G … MESH \"file\")"),
                      diags);
     if (!text) {
-        LoadedModel m;
+        CompiledModel m;
         m.spec.file = path;
         m.diagnostics = std::move(diags);
         return m;
     }
-    return loadModelText(*text, path);
+    return compileText(*text, path);
+}
+
+CompiledModel compileSpec(ModelSpec spec)
+{
+    CompiledModel m;
+    m.diagnostics.setFile(spec.file);
+    m.spec = std::move(spec);
+    checkAndCompile(m, baseDirOf(m.spec.file));
+    return m;
 }
 
 }  // namespace solver

@@ -21,7 +21,7 @@
 
 #include <string>
 
-namespace solver {
+namespace bench {
 
 struct GeneratedModelOptions {
     double linkLength = 0.1;  ///< [m]
@@ -37,4 +37,4 @@ std::string chainModelText(int n, const GeneratedModelOptions& options = {});
 /// A binary tree of n ≥ 1 links (above).
 std::string treeModelText(int n, const GeneratedModelOptions& options = {});
 
-}  // namespace solver
+}  // namespace bench

@@ -8,6 +8,7 @@
 // value so that later stages can point at the text.
 
 #include "solver/core/diagnostic.h"
+#include "solver/core/kinds.h"
 
 #include <Eigen/Core>
 
@@ -53,12 +54,6 @@ struct BodySpec {
 
     /// Full inertia tensor about the centre of mass, local axes [kg m^2].
     Eigen::Matrix3d inertiaTensor() const;
-};
-
-enum class JointType {
-    Revolute = 0,   ///< T 0 (default): angle about A
-    Actuator = 1,   ///< T 1: pivoted linear actuator, revolute about A, coordinate = length CL1–CL2
-    Prismatic = 2,  ///< T 2: displacement along R
 };
 
 /// One side of a joint: `B1 i P1 x y z A1 x y z R1 x y z` (or B2/P2/A2/R2).
@@ -113,7 +108,7 @@ struct DriveSpec {
 
 /// A magnitude: a number, `SIN amp freq phase [offset]`, `TABLE T t v …` or `TABLE Q j q v …`.
 struct MagnitudeSpec {
-    enum class Kind { Constant, Sine, TableTime, TableJoint };
+    using Kind = MagnitudeKind;
     Kind kind = Kind::Constant;
     double value = 0;                                  ///< Constant
     double amplitude = 0, frequency = 0, phase = 0, offset = 0;  ///< Sine: freq [Hz], phase [rad]
@@ -122,8 +117,6 @@ struct MagnitudeSpec {
     std::vector<std::pair<double, double>> table;      ///< (t or q, value)
     SourcePos pos;
 };
-
-enum class ForceKind { Point, Torque, Joint, Spring, Aero };
 
 /// `F id kind params…`
 struct ForceSpec {

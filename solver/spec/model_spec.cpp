@@ -1,4 +1,4 @@
-#include "solver/model/model_spec.h"
+#include "solver/spec/model_spec.h"
 
 #include <limits>
 #include <numbers>
