@@ -2,7 +2,6 @@
 // The models and states the benchmarks run on: example files from models/ and
 // generated chains and trees (bench/generate.h), compiled once per process.
 
-#include "solver/compile/compile.h"
 #include "solver/core/model.h"
 #include "solver/core/state.h"
 #include "solver/integrate/simulation.h"
@@ -35,9 +34,7 @@ inline std::string exampleText(const std::string& name)
 /// Loads and compiles model text; throws when it has errors.
 inline std::shared_ptr<const solver::Model> compileText(const std::string& text, const std::string& file)
 {
-    solver::CompiledModel loaded = solver::compileText(text, file);
-    solver::Diagnostics diags(file);
-    auto model = solver::compileLoaded(loaded, diags);
+    auto model = solver::compileText(text, file).model;
     if (!model) throw std::runtime_error(file + " does not compile");
     return model;
 }
@@ -57,7 +54,7 @@ inline std::shared_ptr<const solver::Model> generated(bool tree, int n)
     static std::map<std::pair<bool, int>, std::shared_ptr<const solver::Model>> cache;
     auto& m = cache[{tree, n}];
     if (!m) {
-        m = compileText(tree ? solver::treeModelText(n) : solver::chainModelText(n), tree ? "tree.pad" : "chain.pad");
+        m = compileText(tree ? treeModelText(n) : chainModelText(n), tree ? "tree.pad" : "chain.pad");
     }
     return m;
 }

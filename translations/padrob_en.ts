@@ -2873,16 +2873,6 @@
         <translation>fix the model, or check the path: it is relative to the tutorial's folder</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>the model '%1' does not compile</source>
-        <translation>the model '%1' does not compile</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>fix the model</source>
-        <translation>fix the model</translation>
-    </message>
-    <message>
         <location line="+13" />
         <source>the scene '%1' cannot be used (errors above)</source>
         <translation>the scene '%1' cannot be used (errors above)</translation>

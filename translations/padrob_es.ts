@@ -2873,16 +2873,6 @@
         <translation>corrija el modelo, o revise la ruta: es relativa a la carpeta del tutorial</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>the model '%1' does not compile</source>
-        <translation>el modelo '%1' no compila</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>fix the model</source>
-        <translation>corrija el modelo</translation>
-    </message>
-    <message>
         <location line="+13" />
         <source>the scene '%1' cannot be used (errors above)</source>
         <translation>no se puede usar la escena '%1' (errores más arriba)</translation>

@@ -30,7 +30,6 @@
 #include "ide/cli/cli_io.h"
 
 #include "ide/cli/json_writer.h"
-#include "solver/compile/compile.h"
 #include "solver/dynamics/applied_forces.h"
 #include "solver/dynamics/forward_dynamics.h"
 #include "solver/integrate/simulation.h"
@@ -387,10 +386,9 @@ bool benchScaling(const StepOptions& so, int runs, Scaling& out, std::string& er
     for (bool tree : {false, true}) {
         std::vector<ScalingPoint>& points = tree ? out.tree : out.chain;
         for (int n : kScalingSizes) {
-            const std::string text = tree ? solver::treeModelText(n) : solver::chainModelText(n);
-            solver::CompiledModel loaded = solver::compileText(text, tree ? "tree.pad" : "chain.pad");
-            solver::Diagnostics diags("generated.pad");
-            std::shared_ptr<const solver::Model> model = solver::compileLoaded(loaded, diags);
+            const std::string text = tree ? bench::treeModelText(n) : bench::chainModelText(n);
+            std::shared_ptr<const solver::Model> model =
+                solver::compileText(text, tree ? "tree.pad" : "chain.pad").model;
             if (!model) {
                 error = fill(trStd("padrob", "generated model of %1 bodies does not compile"), {std::to_string(n)});
                 return false;

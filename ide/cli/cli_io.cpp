@@ -2,7 +2,6 @@
 
 #include "ide/i18n/diagnostic_text.h"
 #include "ide/i18n/language.h"
-#include "solver/compile/compile.h"
 #include "solver/pipeline.h"
 
 #include <charconv>
@@ -88,19 +87,16 @@ void printDiagnostic(std::FILE* f, const solver::Diagnostic& d)
 
 std::shared_ptr<const solver::Model> loadAndCompile(const std::string& path, int& status)
 {
-    const solver::CompiledModel loaded = solver::compileFile(path);
+    const solver::CompiledModel compiled = solver::compileFile(path);
     bool io = false;
-    for (const solver::Diagnostic& d : loaded.diagnostics) {
+    for (const solver::Diagnostic& d : compiled.diagnostics) {
         if (d.severity == solver::Severity::Error || d.code == "io-error") printDiagnostic(stderr, d);
         if (d.code == "io-error") io = true;
     }
     status = io ? kExitUsage : kExitModelErrors;
-    if (io || !loaded.ok()) return nullptr;
-    solver::Diagnostics compileDiags(path);
-    std::shared_ptr<const solver::Model> model = solver::compileLoaded(loaded, compileDiags);
-    for (const solver::Diagnostic& d : compileDiags) printDiagnostic(stderr, d);
-    if (model) status = kExitOk;
-    return model;
+    if (io || !compiled.model) return nullptr;
+    status = kExitOk;
+    return compiled.model;
 }
 
 }  // namespace ide::cli

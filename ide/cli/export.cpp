@@ -8,7 +8,6 @@
 #ifdef PADROB_HAVE_MUJOCO
 #include "ide/cli/mujoco_bench.h"
 #endif
-#include "solver/compile/compile.h"
 #include "solver/io/mjcf.h"
 #include "solver/pipeline.h"
 

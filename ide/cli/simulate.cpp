@@ -5,7 +5,6 @@
 #include "ide/cli/simulate.h"
 #include "ide/cli/cli_io.h"
 
-#include "solver/compile/compile.h"
 #include "solver/dynamics/constraints.h"
 #include "solver/integrate/simulation.h"
 #include "solver/io/csv_writer.h"

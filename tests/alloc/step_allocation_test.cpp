@@ -1,7 +1,6 @@
 // The step loop allocates nothing (issue 3, "Speed"): a binary of its own, because it
 // replaces the global operator new to count allocations.
 
-#include "solver/compile/compile.h"
 #include "solver/dynamics/applied_forces.h"
 #include "solver/dynamics/forward_dynamics.h"
 #include "solver/integrate/simulation.h"

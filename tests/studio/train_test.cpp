@@ -25,6 +25,7 @@
 #include "trainer/station/station.h"
 #include "trainer/training/camera_path.h"
 #include "trainer/training/runner.h"
+#include "trainer/training/tutorial.h"
 
 #include <QApplication>
 #include <QChart>
@@ -103,6 +104,38 @@ private slots:
     {
         m_window.reset();
         i18n::install("en");
+    }
+
+    // the tutorial compiles its model and scene once; the workspace draws and runs those
+    // (no second compile), and the targets join the scene as graphics of the ground
+    void tutorialBundlesReuseTheTutorialsCompiledModel()
+    {
+        solver::Diagnostics diags;
+        const auto t = trainer::loadTutorial(PADROB_SOURCE_DIR "/resources/tutorials/t7_mill.tut", diags);
+        QVERIFY(t);
+        QVERIFY(t->compiled && t->scene);
+        const auto bundle = makeTutorialBundle(*t);
+        QVERIFY(bundle);
+        QCOMPARE(bundle->compiled.get(), t->compiled.get());
+        QCOMPARE(bundle->model.get(), t->model.get());
+        QCOMPARE(&bundle->spec(), t->modelSpec.get());
+
+        const auto scene = makeTutorialScene(*t);
+        QVERIFY(scene);
+        int targets = 0;
+        for (const trainer::Goal& g : t->spec.goals)
+            targets += g.kind == trainer::Goal::Kind::Reach || g.kind == trainer::Goal::Kind::Place ? 1 : 0;
+        QVERIFY(targets > 0);
+        QCOMPARE(scene->spec().graphics.size(), t->sceneSpec->graphics.size() + std::size_t(3 * targets));
+        const solver::GraphicSpec& sphere = scene->spec().graphics[t->sceneSpec->graphics.size()];
+        QCOMPARE(sphere.id, 900000);
+        QCOMPARE(sphere.shape, solver::ShapeKind::Sphere);
+        QCOMPARE(sphere.body, 0);
+        QVERIFY(sphere.color.isApprox(Eigen::Vector3d(0.15, 0.75, 0.25)));
+        const solver::GraphicSpec& cone = scene->spec().graphics[t->sceneSpec->graphics.size() + 2];
+        QCOMPARE(cone.shape, solver::ShapeKind::Cone);
+        QVERIFY(cone.axis.isApprox(Eigen::Vector3d(0, 0, -1)));
+        QVERIFY(cone.position.z() > sphere.position.z());
     }
 
     void courseListsTheTutorials()

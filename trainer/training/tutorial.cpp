@@ -2,7 +2,6 @@
 
 #include "trainer/training/tutorial.h"
 
-#include "solver/compile/compile.h"
 #include "solver/core/text_file.h"
 #include "solver/pipeline.h"
 #include "solver/parse/lexer.h"
@@ -127,36 +126,31 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
 
     // the model
     tut->modelFile = resolvePath(tut->directory, s.modelPath);
-    solver::CompiledModel loaded = solver::compileFile(tut->modelFile);
-    if (!loaded.ok()) {
-        copyErrors(loaded, tut->modelFile, diags);
+    auto compiled = std::make_shared<const solver::CompiledModel>(solver::compileFile(tut->modelFile));
+    if (!compiled->ok()) {
+        copyErrors(*compiled, tut->modelFile, diags);
         diags.error("model-errors", s.modelPos,
                     trText("Tutorials", "the model '%1' cannot be used (errors above)").with(s.modelPath),
                     trText("Tutorials", "fix the model, or check the path: it is relative to the tutorial's folder"));
         return nullptr;
     }
-    Diagnostics compileDiags(tut->modelFile);
-    tut->model = solver::compileLoaded(loaded, compileDiags);
-    if (!tut->model) {
-        diags.append(compileDiags);
-        diags.error("model-errors", s.modelPos, trText("Tutorials", "the model '%1' does not compile").with(s.modelPath),
-                    trText("Tutorials", "fix the model"));
-        return nullptr;
-    }
-    tut->modelSpec = std::make_shared<solver::ModelSpec>(std::move(loaded.spec));
+    tut->compiled = compiled;
+    tut->model = compiled->model;
+    tut->modelSpec = std::shared_ptr<const solver::ModelSpec>(compiled, &compiled->spec);
     const solver::Model& m = *tut->model;
 
     // the scene
     if (!s.scenePath.empty()) {
         tut->sceneFile = resolvePath(tut->directory, s.scenePath);
-        solver::CompiledModel scene = solver::compileFile(tut->sceneFile);
-        if (!scene.ok()) {
-            copyErrors(scene, tut->sceneFile, diags);
+        auto scene = std::make_shared<const solver::CompiledModel>(solver::compileFile(tut->sceneFile));
+        if (!scene->ok()) {
+            copyErrors(*scene, tut->sceneFile, diags);
             diags.error("scene-errors", s.scenePos,
                         trText("Tutorials", "the scene '%1' cannot be used (errors above)").with(s.scenePath),
                         trText("Tutorials", "fix the scene, or check the path: it is relative to the tutorial's folder"));
         } else {
-            tut->sceneSpec = std::make_shared<solver::ModelSpec>(std::move(scene.spec));
+            tut->scene = scene;
+            tut->sceneSpec = std::shared_ptr<const solver::ModelSpec>(scene, &scene->spec);
         }
     }
 

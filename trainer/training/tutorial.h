@@ -11,6 +11,7 @@
 
 #include "solver/core/diagnostic.h"
 #include "solver/core/model.h"
+#include "solver/pipeline.h"
 #include "solver/spec/model_spec.h"
 #include "trainer/station/profile.h"
 
@@ -169,6 +170,11 @@ struct Tutorial {
     /// The station profile it runs with: PROFILE's (read when the tutorial was loaded),
     /// else the one Padrob makes for the model.
     StationProfile profile;
+    /// The model as compiled once (solver/pipeline.h), and the scene (nullptr: no scene,
+    /// or one with errors): the studio draws and runs these, it does not compile again.
+    std::shared_ptr<const solver::CompiledModel> compiled;
+    std::shared_ptr<const solver::CompiledModel> scene;
+    /// Parts of `compiled` and `scene` (sharing their ownership).
     std::shared_ptr<const solver::Model> model;
     std::shared_ptr<const solver::ModelSpec> modelSpec;
     std::shared_ptr<const solver::ModelSpec> sceneSpec;  ///< nullptr: no scene

@@ -219,13 +219,8 @@ void DisplayFeed::loadModel()
         m_problem = error;
         return;
     }
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) {
-        m_problem = tr("The model file %1 cannot be read.").arg(QDir::toNativeSeparators(path));
-        return;
-    }
     solver::Diagnostics diags(path.toStdString());
-    m_bundle = makeBundle(QString::fromUtf8(f.readAll()), path, diags);
+    m_bundle = makeBundleFromFile(path, diags);
     if (!m_bundle) {
         QString first;
         for (const solver::Diagnostic& d : diags) {

@@ -82,7 +82,7 @@ InertiaDialog::InertiaDialog(std::shared_ptr<const ModelBundle> bundle, QWidget*
     : QDialog(parent), m_bundle(std::move(bundle))
 {
     if (m_bundle) {
-        m_spec = std::shared_ptr<const solver::ModelSpec>(m_bundle->loaded, &m_bundle->loaded->spec);
+        m_spec = std::shared_ptr<const solver::ModelSpec>(m_bundle->compiled, &m_bundle->compiled->spec);
         m_filePath = m_bundle->filePath;
     } else {
         m_spec = std::make_shared<solver::ModelSpec>();

@@ -1,7 +1,5 @@
 #include "ide/studio/model/model_bundle.h"
 
-#include "solver/compile/compile.h"
-
 #include <atomic>
 
 namespace studio {
@@ -9,18 +7,27 @@ namespace studio {
 std::shared_ptr<const ModelBundle> makeBundle(const QString& text, const QString& filePath,
                                               solver::Diagnostics& diagnostics)
 {
-    static std::atomic<quint64> counter{0};
     const std::string name = filePath.isEmpty() ? std::string("<untitled>") : filePath.toStdString();
-    auto loaded = std::make_shared<solver::CompiledModel>(solver::compileText(text.toStdString(), name));
-    diagnostics.append(loaded->diagnostics);
-    if (!loaded->ok() || !loaded->topology) return nullptr;
-    solver::Diagnostics compileDiags(name);
-    std::shared_ptr<const solver::Model> model = solver::compileLoaded(*loaded, compileDiags);
-    diagnostics.append(compileDiags);
-    if (!model) return nullptr;
+    auto compiled = std::make_shared<const solver::CompiledModel>(solver::compileText(text.toStdString(), name));
+    diagnostics.append(compiled->diagnostics);
+    return makeBundle(std::move(compiled), filePath);
+}
+
+std::shared_ptr<const ModelBundle> makeBundleFromFile(const QString& filePath, solver::Diagnostics& diagnostics)
+{
+    auto compiled = std::make_shared<const solver::CompiledModel>(solver::compileFile(filePath.toStdString()));
+    diagnostics.append(compiled->diagnostics);
+    return makeBundle(std::move(compiled), filePath);
+}
+
+std::shared_ptr<const ModelBundle> makeBundle(std::shared_ptr<const solver::CompiledModel> compiled,
+                                              const QString& filePath)
+{
+    static std::atomic<quint64> counter{0};
+    if (!compiled || !compiled->ok() || !compiled->model || !compiled->topology) return nullptr;
     auto bundle = std::make_shared<ModelBundle>();
-    bundle->loaded = std::move(loaded);
-    bundle->model = std::move(model);
+    bundle->model = compiled->model;
+    bundle->compiled = std::move(compiled);
     bundle->filePath = filePath;
     bundle->serial = ++counter;
     return bundle;

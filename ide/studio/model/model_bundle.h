@@ -15,24 +15,34 @@
 namespace studio {
 
 struct ModelBundle {
-    /// The model as written: statements with source positions, graphics (G), names,
-    /// and its topology (chains, loops, independent/dependent joints). ok() is true.
-    std::shared_ptr<const solver::CompiledModel> loaded;
-    /// The compiled model (tree numbering: bodies and joints by tree index).
+    /// The model as written and compiled (solver/pipeline.h): statements with source
+    /// positions, graphics (G), names, its topology (chains, loops, independent/dependent
+    /// joints) and the compiled model. ok() is true.
+    std::shared_ptr<const solver::CompiledModel> compiled;
+    /// compiled->model: bodies and joints by tree index.
     std::shared_ptr<const solver::Model> model;
     /// The file it came from ("" when never saved): mesh paths are relative to its folder.
     QString filePath;
     /// Increases with every bundle made in this process: tells a new model from the same one.
     quint64 serial = 0;
 
-    const solver::ModelSpec& spec() const { return loaded->spec; }
-    const solver::Topology& topology() const { return *loaded->topology; }
+    const solver::ModelSpec& spec() const { return compiled->spec; }
+    const solver::Topology& topology() const { return *compiled->topology; }
 };
 
-/// Loads and compiles `text` (named `filePath` in diagnostics and for mesh paths).
-/// On success returns the bundle; on errors returns nullptr. Either way every
-/// diagnostic (load and compile) is appended to `diagnostics`.
+/// Compiles `text` (named `filePath` in diagnostics and for mesh paths). On success
+/// returns the bundle; on errors returns nullptr. Either way every diagnostic is
+/// appended to `diagnostics`.
 std::shared_ptr<const ModelBundle> makeBundle(const QString& text, const QString& filePath,
                                               solver::Diagnostics& diagnostics);
+
+/// Reads and compiles the model file `filePath` (solver::compileFile: the size limit,
+/// folders refused, encodings); as makeBundle otherwise.
+std::shared_ptr<const ModelBundle> makeBundleFromFile(const QString& filePath, solver::Diagnostics& diagnostics);
+
+/// A bundle of a model compiled elsewhere (a tutorial's, a scene built as a spec),
+/// without compiling it again; nullptr when it has errors.
+std::shared_ptr<const ModelBundle> makeBundle(std::shared_ptr<const solver::CompiledModel> compiled,
+                                              const QString& filePath);
 
 }  // namespace studio

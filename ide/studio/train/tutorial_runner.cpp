@@ -473,19 +473,16 @@ void TutorialRunner::loop()
 
 std::shared_ptr<const ModelBundle> makeTutorialBundle(const trainer::Tutorial& tutorial, QString* error)
 {
-    const QString path = QString::fromStdString(tutorial.modelFile);
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) {
-        if (error) *error = path + ": " + f.errorString();
-        return nullptr;
-    }
-    solver::Diagnostics diags(tutorial.modelFile);
-    auto bundle = makeBundle(QString::fromUtf8(f.readAll()), path, diags);
+    // the tutorial compiled its model once when it was loaded: draw and run that one
+    auto bundle = makeBundle(tutorial.compiled, QString::fromStdString(tutorial.modelFile));
     if (!bundle && error) {
-        for (const solver::Diagnostic& d : diags) {
-            if (d.severity == solver::Severity::Error) {
-                *error = QString::fromStdString(d.format());
-                break;
+        *error = QString::fromStdString(tutorial.modelFile);
+        if (tutorial.compiled) {
+            for (const solver::Diagnostic& d : tutorial.compiled->diagnostics) {
+                if (d.severity == solver::Severity::Error) {
+                    *error = QString::fromStdString(d.format());
+                    break;
+                }
             }
         }
     }
@@ -494,33 +491,40 @@ std::shared_ptr<const ModelBundle> makeTutorialBundle(const trainer::Tutorial& t
 
 std::shared_ptr<const ModelBundle> makeTutorialScene(const trainer::Tutorial& tutorial)
 {
-    QString text, path;
-    if (!tutorial.sceneFile.empty()) {
-        path = QString::fromStdString(tutorial.sceneFile);
-        QFile f(path);
-        if (f.open(QIODevice::ReadOnly)) text = QString::fromUtf8(f.readAll()) + '\n';
-    }
+    // the tutorial's scene, with the targets added as graphics of the ground
+    solver::ModelSpec spec;
+    if (tutorial.scene) spec = tutorial.scene->spec;
+    spec.file = tutorial.sceneFile.empty() ? std::string("<untitled>") : tutorial.sceneFile;
+    auto add = [&](int id, solver::ShapeKind shape, std::vector<double> dims, const Eigen::Vector3d& at) {
+        solver::GraphicSpec g;
+        g.id = id;
+        g.body = 0;
+        g.shape = shape;
+        g.dims = std::move(dims);
+        g.position = at;
+        g.hasPosition = true;
+        g.color = Eigen::Vector3d(0.15, 0.75, 0.25);
+        g.hasColor = true;
+        spec.graphics.push_back(std::move(g));
+        return &spec.graphics.back();
+    };
     // the targets: green spheres as big as their tolerance (ids far above any scene's)
     int id = 900000;
     for (const trainer::Goal& g : tutorial.spec.goals) {
         if (g.kind != trainer::Goal::Kind::Reach && g.kind != trainer::Goal::Kind::Place) continue;
         const double r = std::max(0.03, g.kind == trainer::Goal::Kind::Reach ? g.tolerance : 0.1);
-        std::ostringstream line;
-        line.imbue(std::locale::classic());
-        line << "G " << id++ << " B 0 SPHERE " << r << " POS " << g.target.x() << ' ' << g.target.y() << ' '
-             << g.target.z() << " COLOR 0.15 0.75 0.25\n";
+        add(id++, solver::ShapeKind::Sphere, {r}, g.target);
         // and a green arrow above it, pointing down at it: the target shows when the
         // sphere is inside something (a liner's edge, the mill's shell) or small at a distance
-        const double x = g.target.x(), y = g.target.y(), z = g.target.z();
-        line << "G " << id++ << " B 0 CYL 0.015 0.4 POS " << x << ' ' << y << ' ' << z + r + 0.45
-             << " COLOR 0.15 0.75 0.25\n";
-        line << "G " << id++ << " B 0 CONE 0.08 0.2 POS " << x << ' ' << y << ' ' << z + r + 0.25
-             << " AXIS 0 0 -1 COLOR 0.15 0.75 0.25\n";
-        text += QString::fromStdString(line.str());
+        add(id++, solver::ShapeKind::Cylinder, {0.015, 0.4}, g.target + Eigen::Vector3d(0, 0, r + 0.45));
+        solver::GraphicSpec* cone =
+            add(id++, solver::ShapeKind::Cone, {0.08, 0.2}, g.target + Eigen::Vector3d(0, 0, r + 0.25));
+        cone->axis = Eigen::Vector3d(0, 0, -1);
+        cone->hasAxis = true;
     }
-    if (text.trimmed().isEmpty()) return nullptr;
-    solver::Diagnostics diags(path.toStdString());
-    return makeBundle(text, path, diags);
+    if (spec.graphics.empty() && spec.bodies.empty()) return nullptr;
+    const QString path = QString::fromStdString(tutorial.sceneFile);
+    return makeBundle(std::make_shared<const solver::CompiledModel>(solver::compileSpec(std::move(spec))), path);
 }
 
 std::shared_ptr<const Snapshot> snapshotFromSample(const trainer::SessionSample& sample,

@@ -36,7 +36,7 @@ SceneFile loadSceneFile(const QString& path)
         return out;
     }
     solver::Diagnostics diagnostics(path.toStdString());
-    auto bundle = makeBundle(QString::fromUtf8(f.readAll()), QFileInfo(path).absoluteFilePath(), diagnostics);
+    auto bundle = makeBundleFromFile(QFileInfo(path).absoluteFilePath(), diagnostics);
     if (!bundle) {
         QStringList lines;
         for (const solver::Diagnostic& d : diagnostics) {

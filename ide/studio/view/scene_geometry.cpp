@@ -515,7 +515,7 @@ bool isLamp(const solver::GraphicSpec& graphic)
 std::shared_ptr<const SceneDressing> sceneDressing(const std::shared_ptr<const ModelBundle>& scene)
 {
     static std::map<quint64, std::weak_ptr<const SceneDressing>> cache;
-    if (!scene || !scene->loaded) return nullptr;
+    if (!scene || !scene->compiled) return nullptr;
     auto it = cache.find(scene->serial);
     if (it != cache.end()) {
         if (auto d = it->second.lock()) return d;

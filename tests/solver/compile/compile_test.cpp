@@ -1,5 +1,7 @@
 #include "solver/compile/compile.h"
 
+#include "solver/pipeline.h"
+
 #include "solver/core/data.h"
 #include "solver/core/state.h"
 #include "solver/kinematics/kinematics.h"

@@ -1,7 +1,7 @@
 #include "solver/compile/topology.h"
 
-#include "solver/compile/compile.h"
 #include "solver/kinematics/joint_geometry.h"
+#include "solver/compile/compile.h"
 #include "solver/pipeline.h"
 #include "tests/solver/model_texts.h"
 #include "tests/solver/spec_builder.h"

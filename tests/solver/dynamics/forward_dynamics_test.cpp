@@ -1,6 +1,6 @@
 #include "solver/dynamics/forward_dynamics.h"
 
-#include "solver/compile/compile.h"
+#include "solver/pipeline.h"
 #include "solver/dynamics/applied_forces.h"
 #include "solver/dynamics/drives.h"
 #include "solver/dynamics/mass_matrix.h"

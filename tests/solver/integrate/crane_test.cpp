@@ -3,7 +3,6 @@
 // calculation of moments gives, and a slew start sets the hanging load swinging
 // (the impulse rule of solver/integrate/simulation.h).
 
-#include "solver/compile/compile.h"
 #include "solver/integrate/simulation.h"
 #include "solver/kinematics/kinematics.h"
 #include "solver/pipeline.h"

@@ -3,7 +3,6 @@
 // holding forces, analytic event times) and against itself (order of convergence,
 // independence of the modeler's numbering).
 
-#include "solver/compile/compile.h"
 #include "solver/integrate/simulation.h"
 #include "solver/kinematics/kinematics.h"
 #include "solver/pipeline.h"
