@@ -33,7 +33,7 @@ std::string linksText(const std::string& title, int n, const std::vector<int>& p
     }
     std::string t;
     t.reserve(static_cast<std::size_t>(n) * 160 + 200);
-    t += "// " + title + " (solver/model/generate.cpp)\n";
+    t += "// " + title + " (bench/generate.cpp)\n";
     t += "GRAVITY 0 0 -9.81\n";
     const std::string body = " " + num(m) + " " + num(across) + " " + num(across) + " " + num(along) + "\n";
     for (int k = 1; k <= n; ++k) t += "B " + std::to_string(k) + body;

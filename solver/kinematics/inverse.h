@@ -36,7 +36,7 @@
 // attempt with the smallest weighted residual.
 //
 // Closed loops (Model::cuts) are not held: the solver moves the tree. Choose joints
-// outside the loops, or close them afterwards (solver/kinematics/loop_closure.h).
+// outside the loops, or close them afterwards (solver/dynamics/constraints.h: projectOntoConstraints).
 //
 // Units: m, rad. Allocates (not for the step loop); no exceptions: sizes are asserted.
 
