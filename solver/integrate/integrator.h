@@ -1,12 +1,13 @@
 #pragma once
 // Integrator: one small interface over SUNDIALS for y' = f(t, y) with event
 // detection (root finding). Independent of the multibody code: the dynamics plug
-// in through OdeSystem. No SUNDIALS type appears here (pimpl); everything SUNDIALS
-// lives in integrator.cpp.
+// in through OdeSystem. No SUNDIALS type appears here (pimpl). integrator.cpp checks
+// the calls and hands them to a backend (integrator_backend.h): rk4.cpp, or
+// sundials_backends.cpp, the only file that includes SUNDIALS.
 //
 // Methods (IntegrationMethod):
 //   Rk4Fixed       the real-time integrator: classic 4-stage Runge–Kutta with a
-//                  fixed step, written out in integrator.cpp (no SUNDIALS: its
+//                  fixed step, written out in rk4.cpp (no SUNDIALS: its
 //                  general machinery cost as much as a small machine's dynamics;
 //                  docs/performance.md), with the same events as below (Illinois on
 //                  the step's cubic Hermite interpolant). 4 evaluations of f per

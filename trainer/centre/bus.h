@@ -1,5 +1,5 @@
 #pragma once
-// The training centre's bus: Eclipse Cyclone DDS with the topics of centre.idl and a QoS
+// The training centre's bus: Eclipse Cyclone DDS with the topics of centre_topics.idl and a QoS
 // chosen per topic (docs/training-centre.md):
 //
 //   topic             reliability   durability        history        who writes

@@ -1,6 +1,6 @@
 #pragma once
 // The training centre's messages as plain C++ values (docs/training-centre.md). They
-// mirror centre.idl one to one; only bus.cpp converts them to and from DDS samples.
+// mirror centre_topics.idl one to one; only bus.cpp converts them to and from DDS samples.
 
 #include <cstdint>
 #include <limits>

@@ -1,6 +1,6 @@
 #pragma once
-// Faults an instructor injects into a running attempt (issue 10, docs/training.md
-// "Faults the instructor injects"): TutorialSession::inject() and clearFault(). The
+// Faults an instructor injects into a running attempt (docs/training.md "Faults the
+// instructor injects"): TutorialSession::inject() and clearFault(). The
 // physics honours them (a burst hose: solver::Simulation::setDriveFault), the session
 // applies the rest to the operator's commands and to the people in the scene, and the
 // checker scores what follows as for any run. A fault costs no points by itself.

@@ -1,5 +1,5 @@
 #pragma once
-// Tutorials (issue 7): a stage of the training course as a data file. The format looks
+// Tutorials: a stage of the training course as a data file. The format looks
 // like the model language (one statement per line, keywords, `//` comments; the same
 // lexer) and is documented in docs/training.md. A file is parsed into a TutorialSpec
 // as written (with source positions), then resolved once against its model and scene

@@ -1,5 +1,5 @@
 #pragma once
-// RecordsView: the trainer's view of the trainee records (issue 7 item 5), a screen of
+// RecordsView: the trainer's view of the trainee records, a screen of
 // the Train workspace reached from the course ("Records"):
 //  - the operators with their progress (RecordsDb::progress: attempts, tutorials
 //    passed, last attempt), and adding one (code and name);

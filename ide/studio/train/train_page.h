@@ -1,6 +1,7 @@
 #pragma once
-// TrainPage: the Train workspace (issue 7): the course, a stage's start screen with its
-// demonstration, the attempt with its HUD, the result and the debrief.
+// TrainPage: the Train workspace, where an operator takes the training course: the
+// course, a stage's start screen with its demonstration, the attempt with its HUD, the
+// result and the debrief.
 //
 //  - Course: the tutorials of resources/tutorials/*.tut (trainer::loadTutorial) ordered
 //    by LEVEL, each with its title in the UI language, the operator's best stars, and
