@@ -149,13 +149,10 @@ void checkAndCompile(CompiledModel& m, const std::string& baseDir)
     validateModel(m.spec, m.diagnostics, baseDir);
     // the checks of the whole geometry need every statement right
     if (!m.diagnostics.hasErrors()) {
+        // (set only when compiling added no error, and there were none before it)
         CompileResult compiled = compileModel(m.spec, m.diagnostics);
         m.topology = std::move(compiled.topology);
         m.model = std::move(compiled.model);
-        if (m.diagnostics.hasErrors()) {
-            m.topology.reset();
-            m.model.reset();
-        }
     }
     m.diagnostics.sortByPosition();
 }

@@ -104,8 +104,9 @@ CompileResult compileModel(const ModelSpec& spec, Diagnostics& diags)
 
     // 1-2. the graph; T 1 checks and the initial guess of every coordinate (per spec joint)
     Topology topo = analyzeTopology(spec, diags);
+    const std::vector<JointGeometry> geometry = makeJointGeometries(spec);
     Eigen::VectorXd theta;
-    initialGuess(spec, topo, theta, diags);
+    initialGuess(spec, geometry, topo, theta, diags);
 
     // 3. cut joints
     // a loop-closure joint is a constraint, not a coordinate: it cannot carry a drive,
@@ -205,9 +206,9 @@ CompileResult compileModel(const ModelSpec& spec, Diagnostics& diags)
         m.jointType[i] = joint.type;
 
         // frames: parent side, child side
-        const JointGeometry geometry = makeJointGeometry(joint);
-        m.X_pj[i] = (reversed ? geometry.side2 : geometry.side1).pose();
-        m.X_cj[i] = (reversed ? geometry.side1 : geometry.side2).pose();
+        const JointGeometry& g = geometry[static_cast<std::size_t>(j)];
+        m.X_pj[i] = (reversed ? g.side2 : g.side1).pose();
+        m.X_cj[i] = (reversed ? g.side1 : g.side2).pose();
         m.X_jc[i] = m.X_cj[i].inverse(Eigen::Isometry);
         m.axisSign[i] = reversed ? -1.0 : 1.0;
 
@@ -227,7 +228,7 @@ CompileResult compileModel(const ModelSpec& spec, Diagnostics& diags)
 
         // T 1 length law
         if (joint.type == JointType::Actuator) {
-            m.lengthLaw[i] = geometry.lengthLaw();
+            m.lengthLaw[i] = g.lengthLaw();
             m.cl1[i] = joint.cl1;
             m.cl2[i] = joint.cl2;
         }
@@ -240,15 +241,15 @@ CompileResult compileModel(const ModelSpec& spec, Diagnostics& diags)
     }
     for (int j : topo.loopJoints) {
         const JointSpec& joint = spec.joints[static_cast<std::size_t>(j)];
-        const JointGeometry geometry = makeJointGeometry(joint);
+        const JointGeometry& g = geometry[static_cast<std::size_t>(j)];
         CutJoint cut;
         cut.jointId = joint.id;
         cut.name = joint.name;
         cut.type = joint.type;
         cut.body1 = treeOfBody[static_cast<std::size_t>(topo.side1Body[j])];
         cut.body2 = treeOfBody[static_cast<std::size_t>(topo.side2Body[j])];
-        cut.X_1 = geometry.side1.pose();
-        cut.X_2 = geometry.side2.pose();
+        cut.X_1 = g.side1.pose();
+        cut.X_2 = g.side2.pose();
         cut.cl1 = joint.cl1;
         cut.cl2 = joint.cl2;
         size = std::max({size, cut.X_1.translation().norm(), cut.X_2.translation().norm()});

@@ -422,10 +422,10 @@ std::vector<bool> jointsMovingNoMass(const Model& model, const Data& data)
 
 }  // namespace
 
-void initialGuess(const ModelSpec& spec, Topology& topo, Eigen::VectorXd& theta, Diagnostics& diags)
+void initialGuess(const ModelSpec& spec, const std::vector<JointGeometry>& geometry, Topology& topo,
+                  Eigen::VectorXd& theta, Diagnostics& diags)
 {
     const std::size_t nj = spec.joints.size();
-    const std::vector<JointGeometry> geometry = makeJointGeometries(spec);
     theta = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(nj));
     topo.q0.assign(nj, 0.0);
     for (std::size_t j = 0; j < nj; ++j) {
@@ -524,8 +524,7 @@ LoopAssembly assembleInitialConfiguration(const ModelSpec& spec, Topology& topo,
     topo.dof = nt - topo.closureRank;
 
     // the initial θ; cut joints' own coordinates, measured at the assembled configuration
-    at.q = th;
-    forwardKinematics(model, at, data);
+    // (data's kinematics are at th: set above without loops, by unscaledJacobianAt with them)
     for (int i = 0; i < nt; ++i) {
         theta[topo.treeJoints[static_cast<std::size_t>(i)]] = th[i];
         model.theta0[static_cast<std::size_t>(i)] = th[i];

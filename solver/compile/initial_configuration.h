@@ -9,6 +9,7 @@
 #include "solver/core/data.h"
 #include "solver/core/diagnostic.h"
 #include "solver/core/model.h"
+#include "solver/kinematics/joint_geometry.h"
 #include "solver/spec/model_spec.h"
 
 #include <Eigen/Core>
@@ -20,8 +21,9 @@ namespace solver {
 /// Checks every T 1 joint's lengths (reachable, not constant, no dead point inside
 /// the stroke) and gives every spec joint its initial guess: topo.q0 (QI, the middle
 /// of a T 1 stroke, else 0) and θ (dim spec.joints; T 1: the angle of that length
-/// nearest to 0).
-void initialGuess(const ModelSpec& spec, Topology& topo, Eigen::VectorXd& theta, Diagnostics& diags);
+/// nearest to 0). geometry: makeJointGeometries(spec).
+void initialGuess(const ModelSpec& spec, const std::vector<JointGeometry>& geometry, Topology& topo,
+                  Eigen::VectorXd& theta, Diagnostics& diags);
 
 /// What the initial assembly found, for the mass check.
 struct LoopAssembly {

@@ -324,14 +324,6 @@ Eigen::MatrixXd freeBlock(const Eigen::MatrixXd& M, const std::vector<int>& free
     return mff;
 }
 
-Eigen::MatrixXd massMatrixAt(const Model& model, const State& state, Data& data)
-{
-    forwardKinematics(model, state, data);
-    Eigen::MatrixXd M;
-    massMatrix(model, data, M);
-    return M;
-}
-
 }  // namespace
 
 Eigen::VectorXd constraintCorrection(const Eigen::MatrixXd& M, const std::vector<int>& free,

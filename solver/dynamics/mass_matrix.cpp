@@ -1,6 +1,7 @@
 #include "solver/dynamics/mass_matrix.h"
 
 #include "solver/core/spatial.h"
+#include "solver/kinematics/kinematics.h"
 
 #include <vector>
 
@@ -31,6 +32,14 @@ void massMatrix(const Model& model, const Data& data, Eigen::MatrixXd& M)
         rigidInertiaAt(model.mass[i], com, R * model.inertia[i] * R.transpose()).toMatrix(composite[i]);
     }
     massMatrixFromInertias(model, data, composite, M);
+}
+
+Eigen::MatrixXd massMatrixAt(const Model& model, const State& state, Data& data)
+{
+    forwardKinematics(model, state, data);
+    Eigen::MatrixXd M;
+    massMatrix(model, data, M);
+    return M;
 }
 
 }  // namespace solver

@@ -8,6 +8,7 @@
 
 #include "solver/core/data.h"
 #include "solver/core/model.h"
+#include "solver/core/state.h"
 
 #include <Eigen/Core>
 
@@ -17,6 +18,10 @@ namespace solver {
 
 /// Fills M (nb × nb) at the positions of the last forwardKinematics on `data`.
 void massMatrix(const Model& model, const Data& data, Eigen::MatrixXd& M);
+
+/// M at θ = state.q: forwardKinematics on `data`, then massMatrix (events, projection
+/// and assembly; allocates).
+Eigen::MatrixXd massMatrixAt(const Model& model, const State& state, Data& data);
 
 /// The same from each body's spatial inertia about the world origin, given in
 /// `composite` (dim nb), which it turns into the composite inertias of the subtrees

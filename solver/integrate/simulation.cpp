@@ -491,8 +491,6 @@ void Simulation::unpackState()
     }
 }
 
-Eigen::MatrixXd Simulation::constraintJacobianNow() { return constraintJacobianAt(*m_model, m_state, m_data); }
-
 std::vector<char> Simulation::freeMask() const
 {
     std::vector<char> free(static_cast<std::size_t>(m_model->nb), 0);
@@ -510,14 +508,6 @@ bool Simulation::project(const std::vector<char>& held)
         if (mask[j] && !held[j]) free.push_back(j);
     }
     return projectOntoConstraints(m, m_state, m_data, free);
-}
-
-Eigen::MatrixXd Simulation::massMatrixNow()
-{
-    forwardKinematics(*m_model, m_state, m_data);
-    Eigen::MatrixXd M;
-    massMatrix(*m_model, m_data, M);
-    return M;
 }
 
 void Simulation::prescribeRates()
@@ -557,12 +547,12 @@ void Simulation::prescribeRates()
     // with constraints the rates must also satisfy them (after a weld, a projection)
     bool violated = false;
     if (hasConstraints(m, m_state) && !free.empty()) {
-        const Eigen::MatrixXd G = constraintJacobianNow();
+        const Eigen::MatrixXd G = constraintJacobianAt(m, m_state, m_data);
         violated = (G * m_state.qd).lpNorm<Eigen::Infinity>() > 1e-12 * (1.0 + m_state.qd.lpNorm<Eigen::Infinity>());
     }
     if ((!any && !violated) || free.empty()) return;
-    const Eigen::MatrixXd M = massMatrixNow();
-    m_state.qd += freeResponse(M, free, -(M * jump), constraintJacobianNow(), m_state.qd);
+    const Eigen::MatrixXd M = massMatrixAt(m, m_state, m_data);
+    m_state.qd += freeResponse(M, free, -(M * jump), constraintJacobianAt(m, m_state, m_data), m_state.qd);
 }
 
 void Simulation::hitLimit(int j, int side)
@@ -585,8 +575,8 @@ void Simulation::hitLimit(int j, int side)
             for (int k = 0; k < m.nb; ++k) {
                 if (k == j || !isPrescribed(m, m_state, k)) free.push_back(k);
             }
-            r = freeResponse(massMatrixNow(), free, Eigen::VectorXd::Unit(m.nb, j), constraintJacobianNow(),
-                             Eigen::VectorXd::Zero(m.nb));
+            r = freeResponse(massMatrixAt(m, m_state, m_data), free, Eigen::VectorXd::Unit(m.nb, j),
+                             constraintJacobianAt(m, m_state, m_data), Eigen::VectorXd::Zero(m.nb));
         }
         if (r[j] > 0) m_state.qd += (-(1.0 + m.restitution) * into / r[j]) * r;
     }

@@ -223,9 +223,6 @@ private:
     void resetIntegrator(bool settled);
     void hitLimit(int joint, int side);
     void prescribeRates();
-    Eigen::MatrixXd massMatrixNow();  ///< M at the current positions (events only: allocates)
-    /// The constraint Jacobian at the current positions (events only: allocates); 0 rows without constraints.
-    Eigen::MatrixXd constraintJacobianNow();
     /// Projects the state onto the constraints (positions, then velocities), moving
     /// the free coordinates that are not held. False when the positions cannot be
     /// brought within tolerance.

@@ -24,7 +24,7 @@ std::shared_ptr<const ModelBundle> makeBundle(std::shared_ptr<const solver::Comp
                                               const QString& filePath)
 {
     static std::atomic<quint64> counter{0};
-    if (!compiled || !compiled->ok() || !compiled->model || !compiled->topology) return nullptr;
+    if (!compiled || !compiled->model) return nullptr;  // a model is set only without errors
     auto bundle = std::make_shared<ModelBundle>();
     bundle->model = compiled->model;
     bundle->compiled = std::move(compiled);
