@@ -159,6 +159,23 @@ std::string infoText(const CompiledModel& m)
     out += fill(trStd("padrob", "Degrees of freedom: %1"), {std::to_string(t.dof)}) + "\n";
     out += "  " + fill(trStd("padrob", "independent coordinates (joints): %1"), {jointIds(m, t.independent)}) + "\n";
     out += "  " + fill(trStd("padrob", "dependent coordinates (joints): %1"), {jointIds(m, t.dependent)}) + "\n";
+    if (m.model && !m.model->pumps.empty()) {
+        const solver::Model& model = *m.model;
+        out += "\n" + fill(trStd("padrob", "Fluid power: bulk modulus %1 Pa, laminar below %2 Pa"),
+                           {shown(model.fluid.bulk), shown(model.fluid.laminar)}) + "\n";
+        for (const solver::CompiledPump& p : model.pumps) {
+            std::string drives;
+            for (const solver::CompiledCircuit& c : model.circuits) {
+                if (model.pumps[static_cast<std::size_t>(c.pump)].id == p.id)
+                    drives += (drives.empty() ? "" : ", ") + std::to_string(model.jointId[c.joint]);
+            }
+            out += "  " + fill(p.loadSensing ? trStd("padrob", "pump %1 %2: %3 L/min, %4 MPa, load-sensing (margin %5 MPa); drives %6")
+                                             : trStd("padrob", "pump %1 %2: %3 L/min, %4 MPa, pressure-compensated%5; drives %6"),
+                               {std::to_string(p.id), p.name, shown(p.qmax * 60000, 4), shown(p.pmax * 1e-6, 4),
+                                p.loadSensing ? shown(p.margin * 1e-6, 3) : std::string(),
+                                drives.empty() ? trStd("padrob", "none") : drives}) + "\n";
+        }
+    }
     return out;
 }
 
@@ -239,6 +256,50 @@ std::string infoJson(const CompiledModel& m)
         w.endObject();
     }
     w.endArray();
+
+    // fluid power: the oil, the pumps and one circuit per CYL/HMOTOR drive
+    if (m.model) {
+        const solver::Model& model = *m.model;
+        w.key("fluid").beginObject().key("bulk").num(model.fluid.bulk).key("laminar").num(model.fluid.laminar).endObject();
+        w.key("pumps").beginArray();
+        for (const solver::CompiledPump& p : model.pumps) {
+            w.beginObject();
+            w.key("id").integer(p.id).key("name").str(p.name).key("flow").num(p.qmax).key("pressure").num(p.pmax);
+            w.key("load_sensing").boolean(p.loadSensing).key("margin").num(p.margin);
+            w.key("drives").beginArray();
+            for (const solver::CompiledCircuit& c : model.circuits) {
+                if (model.pumps[static_cast<std::size_t>(c.pump)].id == p.id) w.integer(model.jointId[c.joint]);
+            }
+            w.endArray();
+            w.endObject();
+        }
+        w.endArray();
+        w.key("circuits").beginArray();
+        for (const solver::CompiledCircuit& c : model.circuits) {
+            const bool cyl = c.kind == solver::ActuatorKind::Cylinder;
+            w.beginObject();
+            w.key("joint").integer(model.jointId[c.joint]);
+            w.key("kind").str(cyl ? "CYL" : "HMOTOR");
+            w.key("pump").integer(model.pumps[static_cast<std::size_t>(c.pump)].id);
+            if (cyl) {
+                w.key("area_a").num(c.areaA).key("area_b").num(c.areaB);
+                w.key("stroke").beginArray().num(c.lower).num(c.upper).endArray();
+            } else {
+                w.key("displacement").num(c.areaA);
+            }
+            w.key("volume_a").num(c.deadA).key("volume_b").num(c.deadB);
+            w.key("valve_flow").num(c.qn).key("valve_dp").num(c.dpn);
+            w.key("compensation").str(c.comp == solver::Compensation::Pre    ? "PRE"
+                                      : c.comp == solver::Compensation::Post ? "POST"
+                                                                             : "NONE");
+            w.key("tau").num(c.tau).key("friction").num(c.friction);
+            w.key("p0");
+            if (c.hasP0) w.beginArray().num(c.p0A).num(c.p0B).endArray();
+            else w.null();
+            w.endObject();
+        }
+        w.endArray();
+    }
 
     w.key("tree").beginArray();
     for (int ji : t.treeJoints) {

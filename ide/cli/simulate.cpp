@@ -415,6 +415,19 @@ int runSimulate(const std::vector<std::string>& args)
             header.push_back("F" + std::to_string(m.jointId[j]));
         }
     }
+    // fluid power: the chambers' pressures per CYL/HMOTOR drive (joint id order), then
+    // every pump's supply pressure (pump id order)
+    const bool fluidColumns = !passive;
+    std::vector<int> pumpOrder(m.pumps.size());
+    for (std::size_t p = 0; p < pumpOrder.size(); ++p) pumpOrder[p] = static_cast<int>(p);
+    std::sort(pumpOrder.begin(), pumpOrder.end(), [&](int a, int b) { return m.pumps[a].id < m.pumps[b].id; });
+    if (fluidColumns) {
+        for (const solver::CompiledCircuit& c : m.circuits) {
+            const std::string id = std::to_string(m.jointId[c.joint]);
+            header.insert(header.end(), {"pA" + id, "pB" + id});
+        }
+        for (int p : pumpOrder) header.push_back("pP" + std::to_string(m.pumps[p].id));
+    }
     header.push_back("E");
     out.writeHeader(header);
 
@@ -471,6 +484,13 @@ int runSimulate(const std::vector<std::string>& args)
             out.add(c.z());
         }
         for (int j : driven) out.add(d.driveForce[j]);
+        if (fluidColumns) {
+            for (std::size_t c = 0; c < m.circuits.size(); ++c) {
+                out.add(d.pressureA[static_cast<Eigen::Index>(c)]);
+                out.add(d.pressureB[static_cast<Eigen::Index>(c)]);
+            }
+            for (int p : pumpOrder) out.add(d.supplyPressure[p]);
+        }
         out.add(solver::mechanicalEnergy(m, d));
         out.endRow();
     };

@@ -73,6 +73,8 @@ CompiledDrive compileDrive(const DriveSpec& spec, const JointSpec& joint, const 
         d.type = DriveType::Pneumatic;
         d.force = spec.param("F").value_or(0);
         break;
+    case DriveKind::Cylinder:
+    case DriveKind::HydraulicMotor: break;  // compileFluidPower
     case DriveKind::Servo: {
         d.type = DriveType::Servo;
         d.kp = spec.param("KP").value_or(0);
@@ -94,6 +96,77 @@ CompiledDrive compileDrive(const DriveSpec& spec, const JointSpec& joint, const 
     }
     }
     return d;
+}
+
+/// The fluid, the pumps and one circuit per CYL/HMOTOR drive (in joint id order).
+template <class TreeJoint>
+void compileFluidPower(const ModelSpec& spec, TreeJoint treeJoint, Model& m)
+{
+    if (spec.fluid) {
+        m.fluid.bulk = spec.fluid->bulk.value_or(kDefaultBulkModulus);
+        m.fluid.laminar = spec.fluid->laminar.value_or(kDefaultLaminarPressure);
+    }
+    for (const PumpSpec& p : spec.pumps) {
+        CompiledPump cp;
+        cp.id = p.id;
+        cp.name = p.name;
+        cp.qmax = p.flow;
+        cp.pmax = p.pressure;
+        cp.loadSensing = p.margin.has_value();
+        cp.margin = p.margin.value_or(0);
+        m.pumps.push_back(std::move(cp));
+    }
+    std::vector<const DriveSpec*> fluid;
+    for (const DriveSpec& d : spec.drives) {
+        if (d.isFluidPower() && treeJoint(d.joint) >= 0) fluid.push_back(&d);
+    }
+    std::sort(fluid.begin(), fluid.end(), [](const DriveSpec* a, const DriveSpec* b) { return a->joint < b->joint; });
+    for (const DriveSpec* d : fluid) {
+        const int i = treeJoint(d->joint);
+        const JointSpec& joint = *spec.joint(d->joint);
+        CompiledCircuit c;
+        c.joint = i;
+        const int pumpId = static_cast<int>(d->param("PUMP").value_or(0));
+        for (std::size_t p = 0; p < m.pumps.size(); ++p) {
+            if (m.pumps[p].id == pumpId) c.pump = static_cast<int>(p);
+        }
+        c.kind = d->kind == DriveKind::Cylinder ? ActuatorKind::Cylinder : ActuatorKind::Motor;
+        c.qn = d->param("VALVE").value_or(0);
+        c.dpn = d->param("DP").value_or(1);
+        c.k = c.qn / std::sqrt(c.dpn);
+        c.tau = d->param("TAU").value_or(kDefaultSpoolTau);
+        c.comp = d->compensation == "PRE"    ? Compensation::Pre
+                 : d->compensation == "POST" ? Compensation::Post
+                                             : Compensation::None;
+        c.friction = d->param("FRICTION").value_or(0);
+        const double pmax = c.pump >= 0 ? m.pumps[static_cast<std::size_t>(c.pump)].pmax : 0;
+        c.reliefGain = pmax > 0 ? c.qn / (kReliefOverride * pmax) : 0;
+        if (c.kind == ActuatorKind::Cylinder) {
+            const double bore = d->param("BORE").value_or(0), rod = d->param("ROD").value_or(0);
+            c.areaA = kPi / 4 * bore * bore;
+            c.areaB = c.areaA - kPi / 4 * rod * rod;
+            c.lower = joint.ll.value_or(0);
+            c.upper = joint.ul.value_or(0);
+            const double stroke = std::max(0.0, c.upper - c.lower);
+            const auto dead = d->pair("DEAD");
+            c.deadA = dead ? dead->first : kDefaultDeadVolume + kDefaultDeadFraction * c.areaA * stroke;
+            c.deadB = dead ? dead->second : kDefaultDeadVolume + kDefaultDeadFraction * c.areaB * stroke;
+        } else {
+            c.areaA = c.areaB = d->param("DISP").value_or(0);
+            const auto volume = d->pair("VOLUME");
+            c.deadA = volume ? volume->first : kDefaultMotorLineVolume;
+            c.deadB = volume ? volume->second : kDefaultMotorLineVolume;
+        }
+        if (const auto p0 = d->pair("P0")) {
+            c.hasP0 = true;
+            c.p0A = p0->first;
+            c.p0B = p0->second;
+        }
+        m.drive[static_cast<std::size_t>(i)] = CompiledDrive{};
+        m.drive[static_cast<std::size_t>(i)].type = DriveType::FluidPower;
+        m.drive[static_cast<std::size_t>(i)].circuit = static_cast<int>(m.circuits.size());
+        m.circuits.push_back(c);
+    }
 }
 
 }  // namespace
@@ -264,6 +337,7 @@ CompileResult compileModel(const ModelSpec& spec, Diagnostics& diags)
         const JointSpec& joint = spec.joints[static_cast<std::size_t>(topo.treeJoints[i])];
         m.drive[i] = compileDrive(d, joint, m.lengthLaw[i]);
     }
+    compileFluidPower(spec, treeJoint, m);
 
     // forces
     m.forces.reserve(spec.forces.size());

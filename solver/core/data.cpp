@@ -1,5 +1,7 @@
 #include "solver/core/data.h"
 
+#include "solver/core/state.h"
+
 namespace solver {
 
 Data::Data(const Model& model)
@@ -22,6 +24,16 @@ Data::Data(const Model& model)
     // applied loads
     fext.assign(nb, zero6);
     tauExt = Eigen::VectorXd::Zero(n);
+
+    // fluid power
+    const auto nc = static_cast<Eigen::Index>(model.circuits.size());
+    const auto np = static_cast<Eigen::Index>(model.pumps.size());
+    fluidRate = Eigen::VectorXd::Zero(kFluidStates * nc);
+    for (Eigen::VectorXd* v : {&supplyPressure, &pumpFlow, &pumpDemand}) v->setZero(np);
+    pumpShare = Eigen::VectorXd::Ones(np);
+    for (Eigen::VectorXd* v : {&pressureA, &pressureB, &flowA, &flowB, &reliefFlow, &oilStiffness, &fluidDecay})
+        v->setZero(nc);
+    cavitation.assign(model.circuits.size(), 0);
 
     // dynamics
     qdd = Eigen::VectorXd::Zero(n);

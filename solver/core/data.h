@@ -40,6 +40,26 @@ struct Data {
     std::vector<Vector6d> fext;           ///< applied load on each body, about its frame origin (dim nb)
     Eigen::VectorXd tauExt;               ///< generalized applied force on each θ (F JOINT, by θ) (dim nb)
 
+    // ---- fluid power (solver/hydraulics/circuit.h): sized 0 without circuits --
+    /// d/dt State::fluid (dim kFluidStates · circuits): spool rate, ṗ_A, ṗ_B.
+    Eigen::VectorXd fluidRate;
+    Eigen::VectorXd supplyPressure;  ///< per pump: p_S [Pa]
+    Eigen::VectorXd pumpFlow;        ///< per pump: the flow it delivers [m^3/s] (≤ Qmax)
+    /// Per pump: what the open sections would draw at the pump's own setting [m^3/s];
+    /// above Qmax the pump saturates (the flows are shared out, or the supply falls).
+    Eigen::VectorXd pumpDemand;
+    Eigen::VectorXd pumpShare;       ///< per pump: the factor on its meter-in flows (POST saturation), else 1
+    Eigen::VectorXd pressureA, pressureB;  ///< per circuit: p_A, p_B as used (≥ 0) [Pa]
+    Eigen::VectorXd flowA, flowB;    ///< per circuit: valve flow into A and into B [m^3/s] (< 0: out)
+    Eigen::VectorXd reliefFlow;      ///< per circuit: port relief flow to tank, both chambers [m^3/s]
+    /// Per circuit: 1 chamber A, 2 chamber B, 3 both cavitate (the pressure is held at
+    /// 0 while the flow would take it lower).
+    std::vector<int> cavitation;
+    /// Per circuit: the oil spring β·(A_A²/V_A + A_B²/V_B) [N/m or N m/rad] and the
+    /// fastest pressure relaxation β/V·∂Q/∂p [1/s] with the spool's 1/τ: what the
+    /// real-time integrator's sub-steps are chosen from (hydraulics/circuit.h).
+    Eigen::VectorXd oilStiffness, fluidDecay;
+
     // ---- dynamics (solver/dynamics/forward_dynamics.h) ----------------------
     Eigen::VectorXd qdd;          ///< θ̈ (dim nb)
     /// Generalized force the joint transmits along θ (dim nb) [N or N m]: drive +

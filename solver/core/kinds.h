@@ -17,4 +17,8 @@ enum class ForceKind { Point, Torque, Joint, Spring, Aero };
 /// (a table of time) or `TABLE Q j q v …` (a table of joint j's coordinate).
 enum class MagnitudeKind { Constant, Sine, TableTime, TableJoint };
 
+/// A fluid-power valve section's pressure compensator (`COMP NONE|PRE|POST`): none
+/// (the orifice law), pre-compensated, or post-compensated (flow sharing).
+enum class Compensation { None, Pre, Post };
+
 }  // namespace solver

@@ -1,5 +1,7 @@
 #include "solver/core/model.h"
 
+#include <algorithm>
+
 namespace solver {
 
 int Model::jointIndex(int id) const
@@ -27,6 +29,22 @@ double Model::coordinate(int i, double theta) const
 double Model::coordinateRate(int i, double theta) const
 {
     return jointType[i] == JointType::Actuator ? lengthLaw[i].lengthRate(theta) : 1.0;
+}
+
+}  // namespace solver
+
+namespace solver {
+
+double CompiledCircuit::volumeA(double q) const
+{
+    if (kind == ActuatorKind::Motor) return deadA;
+    return deadA + areaA * std::max(0.0, q - lower);
+}
+
+double CompiledCircuit::volumeB(double q) const
+{
+    if (kind == ActuatorKind::Motor) return deadB;
+    return deadB + areaB * std::max(0.0, upper - q);
 }
 
 }  // namespace solver

@@ -29,6 +29,7 @@
 // Everything indexed by tree index stays as it is.
 
 #include "solver/core/actuator_law.h"
+#include "solver/core/fluid_power.h"
 #include "solver/core/kinds.h"
 
 #include <Eigen/Core>
@@ -40,7 +41,9 @@
 
 namespace solver {
 
-enum class DriveType { None, Hydraulic, Motor, Pneumatic, Servo };
+/// Hydraulic: the thesis's prescribed-rate drive (HYD). FluidPower: a CYL/HMOTOR drive,
+/// force-driven by its chambers' pressures (CompiledDrive::circuit, core/fluid_power.h).
+enum class DriveType { None, Hydraulic, Motor, Pneumatic, Servo, FluidPower };
 
 /// A joint's drive, in the joint's own coordinate (T 1: the actuator length).
 struct CompiledDrive {
@@ -57,6 +60,8 @@ struct CompiledDrive {
     double kp = 0, ki = 0, kd = 0;
     double servoFmax = std::numeric_limits<double>::infinity();
     double setLow = 0, setHigh = 0;
+    // FluidPower: its circuit's index in Model::circuits
+    int circuit = -1;
 };
 
 /// A magnitude law (the spec's MagnitudeSpec compiled: TABLE Q's joint as a tree index).
@@ -121,6 +126,11 @@ struct Model {
     std::vector<char> dependent;
 
     std::vector<CompiledForce> forces;
+
+    // fluid power (solver/hydraulics/): empty without CYL/HMOTOR drives
+    CompiledFluid fluid;
+    std::vector<CompiledPump> pumps;        ///< in file order
+    std::vector<CompiledCircuit> circuits;  ///< one per CYL/HMOTOR drive, by joint id
 
     std::vector<CutJoint> cuts;  ///< loop-closure joints (empty for an open tree)
     /// Length [m] that makes the constraints' length rows comparable to their

@@ -26,6 +26,13 @@ State makeState(const Model& model)
     s.servoIntegral = Eigen::VectorXd::Zero(n);
     s.limit.assign(model.nb, LimitState::Free);
     s.relief.assign(model.nb, ReliefState::Closed);
+    s.fluid = Eigen::VectorXd::Zero(kFluidStates * static_cast<Eigen::Index>(model.circuits.size()));
+    for (std::size_t c = 0; c < model.circuits.size(); ++c) {
+        const CompiledCircuit& k = model.circuits[c];
+        if (!k.hasP0) continue;
+        s.fluid[kFluidStates * static_cast<Eigen::Index>(c) + 1] = k.p0A;
+        s.fluid[kFluidStates * static_cast<Eigen::Index>(c) + 2] = k.p0B;
+    }
 
     // a joint that starts on a limit, and does not start moving away from it, rests on it
     for (int i = 0; i < model.nb; ++i) {

@@ -13,6 +13,9 @@
 namespace solver {
 
 enum class LimitState { Free, AtLower, AtUpper };
+
+/// Per fluid-power circuit in State::fluid: spool, p_A, p_B.
+inline constexpr int kFluidStates = 3;
 /// A hydraulic joint's relief valve: closed (rate prescribed) or open, the joint
 /// then driven by the relief force while extending (+fmax) or retracting (−fmin).
 enum class ReliefState { Closed, OpenExtending, OpenRetracting };
@@ -34,6 +37,9 @@ struct State {
     std::vector<LimitState> limit;  ///< per joint
     std::vector<ReliefState> relief;  ///< per joint (hydraulic drives)
     std::vector<Weld> welds;          ///< welds in force (none at the start)
+    /// Fluid-power states, kFluidStates per Model::circuits entry: the spool x in
+    /// [−1, 1], the pressures p_A and p_B [Pa] (gauge, ≥ 0).
+    Eigen::VectorXd fluid;
     /// Rank of the constraint Jacobian over the free coordinates, as the Simulation
     /// fixed it at its last mode change (on the constraints, where the redundant rows
     /// of a planar loop are exactly redundant); the dynamics use that many singular
@@ -43,7 +49,8 @@ struct State {
 };
 
 /// The initial state: θ = theta0, θ̇ = thetaDot0, t = 0, u = 0, servo integrals 0,
-/// relief valves Closed; a joint that starts on a limit (within 1e-9, relative above
+/// relief valves Closed, spools closed, fluid pressures P0 (0 where not given: the
+/// Simulation sets the holding pressures); a joint that starts on a limit (within 1e-9, relative above
 /// 1) and does not start moving away from it is AtLower/AtUpper, the others Free.
 /// (solver/core/state.cpp)
 State makeState(const Model& model);

@@ -1,5 +1,7 @@
 #include "solver/dynamics/drives.h"
 
+#include "solver/hydraulics/actuator.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -94,6 +96,11 @@ double driveForceLaw(const Model& model, const State& state, int i, const Coordi
         const double edot = -map.dq * state.qd[i];
         const double force = drive.kp * e + drive.ki * state.servoIntegral[i] + drive.kd * edot;
         return std::clamp(force, -drive.servoFmax, drive.servoFmax);
+    }
+    case DriveType::FluidPower: {
+        const Eigen::Index k = kFluidStates * static_cast<Eigen::Index>(drive.circuit);
+        return hydraulics::actuatorForce(model.circuits[static_cast<std::size_t>(drive.circuit)], state.fluid[k + 1],
+                                         state.fluid[k + 2], map.dq * state.qd[i]);
     }
     case DriveType::Hydraulic:
         switch (state.relief[i]) {

@@ -17,6 +17,8 @@
 //                 set-point s = setLow + (u + 1)/2·(setHigh − setLow), e = s − q and
 //                 ė = −q̇ (the set-point is held between commands);
 //   - hydraulic with the relief open: +fmax (OpenExtending) or −fmin (OpenRetracting);
+//   - fluid power (CYL, HMOTOR): F = p_A·A_A − p_B·A_B − c·q̇ from State::fluid
+//                 (solver/hydraulics/actuator.h);
 //   - passive: 0.
 // No allocation, no exceptions; i is a tree index.
 

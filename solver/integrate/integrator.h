@@ -88,6 +88,16 @@ public:
     /// first stage.
     virtual bool evaluateAtStepEnds() const { return false; }
 
+    /// Rk4Fixed: into how many equal sub-steps to cut the next step of length h (≥ 1),
+    /// asked at the start of every step, after the system's last evaluation (a stiff
+    /// part, such as a fluid-power circuit, keeps the fixed step stable this way). The
+    /// default: 1.
+    virtual int substeps(double h)
+    {
+        (void)h;
+        return 1;
+    }
+
     /// Which crossings of g_i to report: +1 only rising (g_i goes from − to +),
     /// −1 only falling, 0 both (the default). Read once, by the Integrator constructor.
     virtual int rootDirection(int i) const

@@ -4,7 +4,8 @@
 // function tables, its root-finding and interpolation bookkeeping, the extra
 // evaluations around a reset) cost as much as the dynamics (docs/performance.md).
 // The same behaviour as the ARKODE version it replaces:
-//   - a step of options.step, shortened to end exactly at tout;
+//   - a step of options.step, shortened to end exactly at tout, and cut into the
+//     equal sub-steps OdeSystem::substeps() asks for (a stiff fluid circuit);
 //   - events: g is evaluated at every step's end (together with f there, which is
 //     the next step's first stage); a sign change in the allowed direction is
 //     located by the Illinois method on the step's cubic Hermite interpolant (as
@@ -63,7 +64,8 @@ public:
                 if (steps >= m_s.options.maxSteps) {
                     return fail("RK4_TOO_MUCH_WORK", false, m_ta);
                 }
-                double h = m_s.options.step;
+                const int parts = std::max(1, m_s.system.substeps(m_s.options.step));
+                double h = m_s.options.step / parts;
                 double tb = m_ta + h;
                 if (tb >= tout - 4 * DBL_EPSILON * std::abs(tout)) {
                     tb = tout;

@@ -5,6 +5,7 @@
 #include "solver/dynamics/drives.h"
 #include "solver/dynamics/forward_dynamics.h"
 #include "solver/dynamics/mass_matrix.h"
+#include "solver/hydraulics/circuit.h"
 #include "solver/kinematics/kinematics.h"
 
 #include <Eigen/Cholesky>
@@ -39,6 +40,7 @@ std::string fmt(double v)
 /// Runs kinematics, applied forces and the hybrid dynamics at `state`.
 void evaluateAll(const Model& model, const State& state, Data& data)
 {
+    hydraulics::evaluateHydraulics(model, state, data);
     forwardKinematics(model, state, data);
     applyForces(model, state, data);
     hybridDynamics(model, state, data);
@@ -74,6 +76,22 @@ Text SimulationEvent::describeText(const Model& model) const
         return trText("Diagnostics", "t=%1 s: %2 welded to %3").with(t0).with(bodyLabelText(model, body2)).with(bodyLabelText(model, body));
     case Kind::Release:
         return trText("Diagnostics", "t=%1 s: %2 released from %3").with(t0).with(bodyLabelText(model, body2)).with(bodyLabelText(model, body));
+    case Kind::PumpSaturation: {
+        std::string who = pump >= 0 && pump < static_cast<int>(model.pumps.size()) ? std::to_string(model.pumps[pump].id) : "?";
+        if (pump >= 0 && pump < static_cast<int>(model.pumps.size()) && !model.pumps[pump].name.empty())
+            who += " " + model.pumps[pump].name;
+        return (side > 0 ? trText("Diagnostics", "t=%1 s: pump %2 saturated: the valves ask for %3 L/min, more than it gives")
+                         : trText("Diagnostics", "t=%1 s: pump %2 no longer saturated (%3 L/min asked)"))
+            .with(t0).with(who).with(fmt(value * 60000));
+    }
+    case Kind::Cavitation: {
+        std::string who = std::to_string(model.jointId[joint]);
+        if (!model.jointName[joint].empty()) who += " " + model.jointName[joint];
+        return (side > 0 ? trText("Diagnostics", "t=%1 s: joint %2 cavitates: a chamber's pressure fell to 0 (the load runs "
+                                                 "ahead of the oil)")
+                         : trText("Diagnostics", "t=%1 s: joint %2 no longer cavitates"))
+            .with(t0).with(who);
+    }
     case Kind::LoopLocked: {
         std::string joints;
         for (const CutJoint& c : model.cuts) {
@@ -119,7 +137,10 @@ Text SimulationEvent::describeText(const Model& model) const
     return plainText(t0);
 }
 
-/// The ODE y = [θ; θ̇; servo integral] (dim 3·nb) with the event functions of the
+/// The number of state components: θ, θ̇, servo integral per joint, then the fluid states.
+static int stateSize(const Model& m) { return 3 * m.nb + kFluidStates * static_cast<int>(m.circuits.size()); }
+
+/// The ODE y = [θ; θ̇; servo integral; fluid states] (dim stateSize) with the event functions of the
 /// current modes (kRootsPerJoint per joint, then the loop lock; each valid while positive).
 class Simulation::System : public OdeSystem {
 public:
@@ -137,7 +158,7 @@ public:
     /// event watches (set at every mode change).
     int expectedRank = 0;
 
-    int size() const override { return 3 * m_model->nb; }
+    int size() const override { return stateSize(*m_model); }
     int rootCount() const override { return m_needRoots ? kRootsPerJoint * m_model->nb + 1 : 0; }
     int rootDirection(int) const override { return -1; }
     bool evaluateAtStepEnds() const override { return true; }  // the outputs (takeEvaluation)
@@ -148,6 +169,7 @@ public:
     {
         load(t, y);
         m_fullValid = false;
+        hydraulics::evaluateHydraulics(*m_model, m_work, m_data);
         if (!kinematicAccelerations(*m_model, m_work, m_data)) {
             forwardKinematics(*m_model, m_work, m_data);
             applyForces(*m_model, m_work, m_data);
@@ -172,6 +194,13 @@ public:
         return true;
     }
 
+    /// The real-time step's sub-steps for the fluid circuits, from the last evaluation.
+    int substeps(double h) override
+    {
+        if (m_model->circuits.empty()) return 1;
+        return hydraulics::substeps(*m_model, m_work, m_data, h);
+    }
+
     /// The model the dynamics run on from now on (same size: the simulation's, after a
     /// drive fault was set or cleared; the number of event functions does not change).
     void setModel(const Model& model) { m_model = &model; }
@@ -187,6 +216,7 @@ public:
             ydot[nb + j] = data.qdd[j];
             ydot[2 * nb + j] = faulted[static_cast<std::size_t>(j)] ? 0.0 : servoError(model, s, j);
         }
+        for (Eigen::Index k = 0; k < data.fluidRate.size(); ++k) ydot[3 * nb + k] = data.fluidRate[k];
     }
 
     /// Hands over the whole evaluation (kinematics, dynamics, reactions) of the state
@@ -268,7 +298,7 @@ private:
     // the last whole evaluation (roots, rhsAndRoots) and where it was
     bool m_fullValid = false;
     double m_fullT = 0;
-    std::vector<double> m_fullY = std::vector<double>(static_cast<std::size_t>(3 * m_model->nb), 0.0);
+    std::vector<double> m_fullY = std::vector<double>(static_cast<std::size_t>(stateSize(*m_model)), 0.0);
 
     void full(double t, const double* y)
     {
@@ -291,6 +321,7 @@ private:
             m_work.limit[j] = m_modes.limit[j];
             m_work.relief[j] = m_modes.relief[j];
         }
+        for (Eigen::Index k = 0; k < m_work.fluid.size(); ++k) m_work.fluid[k] = y[3 * nb + k];
         m_work.welds = m_modes.welds;
         m_work.constraintRank = m_modes.constraintRank;
     }
@@ -321,12 +352,12 @@ Simulation::Simulation(std::shared_ptr<const Model> model, const SimulationOptio
       m_options(options),
       m_state(makeState(*m_model)),
       m_data(*m_model),
-      m_y(static_cast<std::size_t>(3 * m_model->nb), 0.0)
+      m_y(static_cast<std::size_t>(stateSize(*m_model)), 0.0)
 {
     const auto nb = static_cast<std::size_t>(m_model->nb);
     m_g.assign(kRootsPerJoint * nb + 1, 0.0);
     m_fired.assign(m_g.size(), 0);
-    m_ydot.assign(3 * nb, 0.0);
+    m_ydot.assign(m_y.size(), 0.0);
     for (Eigen::VectorXd* v : {&m_qdBefore, &m_jump, &m_impulse, &m_dqd}) v->setZero(m_model->nb);
     m_positionsAt.setConstant(m_model->nb, std::numeric_limits<double>::quiet_NaN());  // none yet
     if (!m_options.limits) {
@@ -346,7 +377,99 @@ Simulation::Simulation(std::shared_ptr<const Model> model, const SimulationOptio
         assemble();
         m_held.clear();
     }
+    initialPressures();
     evaluate();
+    m_fluidRelief.assign(m_model->circuits.size(), 0);
+    m_fluidCavitation.assign(m_model->circuits.size(), 0);
+    m_pumpSaturated.assign(m_model->pumps.size(), 0);
+}
+
+void Simulation::initialPressures()
+{
+    const Model& m = *m_model;
+    if (std::all_of(m.circuits.begin(), m.circuits.end(), [](const CompiledCircuit& c) { return c.hasP0; })) return;
+    // every fluid-power joint held where it is, at rest: what each must carry
+    State held = m_state;
+    held.qd.setZero();
+    for (const CompiledCircuit& c : m.circuits) {
+        if (held.limit[c.joint] == LimitState::Free) held.limit[c.joint] = LimitState::AtLower;
+    }
+    for (std::size_t c = 0; c < m.circuits.size(); ++c) {
+        if (m.circuits[c].hasP0) continue;
+        held.fluid[kFluidStates * static_cast<Eigen::Index>(c) + 1] = 0;
+        held.fluid[kFluidStates * static_cast<Eigen::Index>(c) + 2] = 0;
+    }
+    evaluateAll(m, held, m_data);
+    for (std::size_t c = 0; c < m.circuits.size(); ++c) {
+        const CompiledCircuit& k = m.circuits[c];
+        if (k.hasP0) continue;
+        const int j = k.joint;
+        const double stop = m_data.limitForce[j];  // along θ: what holding takes, less the drive's P0 force
+        const Eigen::Index i = kFluidStates * static_cast<Eigen::Index>(c);
+        m_state.fluid[i + 1] = m_state.fluid[i + 2] = 0;
+        // a joint that starts on its stop, pressed onto it, rests there: no pressure needed
+        if ((m_state.limit[j] == LimitState::AtLower && stop >= 0) ||
+            (m_state.limit[j] == LimitState::AtUpper && stop <= 0))
+            continue;
+        const double dq = m.coordinateRate(j, m_state.q[j]);
+        if (dq == 0 || !std::isfinite(stop)) continue;
+        const double force = stop / dq;  // along q
+        if (force > 0) m_state.fluid[i + 1] = force / k.areaA;
+        else m_state.fluid[i + 2] = -force / k.areaB;
+    }
+    m_positionsAt.setConstant(std::numeric_limits<double>::quiet_NaN());  // m_data was used as scratch
+}
+
+void Simulation::fluidEvents(std::vector<SimulationEvent>& events)
+{
+    const Model& m = *m_model;
+    for (std::size_t p = 0; p < m.pumps.size(); ++p) {
+        const double demand = m_data.pumpDemand[static_cast<Eigen::Index>(p)], qmax = m.pumps[p].qmax;
+        const bool saturated = m_pumpSaturated[p] ? demand > 0.98 * qmax : demand > qmax * (1 + 1e-9);
+        if (saturated == (m_pumpSaturated[p] != 0)) continue;
+        m_pumpSaturated[p] = saturated ? 1 : 0;
+        SimulationEvent e;
+        e.kind = SimulationEvent::Kind::PumpSaturation;
+        e.t = m_state.t;
+        e.joint = -1;
+        e.pump = static_cast<int>(p);
+        e.side = saturated ? +1 : -1;
+        e.value = demand;
+        events.push_back(e);
+    }
+    for (std::size_t c = 0; c < m.circuits.size(); ++c) {
+        const CompiledCircuit& k = m.circuits[c];
+        const auto ci = static_cast<Eigen::Index>(c);
+        const double pmax = m.pumps[static_cast<std::size_t>(k.pump)].pmax;
+        const double pA = m_data.pressureA[ci], pB = m_data.pressureB[ci];
+        int relief = m_fluidRelief[c];
+        if (relief == 0) {
+            relief = pA >= 0.98 * pmax ? +1 : pB >= 0.98 * pmax ? -1 : 0;
+        } else if ((relief > 0 ? pA : pB) < 0.95 * pmax) {
+            relief = 0;
+        }
+        if (relief != m_fluidRelief[c]) {
+            const int side = relief != 0 ? relief : m_fluidRelief[c];
+            SimulationEvent e;
+            e.kind = relief != 0 ? SimulationEvent::Kind::ReliefOpen : SimulationEvent::Kind::ReliefClose;
+            e.t = m_state.t;
+            e.joint = k.joint;
+            e.side = side;
+            e.value = pmax * (side > 0 ? k.areaA : k.areaB);
+            events.push_back(e);
+            m_fluidRelief[c] = relief;
+        }
+        const int cav = m_data.cavitation[c];
+        if ((cav != 0) != (m_fluidCavitation[c] != 0)) {
+            SimulationEvent e;
+            e.kind = SimulationEvent::Kind::Cavitation;
+            e.t = m_state.t;
+            e.joint = k.joint;
+            e.side = cav != 0 ? +1 : -1;
+            events.push_back(e);
+        }
+        m_fluidCavitation[c] = cav;
+    }
 }
 
 void Simulation::assemble()
@@ -462,6 +585,7 @@ void Simulation::evaluate(DynamicsOutputs outputs)
     // at the positions m_data was last evaluated at (the rules after a new command only
     // change rates) the position terms are kept: kinematics, body inertias
     if (!hasConstraints(m, m_state) && m_positionsAt == m_state.q) {
+        hydraulics::evaluateHydraulics(m, m_state, m_data);
         velocityKinematics(m, m_state.qd, m_data);
         applyForces(m, m_state, m_data);
         hybridDynamicsSamePositions(m, m_state, m_data, outputs);
@@ -479,6 +603,7 @@ void Simulation::packState()
         m_y[nb + j] = m_state.qd[j];
         m_y[2 * nb + j] = m_state.servoIntegral[j];
     }
+    for (Eigen::Index k = 0; k < m_state.fluid.size(); ++k) m_y[3 * nb + k] = m_state.fluid[k];
 }
 
 void Simulation::unpackState()
@@ -489,6 +614,7 @@ void Simulation::unpackState()
         m_state.qd[j] = m_y[nb + j];
         m_state.servoIntegral[j] = m_y[2 * nb + j];
     }
+    for (Eigen::Index k = 0; k < m_state.fluid.size(); ++k) m_state.fluid[k] = m_y[3 * nb + k];
 }
 
 std::vector<char> Simulation::freeMask() const
@@ -778,12 +904,23 @@ bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, st
         AdvanceResult r = m_integrator->advanceTo(tEnd, m_y.data());
         if (r.status == AdvanceStatus::Failed) {
             const int nb = m_model->nb;
-            int joint = r.badComponent >= 0 ? r.badComponent % nb : -1;
+            // a fluid state (pressures, spool): the drive that owns it
+            int circuit = r.badComponent >= 3 * nb ? (r.badComponent - 3 * nb) / kFluidStates : -1;
+            int joint = r.badComponent >= 0 ? (circuit >= 0 ? m_model->circuits[circuit].joint : r.badComponent % nb) : -1;
             for (int j = 0; joint < 0 && j < nb; ++j) {
                 if (!std::isfinite(m_y[j]) || !std::isfinite(m_y[nb + j])) joint = j;
             }
             const std::string t0 = fmt(r.failureTime);
-            if (joint < 0) {
+            if (circuit >= 0) {
+                std::string who = std::to_string(m_model->jointId[joint]);
+                if (!m_model->jointName[joint].empty()) who += " (" + m_model->jointName[joint] + ")";
+                setError(trText("Diagnostics", "the simulation failed at t = %1 s: the pressures of the drive on joint "
+                                               "%2 are no longer finite (%3); check its volumes, valve and pump data")
+                             .with(t0)
+                             .with(who)
+                             .with(r.messageText),
+                         error, errorText);
+            } else if (joint < 0) {
                 setError(trText("Diagnostics", "the simulation failed at t = %1 s: %2").with(t0).with(r.messageText),
                          error, errorText);
             } else if (m_model->jointName[joint].empty()) {
@@ -855,12 +992,14 @@ bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, st
         resetIntegrator(settled);
     }
     // the integrator's last evaluation was the step's end, where we are: take it
-    if (dataCurrent) return true;
-    if (m_system->takeEvaluation(m_state.t, m_y.data(), m_data)) {
-        m_positionsAt = m_state.q;
-    } else {
-        evaluate();
+    if (!dataCurrent) {
+        if (m_system->takeEvaluation(m_state.t, m_y.data(), m_data)) {
+            m_positionsAt = m_state.q;
+        } else {
+            evaluate();
+        }
     }
+    if (!m_model->circuits.empty()) fluidEvents(events);
     return true;
 }
 

@@ -73,7 +73,12 @@ struct SimulationOptions {
 };
 
 struct SimulationEvent {
-    enum class Kind { LimitHit, LimitLeave, ReliefOpen, ReliefClose, Weld, Release, LoopLocked };
+    /// ReliefOpen/ReliefClose are also a fluid-power drive's: a chamber's pressure reached
+    /// 98 % of its pump's p_max (the relief and the pump's cut-off open), and fell below 95 %
+    /// again. PumpSaturation: a pump's sections draw more than its Qmax (side +1) or no
+    /// longer do (side −1). Cavitation: a fluid-power chamber's pressure is held at 0 while
+    /// the flow would take it lower (side +1), or no longer is (side −1).
+    enum class Kind { LimitHit, LimitLeave, ReliefOpen, ReliefClose, Weld, Release, LoopLocked, PumpSaturation, Cavitation };
     Kind kind = Kind::LimitHit;
     double t = 0;    ///< [s]
     int joint = 0;   ///< tree index
@@ -83,6 +88,7 @@ struct SimulationEvent {
     int side = 0;
     double value = 0;  ///< the limit (modeler coordinate) or the relief force [N or N m]
     int body = -1, body2 = -1;  ///< Weld, Release: bodies a and b (tree indices, −1 = ground)
+    int pump = -1;              ///< PumpSaturation: the pump's index in Model::pumps
 
     /// One line, e.g. "t=1.2345 s: joint 2 LEVANTE PLUMA hit its upper limit 1.617 m".
     std::string describe(const Model& model) const;
@@ -233,6 +239,15 @@ private:
     void assemble();
     void packState();
     void unpackState();
+    /// Fluid power: the pressures that hold the initial pose at rest (the less-loaded
+    /// chamber at 0) for every circuit without P0.
+    void initialPressures();
+    /// Fluid power: the relief, saturation and cavitation events since the last call,
+    /// from data() at the current state.
+    void fluidEvents(std::vector<SimulationEvent>& events);
+    std::vector<int> m_fluidRelief;    // per circuit: +1 chamber A, −1 chamber B at the relief, 0
+    std::vector<int> m_fluidCavitation;  // per circuit: Data::cavitation as last reported
+    std::vector<char> m_pumpSaturated;   // per pump
 };
 
 }  // namespace solver

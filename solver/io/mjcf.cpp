@@ -130,6 +130,7 @@ const char* driveName(DriveType t)
     case DriveType::Motor: return "motor drive (MOTOR)";
     case DriveType::Pneumatic: return "pneumatic drive (PNEU)";
     case DriveType::Servo: return "servo drive (SERVO)";
+    case DriveType::FluidPower: return "fluid-power drive (CYL/HMOTOR: valve, chambers and pump)";
     case DriveType::None: break;
     }
     return "";

@@ -20,7 +20,8 @@ using namespace std::string_view_literals;
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 
 /// The statements a line may start with, for "did you mean" suggestions.
-constexpr std::array kStatementKeywords = {"GRAVITY", "RESTITUTION", "B", "C", "B1", "B2", "CL1", "CL2", "D", "F", "G"};
+constexpr std::array kStatementKeywords = {"GRAVITY", "RESTITUTION", "B", "C", "B1", "B2", "CL1", "CL2", "D", "F", "G",
+                                           "FLUID", "PUMP"};
 
 std::string fmt(double v)
 {
@@ -104,6 +105,8 @@ enum class Arg {
     NumDeg,  ///< one number, optionally followed by DEG
     Vec3,    ///< three numbers
     Num4,    ///< four numbers (ROT ax ay az deg)
+    Num2,    ///< two numbers (DEAD Va Vb)
+    Word,    ///< one word (COMP PRE)
     Mag,     ///< a magnitude spec
     Flag,    ///< no argument
     Str,     ///< a string
@@ -164,6 +167,8 @@ public:
         closeJoint();
         if (kw == "GRAVITY"sv) parseGravity();
         else if (kw == "RESTITUTION"sv) parseRestitution();
+        else if (kw == "FLUID"sv) parseFluid();
+        else if (kw == "PUMP"sv) parsePump();
         else if (kw == "B"sv) parseBody();
         else if (kw == "C"sv) parseJoint();
         else if (kw == "D"sv) parseDrive();
@@ -172,8 +177,8 @@ public:
         else {
             std::string guess = closest(kw, kStatementKeywords);
             m_d.error("unknown-keyword", first.pos, trText("Diagnostics", "unknown keyword '%1'").with(first.text),
-                      guess.empty() ? trText("Diagnostics", "statements are GRAVITY, RESTITUTION, B, C (with B1, B2, "
-                                                            "CL1), D, F and G; comments start with // or #")
+                      guess.empty() ? trText("Diagnostics", "statements are GRAVITY, RESTITUTION, FLUID, PUMP, B, C "
+                                                            "(with B1, B2, CL1), D, F and G; comments start with // or #")
                                     : didYouMean(guess));
         }
     }
@@ -523,6 +528,21 @@ private:
             }
             case Arg::Vec3: numbers<3>(val.v, context, key, fix, val.ok); break;
             case Arg::Num4: numbers<4>(val.v4, context, key, fix, val.ok); break;
+            case Arg::Num2: {
+                Eigen::Matrix<double, 2, 1> two;
+                numbers<2>(two, context, key, fix, val.ok);
+                val.v.head<2>() = two;
+                break;
+            }
+            case Arg::Word:
+                if (!atEnd() && peek().isWord() && !isKey(peek())) {
+                    val.str = upper(m_toks[m_i++].text);
+                } else {
+                    val.ok = false;
+                    m_d.error("missing-word", here(), trText("Diagnostics", "%1: %2 needs a word").with(context()).with(key),
+                              fix());
+                }
+                break;
             case Arg::Mag: magnitude(val.mag, context, val.ok); break;
             case Arg::Flag: break;
             case Arg::Str:
@@ -633,6 +653,82 @@ private:
             return;
         }
         m_spec.restitution = *e;
+    }
+
+    void parseFluid()
+    {
+        FluidSpec f;
+        f.src.pos = m_toks[0].pos;
+        bool ok = true;
+        const Text context = plainText("FLUID");
+        static const std::vector<OptionDef> defs = {
+            {"BULK", Arg::Num, trText("Diagnostics", "the bulk modulus in Pa")},
+            {"LAMINAR", Arg::Num, trText("Diagnostics", "the laminar pressure difference in Pa")}};
+        Options opts = options(defs, context, context, ok);
+        recordPositions(f.src, opts);
+        if (m_spec.fluid) {
+            m_d.error("duplicate-fluid", f.src.pos,
+                      trText("Diagnostics", "%1 is given twice (first at line %2)")
+                          .with("FLUID")
+                          .with(std::to_string(m_spec.fluid->src.pos.line)),
+                      trText("Diagnostics", "keep one %1 statement").with("FLUID"));
+            return;
+        }
+        for (const auto& [k, v] : opts) {
+            if (v.ok && !(v.num > 0)) {
+                ok = false;
+                m_d.error("not-positive", v.valuePos,
+                          trText("Diagnostics", "%1: %2 must be positive, not %3").with(context).with(k).with(fmt(v.num)),
+                          k == "BULK" ? trText("Diagnostics", "the effective bulk modulus of oil in hoses is about 1e9 Pa")
+                                      : trText("Diagnostics", "a few bar, e.g. LAMINAR 2e5"));
+            }
+        }
+        if (auto it = opts.find("BULK"); it != opts.end()) f.bulk = it->second.num;
+        if (auto it = opts.find("LAMINAR"); it != opts.end()) f.laminar = it->second.num;
+        f.src.complete = ok;
+        m_spec.fluid = std::move(f);
+    }
+
+    void parsePump()
+    {
+        static constexpr const char* syntax = "PUMP id FLOW Qmax PRESSURE p_max [MARGIN dp] [NAME \"text\"]";
+        PumpSpec p;
+        p.src.pos = m_toks[0].pos;
+        bool ok = true;
+        auto id = readId(trText("Diagnostics", "pump"), trText("Diagnostics", "the pump id"), ok,
+                         [] { return write(syntax); });
+        if (!id) return;
+        p.id = *id;
+        auto ctx = [&] { return trText("Diagnostics", "pump %1").with(std::to_string(p.id)); };
+        static const std::vector<OptionDef> defs = {
+            {"FLOW", Arg::Num, trText("Diagnostics", "the largest flow in m³/s")},
+            {"PRESSURE", Arg::Num, trText("Diagnostics", "the pressure setting in Pa")},
+            {"MARGIN", Arg::Num, trText("Diagnostics", "the load-sensing margin in Pa")},
+            {"NAME", Arg::Str, "\"text\""}};
+        Options opts = options(defs, ctx, [] { return plainText("PUMP"); }, ok);
+        recordPositions(p.src, opts);
+        requireOptions(opts, {"FLOW", "PRESSURE"}, ctx, [] { return write(syntax); }, p.src.pos, ok);
+        for (const auto& [k, v] : opts) {
+            if (k == "NAME" || !v.ok || v.num > 0) continue;
+            ok = false;
+            m_d.error("not-positive", v.valuePos,
+                      trText("Diagnostics", "%1: %2 must be positive, not %3").with(ctx()).with(k).with(fmt(v.num)),
+                      trText("Diagnostics", "FLOW in m³/s (45 cm³/rev at 1480 rpm is 1.11e-3), PRESSURE and MARGIN in Pa"));
+        }
+        if (auto it = opts.find("FLOW"); it != opts.end()) p.flow = it->second.num;
+        if (auto it = opts.find("PRESSURE"); it != opts.end()) p.pressure = it->second.num;
+        if (auto it = opts.find("MARGIN"); it != opts.end()) p.margin = it->second.num;
+        if (auto it = opts.find("NAME"); it != opts.end()) p.name = it->second.str;
+        if (const PumpSpec* first = m_spec.pump(p.id)) {
+            m_d.error("duplicate-pump", p.src.pos,
+                      trText("Diagnostics", "pump %1 is defined twice (first at line %2)")
+                          .with(std::to_string(p.id))
+                          .with(std::to_string(first->src.pos.line)),
+                      trText("Diagnostics", "give each pump its own id"));
+            return;
+        }
+        p.src.complete = ok;
+        m_spec.pumps.push_back(std::move(p));
     }
 
     void parseBody()
@@ -871,7 +967,7 @@ private:
         DriveSpec d;
         d.src.pos = m_toks[0].pos;
         bool ok = true;
-        static constexpr const char* syntax = "D joint HYD|MOTOR|PNEU|SERVO parameters…";
+        static constexpr const char* syntax = "D joint HYD|MOTOR|PNEU|SERVO|CYL|HMOTOR parameters…";
         auto joint = readId(trText("Diagnostics", "drive"), trText("Diagnostics", "the joint id"), ok,
                             [] { return write(syntax); });
         if (!joint) return;
@@ -879,7 +975,7 @@ private:
         auto ctx = [&] { return trText("Diagnostics", "drive on joint %1").with(std::to_string(d.joint)); };
         if (atEnd() || !peek().isWord()) {
             m_d.error("missing-drive-kind", here(), trText("Diagnostics", "%1: the drive kind is missing").with(ctx()),
-                      trText("Diagnostics", "write HYD, MOTOR, PNEU or SERVO after the joint id"));
+                      trText("Diagnostics", "write HYD, MOTOR, PNEU, SERVO, CYL or HMOTOR after the joint id"));
             return;
         }
         const Token& kindTok = m_toks[m_i++];
@@ -909,11 +1005,17 @@ private:
         } else if (kind == "SERVO"sv) {
             d.kind = DriveKind::Servo;
             defs = &servoDefs;
+        } else if (kind == "CYL"sv || kind == "HMOTOR"sv) {
+            d.kind = kind == "CYL"sv ? DriveKind::Cylinder : DriveKind::HydraulicMotor;
+            parseFluidDrive(d, ctx, ok);
+            return;
         } else {
-            std::string guess = closest(kind, std::array<std::string_view, 4>{"HYD", "MOTOR", "PNEU", "SERVO"});
+            std::string guess =
+                closest(kind, std::array<std::string_view, 6>{"HYD", "MOTOR", "PNEU", "SERVO", "CYL", "HMOTOR"});
             m_d.error("unknown-drive-kind", kindTok.pos,
                       trText("Diagnostics", "%1: unknown drive kind '%2'").with(ctx()).with(kindTok.text),
-                      guess.empty() ? trText("Diagnostics", "drive kinds are HYD, MOTOR, PNEU and SERVO") : didYouMean(guess));
+                      guess.empty() ? trText("Diagnostics", "drive kinds are HYD, MOTOR, PNEU, SERVO, CYL and HMOTOR")
+                                    : didYouMean(guess));
             return;
         }
         // the hint for what the kind requires
@@ -925,6 +1027,8 @@ private:
             case DriveKind::Motor: return write("D j MOTOR T0 torque W0 speed");
             case DriveKind::Pneumatic: return write("D j PNEU F force");
             case DriveKind::Servo: return write("D j SERVO KP p KI i KD d [FMAX f]");
+            case DriveKind::Cylinder:
+            case DriveKind::HydraulicMotor: break;  // parseFluidDrive
             }
             return {};
         };
@@ -1000,6 +1104,133 @@ private:
                           trText("Diagnostics", "%1: %2 cannot be negative (%3)").with(ctx()).with(k).with(fmt(v.num)),
                           trText("Diagnostics", "gains are zero or positive"));
             }
+        }
+        d.src.complete = ok;
+        m_spec.drives.push_back(std::move(d));
+    }
+
+    /// `D j CYL PUMP id BORE d ROD d VALVE Qn DP dpn [COMP NONE|PRE|POST] [TAU t] [DEAD Va Vb]
+    /// [FRICTION c] [P0 pa pb]` or `D j HMOTOR PUMP id DISP Dm VALVE Qn DP dpn [COMP …] [TAU t]
+    /// [VOLUME Va Vb] [FRICTION c] [P0 pa pb]` (the kind already read).
+    template <class Ctx>
+    void parseFluidDrive(DriveSpec& d, Ctx ctx, bool& ok)
+    {
+        const bool cyl = d.kind == DriveKind::Cylinder;
+        static const Text volume = trText("Diagnostics", "two volumes in m³"),
+                          pressures = trText("Diagnostics", "two pressures in Pa");
+        static const std::vector<OptionDef> cylDefs = {
+            {"PUMP", Arg::Int, trText("Diagnostics", "the pump id")},
+            {"BORE", Arg::Num, trText("Diagnostics", "diameter")},
+            {"ROD", Arg::Num, trText("Diagnostics", "diameter")},
+            {"VALVE", Arg::Num, trText("Diagnostics", "the nominal flow in m³/s")},
+            {"DP", Arg::Num, trText("Diagnostics", "the nominal pressure drop in Pa")},
+            {"COMP", Arg::Word, "NONE|PRE|POST"},
+            {"TAU", Arg::Num, trText("Diagnostics", "the spool time constant in s")},
+            {"DEAD", Arg::Num2, volume},
+            {"FRICTION", Arg::Num, trText("Diagnostics", "the viscous friction")},
+            {"P0", Arg::Num2, pressures},
+            // the prescribed-rate drive's keywords, read to say where they belong
+            {"VMAX", Arg::Num, "v"}, {"VMIN", Arg::Num, "v"}, {"FMAX", Arg::Num, "f"}, {"FMIN", Arg::Num, "f"},
+            {"RPM", Arg::Num, "n"}, {"PRESSURE", Arg::Num, "p"}};
+        static const std::vector<OptionDef> motorDefs = {
+            {"PUMP", Arg::Int, trText("Diagnostics", "the pump id")},
+            {"DISP", Arg::Num, trText("Diagnostics", "the displacement in m³/rad")},
+            {"VALVE", Arg::Num, trText("Diagnostics", "the nominal flow in m³/s")},
+            {"DP", Arg::Num, trText("Diagnostics", "the nominal pressure drop in Pa")},
+            {"COMP", Arg::Word, "NONE|PRE|POST"},
+            {"TAU", Arg::Num, trText("Diagnostics", "the spool time constant in s")},
+            {"VOLUME", Arg::Num2, volume},
+            {"FRICTION", Arg::Num, trText("Diagnostics", "the viscous friction")},
+            {"P0", Arg::Num2, pressures},
+            {"VMAX", Arg::Num, "v"}, {"VMIN", Arg::Num, "v"}, {"FMAX", Arg::Num, "f"}, {"FMIN", Arg::Num, "f"},
+            {"RPM", Arg::Num, "n"}, {"PRESSURE", Arg::Num, "p"}, {"BORE", Arg::Num, "d"}, {"ROD", Arg::Num, "d"}};
+        const char* kind = cyl ? "CYL" : "HMOTOR";
+        auto fix = [cyl] {
+            return cyl ? write("D j CYL PUMP id BORE d ROD d VALVE Qn DP dpn [COMP NONE|PRE|POST] [TAU t] [DEAD Va Vb] "
+                               "[FRICTION c] [P0 pa pb]")
+                       : write("D j HMOTOR PUMP id DISP Dm VALVE Qn DP dpn [COMP NONE|PRE|POST] [TAU t] [VOLUME Va Vb] "
+                               "[FRICTION c] [P0 pa pb]");
+        };
+        Options opts = options(cyl ? cylDefs : motorDefs, ctx, [&] { return trText("Diagnostics", "a %1 drive").with(kind); },
+                               ok);
+        recordPositions(d.src, opts);
+        for (const char* k : {"VMAX", "VMIN", "FMAX", "FMIN", "RPM", "PRESSURE", "BORE", "ROD"}) {
+            if (cyl && (std::string_view(k) == "BORE" || std::string_view(k) == "ROD")) continue;
+            auto it = opts.find(k);
+            if (it == opts.end()) continue;
+            ok = false;
+            m_d.error("hyd-keyword-in-fluid-drive", it->second.pos,
+                      trText("Diagnostics", "%1: %2 belongs to the prescribed-rate HYD drive, not to %3")
+                          .with(ctx())
+                          .with(k)
+                          .with(kind),
+                      cyl ? trText("Diagnostics", "a CYL drive's speed follows from VALVE and BORE, its force from the "
+                                                  "PUMP's PRESSURE; remove %1 or write the drive as HYD")
+                                .with(k)
+                          : trText("Diagnostics", "an HMOTOR drive's speed follows from VALVE and DISP, its torque from "
+                                                  "the PUMP's PRESSURE; remove %1 or write the drive as HYD")
+                                .with(k));
+            opts.erase(it);
+        }
+        if (cyl) requireOptions(opts, {"PUMP", "BORE", "ROD", "VALVE", "DP"}, ctx, fix, d.src.pos, ok);
+        else requireOptions(opts, {"PUMP", "DISP", "VALVE", "DP"}, ctx, fix, d.src.pos, ok);
+        std::vector<const Options::value_type*> order;
+        for (const auto& kv : opts) order.push_back(&kv);
+        std::sort(order.begin(), order.end(), [](const auto* a, const auto* b) {
+            return a->second.pos.column < b->second.pos.column;
+        });
+        for (const auto* kv : order) {
+            const std::string& k = kv->first;
+            const OptionValue& v = kv->second;
+            if (!v.ok) continue;
+            if (k == "COMP") {
+                if (v.str != "NONE" && v.str != "PRE" && v.str != "POST") {
+                    ok = false;
+                    m_d.error("bad-compensation", v.valuePos,
+                              trText("Diagnostics", "%1: COMP %2 is not a compensation").with(ctx()).with(v.str),
+                              trText("Diagnostics", "write COMP NONE (orifice law), PRE (pre-compensated) or POST "
+                                                    "(post-compensated, flow sharing)"));
+                }
+                d.compensation = v.str;
+            } else if (k == "PUMP") {
+                d.params.emplace_back(k, static_cast<double>(v.id));
+            } else if (k == "DEAD" || k == "VOLUME" || k == "P0") {
+                const bool pressure = k == "P0";
+                for (int e = 0; e < 2; ++e) {
+                    const double x = v.v[e];
+                    if (pressure ? x >= 0 : x > 0) continue;
+                    ok = false;
+                    m_d.error(pressure ? "negative-pressure" : "not-positive", v.valuePos,
+                              pressure ? trText("Diagnostics", "%1: P0 %2 is below tank pressure (0)").with(ctx()).with(fmt(x))
+                                       : trText("Diagnostics", "%1: %2 must be positive, not %3").with(ctx()).with(k).with(fmt(x)),
+                              pressure ? trText("Diagnostics", "pressures are gauge pressures in Pa, 0 or more")
+                                       : trText("Diagnostics", "volumes in m³, e.g. 5e-4 for half a litre of hose"));
+                    break;
+                }
+                d.pairs.emplace_back(k, std::pair<double, double>(v.v[0], v.v[1]));
+            } else {
+                if (k == "FRICTION" ? !(v.num >= 0) : !(v.num > 0)) {
+                    ok = false;
+                    m_d.error("not-positive", v.valuePos,
+                              k == "FRICTION"
+                                  ? trText("Diagnostics", "%1: %2 cannot be negative (%3)").with(ctx()).with(k).with(fmt(v.num))
+                                  : trText("Diagnostics", "%1: %2 must be positive, not %3").with(ctx()).with(k).with(fmt(v.num)),
+                              k == "TAU" ? trText("Diagnostics", "the spool's time constant in seconds, e.g. TAU 0.05")
+                                         : trText("Diagnostics", "give its magnitude in SI units"));
+                }
+                d.params.emplace_back(k, v.num);
+            }
+        }
+        auto bore = opts.find("BORE"), rod = opts.find("ROD");
+        if (cyl && bore != opts.end() && rod != opts.end() && bore->second.ok && rod->second.ok &&
+            rod->second.num >= bore->second.num) {
+            ok = false;
+            m_d.error("rod-too-large", rod->second.valuePos,
+                      trText("Diagnostics", "%1: the rod (%2 m) is not thinner than the bore (%3 m)")
+                          .with(ctx())
+                          .with(fmt(rod->second.num))
+                          .with(fmt(bore->second.num)),
+                      trText("Diagnostics", "ROD and BORE are diameters in metres; the rod must be thinner"));
         }
         d.src.complete = ok;
         m_spec.drives.push_back(std::move(d));

@@ -63,7 +63,19 @@ std::string writeModel(const ModelSpec& spec)
     std::string out;
     if (spec.hasGravity) out += "GRAVITY " + vec(spec.gravity) + "\n";
     if (spec.hasRestitution) out += "RESTITUTION " + formatNumber(spec.restitution) + "\n";
-    if (spec.hasGravity || spec.hasRestitution) out += "\n";
+    if (spec.fluid) {
+        out += "FLUID";
+        if (spec.fluid->bulk) out += " BULK " + formatNumber(*spec.fluid->bulk);
+        if (spec.fluid->laminar) out += " LAMINAR " + formatNumber(*spec.fluid->laminar);
+        out += '\n';
+    }
+    for (const PumpSpec& p : spec.pumps) {
+        out += "PUMP " + std::to_string(p.id) + " FLOW " + formatNumber(p.flow) + " PRESSURE " + formatNumber(p.pressure);
+        if (p.margin) out += " MARGIN " + formatNumber(*p.margin);
+        if (!p.name.empty()) out += " NAME " + quote(p.name);
+        out += '\n';
+    }
+    if (spec.hasGravity || spec.hasRestitution || spec.fluid || !spec.pumps.empty()) out += "\n";
     for (const BodySpec& b : spec.bodies) {
         out += "B " + std::to_string(b.id);
         if (b.hasMass) {
@@ -92,6 +104,8 @@ std::string writeModel(const ModelSpec& spec)
     for (const DriveSpec& d : spec.drives) {
         out += "D " + std::to_string(d.joint) + ' ' + driveKindKeyword(d.kind);
         for (const auto& [k, v] : d.params) out += ' ' + k + ' ' + formatNumber(v);
+        if (!d.compensation.empty()) out += " COMP " + d.compensation;
+        for (const auto& [k, v] : d.pairs) out += ' ' + k + ' ' + formatNumber(v.first) + ' ' + formatNumber(v.second);
         out += '\n';
     }
     if (!spec.drives.empty()) out += '\n';

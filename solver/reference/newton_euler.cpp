@@ -24,10 +24,18 @@ Matrix3d crossMatrix(const Vector3d& v)
 }
 
 // the drive's force in the modeler's coordinate q (MODEL_LANGUAGE.md "Drives")
-double driveLaw(const CompiledDrive& d, double u, double q, double qdot, double integral,
-                ReliefState relief)
+double driveLaw(const Model& model, const State& state, const CompiledDrive& d, double u, double q, double qdot,
+                double integral, ReliefState relief)
 {
     switch (d.type) {
+    case DriveType::FluidPower: {
+        // F = p_A·A_A − p_B·A_B − c·q̇, written out here (an independent check of actuator.h)
+        const CompiledCircuit& c = model.circuits[static_cast<std::size_t>(d.circuit)];
+        const Eigen::Index k = kFluidStates * static_cast<Eigen::Index>(d.circuit);
+        const double pA = state.fluid[k + 1] > 0 ? state.fluid[k + 1] : 0.0;
+        const double pB = state.fluid[k + 2] > 0 ? state.fluid[k + 2] : 0.0;
+        return pA * c.areaA - pB * c.areaB - c.friction * qdot;
+    }
     case DriveType::None: return 0;
     case DriveType::Motor:
         if (std::abs(qdot) >= d.w0) return 0;
@@ -235,7 +243,7 @@ void NewtonEulerSystem::assemble(const State& state, const std::vector<Vector6d>
             addPointAcceleration(rc, s1, y1, -e.transpose());
             B(rc) -= (v21.squaredNorm() - qdot[i] * qdot[i]) / q[i];
         } else {
-            const double force = driveLaw(drive, state.u[i], q[i], qdot[i], state.servoIntegral[i],
+            const double force = driveLaw(model, state, drive, state.u[i], q[i], qdot[i], state.servoIntegral[i],
                                           state.relief[i]);
             if (prismatic) {
                 A.block<1, 3>(rc, col(i, kF)) = slide[i].transpose();
@@ -335,7 +343,7 @@ const NewtonEulerResult& NewtonEulerSystem::solve(const State& state, const std:
                                                                 : m_axis[i].dot(out.reaction[i].head<3>());
 
         const CompiledDrive& drive = model.drive[i];
-        const double law = driveLaw(drive, state.u[i], m_q[i], m_qdot[i], state.servoIntegral[i], state.relief[i]);
+        const double law = driveLaw(m_model, state, drive, state.u[i], m_q[i], m_qdot[i], state.servoIntegral[i], state.relief[i]);
         const bool hydraulicHeld = drive.type == DriveType::Hydraulic &&
                                    (state.limit[i] != LimitState::Free || state.relief[i] == ReliefState::Closed);
         out.driveForce[i] = hydraulicHeld ? (out.tau[i] - tauExt[i]) / m_dq[i] : law;

@@ -23,6 +23,14 @@ std::optional<double> DriveSpec::param(std::string_view key) const
     return std::nullopt;
 }
 
+std::optional<std::pair<double, double>> DriveSpec::pair(std::string_view key) const
+{
+    for (const auto& [k, v] : pairs) {
+        if (k == key) return v;
+    }
+    return std::nullopt;
+}
+
 DriveSpec::Hydraulic DriveSpec::hydraulic() const
 {
     Hydraulic h;
@@ -62,6 +70,14 @@ const JointSpec* ModelSpec::joint(int id) const
     return nullptr;
 }
 
+const PumpSpec* ModelSpec::pump(int id) const
+{
+    for (const PumpSpec& p : pumps) {
+        if (p.id == id) return &p;
+    }
+    return nullptr;
+}
+
 const char* jointTypeName(JointType t)
 {
     switch (t) {
@@ -79,6 +95,8 @@ const char* driveKindKeyword(DriveKind k)
     case DriveKind::Motor: return "MOTOR";
     case DriveKind::Pneumatic: return "PNEU";
     case DriveKind::Servo: return "SERVO";
+    case DriveKind::Cylinder: return "CYL";
+    case DriveKind::HydraulicMotor: return "HMOTOR";
     }
     return "HYD";
 }

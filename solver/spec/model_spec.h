@@ -82,17 +82,27 @@ struct JointSpec {
     FieldPositions src;  ///< at: "T", "LL", "UL", "QI", "VI", "NAME", "CL1", "CL2"
 };
 
-/// Drive kinds: `D joint HYD|MOTOR|PNEU|SERVO params…`.
-enum class DriveKind { Hydraulic, Motor, Pneumatic, Servo };
+/// Drive kinds: `D joint HYD|MOTOR|PNEU|SERVO|CYL|HMOTOR params…`. HYD is the
+/// thesis's prescribed-rate drive; CYL and HMOTOR are fluid-power drives (a valve
+/// section fed by a PUMP, chambers with real pressures: solver/hydraulics/).
+enum class DriveKind { Hydraulic, Motor, Pneumatic, Servo, Cylinder, HydraulicMotor };
 
 struct DriveSpec {
     int joint = 0;
     DriveKind kind = DriveKind::Hydraulic;
-    /// Parameters in the order written, keyword (upper case) → value (SI).
+    /// Parameters in the order written, keyword (upper case) → value (SI). CYL and
+    /// HMOTOR: PUMP is the pump's id (an integer).
     std::vector<std::pair<std::string, double>> params;
+    /// CYL, HMOTOR: options with two numbers (DEAD, VOLUME, P0), in the order written.
+    std::vector<std::pair<std::string, std::pair<double, double>>> pairs;
+    /// CYL, HMOTOR: COMP's word as written in upper case (NONE, PRE, POST); empty when absent.
+    std::string compensation;
     FieldPositions src;  ///< at: each parameter keyword
 
     std::optional<double> param(std::string_view key) const;
+    std::optional<std::pair<double, double>> pair(std::string_view key) const;
+    /// CYL or HMOTOR.
+    bool isFluidPower() const { return kind == DriveKind::Cylinder || kind == DriveKind::HydraulicMotor; }
 
     /// A hydraulic drive's effective data, from VMAX/VMIN/FMAX/FMIN or from the
     /// pump and cylinder data (flow = cc·rpm; speeds = flow / bore or annulus area;
@@ -163,6 +173,24 @@ struct GraphicSpec {
     FieldPositions src;
 };
 
+/// `FLUID [BULK β] [LAMINAR p_lam]`: the hydraulic oil (at most one statement).
+struct FluidSpec {
+    std::optional<double> bulk;     ///< effective bulk modulus β [Pa] (default kDefaultBulkModulus)
+    std::optional<double> laminar;  ///< Δp below which orifices are laminar [Pa] (default kDefaultLaminarPressure)
+    FieldPositions src;             ///< at: "BULK", "LAMINAR"
+};
+
+/// `PUMP id FLOW Qmax PRESSURE p_max [MARGIN Δp_ls] [NAME "…"]`: a pump feeding any
+/// number of CYL/HMOTOR drives; with MARGIN it is load-sensing.
+struct PumpSpec {
+    int id = 0;
+    double flow = 0;      ///< Qmax [m^3/s]
+    double pressure = 0;  ///< p_max [Pa] (the compensator's and relief valves' setting)
+    std::optional<double> margin;  ///< Δp_ls [Pa]
+    std::string name;
+    FieldPositions src;   ///< at: "FLOW", "PRESSURE", "MARGIN", "NAME"
+};
+
 struct ModelSpec {
     std::string file;  ///< the file it was read from (for diagnostics and mesh paths)
     bool hasGravity = false;
@@ -176,11 +204,14 @@ struct ModelSpec {
     std::vector<BodySpec> bodies;    ///< in file order (body 0 only if written)
     std::vector<JointSpec> joints;   ///< in file order
     std::vector<DriveSpec> drives;
+    std::optional<FluidSpec> fluid;
+    std::vector<PumpSpec> pumps;     ///< in file order
     std::vector<ForceSpec> forces;
     std::vector<GraphicSpec> graphics;
 
     const BodySpec* body(int id) const;
     const JointSpec* joint(int id) const;
+    const PumpSpec* pump(int id) const;
     /// True when `id` is ground (0) or a written body.
     bool bodyExists(int id) const { return id == 0 || body(id) != nullptr; }
 };

@@ -260,6 +260,52 @@ void checkJoint(const ModelSpec& spec, const JointSpec& j, Diagnostics& d)
     }
 }
 
+/// A CYL or HMOTOR drive: its joint's type and stroke, its pump.
+void checkFluidDrive(const ModelSpec& spec, const DriveSpec& dr, const JointSpec& j, Diagnostics& d)
+{
+    const bool cyl = dr.kind == DriveKind::Cylinder;
+    if (cyl && j.type == JointType::Revolute) {
+        d.error("cyl-on-revolute", dr.src.where("kind"),
+                trText("Diagnostics", "%1: a CYL drive needs a T 1 or T 2 joint, but %2 is revolute")
+                    .with(driveOn(dr.joint))
+                    .with(jointNamed(j.id, j.name)),
+                trText("Diagnostics", "drive a revolute joint with D j HMOTOR PUMP id DISP Dm VALVE Qn DP dp, or make "
+                                      "the joint T 1 (a pivoted cylinder) or T 2"));
+    } else if (!cyl && j.type != JointType::Revolute) {
+        d.error("hmotor-on-linear", dr.src.where("kind"),
+                trText("Diagnostics", "%1: an HMOTOR drive turns a revolute joint, but %2 is T %3")
+                    .with(driveOn(dr.joint))
+                    .with(jointNamed(j.id, j.name))
+                    .with(std::to_string(static_cast<int>(j.type))),
+                trText("Diagnostics", "drive a T 1 or T 2 joint with D j CYL PUMP id BORE d ROD d VALVE Qn DP dp"));
+    } else if (cyl && (!j.ll || !j.ul)) {
+        d.error("cyl-without-stroke", dr.src.where("kind"),
+                trText("Diagnostics", "%1: a CYL drive needs the stroke, but %2 has no %3")
+                    .with(driveOn(dr.joint))
+                    .with(jointNamed(j.id, j.name))
+                    .with(!j.ll && !j.ul ? "LL/UL" : !j.ll ? "LL" : "UL"),
+                trText("Diagnostics", "give the joint LL (fully retracted) and UL (fully extended): the chamber "
+                                      "volumes follow from them"));
+    } else if (cyl && *j.ll >= *j.ul) {
+        d.error("cyl-without-stroke", dr.src.where("kind"),
+                trText("Diagnostics", "%1: the stroke of %2 is empty (LL %3 ≥ UL %4)")
+                    .with(driveOn(dr.joint))
+                    .with(jointNamed(j.id, j.name))
+                    .with(fmt(*j.ll))
+                    .with(fmt(*j.ul)),
+                trText("Diagnostics", "LL is the fully retracted and UL the fully extended coordinate"));
+    }
+    const auto pumpId = dr.param("PUMP");
+    if (pumpId && !spec.pump(static_cast<int>(*pumpId))) {
+        std::string ids;
+        for (const PumpSpec& p : spec.pumps) ids += (ids.empty() ? "" : ", ") + std::to_string(p.id);
+        d.error("undefined-pump", dr.src.where("PUMP"),
+                trText("Diagnostics", "%1: pump %2 is not defined").with(driveOn(dr.joint)).with(fmt(*pumpId)),
+                ids.empty() ? trText("Diagnostics", "add a PUMP id FLOW Qmax PRESSURE p_max statement")
+                            : trText("Diagnostics", "the pumps are %1").with(ids));
+    }
+}
+
 void checkDrives(const ModelSpec& spec, Diagnostics& d)
 {
     std::map<int, SourcePos> driven;
@@ -281,6 +327,10 @@ void checkDrives(const ModelSpec& spec, Diagnostics& d)
             continue;
         }
         if (!dr.src.complete) continue;
+        if (dr.isFluidPower()) {
+            checkFluidDrive(spec, dr, *j, d);
+            continue;
+        }
         if (dr.kind == DriveKind::Hydraulic && dr.param("PUMP") && j->type == JointType::Revolute) {
             d.error("pump-on-revolute", dr.src.where("PUMP"),
                     trText("Diagnostics", "%1: PUMP/BORE/ROD describe a cylinder, but %2 is revolute")

@@ -84,7 +84,7 @@ const std::vector<Case>& cases()
          R"pad(BODY 1 10 1 1 1
 )pad",
          {{"unknown-keyword",
-              "m.pad:1:1: error: unknown keyword 'BODY' [statements are GRAVITY, RESTITUTION, B, C (with B1, B2, CL1), D, F and G; comments start with // or #]"}}},
+              "m.pad:1:1: error: unknown keyword 'BODY' [statements are GRAVITY, RESTITUTION, FLUID, PUMP, B, C (with B1, B2, CL1), D, F and G; comments start with // or #]"}}},
         {"RestitutionOutOfRange",
          R"pad(RESTITUTION 1.5
 )pad",
@@ -531,7 +531,7 @@ D 1 MOTOR T0 1 W0 1
          std::string(kRevolute) + R"pad(D 1 ELECTRIC T0 1
 )pad",
          {{"unknown-drive-kind",
-              "m.pad:5:5: error: drive on joint 1: unknown drive kind 'ELECTRIC' [drive kinds are HYD, MOTOR, PNEU and SERVO]"}}},
+              "m.pad:5:5: error: drive on joint 1: unknown drive kind 'ELECTRIC' [drive kinds are HYD, MOTOR, PNEU, SERVO, CYL and HMOTOR]"}}},
         {"HydraulicVmaxAndPump",
          std::string(kPrismatic) + R"pad(D 1 HYD VMAX 1 PUMP 10 RPM 1000 BORE 0.1 ROD 0.05 PRESSURE 2e7
 )pad",
@@ -743,7 +743,7 @@ D 1 MOTOR T0 1 W0 1
          std::string(kRevolute) + R"pad(D 1
 )pad",
          {{"missing-drive-kind",
-              "m.pad:5:4: error: drive on joint 1: the drive kind is missing [write HYD, MOTOR, PNEU or SERVO after the joint id]"}}},
+              "m.pad:5:4: error: drive on joint 1: the drive kind is missing [write HYD, MOTOR, PNEU, SERVO, CYL or HMOTOR after the joint id]"}}},
         {"ForceKindMissing",
          std::string(kRevolute) + R"pad(F 2
 )pad",

@@ -1,0 +1,31 @@
+#include "solver/hydraulics/actuator.h"
+
+#include <algorithm>
+
+namespace solver::hydraulics {
+
+double actuatorForce(const CompiledCircuit& c, double pA, double pB, double qd)
+{
+    return std::max(0.0, pA) * c.areaA - std::max(0.0, pB) * c.areaB - c.friction * qd;
+}
+
+ChamberRates chamberRates(const CompiledCircuit& c, double bulk, double q, double qd, double pA, double pB, double qA,
+                          double qB)
+{
+    ChamberRates r;
+    r.dpA = bulk / c.volumeA(q) * (qA - c.areaA * qd);
+    r.dpB = bulk / c.volumeB(q) * (qB + c.areaB * qd);
+    // (reported as cavitation when the oil would leave faster than kCavitationFlow: a
+    // chamber at tank pressure at rest is not cavitating)
+    if (pA <= 0 && r.dpA < 0) {
+        if (qA - c.areaA * qd < -kCavitationFlow) r.cavitation |= 1;
+        r.dpA = 0;
+    }
+    if (pB <= 0 && r.dpB < 0) {
+        if (qB + c.areaB * qd < -kCavitationFlow) r.cavitation |= 2;
+        r.dpB = 0;
+    }
+    return r;
+}
+
+}  // namespace solver::hydraulics
