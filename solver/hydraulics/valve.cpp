@@ -13,13 +13,15 @@ double meterIn(const CompiledCircuit& c, double opening, double pS, double pFed,
 {
     const double dp = pS - pFed;
     if (c.comp != Compensation::None && dp >= c.dpn) return opening * c.qn;
+    // the section's load-check valve: no flow back from the chamber into the supply
+    if (dp <= 0) return 0;
     return c.k * opening * orificeRoot(dp, pLam);
 }
 
 double meterInSlope(const CompiledCircuit& c, double opening, double pS, double pFed, double pLam)
 {
     const double dp = pS - pFed;
-    if (c.comp != Compensation::None && dp >= c.dpn) return 0;
+    if ((c.comp != Compensation::None && dp >= c.dpn) || dp <= 0) return 0;
     return -c.k * opening * orificeSlope(dp, pLam);
 }
 

@@ -3,7 +3,8 @@
 // [−1, 1] follows the command u: ẋ = (u − x)/τ. x > 0 feeds chamber A from the supply
 // and drains B to tank; x < 0 the other way round:
 //   meter-in   Q = K·|x|·g(p_S − p_fed), or |x|·Qn with a compensator (PRE, POST) while
-//              p_S − p_fed ≥ Δpn;
+//              p_S − p_fed ≥ Δpn; never back into the supply (the section's load-check
+//              valve, in every load-sensing section: a starved load stops, it does not sink);
 //   meter-out  Q = K·|x|·g(p_drained) to tank (the orifice law, compensated or not).
 // An opening below kSpoolClosed is closed (the spool's overlap): no flow, and the pump
 // does not count the section as open.
@@ -16,7 +17,7 @@ namespace solver::hydraulics {
 double spoolRate(const CompiledCircuit& c, double x, double u);
 
 /// The meter-in flow into the fed chamber [m^3/s] at spool opening |x| = `opening`,
-/// supply p_S and fed-chamber pressure pFed (negative: back into the supply line).
+/// supply p_S and fed-chamber pressure pFed (≥ 0: the load-check valve).
 double meterIn(const CompiledCircuit& c, double opening, double pS, double pFed, double pLam);
 /// d(meterIn)/d(p_fed) (≤ 0), for the stiffness estimate.
 double meterInSlope(const CompiledCircuit& c, double opening, double pS, double pFed, double pLam);

@@ -413,7 +413,11 @@ void Simulation::initialPressures()
             continue;
         const double dq = m.coordinateRate(j, m_state.q[j]);
         if (dq == 0 || !std::isfinite(stop)) continue;
-        const double force = stop / dq;  // along q
+        // on a stop the load pulls away from, the actuator holds it there with 10 % to
+        // spare (pressed onto the stop: exactly the load would leave the stop's force at
+        // 0 and the joint on and off it with every rounding)
+        const double spare = m_state.limit[j] == LimitState::Free ? 1.0 : 1.1;
+        const double force = spare * stop / dq;  // along q
         if (force > 0) m_state.fluid[i + 1] = force / k.areaA;
         else m_state.fluid[i + 2] = -force / k.areaB;
     }
