@@ -59,6 +59,14 @@ struct Data {
     /// fastest pressure relaxation β/V·∂Q/∂p [1/s] with the spool's 1/τ: what the
     /// real-time integrator's sub-steps are chosen from (hydraulics/circuit.h).
     Eigen::VectorXd oilStiffness, fluidDecay;
+    /// Per joint: the least inertia the dynamics give the joint's own degree of freedom,
+    /// along the modeler's coordinate [kg or kg m^2] (an armature added where the
+    /// articulated inertia is below it: RBDA's D_i); empty: none. At the real-time
+    /// step h the Simulation sets oilSpringStep = h, and every evaluation of the
+    /// circuits then sets a fluid-power joint's floor to its oil stiffness·(h/0.6)², so
+    /// that the oil spring of a light part stays resolved (hydraulics/circuit.h).
+    Eigen::VectorXd inertiaFloor;
+    double oilSpringStep = 0;  ///< [s]; 0: no floor
 
     // ---- dynamics (solver/dynamics/forward_dynamics.h) ----------------------
     Eigen::VectorXd qdd;          ///< θ̈ (dim nb)

@@ -20,6 +20,15 @@ using Eigen::Vector3d;
 
 namespace {
 
+/// The joint's own inertia D (generalized, along θ) raised to its floor
+/// (Data::inertiaFloor, along q: times (dq/dθ)²), when there is one.
+double flooredInertia(const Data& data, int i, double D)
+{
+    if (data.inertiaFloor.size() == 0) return D;
+    const double floor = data.inertiaFloor[i] * data.dq[i] * data.dq[i];
+    return D < floor ? floor : D;
+}
+
 [[maybe_unused]] bool sized(const Model& model, const State& state, const Data& data)
 {
     const auto n = static_cast<Eigen::Index>(model.nb);
@@ -189,7 +198,7 @@ void hybridDynamicsFrom(const Model& model, const State& state, Data& data, Dyna
         if (!data.prescribed[i]) {
             Vector6d& U = data.U[i];
             U.noalias() = data.IA[i] * s;
-            const double D = s.dot(U);
+            const double D = flooredInertia(data, i, s.dot(U));
             const double u = data.tauKnown[i] - s.dot(data.pA[i]);
             data.D[i] = D;
             data.uA[i] = u;
@@ -259,7 +268,7 @@ void impulseResponse(const Model& model, const State& state, Data& data, const E
         if (!data.prescribed[i]) {
             Vector6d& U = data.U[i];
             U.noalias() = data.IA[i] * s;
-            const double D = s.dot(U);
+            const double D = flooredInertia(data, i, s.dot(U));
             const double u = freeImpulse[i] - s.dot(data.pA[i]);
             data.D[i] = D;
             data.uA[i] = u;
@@ -305,6 +314,7 @@ void constrainedDynamics(const Model& model, const State& state, Data& data)
     // mass matrix by composite rigid bodies (RBDA §6.2), the articulated inertias as scratch
     for (int i = 0; i < nb; ++i) data.Ib[i].toMatrix(data.IA[i]);
     massMatrixFromInertias(model, data, data.IA, data.M);
+    for (Eigen::Index i = 0; i < data.inertiaFloor.size(); ++i) data.M(i, i) = flooredInertia(data, static_cast<int>(i), data.M(i, i));
 
     // bias: accelerations and generalized forces at θ̈ = 0 (RNEA)
     data.a0.resize(static_cast<std::size_t>(nb));

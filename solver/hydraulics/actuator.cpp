@@ -15,14 +15,16 @@ ChamberRates chamberRates(const CompiledCircuit& c, double bulk, double q, doubl
     ChamberRates r;
     r.dpA = bulk / c.volumeA(q) * (qA - c.areaA * qd);
     r.dpB = bulk / c.volumeB(q) * (qB + c.areaB * qd);
-    // (reported as cavitation when the oil would leave faster than kCavitationFlow: a
-    // chamber at tank pressure at rest is not cavitating)
+    // (reported as cavitation only when the oil would leave faster than 5 % of the
+    // valve's nominal flow: a chamber at tank pressure at rest, or crept on by a
+    // neighbour's motion, is not cavitating)
+    const double outflow = std::max(kCavitationFlow, kCavitationFraction * c.qn);
     if (pA <= 0 && r.dpA < 0) {
-        if (qA - c.areaA * qd < -kCavitationFlow) r.cavitation |= 1;
+        if (qA - c.areaA * qd < -outflow) r.cavitation |= 1;
         r.dpA = 0;
     }
     if (pB <= 0 && r.dpB < 0) {
-        if (qB + c.areaB * qd < -kCavitationFlow) r.cavitation |= 2;
+        if (qB + c.areaB * qd < -outflow) r.cavitation |= 2;
         r.dpB = 0;
     }
     return r;

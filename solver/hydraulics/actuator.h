@@ -14,8 +14,12 @@ namespace solver::hydraulics {
 /// The force (or torque) along +q [N or N m] at pressures pA, pB (taken ≥ 0) and rate qd.
 double actuatorForce(const CompiledCircuit& c, double pA, double pB, double qd);
 
-/// The net outflow [m^3/s] from a chamber at 0 Pa above which it is said to cavitate.
-inline constexpr double kCavitationFlow = 1e-7;
+/// A chamber at 0 Pa is said to cavitate while the oil would leave it faster than this
+/// fraction of its valve's nominal flow (and than kCavitationFlow): at 0 the chamber is
+/// topped up from tank (a make-up valve) as long as the load only creeps ahead of the
+/// oil; a load running away empties it.
+inline constexpr double kCavitationFraction = 0.05;
+inline constexpr double kCavitationFlow = 1e-7;  ///< [m^3/s]
 
 struct ChamberRates {
     double dpA = 0, dpB = 0;  ///< [Pa/s]

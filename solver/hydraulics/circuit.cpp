@@ -14,7 +14,8 @@ void evaluateHydraulics(const Model& model, const State& state, Data& data)
     if (model.circuits.empty()) return;
     const double bulk = model.fluid.bulk, pLam = model.fluid.laminar;
     for (std::size_t p = 0; p < model.pumps.size(); ++p) {
-        const PumpOperatingPoint op = operatePump(model, static_cast<int>(p), state.fluid);
+        const PumpOperatingPoint op =
+            operatePump(model, static_cast<int>(p), state.fluid, data.supplyPressure[static_cast<Eigen::Index>(p)]);
         data.supplyPressure[static_cast<Eigen::Index>(p)] = op.supply;
         data.pumpFlow[static_cast<Eigen::Index>(p)] = op.flow;
         data.pumpDemand[static_cast<Eigen::Index>(p)] = op.demand;
@@ -47,6 +48,10 @@ void evaluateHydraulics(const Model& model, const State& state, Data& data)
         data.cavitation[c] = r.cavitation;
         const double vA = k.volumeA(q), vB = k.volumeB(q);
         data.oilStiffness[ci] = bulk * (k.areaA * k.areaA / vA + k.areaB * k.areaB / vB);
+        if (data.oilSpringStep > 0 && model.drive[static_cast<std::size_t>(j)].type == DriveType::FluidPower) {
+            const double r = data.oilSpringStep / kOilSpringStep;
+            data.inertiaFloor[j] = data.oilStiffness[ci] * r * r;
+        }
         const double gA = f.slopeA + (pA > pump.pmax ? k.reliefGain : 0.0);
         const double gB = f.slopeB + (pB > pump.pmax ? k.reliefGain : 0.0);
         data.fluidDecay[ci] = std::max({bulk / vA * gA, bulk / vB * gB, 1.0 / k.tau});
@@ -59,6 +64,7 @@ int substeps(const Model& model, const State& state, const Data& data, double h)
     for (std::size_t c = 0; c < model.circuits.size(); ++c) {
         const auto ci = static_cast<Eigen::Index>(c);
         const int j = model.circuits[c].joint;
+        if (model.drive[static_cast<std::size_t>(j)].type != DriveType::FluidPower) continue;  // passive, burst
         need = std::max(need, data.fluidDecay[ci] * h / 1.8);
         if (state.limit[j] != LimitState::Free) continue;  // held: no oil spring on it
         const double dq = model.coordinateRate(j, state.q[j]);
@@ -68,7 +74,7 @@ int substeps(const Model& model, const State& state, const Data& data, double h)
         if (!(inertia > 0) && data.M.rows() > j) inertia = data.M(j, j);
         if (!(inertia > 0) || dq == 0) continue;
         const double omega = std::sqrt(data.oilStiffness[ci] * dq * dq / inertia);
-        need = std::max(need, omega * h / 0.6);
+        need = std::max(need, omega * h / kOilSpringStep);
         // viscous friction on a light part: the rate's relaxation c/m
         need = std::max(need, model.circuits[c].friction * dq * dq / inertia * h / 1.8);
     }

@@ -10,14 +10,10 @@ namespace solver::hydraulics {
 
 namespace {
 
-struct Section {
-    double opening, pFed;
-};
-
-/// Σ meter-in flows of pump p's sections at supply pS.
-double demandAt(const Model& model, int p, const Eigen::VectorXd& fluid, double pS)
+/// Σ meter-in flows of pump p's sections at supply pS, and its derivative in pS.
+double demandAt(const Model& model, int p, const Eigen::VectorXd& fluid, double pS, double* slope = nullptr)
 {
-    double sum = 0;
+    double sum = 0, ds = 0;
     const double pLam = model.fluid.laminar;
     for (std::size_t c = 0; c < model.circuits.size(); ++c) {
         const CompiledCircuit& k = model.circuits[c];
@@ -25,15 +21,18 @@ double demandAt(const Model& model, int p, const Eigen::VectorXd& fluid, double 
         const Eigen::Index i = kFluidStates * static_cast<Eigen::Index>(c);
         const double x = fluid[i];
         if (std::abs(x) < kSpoolClosed) continue;
+        const double opening = std::min(1.0, std::abs(x));
         const double pFed = std::max(0.0, x > 0 ? fluid[i + 1] : fluid[i + 2]);
-        sum += meterIn(k, std::min(1.0, std::abs(x)), pS, pFed, pLam);
+        sum += meterIn(k, opening, pS, pFed, pLam);
+        if (slope) ds -= meterInSlope(k, opening, pS, pFed, pLam);  // (meterInSlope is ∂/∂p_fed = −∂/∂p_S)
     }
+    if (slope) *slope = ds;
     return sum;
 }
 
 }  // namespace
 
-PumpOperatingPoint operatePump(const Model& model, int p, const Eigen::VectorXd& fluid)
+PumpOperatingPoint operatePump(const Model& model, int p, const Eigen::VectorXd& fluid, double guess)
 {
     const CompiledPump& pump = model.pumps[static_cast<std::size_t>(p)];
     PumpOperatingPoint op;
@@ -60,31 +59,25 @@ PumpOperatingPoint operatePump(const Model& model, int p, const Eigen::VectorXd&
         op.flow = pump.qmax;
         return op;
     }
-    // the supply at which the flows add up to Qmax: the Illinois method on [0, p_S]
-    // (the demand rises with the supply; at 0 it is ≤ 0 < Qmax)
+    // the supply at which the flows add up to Qmax, in [0, p_S] (the demand rises with
+    // the supply; at 0 it is 0 < Qmax): Newton from `guess` (the last evaluation's
+    // supply: a step's stages lie close together), kept inside the bracket, bisecting
+    // where Newton would leave it or the demand is flat
     double lo = 0, hi = op.supply;
-    double flo = demandAt(model, p, fluid, lo) - pump.qmax, fhi = op.demand - pump.qmax;
-    int side = 0;
-    for (int iter = 0; iter < 60 && hi - lo > 1e-9 * pump.pmax; ++iter) {
-        const double mid = std::clamp(hi - fhi * (hi - lo) / (fhi - flo), lo, hi);
-        const double fmid = demandAt(model, p, fluid, mid) - pump.qmax;
-        if (std::abs(fmid) <= 1e-12 * pump.qmax) {
-            lo = hi = mid;
-            break;
-        }
-        if ((fmid > 0) == (fhi > 0)) {
-            hi = mid;
-            fhi = fmid;
-            if (side == -1) flo *= 0.5;
-            side = -1;
-        } else {
-            lo = mid;
-            flo = fmid;
-            if (side == +1) fhi *= 0.5;
-            side = +1;
-        }
+    double x = guess > lo && guess < hi ? guess : 0.5 * (lo + hi);
+    const double tolFlow = 1e-10 * pump.qmax;
+    for (int iter = 0; iter < 100; ++iter) {
+        double slope = 0;
+        const double f = demandAt(model, p, fluid, x, &slope) - pump.qmax;
+        if (std::abs(f) <= tolFlow) break;
+        if (f > 0) hi = x;
+        else lo = x;
+        if (hi - lo <= 1e-12 * pump.pmax) break;
+        double next = slope > 0 ? x - f / slope : -1;
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        x = next;
     }
-    op.supply = 0.5 * (lo + hi);
+    op.supply = x;
     op.flow = demandAt(model, p, fluid, op.supply);
     return op;
 }

@@ -22,7 +22,9 @@ struct PumpOperatingPoint {
 };
 
 /// The operating point of pump `p` (index in model.pumps) at the fluid states `fluid`
-/// (State::fluid). Pressures below 0 count as 0. No allocation.
-PumpOperatingPoint operatePump(const Model& model, int p, const Eigen::VectorXd& fluid);
+/// (State::fluid). Pressures below 0 count as 0. A saturated supply is solved for by
+/// Newton's method, safeguarded by bisection, from `guess` (the last evaluation's
+/// supply pressure; any value outside the bracket starts from its middle). No allocation.
+PumpOperatingPoint operatePump(const Model& model, int p, const Eigen::VectorXd& fluid, double guess = -1);
 
 }  // namespace solver::hydraulics

@@ -201,6 +201,13 @@ public:
         return hydraulics::substeps(*m_model, m_work, m_data, h);
     }
 
+    /// The fixed step whose oil springs the evaluations keep resolved (Data::oilSpringStep).
+    void setOilSpringStep(double h)
+    {
+        m_data.oilSpringStep = h;
+        m_data.inertiaFloor.setZero(m_model->nb);
+    }
+
     /// The model the dynamics run on from now on (same size: the simulation's, after a
     /// drive fault was set or cleared; the number of event functions does not change).
     void setModel(const Model& model) { m_model = &model; }
@@ -334,6 +341,11 @@ std::shared_ptr<const Model> adapt(std::shared_ptr<const Model> model, const Sim
 {
     if (o.drives && o.limits) return model;
     auto m = std::make_shared<Model>(*model);
+    if (!o.drives) {
+        // no drives: no circuits either (nothing would act on the joints)
+        m->pumps.clear();
+        m->circuits.clear();
+    }
     for (int j = 0; j < m->nb; ++j) {
         if (!o.drives) m->drive[j] = CompiledDrive{};
         if (!o.limits) {
@@ -368,6 +380,12 @@ Simulation::Simulation(std::shared_ptr<const Model> model, const SimulationOptio
     m_system = std::make_unique<System>(*m_model, m_state, m_options.limits, m_faulted);
     IntegratorOptions io = m_options.integrator;
     if (io.method != IntegrationMethod::Rk4Fixed && io.maxStep == 0) io.maxStep = kDefaultMaxStep;
+    // fluid power at the fixed step: light parts get their actuator's moving mass
+    if (io.method == IntegrationMethod::Rk4Fixed && !m_model->circuits.empty()) {
+        m_data.oilSpringStep = io.step;
+        m_data.inertiaFloor.setZero(m_model->nb);
+        m_system->setOilSpringStep(io.step);
+    }
     if (m_model->nb > 0) m_integrator = std::make_unique<Integrator>(*m_system, io);
     // with loops, the initial rates of the dependent coordinates follow from the others'
     if (!m_model->cuts.empty()) {
@@ -513,7 +531,8 @@ CompiledDrive burstDrive(const DriveFault& f)
 
 bool Simulation::setDriveFault(int joint, const DriveFault& fault)
 {
-    if (joint < 0 || joint >= m_base->nb || !isHydraulic(*m_base, joint)) return false;
+    if (joint < 0 || joint >= m_base->nb) return false;
+    if (!isHydraulic(*m_base, joint) && m_base->drive[joint].type != DriveType::FluidPower) return false;
     if (!(fault.damping >= 0) || !(fault.maxForce >= 0)) return false;  // (NaN fails too)
     m_faults[joint] = fault;
     m_faulted[joint] = 1;

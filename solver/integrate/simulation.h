@@ -140,8 +140,10 @@ public:
     /// joint's rate is kept (no jump: the load starts from where it was moving), its
     /// relief valve is taken as closed and raises no events, its command (state().u)
     /// is kept but does nothing; at a limit it leaves the stop when the dynamics pull it
-    /// away (as a passive joint). Returns false, changing nothing, when i is out of
-    /// range, the joint has no hydraulic drive, or a value is negative or not a number.
+    /// away (as a passive joint). A fluid-power drive (CYL/HMOTOR) takes the same law:
+    /// its chambers' pressures no longer act on the joint. Returns false, changing
+    /// nothing, when i is out of range, the joint has no hydraulic or fluid-power drive,
+    /// or a value is negative or not a number.
     /// Allocates (a copy of the model): call it between steps, not inside a step loop
     /// that must not allocate.
     bool setDriveFault(int joint, const DriveFault& fault);

@@ -137,6 +137,18 @@ TEST(StepAllocation, ANewCommandEveryStepAllocatesNothing)
     EXPECT_EQ(commandedStepAllocations(liner(), 2000, &events), 0) << "2000 RK4 steps with new commands";
 }
 
+TEST(StepAllocation, TheFluidPowerLinerAllocatesNothing)
+{
+    // one load-sensing pump, nine valve sections, the chambers' pressures as states:
+    // pump saturation (the supply solved for), reliefs, cavitation events and sub-steps
+    solver::CompiledModel loaded =
+        solver::compileFile(std::string(PADROB_SOURCE_DIR) + "/models/liner_manipulator_fluid.pad");
+    ASSERT_TRUE(loaded.ok());
+    ASSERT_FALSE(loaded.model->circuits.empty());
+    int events = 0;
+    EXPECT_EQ(commandedStepAllocations(loaded.model, 2000, &events), 0) << "2000 RK4 steps with new commands";
+}
+
 TEST(StepAllocation, ImpulsesOnFreeJointsAllocateNothing)
 {
     // a chain with passive joints between the drives: every new command gives the free

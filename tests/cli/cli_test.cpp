@@ -67,7 +67,7 @@ TEST(Cli, CheckReportsEveryErrorInCompilerFormat)
     CliRun r = padrob("check '" + path + "'");
     EXPECT_EQ(r.status, 1);
     EXPECT_EQ(r.out, path + ":2:5: error: body 1: '2,5' is not a number [use '.' as the decimal separator: 2.5]\n" +
-                         path + ":3:1: error: unknown keyword 'FOO' [statements are GRAVITY, RESTITUTION, B, C (with B1, B2, CL1), D, F and G; "
+                         path + ":3:1: error: unknown keyword 'FOO' [statements are GRAVITY, RESTITUTION, FLUID, PUMP, B, C (with B1, B2, CL1), D, F and G; "
                                 "comments start with // or #]\n" +
                          path + ":6:4: error: joint 1: body 7 (B2) is not defined [add 'B 7 m Ixx Iyy Izz', or use an existing body]\n" +
                          path + ": 3 errors\n");
@@ -192,6 +192,43 @@ TEST(CliSimulate, InputsDriveTheCylindersAndEventsGoToStderr)
         p = c + 1;
     }
     EXPECT_NEAR(v[3], 0.5 * vmax, 1e-9);  // q3
+}
+
+TEST(CliSimulate, FluidPowerColumnsAfterTheForces)
+{
+    // pA<j>,pB<j> per CYL/HMOTOR drive in joint id order, then pP<id> per pump, then E
+    const std::string model = writeTemp("fluid.pad", R"pad(GRAVITY 0 0 -9.81
+PUMP 4 FLOW 2e-3 PRESSURE 20e6 NAME "main"
+B 1 1000 10 10 10
+C 2 T 2 LL 0 UL 1 QI 0.3 NAME "lift"
+B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 1
+B2 1 P2 0 0 0 A2 1 0 0 R2 0 0 1
+D 2 CYL PUMP 4 BORE 0.1 ROD 0.05 VALVE 1e-3 DP 1e6 COMP PRE
+)pad");
+    const std::string input = writeTemp("fluid_in.csv", "t,u2\n0,1\n");
+    CliRun r = padrob("simulate '" + model + "' --time 1 --every 1000 --input '" + input + "'");
+    ASSERT_EQ(r.status, 0) << r.err;
+    auto rows = lines(r.out);
+    ASSERT_EQ(rows.size(), 3u);
+    EXPECT_EQ(rows[0], "t,q2,qd2,x1,y1,z1,F2,pA2,pB2,pP4,E");
+    // at rest: the holding pressure m·g/A_A; the pump at its setting
+    EXPECT_NE(rows[1].find(",1249047.99338"), std::string::npos) << rows[1];
+    EXPECT_NE(rows[1].find(",2e+07,"), std::string::npos) << rows[1];
+    // lifting at Qn/A_A = 0.1273 m/s (compensated)
+    const std::string last = rows[2];
+    const double qd = std::stod(last.substr(last.find(',', last.find(',') + 1) + 1));
+    EXPECT_NEAR(qd, 1e-3 / (3.14159265358979 / 4 * 0.01), 0.002);
+
+    CliRun info = padrob("info --json '" + model + "'");
+    ASSERT_EQ(info.status, 0) << info.err;
+    std::string compact;  // (pretty-printed: compared without the white space)
+    for (char c : info.out) {
+        if (c != ' ' && c != '\n') compact += c;
+    }
+    for (const char* key : {"\"pumps\":", "\"circuits\":", "\"load_sensing\":false", "\"kind\":\"CYL\"",
+                            "\"compensation\":\"PRE\"", "\"drives\":[2]"}) {
+        EXPECT_NE(compact.find(key), std::string::npos) << key << "\n" << info.out;
+    }
 }
 
 TEST(CliSimulate, LimitEventsAreReported)

@@ -63,6 +63,8 @@ const char* TutorialEvent::key(Kind k)
     case Kind::WorkerHit: return "worker-hit";
     case Kind::Overload: return "overload";
     case Kind::LimitBang: return "limit-bang";
+    case Kind::Saturation: return "pump-saturation";
+    case Kind::Cavitation: return "cavitation";
     case Kind::TimeUp: return "time-up";
     case Kind::InputEnded: return "input-ended";
     case Kind::SolverError: return "solver-error";
@@ -89,6 +91,8 @@ QString TutorialEvent::label(Kind k)
     case Kind::WorkerHit: return Tr::tr("Worker hit");
     case Kind::Overload: return Tr::tr("Overload");
     case Kind::LimitBang: return Tr::tr("Limit bang");
+    case Kind::Saturation: return Tr::tr("Pump saturated");
+    case Kind::Cavitation: return Tr::tr("Cavitation");
     case Kind::TimeUp: return Tr::tr("Time up");
     case Kind::InputEnded: return Tr::tr("Input ended");
     case Kind::SolverError: return Tr::tr("Simulation stopped");
@@ -171,6 +175,9 @@ QString TutorialEvent::text(const Tutorial* tutorial, const std::string& languag
     case Kind::WorkerHit: return Tr::tr("Touched %1: the attempt ends").arg(d);
     case Kind::Overload: return Tr::tr("Relief valve of %1 opened (%2 kN)").arg(d, shown(value / 1000.0, 1));
     case Kind::LimitBang: return Tr::tr("%1 hit its end stop at full speed").arg(d);
+    case Kind::Saturation:
+        return Tr::tr("The pump %1 could not give the %2 L/min the levers asked for: every function slowed").arg(d, v);
+    case Kind::Cavitation: return Tr::tr("%1 ran ahead of the oil: its cylinder cavitated").arg(d);
     case Kind::TimeUp: return Tr::tr("The time limit was reached");
     case Kind::InputEnded: return Tr::tr("The recorded input ended before the goals were done");
     case Kind::SolverError: return Tr::tr("The simulation stopped: %1").arg(detailText.empty() ? d : translated(detailText));
@@ -339,8 +346,21 @@ void TutorialSession::handleSolverEvents(const std::vector<solver::SimulationEve
     const Scoring& sc = m_tutorial->scoring();
     using K = solver::SimulationEvent::Kind;
     for (const solver::SimulationEvent& e : events) {
+        if (e.kind == K::PumpSaturation) {
+            // fluid power: more asked of the pump than it gives (each time it starts)
+            if (e.side > 0 && e.pump >= 0 && std::size_t(e.pump) < m.pumps.size()) {
+                const solver::CompiledPump& p = m.pumps[std::size_t(e.pump)];
+                addEvent(TutorialEvent::Kind::Saturation, e.value * 60000.0, sc.overloadPenalty,
+                         p.name.empty() ? "PUMP " + std::to_string(p.id) : p.name);
+            }
+            continue;
+        }
         const int j = e.joint;
         if (j < 0 || j >= m.nb) continue;
+        if (e.kind == K::Cavitation) {
+            if (e.side > 0) addEvent(TutorialEvent::Kind::Cavitation, 0.0, sc.overloadPenalty, driveName(j));
+            continue;
+        }
         const bool driven = m.drive[j].type != solver::DriveType::None;
         if (e.kind == K::ReliefOpen) {
             m_reliefOpen[std::size_t(j)] = 1;
@@ -352,8 +372,13 @@ void TutorialSession::handleSolverEvents(const std::vector<solver::SimulationEve
             const double signedRate = qdBefore[std::size_t(j)] * m.coordinateRate(j, m_sim->state().q[j]);
             const double rate = std::abs(signedRate);
             // the speed of that direction (a cylinder retracts faster than it extends)
-            const double top = d.type == solver::DriveType::Motor ? d.w0
-                               : signedRate >= 0 ? d.vmax : (d.vmin > 0 ? d.vmin : d.vmax);
+            double top = d.type == solver::DriveType::Motor ? d.w0
+                         : signedRate >= 0 ? d.vmax : (d.vmin > 0 ? d.vmin : d.vmax);
+            if (d.type == solver::DriveType::FluidPower) {
+                // the valve's nominal flow over the area it fills
+                const solver::CompiledCircuit& c = m.circuits[std::size_t(d.circuit)];
+                top = c.qn / (signedRate >= 0 ? c.areaA : c.areaB);
+            }
             if (top > 0 && rate > sc.limitSpeedFraction * top) {
                 addEvent(TutorialEvent::Kind::LimitBang, rate, sc.limitPenalty, driveName(j));
             }
@@ -748,7 +773,8 @@ int TutorialSession::findDrive(const std::string& name, QString* error) const
     const QString wanted = QString::fromStdString(name).trimmed();
     QStringList valid;
     for (int j = 0; j < m.nb; ++j) {
-        if (m.drive[std::size_t(j)].type != solver::DriveType::Hydraulic) continue;
+        const solver::DriveType type = m.drive[std::size_t(j)].type;
+        if (type != solver::DriveType::Hydraulic && type != solver::DriveType::FluidPower) continue;
         const QString n = QString::fromStdString(driveName(j));
         if (n.compare(wanted, Qt::CaseInsensitive) == 0) return j;
         valid << n;

@@ -40,6 +40,8 @@ struct TutorialEvent {
         WorkerHit,    ///< touched a person: the attempt ends
         Overload,     ///< a relief valve opened (penalty); detail: the drive
         LimitBang,    ///< a drive hit its end stop fast (penalty)
+        Saturation,   ///< fluid power: the pump could not give what the valves asked (penalty as Overload); detail: the pump
+        Cavitation,   ///< fluid power: a load ran ahead of the oil (penalty as Overload); detail: the drive
         TimeUp,       ///< the time limit: the attempt ends
         InputEnded,   ///< a replayed input ran out before the goals were done
         SolverError,  ///< the simulation failed (a loop locked…): the attempt ends
