@@ -508,7 +508,12 @@ void Simulation::setCommand(int joint, double u)
     u = std::isfinite(u) ? std::clamp(u, -1.0, 1.0) : 0.0;
     if (m_state.u[joint] != u) {
         m_state.u[joint] = u;
-        m_restart = true;
+        // a fluid-power valve's spool is a state: a new command changes only the spool's
+        // rate, which RK4 takes from its next stage on (no restart; the adaptive
+        // integrators restart, as for any discontinuity)
+        const bool spoolOnly = m_options.integrator.method == IntegrationMethod::Rk4Fixed &&
+                               m_model->drive[joint].type == DriveType::FluidPower;
+        if (!spoolOnly) m_restart = true;
     }
 }
 
