@@ -3,6 +3,7 @@
 #include "ide/studio/dialogs/inertia_dialog.h"
 #include "ide/studio/editor/editor_panel.h"
 #include "ide/studio/plots/plot_panel.h"
+#include "ide/studio/sim/hydraulic_panel.h"
 #include "ide/studio/sim/keyboard_input.h"
 #include "ide/studio/station/station_page.h"
 #include "ide/studio/train/train_page.h"
@@ -171,6 +172,13 @@ MainWindow::MainWindow(QWidget* parent)
     m_hud->hide();
     m_viewports->addOverlay(m_hud);  // the 3D views' native windows would hide it: drawn in their frames
     m_plots->setRunner(m_runner.get());
+    m_hydraulics->setRunner(m_runner.get());
+    // the hydraulics dock comes with a model that has pumps and goes with one that has none
+    connect(m_hydraulics, &HydraulicPanel::modelChanged, this, [this](bool fluid) {
+        if (int(fluid) == m_fluidPower || !m_runner->bundle()) return;
+        m_fluidPower = int(fluid);
+        m_hydraulicsDock->setVisible(fluid);
+    });
     connect(m_plots, &PlotPanel::exportFailed, this,
             [this](const QString& message) { QMessageBox::warning(this, tr("Export"), message); });
 
@@ -251,7 +259,12 @@ void MainWindow::buildWorkspaces()
     m_treeDock->raise();
     m_editorDock = dock("EditorDock", m_editor, Qt::RightDockWidgetArea);
     m_plotsDock = dock("PlotsDock", m_plots, Qt::BottomDockWidgetArea);
+    m_hydraulics = new HydraulicPanel;
+    m_hydraulicsDock = dock("HydraulicsDock", m_hydraulics, Qt::BottomDockWidgetArea);
+    m_modelSpace->splitDockWidget(m_plotsDock, m_hydraulicsDock, Qt::Horizontal);
+    m_hydraulicsDock->hide();  // (until a model with pumps)
     m_modelSpace->resizeDocks({m_treeDock, m_editorDock}, {320, 560}, Qt::Horizontal);
+    m_modelSpace->resizeDocks({m_plotsDock, m_hydraulicsDock}, {900, 560}, Qt::Horizontal);
     m_modelSpace->resizeDocks({m_plotsDock}, {240}, Qt::Vertical);
 
     m_workspaces->addWidget(m_modelSpace);
@@ -516,6 +529,7 @@ void MainWindow::retranslate()
     m_sliderDock->setWindowTitle(tr("Joints"));
     m_editorDock->setWindowTitle(tr("Editor"));
     m_plotsDock->setWindowTitle(tr("Plots"));
+    m_hydraulicsDock->setWindowTitle(tr("Hydraulics"));
 
     // the menus
     MenuItems& m = *m_items;

@@ -9,8 +9,10 @@
 // mode bar and menus; Ctrl+Shift+F12 and the trainer's PIN (QSettings "trainer/pin";
 // none set: the keys alone) leave it. The Model workspace is an inner main
 // window whose central widget is the 3D viewport layout, with docks for the model
-// tree, the joint sliders, the editor (with its problems list) and the plots; its
-// dock layout and the window geometry persist in QSettings, as do the recent files.
+// tree, the joint sliders, the editor (with its problems list), the plots and the
+// hydraulics (HydraulicPanel, beside the plots: shown when a model with pumps is
+// applied, hidden when one without is); its dock layout and the window geometry
+// persist in QSettings, as do the recent files.
 //
 // Language: Settings ▸ Language ▸ Español / English (i18n::switchTo, remembered for the
 // next start) changes every text of the running window: each widget re-sets its texts
@@ -50,6 +52,7 @@ struct StationProfile;
 namespace studio {
 
 class EditorPanel;
+class HydraulicPanel;
 class InertiaDialog;
 class JointSliders;
 class KeyboardInput;
@@ -91,6 +94,7 @@ public:
     ModelTree* modelTree() const { return m_tree; }
     JointSliders* sliders() const { return m_sliders; }
     PlotPanel* plots() const { return m_plots; }
+    HydraulicPanel* hydraulics() const { return m_hydraulics; }
     SimulationRunner* runner() const { return m_runner.get(); }
     /// The operator's station (input thread): devices, calibration, mapping → commands.
     trainer::Station* station() const { return m_station.get(); }
@@ -182,11 +186,14 @@ private:
     ModelTree* m_tree = nullptr;
     JointSliders* m_sliders = nullptr;
     PlotPanel* m_plots = nullptr;
+    HydraulicPanel* m_hydraulics = nullptr;
+    int m_fluidPower = -1;  ///< the applied model has pumps (1) or not (0); −1 before the first
     QList<QDockWidget*> m_docks;
     QDockWidget* m_treeDock = nullptr;
     QDockWidget* m_sliderDock = nullptr;
     QDockWidget* m_editorDock = nullptr;
     QDockWidget* m_plotsDock = nullptr;
+    QDockWidget* m_hydraulicsDock = nullptr;
     std::unique_ptr<MenuItems> m_items;
     QActionGroup* m_workspaceGroup = nullptr;
     QList<QAction*> m_workspaceActions;

@@ -152,10 +152,16 @@ void PlotPanel::retranslate()
 QString PlotPanel::labelOf(const Signal& s) const
 {
     if (s.kind == Kind::Energy) return tr("mechanical energy [J]");
-    const QString joint = s.jointName.isEmpty() ? tr("C %1").arg(s.jointId) : tr("C %1 %2").arg(s.jointId).arg(s.jointName);
     // the symbols are the same in every language, but the drive's force
     const QString symbol = s.kind == Kind::Force ? tr("F drive") : s.symbol;
-    return tr("%1 %2 [%3]", "a signal: the joint, the quantity's symbol, its unit").arg(joint, symbol, s.unit);
+    return tr("%1 %2 [%3]", "a signal: the joint, the quantity's symbol, its unit").arg(ownerOf(s), symbol, s.unit);
+}
+
+QString PlotPanel::ownerOf(const Signal& s) const
+{
+    if (s.isPump())
+        return s.ownerName.isEmpty() ? tr("pump %1").arg(s.ownerId) : tr("pump %1 %2").arg(s.ownerId).arg(s.ownerName);
+    return s.ownerName.isEmpty() ? tr("C %1").arg(s.ownerId) : tr("C %1 %2").arg(s.ownerId).arg(s.ownerName);
 }
 
 PlotPanel::~PlotPanel() = default;
@@ -180,25 +186,32 @@ void PlotPanel::setBundle(std::shared_ptr<const ModelBundle> bundle)
             const QString rate = turns ? QStringLiteral("rad/s") : QStringLiteral("m/s");
             const QString force = turns ? QStringLiteral("N m") : QStringLiteral("N");
             auto add = [&](Kind kind, const QString& prefix, const QString& symbol, const QString& unit) {
-                Signal s;
-                s.kind = kind;
-                s.tree = i;
-                s.key = prefix + QLatin1Char(':') + QString::number(id);
-                s.unit = unit;
-                s.symbol = symbol;
-                s.jointId = id;
-                s.jointName = name;
-                m_signals.push_back(s);
+                addSignal(kind, prefix, symbol, unit, id, name).tree = i;
             };
             add(Kind::Q, QStringLiteral("q"), QStringLiteral("q"), length);
             add(Kind::Qd, QStringLiteral("qd"), QStringLiteral("dq/dt"), rate);
             if (m.drive[k].type != solver::DriveType::None) add(Kind::Force, QStringLiteral("f"), QStringLiteral("F"), force);
+            if (m.drive[k].type == solver::DriveType::FluidPower) {
+                // the chambers' pressures, in MPa (the panel's numbers)
+                add(Kind::PressureA, QStringLiteral("pA"), QStringLiteral("p_A"), QStringLiteral("MPa"));
+                m_signals.back().index = m.drive[k].circuit;
+                add(Kind::PressureB, QStringLiteral("pB"), QStringLiteral("p_B"), QStringLiteral("MPa"));
+                m_signals.back().index = m.drive[k].circuit;
+            }
             add(Kind::Ma, QStringLiteral("Ma"), QStringLiteral("M_A"), QStringLiteral("N m"));
             add(Kind::Mr, QStringLiteral("Mr"), QStringLiteral("M_R"), QStringLiteral("N m"));
             add(Kind::Mt, QStringLiteral("Mt"), QStringLiteral("M_T"), QStringLiteral("N m"));
             add(Kind::Fa, QStringLiteral("Fa"), QStringLiteral("F_A"), QStringLiteral("N"));
             add(Kind::Fr, QStringLiteral("Fr"), QStringLiteral("F_R"), QStringLiteral("N"));
             add(Kind::Ft, QStringLiteral("Ft"), QStringLiteral("F_T"), QStringLiteral("N"));
+        }
+        for (std::size_t p = 0; p < m.pumps.size(); ++p) {
+            const int id = m.pumps[p].id;
+            const QString name = QString::fromStdString(m.pumps[p].name);
+            addSignal(Kind::Supply, QStringLiteral("pS"), QStringLiteral("p_S"), QStringLiteral("MPa"), id, name).index =
+                int(p);
+            addSignal(Kind::PumpFlow, QStringLiteral("Qp"), QStringLiteral("Q"), QStringLiteral("L/min"), id, name).index =
+                int(p);
         }
         Signal e;
         e.kind = Kind::Energy;
@@ -214,6 +227,20 @@ void PlotPanel::setBundle(std::shared_ptr<const ModelBundle> bundle)
     rebuildList();
     rebuildCharts();
     if (before != m_selected) emit selectionChanged();
+}
+
+PlotPanel::Signal& PlotPanel::addSignal(Kind kind, const QString& prefix, const QString& symbol, const QString& unit,
+                                        int ownerId, const QString& ownerName)
+{
+    Signal s;
+    s.kind = kind;
+    s.key = prefix + QLatin1Char(':') + QString::number(ownerId);
+    s.unit = unit;
+    s.symbol = symbol;
+    s.ownerId = ownerId;
+    s.ownerName = ownerName;
+    m_signals.push_back(s);
+    return m_signals.back();
 }
 
 void PlotPanel::setRunner(SimulationRunner* runner)
@@ -258,6 +285,10 @@ void PlotPanel::addSnapshot(const Snapshot& snapshot)
         }
     }
     auto at = [](const Eigen::VectorXd& v, int i) { return i >= 0 && i < v.size() ? v[i] : kNaN; };
+    const auto& circuits = snapshot.circuits;
+    const auto& pumps = snapshot.pumps;
+    auto circuit = [&](int i) { return i >= 0 && std::size_t(i) < circuits.size() ? &circuits[std::size_t(i)] : nullptr; };
+    auto pump = [&](int i) { return i >= 0 && std::size_t(i) < pumps.size() ? &pumps[std::size_t(i)] : nullptr; };
     Sample sample;
     sample.t = snapshot.t;
     sample.values.resize(m_signals.size());
@@ -268,6 +299,18 @@ void PlotPanel::addSnapshot(const Snapshot& snapshot)
         case Kind::Q: v = at(snapshot.q, s.tree); break;
         case Kind::Qd: v = at(snapshot.qd, s.tree); break;
         case Kind::Force: v = at(snapshot.driveForce, s.tree); break;
+        case Kind::PressureA:
+            if (const CircuitSnapshot* c = circuit(s.index)) v = c->pressureA * 1e-6;
+            break;
+        case Kind::PressureB:
+            if (const CircuitSnapshot* c = circuit(s.index)) v = c->pressureB * 1e-6;
+            break;
+        case Kind::Supply:
+            if (const PumpSnapshot* p = pump(s.index)) v = p->supplyPressure * 1e-6;
+            break;
+        case Kind::PumpFlow:
+            if (const PumpSnapshot* p = pump(s.index)) v = p->flow * 60000.0;  // [L/min]
+            break;
         case Kind::Ma:
         case Kind::Mr:
         case Kind::Mt:
@@ -351,26 +394,28 @@ void PlotPanel::rebuildList()
     m_updatingList = true;
     m_list->clear();
     QTreeWidgetItem* group = nullptr;
-    int groupTree = -2;
+    QString groupOwner;
     for (const Signal& s : m_signals) {
         QTreeWidgetItem* item = nullptr;
         if (s.kind == Kind::Energy) {
             item = new QTreeWidgetItem(m_list, {tr("Mechanical energy [J]")});
         } else {
-            if (s.tree != groupTree) {
-                const solver::Model& m = *m_bundle->model;
-                const std::size_t k = std::size_t(s.tree);
-                const QString name = QString::fromStdString(m.jointName[k]);
-                group = new QTreeWidgetItem(m_list, {name.isEmpty() ? tr("C %1").arg(m.jointId[k])
-                                                                    : tr("C %1 %2").arg(m.jointId[k]).arg(name)});
+            // a group per joint, and per pump
+            const QString owner = ownerOf(s);
+            if (!group || owner != groupOwner) {
+                group = new QTreeWidgetItem(m_list, {owner});
                 group->setFlags(Qt::ItemIsEnabled);
-                groupTree = s.tree;
+                groupOwner = owner;
             }
             QString text;
             switch (s.kind) {
             case Kind::Q: text = tr("coordinate q [%1]"); break;
             case Kind::Qd: text = tr("rate dq/dt [%1]"); break;
             case Kind::Force: text = tr("drive force [%1]"); break;
+            case Kind::PressureA: text = tr("chamber A pressure p_A [%1]"); break;
+            case Kind::PressureB: text = tr("chamber B pressure p_B [%1]"); break;
+            case Kind::Supply: text = tr("supply pressure p_S [%1]"); break;
+            case Kind::PumpFlow: text = tr("delivered flow Q [%1]"); break;
             case Kind::Ma: text = tr("reaction moment about A [%1]"); break;
             case Kind::Mr: text = tr("reaction moment about R [%1]"); break;
             case Kind::Mt: text = tr("reaction moment about T [%1]"); break;

@@ -1,9 +1,11 @@
 #pragma once
 // PlotPanel: live plots of a simulation against time (QtCharts). The user ticks
 // signals in a list — for every tree joint its coordinate q, its rate q̇, its drive's
-// force (driven joints) and the six reaction components in the joint's axes (A, R,
-// T), and the mechanical energy — and sees them while the machine moves: one chart
-// per unit (rad, m, N, N m, …), several signals in a chart, stacked. (The rate is
+// force (driven joints), the pressures of chambers A and B (CYL/HMOTOR drives, in MPa)
+// and the six reaction components in the joint's axes (A, R, T); every pump's supply
+// pressure (MPa) and delivered flow (L/min); and the mechanical energy — and sees them
+// while the machine moves: one chart per unit (rad, m, N, N m, MPa, …), several
+// signals in a chart, stacked. (The rate is
 // written dq/dt: the fonts of a bare X server do not draw a combining dot.)
 //
 // Data: fed by addSnapshot() (or by setRunner(), which polls the runner's latest()
@@ -14,9 +16,10 @@
 // at 10 Hz with at most maxPoints() points per series: longer histories are reduced
 // to each bucket's minimum and maximum, so peaks survive and llvmpipe keeps up.
 //
-// Signals are named by stable keys: "q:J", "qd:J", "f:J", "Ma:J", "Mr:J", "Mt:J",
-// "Fa:J", "Fr:J", "Ft:J" for the joint with id J (C J), and "energy"; a new model
-// keeps the ticks of the keys it still has.
+// Signals are named by stable keys: "q:J", "qd:J", "f:J", "pA:J", "pB:J", "Ma:J",
+// "Mr:J", "Mt:J", "Fa:J", "Fr:J", "Ft:J" for the joint with id J (C J), "pS:P" and
+// "Qp:P" for the pump with id P (PUMP P), and "energy"; a new model keeps the ticks of
+// the keys it still has.
 //
 // Export: exportCsv() writes t and the ticked signals (every kept sample, shortest
 // round-trip decimals, "." as the decimal point); exportPng() the charts as shown.
@@ -69,7 +72,8 @@ public:
 
     /// Every signal of the model, in list order.
     QStringList signalKeys() const;
-    /// "C 2 LEVANTE PLUMA q [m]" (as in the legend and the CSV header); "" for an unknown key.
+    /// "C 2 LEVANTE PLUMA q [m]", "pump 1 main p_S [MPa]" (as in the legend and the
+    /// CSV header); "" for an unknown key.
     QString signalLabel(const QString& key) const;
     /// "m", "rad/s", "N", "N m", "J"…
     QString signalUnit(const QString& key) const;
@@ -109,14 +113,16 @@ protected:
     void changeEvent(QEvent* event) override;
 
 private:
-    enum class Kind { Q, Qd, Force, Ma, Mr, Mt, Fa, Fr, Ft, Energy };
+    enum class Kind { Q, Qd, Force, PressureA, PressureB, Ma, Mr, Mt, Fa, Fr, Ft, Supply, PumpFlow, Energy };
     struct Signal {
         QString key, unit;
         QString symbol;  // "q", "dq/dt", "M_A"… (the same in every language)
         Kind kind = Kind::Q;
-        int tree = -1;  // tree joint
-        int jointId = 0;
-        QString jointName;
+        int tree = -1;   // tree joint (joint signals)
+        int index = -1;  // Model::circuits index (PressureA/B) or Model::pumps index (Supply, PumpFlow)
+        int ownerId = 0;    // the joint's id (C J), or the pump's (PUMP P)
+        QString ownerName;  // its NAME
+        bool isPump() const { return kind == Kind::Supply || kind == Kind::PumpFlow; }
     };
     struct Sample {
         double t = 0;
@@ -134,6 +140,11 @@ private:
     void retranslate();
     /// "C 2 LEVANTE PLUMA q [m]", "mechanical energy [J]" in the current language.
     QString labelOf(const Signal& s) const;
+    /// What a signal belongs to: "C 2 LEVANTE PLUMA", "pump 1 main" (its list group).
+    QString ownerOf(const Signal& s) const;
+    /// Appends a signal keyed "prefix:ownerId".
+    Signal& addSignal(Kind kind, const QString& prefix, const QString& symbol, const QString& unit, int ownerId,
+                      const QString& ownerName);
     int indexOf(const QString& key) const;
     void rebuildList();
     void rebuildCharts();

@@ -26,6 +26,31 @@ std::shared_ptr<Snapshot> captureSnapshot(const solver::Simulation& sim,
     snap->driveForce = d.driveForce;
     snap->reactionJoint = d.reactionJoint;
     snap->energy = solver::mechanicalEnergy(m, d);
+    // fluid power (nothing to allocate without pumps)
+    snap->pumps.resize(m.pumps.size());
+    for (std::size_t p = 0; p < m.pumps.size(); ++p) {
+        const auto i = static_cast<Eigen::Index>(p);
+        PumpSnapshot& out = snap->pumps[p];
+        out.supplyPressure = d.supplyPressure[i];
+        out.flow = d.pumpFlow[i];
+        out.demand = d.pumpDemand[i];
+        out.qmax = m.pumps[p].qmax;
+        out.pmax = m.pumps[p].pmax;
+    }
+    snap->circuits.resize(m.circuits.size());
+    for (std::size_t c = 0; c < m.circuits.size(); ++c) {
+        const auto i = static_cast<Eigen::Index>(c);
+        const solver::CompiledCircuit& k = m.circuits[c];
+        CircuitSnapshot& out = snap->circuits[c];
+        out.joint = k.joint;
+        out.spool = s.fluid[solver::kFluidStates * i];
+        out.pressureA = d.pressureA[i];
+        out.pressureB = d.pressureB[i];
+        out.flowA = d.flowA[i];
+        out.flowB = d.flowB[i];
+        out.relief = m.pumps[static_cast<std::size_t>(k.pump)].pmax;
+        out.cavitation = d.cavitation[c];
+    }
     snap->eventLog = noEvents;
     return snap;
 }

@@ -22,6 +22,30 @@
 
 namespace studio {
 
+/// One pump's operating point (solver/hydraulics/pump.h), in Model::pumps order.
+struct PumpSnapshot {
+    double supplyPressure = 0;  ///< p_S [Pa] (Data::supplyPressure)
+    double flow = 0;            ///< delivered [m^3/s] (Data::pumpFlow; ≤ qmax)
+    double demand = 0;          ///< what the open sections would draw [m^3/s] (Data::pumpDemand)
+    double qmax = 0;            ///< the pump's Qmax [m^3/s]
+    double pmax = 0;            ///< its p_max [Pa] (also every fed chamber's relief setting)
+    /// The sections want more than the pump gives (their flows are shared out, or the supply falls).
+    bool saturated() const { return demand > qmax; }
+};
+
+/// One CYL/HMOTOR drive: its valve section and its actuator's chambers, in
+/// Model::circuits order.
+struct CircuitSnapshot {
+    int joint = -1;          ///< tree index of the driven joint
+    double spool = 0;        ///< x in [−1, 1] (State::fluid)
+    double pressureA = 0;    ///< p_A [Pa] (Data::pressureA; gauge, ≥ 0)
+    double pressureB = 0;    ///< p_B [Pa] (Data::pressureB)
+    double flowA = 0;        ///< valve flow into A [m^3/s] (< 0: out; Data::flowA)
+    double flowB = 0;        ///< valve flow into B [m^3/s] (Data::flowB)
+    double relief = 0;       ///< the port reliefs' setting: its pump's p_max [Pa]
+    int cavitation = 0;      ///< 1 chamber A, 2 chamber B, 3 both (Data::cavitation), else 0
+};
+
 struct Snapshot {
     std::shared_ptr<const ModelBundle> bundle;  ///< the model these values belong to
     double t = 0;                               ///< simulated time [s]
@@ -34,6 +58,9 @@ struct Snapshot {
     Eigen::VectorXd driveForce;                 ///< per tree joint [N or N m] (Data::driveForce)
     std::vector<solver::Vector6d> reactionJoint;  ///< per tree joint, joint axes (Data::reactionJoint)
     double energy = 0;                          ///< mechanical energy [J]
+    /// Fluid power (docs/hydraulics.md): empty for a model without pumps.
+    std::vector<PumpSnapshot> pumps;            ///< Model::pumps order
+    std::vector<CircuitSnapshot> circuits;      ///< Model::circuits order
     /// Events since the previous published snapshot (limits, reliefs, welds, lock-up).
     /// A GUI polling at 60 Hz skips snapshots: read eventLog instead.
     std::vector<solver::SimulationEvent> events;

@@ -1,6 +1,7 @@
 #include "ide/studio/train/train_page.h"
 
 #include "ide/i18n/language.h"
+#include "ide/studio/sim/hydraulic_panel.h"
 #include "ide/studio/train/records_view.h"
 #include "ide/studio/train/tutorial_runner.h"
 #include "ide/studio/view/viewport.h"
@@ -313,6 +314,9 @@ void TrainPage::setTutorialsDir(const QString& dir)
 {
     m_dir = dir;
     m_entries.clear();
+    // the open tutorial's index and model belong to the old list
+    m_current = -1;
+    m_bundle.reset();
     for (const QFileInfo& f : QDir(dir).entryInfoList({"*.tut"}, QDir::Files, QDir::Name)) {
         Entry e;
         e.path = f.absoluteFilePath();
@@ -987,7 +991,19 @@ QWidget* TrainPage::buildAttempt()
         w->setContentsMargins(0, 0, 0, 0);
         m_attemptView->addOverlay(w);
     }
-    layout->addWidget(viewBox, 1);
+    // the hydraulics beside the view (never over the target), for a model with pumps
+    auto* row = new QHBoxLayout;
+    row->setContentsMargins(0, 0, 0, 0);
+    row->setSpacing(0);
+    row->addWidget(viewBox, 1);
+    m_hydraulics = new HydraulicPanel;
+    m_hydraulics->setObjectName("AttemptHydraulics");
+    m_hydraulics->setHeadingVisible(true);
+    m_hydraulics->setStyleSheet("QWidget { font-size: 11pt; }");  // (a side panel: smaller than the HUD)
+    m_hydraulics->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Preferred);
+    m_hydraulics->hide();
+    row->addWidget(m_hydraulics);
+    layout->addLayout(row, 1);
 
     auto* bar = new QHBoxLayout;
     bar->setContentsMargins(12, 6, 12, 6);
@@ -1012,6 +1028,21 @@ QWidget* TrainPage::buildAttempt()
     });
     bar->addWidget(m_expertBox);
     bar->addSpacing(12);
+    m_hydraulicsBox = new QCheckBox;
+    m_hydraulicsBox->setObjectName("ShowHydraulics");
+    m_hydraulicsBox->setChecked(QSettings().value("trainer/showHydraulics", true).toBool());
+    m_hydraulicsBox->hide();
+    connect(m_hydraulicsBox, &QCheckBox::toggled, this, [this](bool on) {
+        QSettings().setValue("trainer/showHydraulics", on);
+        m_hydraulics->setVisible(on && m_hydraulics->hasFluidPower());
+        m_attemptView->setFocus();
+    });
+    connect(m_hydraulics, &HydraulicPanel::modelChanged, this, [this](bool fluid) {
+        m_hydraulicsBox->setVisible(fluid);
+        m_hydraulics->setVisible(fluid && m_hydraulicsBox->isChecked());
+    });
+    bar->addWidget(m_hydraulicsBox);
+    bar->addSpacing(12);
     auto* viewLabel = new QLabel;
     bar->addWidget(viewLabel);
     m_cameraBox = new QComboBox;
@@ -1030,6 +1061,8 @@ QWidget* TrainPage::buildAttempt()
         keys->setText(tr("Esc or Stop ends the attempt."));
         m_expertBox->setText(tr("Show the expert"));
         m_expertBox->setToolTip(tr("The demonstration runs beside the attempt, drawn translucent."));
+        m_hydraulicsBox->setText(tr("Hydraulics"));
+        m_hydraulicsBox->setToolTip(tr("The pump, the spools and the chamber pressures beside the view."));
         viewLabel->setText(tr("View:"));
         for (int i = 0; i < m_cameraBox->count(); ++i)
             m_cameraBox->setItemText(i, Viewport::cameraLabel(m_cameraBox->itemData(i).toString()));
@@ -1070,6 +1103,8 @@ void TrainPage::startAttempt(std::shared_ptr<const trainer::InputLog> drive)
     m_lastLogUpdate = QDateTime::currentMSecsSinceEpoch();
     m_shownStep = -1;
     m_hudText.clear();
+    // the hydraulics (a model with pumps) beside the view before the view is framed
+    if (const auto f = m_runner->latest()) m_hydraulics->setSnapshot(f->snapshot);
     setScreen(Screen::Attempt);
     // inside a scene the operator's seat; in the open, from where the target shows
     const QString camera = t->sceneFile.empty() ? QStringLiteral("Iso") : QStringLiteral("Operator seat");
@@ -1265,6 +1300,7 @@ void TrainPage::poll()
         if (f->snapshot->step != m_shownStep) {
             m_shownStep = f->snapshot->step;
             m_attemptView->setSnapshot(f->snapshot);
+            m_hydraulics->setSnapshot(f->snapshot);
             if (f->ghost && m_expertBox->isChecked()) m_attemptView->setGhost(f->ghost);
             else m_attemptView->clearGhost();
         }

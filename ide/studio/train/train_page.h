@@ -15,6 +15,8 @@
 //    replayed by the TutorialRunner: play/pause, speed 0.25×–4×, a scrub slider) and Start.
 //  - Attempt: one 3D view with a HUD big enough to read from the seat (goal, time /
 //    limit, distance, dwell, bank, hints, warnings, penalties); Esc or Stop ends it.
+//    A model with pumps gets the hydraulics (HydraulicPanel) beside the view, which
+//    the attempt's "Hydraulics" box folds away (remembered: "trainer/showHydraulics").
 //  - Result: passed/failed, stars, score, the breakdown, what to improve; Retry,
 //    Debrief, Next stage.
 //  - Debrief: the run replayed from its samples (scrub slider), the timeline of events
@@ -80,6 +82,7 @@ class Station;
 
 namespace studio {
 
+class HydraulicPanel;
 class RecordsView;
 class TutorialRunner;
 class Viewport;
@@ -194,6 +197,10 @@ public:
     QSlider* replaySlider() const { return m_replaySlider; }
     QSlider* demoSlider() const { return m_demoSlider; }
     QCheckBox* expertBox() const { return m_expertBox; }
+    /// The attempt's hydraulics beside the view, and the box that shows it (shown only
+    /// for a model with pumps).
+    HydraulicPanel* hydraulicPanel() const { return m_hydraulics; }
+    QCheckBox* hydraulicsBox() const { return m_hydraulicsBox; }
     QPushButton* recordsButton() const { return m_recordsButton; }
     /// The course screen's button that switches to language `code` ("es", "en"; nullptr: none).
     QPushButton* languageButton(const QString& code) const;
@@ -351,6 +358,8 @@ private:
     Viewport* m_attemptView = nullptr;
     QComboBox* m_cameraBox = nullptr;
     QCheckBox* m_expertBox = nullptr;
+    HydraulicPanel* m_hydraulics = nullptr;
+    QCheckBox* m_hydraulicsBox = nullptr;
     QFrame* m_hudPanel = nullptr;
     QLabel* m_hud = nullptr;
     QProgressBar* m_dwellBar = nullptr;
