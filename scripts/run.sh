@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs what Padrob needs, builds it, and starts padrob-studio on the bundled
-# liner manipulator (models/liner_manipulator.pad). Press F5 to run the simulation;
+# liner manipulator (models/liner_manipulator_fluid.pad, in fluid power). Press F5 to run the simulation;
 # with the 3D view focused, hold Q/A, W/S, E/D… to open the valves (Simulation ▸
 # Keyboard Controls lists them).
 #
@@ -12,7 +12,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 cmake --preset default >/dev/null
-model=models/liner_manipulator.pad
+model=models/liner_manipulator_fluid.pad
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
   cmake --build --preset default -j "${PADROB_JOBS:-2}" --target padrob-studio
   exec build/default/bin/padrob-studio "$model"

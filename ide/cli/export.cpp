@@ -11,10 +11,9 @@
 #include "solver/io/mjcf.h"
 #include "solver/pipeline.h"
 
+#include "ide/i18n/diagnostic_text.h"
 #include "ide/i18n/language.h"
-
-#include <QFileInfo>
-#include <QSaveFile>
+#include "solver/core/output_file.h"
 
 #include <charconv>
 #include <cmath>
@@ -38,28 +37,6 @@ int usage(const std::string& message)
 /// What --check compares: seconds of simulated time, and the largest distance [m].
 constexpr double kCheckSeconds = 0.2, kCheckTolerance = 1e-6;
 #endif
-
-/// Writes `text` to `path` through a temporary file renamed onto it (QSaveFile): the
-/// target is replaced whole or left as it was. False with `error` set on failure.
-bool writeAtomically(const std::string& path, const std::string& text, std::string& error)
-{
-    const QString qpath = QString::fromStdString(path);
-    if (QFileInfo(qpath).isDir()) {
-        error = fill(trStd("padrob", "cannot write %1: it is a folder"), {path});
-        return false;
-    }
-    QSaveFile file(qpath);
-    if (!file.open(QIODevice::WriteOnly)) {
-        error = fill(trStd("padrob", "cannot create %1: %2"), {path, file.errorString().toStdString()});
-        return false;
-    }
-    if (file.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size()) ||
-        !file.commit()) {
-        error = fill(trStd("padrob", "cannot write %1: %2"), {path, file.errorString().toStdString()});
-        return false;  // QSaveFile's destructor removes the temporary file
-    }
-    return true;
-}
 
 }  // namespace
 
@@ -166,8 +143,10 @@ int runExport(const std::vector<std::string>& args)
         }
         return kOk;
     }
-    if (!writeAtomically(outPath, xml, error)) {
-        printErr("padrob export: " + error + "\n");
+    // replaced whole or left as it was, never the model itself (solver/core/output_file.h)
+    solver::Text writeError;
+    if (!solver::writeWholeFile(outPath, xml, {modelPath}, writeError)) {
+        printErr("padrob export: " + i18n::text(writeError).toStdString() + "\n");
         return kUsage;
     }
     return kOk;

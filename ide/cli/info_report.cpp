@@ -97,6 +97,8 @@ std::string driveText(const DriveSpec& d, JointType t)
         s += " v " + shown(h.vmax, 4) + "/" + shown(h.vmin, 4) + v + ", F " + shown(h.fmax, 4) + "/" + shown(h.fmin, 4) + f;
     } else {
         for (const auto& [k, v] : d.params) s += " " + k + " " + shown(v, 4);
+        for (const auto& [k, v] : d.pairs) s += " " + k + " " + shown(v.first, 4) + " " + shown(v.second, 4);
+        if (!d.compensation.empty()) s += " COMP " + d.compensation;
     }
     return s;
 }

@@ -49,7 +49,7 @@ std::unique_ptr<trainer::StationEngine> replayStation(const solver::Model& m, co
     auto log = std::make_shared<trainer::InputLog>();
     QString error;
     if (!trainer::InputLog::load(QString::fromStdString(logPath), *log, &error)) {
-        problem = logPath + ": " + error.toStdString();
+        problem = error.toStdString();
         return nullptr;
     }
     const QString model = QString::fromStdString(modelPath);
@@ -376,7 +376,9 @@ int runSimulate(const std::vector<std::string>& args)
     }
 
     // the output
-    solver::CsvWriter out = outPath.empty() ? solver::CsvWriter() : solver::CsvWriter(outPath);
+    // (never onto a file this run reads: the model, its input table, log or profile)
+    solver::CsvWriter out = outPath.empty() ? solver::CsvWriter()
+                                            : solver::CsvWriter(outPath, {modelPath, inputPath, inputLogPath, profileArg});
     if (!out.ok()) {
         printErr("padrob simulate: " + i18n::text(out.errorText()).toStdString() + "\n");
         return kUsage;

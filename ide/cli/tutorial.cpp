@@ -5,7 +5,10 @@
 
 #include "ide/cli/cli_io.h"
 #include "ide/cli/json_writer.h"
+#include "ide/i18n/diagnostic_text.h"
 #include "ide/i18n/language.h"
+#include "solver/core/output_file.h"
+#include "trainer/io/read_file.h"
 #include "trainer/training/runner.h"
 #include "trainer/training/tutorial.h"
 
@@ -218,6 +221,19 @@ int runTutorial(const std::vector<std::string>& args)
                  "\n");
         return kExitOk;
     }
+    // what the run writes must not be what it reads (the tutorial, its model, scene,
+    // demonstration, camera path, profile, autopilot path, input)
+    // (nor the camera path the log)
+    std::vector<std::string> reads{file, tut->modelFile, tut->sceneFile, tut->demoFile, tut->cameraFile, profile, autopilot, input};
+    for (const std::string& out : {record, camera}) {
+        if (out.empty()) continue;
+        const std::optional<solver::Text> refusal = solver::outputRefusal(out, reads);
+        reads.push_back(out);
+        if (refusal) {
+            printErr("padrob tutorial: " + i18n::text(*refusal).toStdString() + "\n");
+            return kExitUsage;
+        }
+    }
     trainer::StationProfile stationProfile;
     QString error;
     if (!trainer::tutorialProfile(*tut, QString::fromStdString(profile), stationProfile, &error)) {
@@ -226,14 +242,16 @@ int runTutorial(const std::vector<std::string>& args)
     }
     trainer::RunOutput run;
     if (!autopilot.empty()) {
-        QFile f(QString::fromStdString(autopilot));
-        if (!f.open(QIODevice::ReadOnly)) {
-            printErr("padrob tutorial: " + autopilot + ": " + f.errorString().toStdString() + "\n");
+        const std::optional<QByteArray> text = trainer::readLimitedFile(
+            QString::fromStdString(autopilot), trainer::kMaxAutopilotPathBytes, solver::trText("Tutorials", "an autopilot path"), ".path",
+            solver::trText("Tutorials", "an autopilot path is a short text file of waypoints; check that this is one"), &error);
+        if (!text) {
+            printErr("padrob tutorial: " + autopilot + ": " + error.toStdString() + "\n");
             return kExitUsage;
         }
         std::vector<trainer::AutopilotWaypoint> path;
         trainer::CameraPath cameraPath;
-        if (!trainer::parseAutopilotPath(QString::fromUtf8(f.readAll()), path, &error) ||
+        if (!trainer::parseAutopilotPath(QString::fromUtf8(*text), path, &error) ||
             !trainer::recordWithAutopilot(tut, path, stationProfile, QString::fromStdString(record), run, &error,
                                           camera.empty() ? nullptr : &cameraPath)) {
             printErr("padrob tutorial: " + autopilot + ": " + error.toStdString() + "\n");
@@ -251,7 +269,7 @@ int runTutorial(const std::vector<std::string>& args)
         }
         auto log = std::make_shared<trainer::InputLog>();
         if (!trainer::InputLog::load(QString::fromStdString(logPath), *log, &error)) {
-            printErr("padrob tutorial: " + logPath + ": " + error.toStdString() + "\n");
+            printErr("padrob tutorial: " + error.toStdString() + "\n");
             return kExitUsage;
         }
         if (!trainer::runTutorialWithLog(tut, log, stationProfile, run, &error)) {

@@ -3,8 +3,6 @@
 #include <cerrno>
 #include <charconv>
 #include <cstdint>
-#include <filesystem>
-#include <random>
 #include <system_error>
 
 namespace solver {
@@ -32,41 +30,17 @@ void appendName(std::string& line, std::string_view name)
 
 CsvWriter::CsvWriter() : m_file(stdout) {}
 
-CsvWriter::CsvWriter(std::string path) : m_path(std::move(path))
+CsvWriter::CsvWriter(std::string path, const std::vector<std::string>& inputs) : m_path(std::move(path))
 {
-    namespace fs = std::filesystem;
     if (m_path.empty()) {
         fail(trText("Diagnostics", "no output file given"));
         return;
     }
-    std::error_code ec;
-    const fs::path target(m_path);
-    if (fs::is_directory(target, ec)) {
-        fail(trText("Diagnostics", "cannot write %1: it is a folder").with(m_path));
+    if (!m_out.open(m_path, inputs)) {
+        fail(m_out.error());
         return;
     }
-    // a fresh temporary file in the target's folder (a rename within one file system
-    // replaces the target in one step)
-    std::random_device rd;
-    std::mt19937_64 gen((static_cast<std::uint64_t>(rd()) << 32) ^ rd());
-    int err = 0;
-    for (int attempt = 0; attempt < 16; ++attempt) {
-        char suffix[24];
-        auto [end, ec2] =
-            std::to_chars(suffix, suffix + sizeof suffix, gen() & 0xFFFFFFFFFFFFull, 16);
-        (void)ec2;
-        const fs::path tmp = target.parent_path() / ("." + target.filename().string() + "." +
-                                                     std::string(suffix, end) + ".tmp");
-        errno = 0;
-        m_file = std::fopen(tmp.string().c_str(), "wbx");
-        if (m_file) {
-            m_tmpPath = tmp.string();
-            return;
-        }
-        err = errno;
-        if (err != EEXIST) break;
-    }
-    fail(trText("Diagnostics", "cannot create %1: %2").with(m_path).with(errnoText(err)));
+    m_file = m_out.stream();
 }
 
 CsvWriter::~CsvWriter()
@@ -85,14 +59,9 @@ void CsvWriter::fail(Text message)
 
 void CsvWriter::abandon()
 {
-    if (m_file && m_file != stdout) std::fclose(m_file);
     if (m_file == stdout) std::fflush(stdout);
     m_file = nullptr;
-    if (!m_tmpPath.empty()) {
-        std::error_code ec;
-        std::filesystem::remove(m_tmpPath, ec);
-        m_tmpPath.clear();
-    }
+    m_out.abandon();
     m_line.clear();
     m_inRow = 0;
 }
@@ -181,22 +150,11 @@ bool CsvWriter::commit()
         m_committed = true;
         return true;
     }
-    const bool written = std::fflush(m_file) == 0 && !std::ferror(m_file);
-    const int err = errno;
-    std::FILE* f = m_file;
     m_file = nullptr;
-    const bool closed = std::fclose(f) == 0;
-    if (!written || !closed) {
-        fail(trText("Diagnostics", "cannot write %1: %2").with(m_path).with(errnoText(written ? errno : err)));
+    if (!m_out.commit()) {
+        fail(m_out.error());
         return false;
     }
-    std::error_code ec;
-    std::filesystem::rename(m_tmpPath, m_path, ec);
-    if (ec) {
-        fail(trText("Diagnostics", "cannot write %1: %2").with(m_path).with(ec.message()));
-        return false;
-    }
-    m_tmpPath.clear();
     m_committed = true;
     return true;
 }

@@ -8,11 +8,13 @@
 // locale whatever the process locale; non-finite values as "nan", "inf", "-inf".
 // Header names that hold ',', '"' or a line end are quoted ("" for a quote).
 //
-// To a file, the writer writes into a new temporary file next to the target
-// (".<name>.<random>.tmp" in the same folder) and renames it onto the target in
-// commit(); a writer destroyed without a successful commit() — an error, an
-// exception, an early return — removes its temporary and leaves the target as it was
-// (absent, or its old contents). Nothing is ever half-written at the target's path.
+// To a file, through an OutputFile (solver/core/output_file.h): never onto a file the
+// run reads, into a temporary file in the target's folder (unnamed where the file system
+// allows) put in the target's place in commit(), after an fsync; a writer destroyed
+// without a successful commit() — an error, an exception, an early return, a killed
+// process — leaves the target as it was (absent, or its old contents) and no temporary
+// file. Nothing is ever half-written at the target's path. A target that is not a
+// regular file (/dev/null, a FIFO) is written into as a stream.
 // To standard output, rows go out as they are written and commit() flushes.
 //
 // Errors (cannot create, write or rename) put the writer in a failed state: later
@@ -21,11 +23,13 @@
 // Writing a row does not allocate once the first row of the widest length is written.
 
 #include "solver/core/diagnostic.h"
+#include "solver/core/output_file.h"
 
 #include <cstdio>
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace solver {
 
@@ -33,8 +37,9 @@ class CsvWriter {
 public:
     /// A writer to standard output.
     CsvWriter();
-    /// A writer to the file `path`: creates the temporary file now (check ok()).
-    explicit CsvWriter(std::string path);
+    /// A writer to the file `path`: creates the temporary file now (check ok()); refused
+    /// when `path` is one of `inputs` (the files the run reads).
+    explicit CsvWriter(std::string path, const std::vector<std::string>& inputs = {});
     /// Removes the temporary file unless commit() succeeded.
     ~CsvWriter();
 
@@ -52,9 +57,9 @@ public:
     bool toStdout() const { return m_path.empty(); }
     /// The target path (empty for standard output).
     const std::string& path() const { return m_path; }
-    /// The temporary file's path while it exists (empty for standard output and after
-    /// commit or abandon).
-    const std::string& temporaryPath() const { return m_tmpPath; }
+    /// The named temporary file's path while it exists (empty for standard output, for
+    /// an unnamed temporary file, and after commit or abandon).
+    const std::string& temporaryPath() const { return m_out.temporaryPath(); }
 
     /// Writes the header line; sets the number of columns every row must have.
     void writeHeader(std::span<const std::string> names);
@@ -80,8 +85,8 @@ private:
     void flushLine();
 
     std::string m_path;
-    std::string m_tmpPath;
-    std::FILE* m_file = nullptr;
+    OutputFile m_out;
+    std::FILE* m_file = nullptr;  // stdout, or m_out's stream
     std::string m_line;  // the line being built (capacity reused)
     std::string m_error;
     Text m_errorText;

@@ -120,7 +120,7 @@ TEST_F(Centre, TwoStationsStreamStateAndObeyOnlyTheirOwnSignedCommands)
     startStation(s2);
     ASSERT_TRUE(waitFor([&] { return seenRunning(s1) && seenRunning(s2); }, 20000, [&] { poll(); }))
         << "both stations are heard";
-    EXPECT_EQ(view(s1)->announce.model, "liner_manipulator");
+    EXPECT_EQ(view(s1)->announce.model, "liner_manipulator_fluid");  // T0 runs on the fluid-power machine
     EXPECT_EQ(view(s1)->announce.tutorials, (std::vector<std::string>{"T0", "T1"}));
     EXPECT_EQ(view(s1)->announce.modelHash.size(), 64u);
     EXPECT_EQ(view(s1)->state.status, "idle");
@@ -159,6 +159,8 @@ TEST_F(Centre, TwoStationsStreamStateAndObeyOnlyTheirOwnSignedCommands)
     EXPECT_NEAR(resumed.attemptTime - p1s.attemptTime, 0.5, 0.35);
 
     // a power cut: every valve closes; the machine holds although the demo pushes the levers
+    // (on T0's fluid-power machine it settles on its oil: it moves no more than a fraction
+    // of a millimetre or milliradian)
     r = command(s1, "inject", "power-cut");
     ASSERT_TRUE(r && r->accepted) << (r ? r->message : "");
     const State cut0 = stateAfter(s1, 200);
@@ -167,7 +169,7 @@ TEST_F(Centre, TwoStationsStreamStateAndObeyOnlyTheirOwnSignedCommands)
     EXPECT_TRUE(cut1.warnings & WarnFault);
     for (float u : cut1.commands) EXPECT_EQ(u, 0.0f);
     ASSERT_EQ(cut0.q.size(), cut1.q.size());
-    for (std::size_t j = 0; j < cut0.q.size(); ++j) EXPECT_NEAR(cut0.q[j], cut1.q[j], 1e-6) << "joint " << j;
+    for (std::size_t j = 0; j < cut0.q.size(); ++j) EXPECT_NEAR(cut0.q[j], cut1.q[j], 5e-4) << "joint " << j;
     r = command(s1, "clear", "power-cut");
     ASSERT_TRUE(r && r->accepted);
     EXPECT_EQ(stateAfter(s1, 200).faults, "");

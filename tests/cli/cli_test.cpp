@@ -203,7 +203,7 @@ B 1 1000 10 10 10
 C 2 T 2 LL 0 UL 1 QI 0.3 NAME "lift"
 B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 1
 B2 1 P2 0 0 0 A2 1 0 0 R2 0 0 1
-D 2 CYL PUMP 4 BORE 0.1 ROD 0.05 VALVE 1e-3 DP 1e6 COMP PRE
+D 2 CYL PUMP 4 BORE 0.1 ROD 0.05 VALVE 1e-3 DP 1e6 COMP PRE DEAD 2e-4 3e-4
 )pad");
     const std::string input = writeTemp("fluid_in.csv", "t,u2\n0,1\n");
     CliRun r = padrob("simulate '" + model + "' --time 1 --every 1000 --input '" + input + "'");
@@ -229,6 +229,10 @@ D 2 CYL PUMP 4 BORE 0.1 ROD 0.05 VALVE 1e-3 DP 1e6 COMP PRE
                             "\"compensation\":\"PRE\"", "\"drives\":[2]"}) {
         EXPECT_NE(compact.find(key), std::string::npos) << key << "\n" << info.out;
     }
+    // the text says the whole drive: its volumes and compensation too
+    CliRun text = padrob("info '" + model + "'");
+    ASSERT_EQ(text.status, 0) << text.err;
+    EXPECT_NE(text.out.find("CYL PUMP 4 BORE 0.1 ROD 0.05 VALVE 0.001 DP 1e+06 DEAD 0.0002 0.0003 COMP PRE"), std::string::npos) << text.out;
 }
 
 TEST(CliSimulate, LimitEventsAreReported)

@@ -141,7 +141,7 @@ private slots:
         const QJsonObject o = doc.object();
         qInfo("%s", QJsonDocument(o).toJson(QJsonDocument::Compact).constData());
 
-        QVERIFY(o["model"].toString().endsWith("liner_manipulator.pad"));
+        QVERIFY(o["model"].toString().endsWith("liner_manipulator_fluid.pad"));
         QVERIFY(o["scene"].toString().endsWith("sag_mill.pad"));
         QVERIFY(!o.contains("scene_error"));
         QCOMPARE(o["frames"].toInt(), 20);

@@ -133,8 +133,8 @@ private slots:
         w.openInitial(QString());
         QTRY_VERIFY_WITH_TIMEOUT(w.bundle(), 10000);
         QCOMPARE(w.bundle()->model->nb, 9);
-        QVERIFY(w.editor()->filePath().endsWith("liner_manipulator.pad"));
-        QVERIFY(w.windowTitle().startsWith("liner_manipulator.pad"));
+        QVERIFY(w.editor()->filePath().endsWith("liner_manipulator_fluid.pad"));
+        QVERIFY(w.windowTitle().startsWith("liner_manipulator_fluid.pad"));
         QCOMPARE(w.modelTree()->topLevelItemCount() > 0, true);
         // the three workspaces are there; Model is the current one
         QCOMPARE(w.workspace(), MainWindow::Workspace::Model);

@@ -330,7 +330,7 @@ void PlotsTest::followsRunner()
         const QLineSeries* s = panel.series(QStringLiteral("q:2"));
         return s && s->count() > 0 ? s->at(s->count() - 1).y() : -1.0;
     };
-    QTRY_VERIFY_WITH_TIMEOUT(qFuzzyCompare(lastLift(), runner.latest()->q[m.jointIndex(2)]), 5000);
+    QTRY_VERIFY_WITH_TIMEOUT(qFuzzyCompare(lastLift(), runner.latest()->q[m.jointIndex(2)]), 15000);
     const int samples = panel.sampleCount();
     qInfo("%d samples over %.2f s simulated", samples, runner.latest()->t);
     QVERIFY(samples > 30);

@@ -66,7 +66,7 @@ class TrainShotsTest : public QObject {
             QVERIFY(window->grab().save(screenshotPath(name.arg("hud"))));
             // the rest off-clock, to the result
             runner->seek(runner->latest()->duration + 1.0);
-            QTRY_VERIFY_WITH_TIMEOUT(page->screen() == TrainPage::Screen::Result, 90000);
+            QTRY_VERIFY_WITH_TIMEOUT(page->screen() == TrainPage::Screen::Result, 300000);  // T7: 520 s of the mill
             settle(300);
             if (!page->lastRun()->result.passed)  // (the screenshots of the others are still taken)
                 notPassed << id + ": " + QString::fromStdString(page->lastRun()->result.endReason);

@@ -146,8 +146,8 @@ private slots:
         QVERIFY2(waitFor([&] { return view() && view()->hasState; }), "the station is not heard");
         const centre::Announce& a = view()->announce;
         QCOMPARE(a.role, std::string("station"));
-        QCOMPARE(a.model, std::string("liner_manipulator"));
-        QFile model(QStringLiteral(PADROB_SOURCE_DIR "/models/liner_manipulator.pad"));
+        QCOMPARE(a.model, std::string("liner_manipulator_fluid"));  // T0 runs on the fluid-power machine
+        QFile model(QStringLiteral(PADROB_SOURCE_DIR "/models/liner_manipulator_fluid.pad"));
         QVERIFY(model.open(QIODevice::ReadOnly));
         QCOMPARE(QString::fromStdString(a.modelHash),
                  QString::fromLatin1(QCryptographicHash::hash(model.readAll(), QCryptographicHash::Sha256).toHex()));

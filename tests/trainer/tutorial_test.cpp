@@ -399,6 +399,36 @@ TEST(TutorialSession, TouchingTheSceneIsAHitAndTooFastItEndsTheAttempt)
     }
 }
 
+TEST(TutorialSession, ATakenLoadCountsAgainstTheSceneOnceItHasComeClearOfItsCart)
+{
+    // the fluid machine lifts the liner only once its boom's oil has built the holding
+    // pressure: until then the liner still lies on the cart's timbers, and that is no hit
+    solver::Diagnostics d;
+    const std::string text = "TUTORIAL X LEVEL 1\nTITLE ES \"Prueba\" EN \"Test\"\n"
+                             "MODEL \"" + kSource + "/models/liner_station_fluid.pad\"\n"
+                             "SET 1 -90 DEG\nSET 2 1.46095\nSET 3 0.45\nSET 5 0.413\n"
+                             "AVOID SCENE PENALTY 5 NEAR 0.05 HARD 0.3\n"
+                             "GRIP LOAD 15 AT 0 -0.285 -0.065767 TOOL 6 AT 0 0.48 0 TOL 0.03 ANGTOL 3 DEG\n"
+                             "CLAW 8 CLOSE -0.12 OPEN -0.03\nCLAW 9 CLOSE 0.12 OPEN 0.03\nFINGERS 7 8 9\n"
+                             "GOAL take GRASP\n NAME ES \"Tome\" EN \"Take\"\n"
+                             "GOAL up PLACE AT 4.1378 0 3.5 TOL 0.1\n NAME ES \"Suba\" EN \"Up\"\n";
+    auto t = load(text, d);
+    ASSERT_TRUE(t) << dump(d);
+    TutorialSession s(t);
+    const int z = t->model->jointIndex(12);
+    drive(s, {{8, -1.0}, {9, 1.0}}, 8.0);  // the claws shut on the liner's edge
+    ASSERT_EQ(s.result().count(TutorialEvent::Kind::Grasp), 1) << s.result().events.size();
+    const double z0 = s.simulation().state().q[z];
+    drive(s, {{2, 0.06}}, 6.0);  // the boom, gently, until the liner is off the timbers
+    EXPECT_GT(s.simulation().state().q[z], z0 + 0.01);
+    EXPECT_EQ(s.result().count(TutorialEvent::Kind::Hit), 0) << "taking the liner is not a hit";
+    EXPECT_GT(s.progress().clearance, 0.0);
+    // once clear, the liner counts: set back down on the cart, it touches it
+    drive(s, {{2, -0.03}}, 12.0);
+    EXPECT_LT(s.simulation().state().q[z], z0 + 0.005);
+    EXPECT_EQ(s.result().count(TutorialEvent::Kind::Hit), 1);
+}
+
 TEST(TutorialSession, EnteringAWorkersZoneIsAPenaltyAndTouchingThemEndsTheAttempt)
 {
     QTemporaryDir dir;
@@ -469,6 +499,50 @@ TEST(Autopilot, PathsAreCheckedLineByLine)
     EXPECT_TRUE(error.startsWith("line 2")) << error.toStdString();
     EXPECT_FALSE(parseAutopilotPath("wait=-1\n", p, &error));
     EXPECT_FALSE(parseAutopilotPath("x=1\n", p, &error));
+    // gentle moves: a lever cap for all, or for one joint, and a slower lever ramp
+    ASSERT_TRUE(parseAutopilotPath("2=1.5 1=0.3 lever=0.5 lever=2:0.02 ramp=3\n", p, &error)) << error.toStdString();
+    ASSERT_EQ(p.size(), 1u);
+    EXPECT_DOUBLE_EQ(p[0].lever, 0.5);
+    ASSERT_EQ(p[0].jointLever.size(), 1u);
+    EXPECT_EQ(p[0].jointLever[0].first, 2);
+    EXPECT_DOUBLE_EQ(p[0].jointLever[0].second, 0.02);
+    EXPECT_DOUBLE_EQ(p[0].ramp, 3.0);
+    EXPECT_FALSE(parseAutopilotPath("2=1.5 lever=0\n", p, &error));
+    EXPECT_FALSE(parseAutopilotPath("2=1.5 lever=1.5\n", p, &error));
+    EXPECT_FALSE(parseAutopilotPath("2=1.5 lever=x:0.1\n", p, &error));
+    EXPECT_FALSE(parseAutopilotPath("2=1.5 ramp=0\n", p, &error));
+    EXPECT_FALSE(parseAutopilotPath("wait=1 ramp=2\n", p, &error));  // nothing to move gently
+    EXPECT_TRUE(error.startsWith("line 1")) << error.toStdString();
+}
+
+TEST(Autopilot, OnTheFluidPowerMachineItSharesThePumpAndEasesTheClawsOntoTheirStop)
+{
+    // T0 and T4 run on models/liner_manipulator_fluid.pad: one 66.6 l/min pump for all
+    solver::Diagnostics d;
+    auto t0 = loadTutorial(kSource + "/resources/tutorials/t0_reach.tut", d);
+    auto t4 = loadTutorial(kSource + "/resources/tutorials/t4_claws.tut", d);
+    ASSERT_TRUE(t0 && t4) << dump(d);
+    ASSERT_FALSE(t0->model->pumps.empty());
+    StationProfile profile;
+    QString error;
+    ASSERT_TRUE(tutorialProfile(*t0, {}, profile, &error)) << error.toStdString();
+    QTemporaryDir dir;
+    std::vector<AutopilotWaypoint> path;
+    // slew (20 l/min) and telescope (66.6 l/min) together: the levers are eased back to
+    // what the pump gives, so it never saturates
+    ASSERT_TRUE(parseAutopilotPath("1=0.6 3=0.5\n", path, &error));
+    RunOutput run;
+    ASSERT_TRUE(recordWithAutopilot(t0, path, profile, dir.filePath("share.log"), run, &error)) << error.toStdString();
+    EXPECT_EQ(run.result.count(TutorialEvent::Kind::Saturation), 0);
+    EXPECT_EQ(run.result.count(TutorialEvent::Kind::Cavitation), 0);
+    // the claws' one lever: opened on the slower upper claw (C 8), the lower one (C 9)
+    // meets its stop gently (no limit bang), then holds on it at its relief setting
+    ASSERT_TRUE(tutorialProfile(*t4, {}, profile, &error)) << error.toStdString();
+    ASSERT_TRUE(parseAutopilotPath("9=0.14\nwait=0.5\n8=-0.012 tol=0.006\n", path, &error));
+    ASSERT_TRUE(recordWithAutopilot(t4, path, profile, dir.filePath("claws.log"), run, &error)) << error.toStdString();
+    EXPECT_TRUE(run.result.completed);
+    EXPECT_EQ(run.result.count(TutorialEvent::Kind::LimitBang), 0);
+    EXPECT_EQ(run.result.count(TutorialEvent::Kind::Overload), 1);
 }
 
 TEST(CameraPath, KeysRoundTripAndInterpolateTheShortWayRound)

@@ -1,5 +1,7 @@
 #include "trainer/input/input_log.h"
 
+#include "trainer/io/read_file.h"
+
 #include <QCoreApplication>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -48,12 +50,14 @@ QByteArray deviceJson(const DeviceInfo& info)
 
 bool InputLog::load(const QString& path, InputLog& out, QString* error)
 {
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) {
-        if (error) *error = Tr::tr("cannot read %1: %2").arg(path, f.errorString());
+    const std::optional<QByteArray> text =
+        readLimitedFile(path, kMaxInputLogBytes, solver::trText("Tutorials", "an input log"), ".log",
+                        solver::trText("Tutorials", "an input log is a text file that padrob writes while a run is recorded; check that this is one"), error);
+    if (!text || !parse(*text, out, error)) {
+        if (error) *error = path + ": " + *error;  // every reason names the file
         return false;
     }
-    return parse(f.readAll(), out, error);
+    return true;
 }
 
 bool InputLog::parse(const QByteArray& text, InputLog& out, QString* error)

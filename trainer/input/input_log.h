@@ -38,8 +38,9 @@ struct InputLog {
     std::vector<LoggedSample> samples;  ///< in time order
     double duration() const { return samples.empty() ? 0.0 : samples.back().time; }
 
-    /// Reads a log. False with `error` ("line 12: …", translated) when the file cannot be
-    /// read or is malformed; `out` is then untouched.
+    /// Reads a log (trainer/io/read_file.h: a regular file, at most kMaxInputLogBytes).
+    /// False with `error` ("x.log: line 12: …", translated) when the file cannot be read
+    /// or is malformed; `out` is then untouched.
     static bool load(const QString& path, InputLog& out, QString* error);
     static bool parse(const QByteArray& text, InputLog& out, QString* error);
 };

@@ -1,11 +1,14 @@
 #include "trainer/station/profile_store.h"
 
+#include "trainer/io/read_file.h"
+
+#include "solver/core/output_file.h"
+
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QSaveFile>
 #include <QStandardPaths>
 
 #include <algorithm>
@@ -21,13 +24,16 @@ struct Tr {
 
 bool readProfile(const QString& path, StationProfile& out, QList<ProfileIssue>& issues)
 {
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) {
-        issues.append({path, Tr::tr("cannot read the file: %1").arg(f.errorString()), true});
+    QString error;
+    const std::optional<QByteArray> text =
+        readLimitedFile(path, kMaxProfileBytes, solver::trText("Tutorials", "a station profile"), ".json",
+                        solver::trText("Tutorials", "a station profile is a short JSON file; check that this is one"), &error);
+    if (!text) {
+        issues.append({path, error, true});
         return false;
     }
     QList<ProfileIssue> found;
-    if (!StationProfile::fromJson(f.readAll(), out, found)) {
+    if (!StationProfile::fromJson(*text, out, found)) {
         for (ProfileIssue& i : found) i.where = i.where.isEmpty() ? path : path + ": " + i.where;
         issues += found;
         return false;
@@ -38,9 +44,10 @@ bool readProfile(const QString& path, StationProfile& out, QList<ProfileIssue>& 
 bool writeFile(const QString& path, const QByteArray& data, QString* error)
 {
     QDir().mkpath(QFileInfo(path).absolutePath());
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly) || f.write(data) != data.size() || !f.commit()) {
-        if (error) *error = Tr::tr("cannot write %1: %2").arg(path, f.errorString());
+    // replaced whole, on the disk, or left as it was (solver/core/output_file.h)
+    solver::Text writeError;
+    if (!solver::writeWholeFile(path.toStdString(), data.toStdString(), {}, writeError)) {
+        if (error) *error = translated(writeError);
         return false;
     }
     return true;

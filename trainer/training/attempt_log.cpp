@@ -1,5 +1,7 @@
 #include "trainer/training/attempt_log.h"
 
+#include "trainer/io/read_file.h"
+
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QDir>
@@ -150,9 +152,11 @@ int AttemptLog::importPending(records::AttemptRecorder& db, const QString& folde
     int imported = 0;
     const QDir dir(folder);
     for (const QString& name : dir.entryList({"attempt-*.json"}, QDir::Files, QDir::Name)) {
-        QFile f(dir.filePath(name));
         QJsonParseError pe;
-        const QJsonDocument doc = f.open(QIODevice::ReadOnly) ? QJsonDocument::fromJson(f.readAll(), &pe) : QJsonDocument();
+        const std::optional<QByteArray> text =
+            readLimitedFile(dir.filePath(name), kMaxPendingBytes, solver::trText("Tutorials", "a pending attempt"), ".json",
+                            solver::trText("Tutorials", "a pending attempt is a JSON file that padrob writes; check that this is one"), nullptr);
+        const QJsonDocument doc = text ? QJsonDocument::fromJson(*text, &pe) : QJsonDocument();
         const QJsonObject o = doc.object();
         if (o["format"].toString() != QLatin1String(kPendingFormat)) {
             if (error) *error = Tr::tr("%1 is not a pending attempt: left where it is").arg(dir.filePath(name));

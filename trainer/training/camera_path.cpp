@@ -1,8 +1,11 @@
 #include "trainer/training/camera_path.h"
 
+#include "trainer/io/read_file.h"
+
+#include "solver/core/output_file.h"
+
 #include <QCoreApplication>
 #include <QFile>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <cmath>
@@ -22,16 +25,14 @@ constexpr const char* kHeader = "# padrob camera path 1";
 
 bool CameraPath::load(const QString& path, CameraPath& out, QString* error)
 {
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) {
-        if (error) *error = Tr::tr("cannot read %1: %2").arg(path, f.errorString());
+    const std::optional<QByteArray> text =
+        readLimitedFile(path, kMaxCameraPathBytes, solver::trText("Tutorials", "a camera path"), ".cam",
+                        solver::trText("Tutorials", "a camera path is a text file that padrob writes while a demonstration is recorded; check that this is one"), error);
+    if (!text || !parse(*text, out, error)) {
+        if (error) *error = path + ": " + *error;  // every reason names the file
         return false;
     }
-    if (f.size() > 64 * 1024 * 1024) {
-        if (error) *error = Tr::tr("%1 is too large for a camera path").arg(path);
-        return false;
-    }
-    return parse(f.readAll(), out, error);
+    return true;
 }
 
 bool CameraPath::parse(const QByteArray& text, CameraPath& out, QString* error)
@@ -74,11 +75,6 @@ bool CameraPath::parse(const QByteArray& text, CameraPath& out, QString* error)
 
 bool CameraPath::save(const QString& path, QString* error) const
 {
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly)) {
-        if (error) *error = f.errorString();
-        return false;
-    }
     QByteArray text = QByteArray(kHeader) + "\n# t  target_x target_y target_z  distance  yaw  pitch\n";
     for (const CameraKey& k : m_keys) {
         text += QByteArray::number(k.t, 'f', 3);
@@ -88,8 +84,10 @@ bool CameraPath::save(const QString& path, QString* error) const
         }
         text += '\n';
     }
-    if (f.write(text) != text.size() || !f.commit()) {
-        if (error) *error = f.errorString();
+    // replaced whole, on the disk, or left as it was (solver/core/output_file.h)
+    solver::Text writeError;
+    if (!solver::writeWholeFile(path.toStdString(), text.toStdString(), {}, writeError)) {
+        if (error) *error = translated(writeError);
         return false;
     }
     return true;

@@ -26,10 +26,11 @@ struct CameraKey {
 
 class CameraPath {
 public:
-    /// Reads a camera path. False with `error` ("line 4: …", translated); `out` is then untouched.
+    /// Reads a camera path (a regular file, at most kMaxCameraPathBytes). False with `error`
+    /// ("x.cam: line 4: …", translated); `out` is then untouched.
     static bool load(const QString& path, CameraPath& out, QString* error);
     static bool parse(const QByteArray& text, CameraPath& out, QString* error);
-    /// Writes it (QSaveFile). False with `error`.
+    /// Writes it (solver::writeWholeFile: whole and on the disk, or not at all). False with `error`.
     bool save(const QString& path, QString* error) const;
 
     /// Adds a key (times must not go back; a key at the same time replaces the last).

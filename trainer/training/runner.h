@@ -44,11 +44,17 @@ struct AutopilotWaypoint {
     std::vector<std::pair<int, double>> targets;  ///< joint id → value
     double tolerance = 0.0;  ///< 0: per joint (1 mm, 0.2°)
     double wait = 0.0;       ///< [s] levers centred
+    double lever = 0.0;      ///< 0: full travel; else how far (0 … 1) the levers open at most (eased together)
+    std::vector<std::pair<int, double>> jointLever;  ///< joint id → how far its lever opens at most (the others eased with it)
+    double ramp = 0.0;       ///< [s] a lever's full travel (0: the autopilot's 0.5 s)
     int line = 0;
 };
 
 /// Reads an autopilot path: one waypoint per line, `id=value` pairs (values may end
-/// in `deg`), `tol=value`, or `wait=seconds`; `#` starts a comment. False with `error`
+/// in `deg`), `tol=value`, `lever=fraction` or `lever=id:fraction` and `ramp=seconds`
+/// (a gentle move: the levers, or that joint's, open at most that far, the others eased
+/// with them so that the joints still arrive together, and take that long for their full
+/// travel instead of 0.5 s), or `wait=seconds`; `#` starts a comment. False with `error`
 /// ("line 3: …").
 bool parseAutopilotPath(const QString& text, std::vector<AutopilotWaypoint>& out, QString* error);
 
@@ -56,6 +62,19 @@ bool parseAutopilotPath(const QString& text, std::vector<AutopilotWaypoint>& out
 /// `profile` maps (an axis per drive), recording them to `logPath`. False with `error`
 /// when a target's drive has no lever in the profile, or the log cannot be written. The
 /// run's result (as the autopilot flew it) is in `out`.
+/// The lever closes proportionally to the way left at the drive's full-lever rate (HYD:
+/// VMAX/VMIN; CYL/HMOTOR: the valve's flow over the area it fills), and in time for its
+/// ramp (and a spool's lag) to stop the joint at its target, never below what
+/// moves the joint (HYD: 12 %; fluid power: the opening whose run-on, the lever's
+/// return and the spool's lag, stays within half the tolerance); a joint that has shown
+/// more speed than its valve gives (a load running ahead of its oil) is slowed down
+/// sooner. A fluid-power joint has arrived only when it is within tolerance and has
+/// settled, and near its target it is not pushed back while it still swings on its oil
+/// (that would feed the swing). A lever that also
+/// moves a joint the waypoint does not aim (the claws' lever) is eased as that joint
+/// nears its end stop, so that it arrives at under a third of its speed. Levers whose
+/// fluid-power sections share a pump are eased back together so that they never ask it
+/// for more than 95 % of its flow (a careful operator does not saturate the pump).
 /// With `camera`, a chase camera is recorded too: every 0.5 s, looking at the tracked
 /// point (smoothed) from behind the machine and 35° to the side, from above.
 bool recordWithAutopilot(std::shared_ptr<const Tutorial> tutorial, const std::vector<AutopilotWaypoint>& path,

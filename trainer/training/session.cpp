@@ -1,5 +1,7 @@
 #include "trainer/training/session.h"
 
+#include "trainer/io/read_file.h"
+
 #include "solver/kinematics/kinematics.h"
 
 #include <QCoreApplication>
@@ -29,15 +31,6 @@ QString shown(double v, int decimals)
     QLocale locale;
     locale.setNumberOptions(QLocale::OmitGroupSeparator);
     return locale.toString(v, 'f', decimals);
-}
-
-/// A solver Text in the current language (as i18n::text, which the trainer library does
-/// not link: the catalogue's translation of each template, English without one).
-QString translated(const solver::Text& t)
-{
-    return QString::fromStdString(t.render([](const char* context, const char* tmpl) {
-        return QCoreApplication::translate(context, tmpl).toStdString();
-    }));
 }
 
 /// The largest angle of the rotation between two attitudes [rad].
@@ -105,6 +98,8 @@ QString TutorialEvent::label(Kind k)
 }
 
 namespace {
+
+constexpr double kLiftedClear = 0.005;  // [m] a load taken counts once this clear of the scene
 
 /// A fault event's sentence from its detail ("hose-burst LEVANTE PLUMA"…): the drive as
 /// the model names it, the person in `language` (by `subject`, else by the English name).
@@ -414,6 +409,7 @@ void TutorialSession::checkGrip()
             std::string error;
             if (m_sim->weld(t.toolBody, t.loadBody, m_simEvents, error)) {
                 m_grasped = true;
+                m_loadResting = true;
                 addEvent(TutorialEvent::Kind::Grasp, dist, 0.0, {});
             }
         } else {
@@ -523,7 +519,13 @@ void TutorialSession::checkClearances()
     // the load counts while carried, except near the place it is being set down on (its
     // SEAT zone: a liner slid into its slot touches its neighbours): there only a hard
     // hit counts
-    bool loadCounts = m_grasped;
+    // A load just taken still lies on what held it (a liner on its cart's timbers) until the
+    // machine's oil has built the pressure to lift it: it counts once it has come clear.
+    if (m_grasped && m_loadResting && sc.avoidScene) {
+        const solver::Clearance c = m_world->bodyToScene(t.loadBody);
+        if (!c.valid() || c.distance > kLiftedClear) m_loadResting = false;
+    }
+    bool loadCounts = m_grasped && !(m_loadResting && sc.avoidScene);
     bool seating = false;
     const std::vector<Goal>& goals = t.spec.goals;
     if (loadCounts && m_progress.goal < int(goals.size())) {

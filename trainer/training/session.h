@@ -238,6 +238,7 @@ private:
     std::vector<SessionSample> m_samples;
     // grip
     bool m_grasped = false, m_wasClosed = false, m_wasOpen = true, m_fixed = false;
+    bool m_loadResting = false;  // grasped, not yet lifted clear of what it lay on
     // goal
     double m_goalStart = 0.0;
     bool m_enteredGoal = false;

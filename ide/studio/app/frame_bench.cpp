@@ -51,7 +51,7 @@ QString defaultModel()
 {
     const QString installed = QCoreApplication::applicationDirPath() + "/../share/padrob/models";
     const QString dir = QDir(installed).exists() ? installed : QStringLiteral(PADROB_MODELS_DIR);
-    return QDir(dir).absoluteFilePath(QStringLiteral("liner_manipulator.pad"));
+    return QDir(dir).absoluteFilePath(QStringLiteral("liner_manipulator_fluid.pad"));
 }
 
 /// Seconds since this process started (its start time in /proc/self/stat, clock ticks

@@ -640,7 +640,7 @@ void MainWindow::openInitial(const QString& path)
 {
     offerRecovery();
     if (!m_editor->filePath().isEmpty() || m_editor->isModified()) return;  // a recovered model
-    const QString initial = path.isEmpty() ? modelsDir() + "/liner_manipulator.pad" : path;
+    const QString initial = path.isEmpty() ? modelsDir() + "/liner_manipulator_fluid.pad" : path;
     if (!openFile(initial)) m_editor->newModel();
 }
 

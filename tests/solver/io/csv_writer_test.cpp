@@ -158,9 +158,12 @@ TEST(CsvWriter, UncommittedWriterLeavesNoFile)
     {
         CsvWriter w(path);
         ASSERT_TRUE(w.ok());
-        ASSERT_FALSE(w.temporaryPath().empty());
-        EXPECT_TRUE(fs::exists(w.temporaryPath()));
-        EXPECT_EQ(fs::path(w.temporaryPath()).parent_path(), dir.dir());  // next to the target
+        if (w.temporaryPath().empty()) {
+            EXPECT_TRUE(listing(dir.dir()).empty());  // an unnamed file (O_TMPFILE): nothing to leave behind
+        } else {
+            EXPECT_TRUE(fs::exists(w.temporaryPath()));  // (a file system without O_TMPFILE)
+            EXPECT_EQ(fs::path(w.temporaryPath()).parent_path(), dir.dir());  // next to the target
+        }
         w.writeHeader(names({"t"}));
         const double row[] = {1.0};
         w.writeRow(row);
