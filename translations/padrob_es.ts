@@ -282,7 +282,7 @@
         <location filename="../solver/inertia/solid_inertia.cpp" line="+68" />
         <location line="+131" />
         <location filename="../solver/parse/parser.cpp" line="+1362" />
-        <location filename="../solver/spec/validate.cpp" line="+432" />
+        <location filename="../solver/spec/validate.cpp" line="+452" />
         <location line="+107" />
         <source>graphic %1</source>
         <translation>gráfico %1</translation>
@@ -377,13 +377,13 @@
         <translation>G %1 queda fuera de los controles de distancia libre: %2</translation>
     </message>
     <message>
-        <location filename="../solver/compile/compile.cpp" line="+192" />
+        <location filename="../solver/compile/compile.cpp" line="+199" />
         <location filename="../solver/compile/initial_configuration.cpp" line="+44" />
         <location line="+9" />
         <location filename="../solver/parse/parser.cpp" line="-550" />
         <location line="+134" />
-        <location filename="../solver/spec/validate.cpp" line="-480" />
-        <location line="+504" />
+        <location filename="../solver/spec/validate.cpp" line="-500" />
+        <location line="+524" />
         <source>joint %1</source>
         <translation>articulación %1</translation>
     </message>
@@ -421,8 +421,8 @@
         <location filename="../solver/compile/topology.cpp" line="+24" />
         <location filename="../solver/integrate/simulation.cpp" line="+52" />
         <location filename="../solver/parse/parser.cpp" line="-199" />
-        <location filename="../solver/spec/validate.cpp" line="-511" />
-        <location line="+510" />
+        <location filename="../solver/spec/validate.cpp" line="-531" />
+        <location line="+530" />
         <source>body %1</source>
         <translation>cuerpo %1</translation>
     </message>
@@ -930,7 +930,7 @@
         <translation>un modelo es un texto corto; ponga las mallas en sus propios archivos (G … MESH "file")</translation>
     </message>
     <message>
-        <location filename="../solver/spec/validate.cpp" line="-509" />
+        <location filename="../solver/spec/validate.cpp" line="-529" />
         <source>body %1 (%2)</source>
         <translation>cuerpo %1 (%2)</translation>
     </message>
@@ -956,7 +956,7 @@
         <translation>dele otro id o elimine una de las dos</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+14" />
         <source>body 0 is the ground and cannot have a mass or inertia</source>
         <translation>el cuerpo 0 es la tierra y no puede tener masa ni inercia</translation>
     </message>
@@ -974,6 +974,26 @@
         <location line="+1" />
         <source>a mass is zero or positive, in kg</source>
         <translation>una masa es cero o positiva, en kg</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1's mass %2 kg is beyond any machine's (at most %3 kg)</source>
+        <translation>la masa del %1, %2 kg, supera la de cualquier máquina (como máximo %3 kg)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>check the units: a mass is in kg</source>
+        <translation>revise las unidades: una masa va en kg</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1's inertia %2 kg m² is beyond any machine's (at most %3 kg m²)</source>
+        <translation>la inercia del %1, %2 kg m², supera la de cualquier máquina (como máximo %3 kg m²)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>check the units: moments and products of inertia are in kg m²</source>
+        <translation>revise las unidades: los momentos y productos de inercia van en kg m²</translation>
     </message>
     <message>
         <location line="+10" />

@@ -167,6 +167,13 @@ void compileFluidPower(const ModelSpec& spec, TreeJoint treeJoint, Model& m)
         m.drive[static_cast<std::size_t>(i)].circuit = static_cast<int>(m.circuits.size());
         m.circuits.push_back(c);
     }
+    for (std::size_t p = 0; p < m.pumps.size(); ++p) {
+        const auto fed = [p](const CompiledCircuit& c) { return c.pump == static_cast<int>(p); };
+        m.pumps[p].allPost = std::any_of(m.circuits.begin(), m.circuits.end(), fed) &&
+                             std::all_of(m.circuits.begin(), m.circuits.end(), [&](const CompiledCircuit& c) {
+                                 return !fed(c) || c.comp == Compensation::Post;
+                             });
+    }
 }
 
 }  // namespace

@@ -39,6 +39,9 @@ struct CompiledPump {
     double pmax = 0;    ///< [Pa]
     bool loadSensing = false;
     double margin = 0;  ///< Δp_ls [Pa] (load-sensing only)
+    /// It feeds sections and every one is post-compensated (POST, flow sharing): when
+    /// saturated it shares Qmax out instead of its supply falling (set with the circuits).
+    bool allPost = false;
 };
 
 enum class ActuatorKind { Cylinder, Motor };

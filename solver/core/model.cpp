@@ -31,6 +31,17 @@ double Model::coordinateRate(int i, double theta) const
     return jointType[i] == JointType::Actuator ? lengthLaw[i].lengthRate(theta) : 1.0;
 }
 
+CoordinateMap Model::coordinateMap(int i, double theta) const
+{
+    CoordinateMap map;
+    if (jointType[i] == JointType::Actuator) {
+        lengthLaw[i].lengthDerivatives(theta, map.q, map.dq, map.ddq);
+    } else {
+        map.q = theta;
+    }
+    return map;
+}
+
 }  // namespace solver
 
 namespace solver {

@@ -98,6 +98,14 @@ struct CutJoint {
     Eigen::Vector3d cl1 = Eigen::Vector3d::Zero(), cl2 = Eigen::Vector3d::Zero();  ///< T 1: ends, in bodies 1 and 2
 };
 
+/// The modeler's coordinate of a joint as a function of θ, at one θ: q, dq/dθ and
+/// d²q/dθ² (T 1: L, L', L''; otherwise θ, 1, 0).
+struct CoordinateMap {
+    double q = 0;    ///< [rad or m]
+    double dq = 1;   ///< [m/rad for T 1, else 1]
+    double ddq = 0;  ///< [m/rad^2 for T 1, else 0]
+};
+
 struct Model {
     int nb = 0;  ///< moving bodies = tree joints
     Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);  ///< [m/s^2]
@@ -145,6 +153,9 @@ struct Model {
     double coordinate(int i, double theta) const;
     /// dq/dθ of joint i at θ (T 1: dL/dθ; else 1).
     double coordinateRate(int i, double theta) const;
+    /// q, dq/dθ and d²q/dθ² of joint i at θ at once (the same values as the two above;
+    /// for T 1 one sine and cosine and one square root, for the step loop).
+    CoordinateMap coordinateMap(int i, double theta) const;
 };
 
 }  // namespace solver

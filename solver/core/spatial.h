@@ -16,45 +16,84 @@ namespace solver {
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
-/// [v]×: the matrix with [v]× w = v × w.
-inline Eigen::Matrix3d skew(const Eigen::Vector3d& v)
+// The 6-vectors below are assembled from their 3-vector halves by head<3>()/tail<3>()
+// (fixed-size blocks), not by Eigen's comma initializer, whose blocks are sized at run
+// time: in the step loop that costs more than the arithmetic. The functions are a few
+// dozen flops each and always inlined (PADROB_SPATIAL_INLINE): GCC at -O2 takes Eigen's
+// expression templates for large code and would leave them as calls in the
+// articulated-body passes.
+
+#define PADROB_SPATIAL_INLINE [[gnu::always_inline]] inline
+
+/// out = a b for 3×3 matrices (a may be an Isometry3d's linear() block, b a
+/// transpose), column by column, the sums in Eigen's own order: GCC at -O2 leaves
+/// Eigen's fixed 3×3 product as a call, which costs more than its 45 flops.
+template <class A, class B>
+PADROB_SPATIAL_INLINE void multiply3(const A& a, const B& b, Eigen::Matrix3d& out)
 {
-    Eigen::Matrix3d s;
-    // clang-format off
-    s <<      0, -v.z(),  v.y(),
-          v.z(),      0, -v.x(),
-         -v.y(),  v.x(),      0;
-    // clang-format on
-    return s;
+    for (int k = 0; k < 3; ++k) out.col(k) = a.col(0) * b(0, k) + a.col(1) * b(1, k) + a.col(2) * b(2, k);
+}
+
+/// a v for a 3×3 matrix (or block), likewise.
+template <class A>
+PADROB_SPATIAL_INLINE Eigen::Vector3d multiply3(const A& a, const Eigen::Vector3d& v)
+{
+    return a.col(0) * v(0) + a.col(1) * v(1) + a.col(2) * v(2);
+}
+
+/// a v for a 6×6 matrix, likewise.
+PADROB_SPATIAL_INLINE Vector6d multiply6(const Matrix6d& a, const Vector6d& v)
+{
+    return a.col(0) * v(0) + a.col(1) * v(1) + a.col(2) * v(2) + a.col(3) * v(3) + a.col(4) * v(4) +
+           a.col(5) * v(5);
+}
+
+/// Writes [v]× (the matrix with [v]× w = v × w) into the 3×3 block `s`, in place: a
+/// 3×3 temporary just written and copied in would cost more than the skew itself.
+template <class Block>
+PADROB_SPATIAL_INLINE void setSkew(const Eigen::Vector3d& v, Block&& s)
+{
+    s(0, 0) = 0;
+    s(0, 1) = -v.z();
+    s(0, 2) = v.y();
+    s(1, 0) = v.z();
+    s(1, 1) = 0;
+    s(1, 2) = -v.x();
+    s(2, 0) = -v.y();
+    s(2, 1) = v.x();
+    s(2, 2) = 0;
 }
 
 /// Motion cross product v ×m m = [ω × m_ω; ω × m_v + v_O × m_ω] (RBDA eq. 2.31).
-inline Vector6d crossMotion(const Vector6d& v, const Vector6d& m)
+PADROB_SPATIAL_INLINE Vector6d crossMotion(const Vector6d& v, const Vector6d& m)
 {
     // (3-vectors copied out: Eigen's cross on 6-vector segments is slower)
     const Eigen::Vector3d w = v.head<3>(), vo = v.tail<3>();
     const Eigen::Vector3d mw = m.head<3>(), mv = m.tail<3>();
     Vector6d out;
-    out << w.cross(mw), w.cross(mv) + vo.cross(mw);
+    out.head<3>() = w.cross(mw);
+    out.tail<3>() = w.cross(mv) + vo.cross(mw);
     return out;
 }
 
 /// Force cross product v ×* f = [ω × n + v_O × f; ω × f] (RBDA eq. 2.32).
-inline Vector6d crossForce(const Vector6d& v, const Vector6d& f)
+PADROB_SPATIAL_INLINE Vector6d crossForce(const Vector6d& v, const Vector6d& f)
 {
     const Eigen::Vector3d w = v.head<3>(), vo = v.tail<3>();
     const Eigen::Vector3d n = f.head<3>(), fo = f.tail<3>();
     Vector6d out;
-    out << w.cross(n) + vo.cross(fo), w.cross(fo);
+    out.head<3>() = w.cross(n) + vo.cross(fo);
+    out.tail<3>() = w.cross(fo);
     return out;
 }
 
 /// A force vector moved from O to the point p: [n_O − p × f; f] (the moment about p).
-inline Vector6d forceAboutPoint(const Vector6d& f, const Eigen::Vector3d& p)
+PADROB_SPATIAL_INLINE Vector6d forceAboutPoint(const Vector6d& f, const Eigen::Vector3d& p)
 {
     const Eigen::Vector3d n = f.head<3>(), fo = f.tail<3>();
     Vector6d out;
-    out << n - p.cross(fo), fo;
+    out.head<3>() = n - p.cross(fo);
+    out.tail<3>() = fo;
     return out;
 }
 
@@ -69,37 +108,38 @@ struct RigidInertia {
     Eigen::Matrix3d Ibar = Eigen::Matrix3d::Zero();
 
     /// I·v = [Ī ω + h × v_O; m v_O − h × ω] (a force vector).
-    Vector6d operator*(const Vector6d& v) const
+    PADROB_SPATIAL_INLINE Vector6d operator*(const Vector6d& v) const
     {
         const Eigen::Vector3d w = v.head<3>(), lin = v.tail<3>();
         Vector6d f;
-        f << Ibar * w + h.cross(lin), m * lin - h.cross(w);
+        f.head<3>() = multiply3(Ibar, w) + h.cross(lin);
+        f.tail<3>() = m * lin - h.cross(w);
         return f;
     }
 
     /// Writes the 6×6 matrix into `out`.
-    void toMatrix(Matrix6d& out) const
+    PADROB_SPATIAL_INLINE void toMatrix(Matrix6d& out) const
     {
-        const Eigen::Matrix3d hx = skew(h);
         out.topLeftCorner<3, 3>() = Ibar;
-        out.topRightCorner<3, 3>() = hx;
-        out.bottomLeftCorner<3, 3>() = hx.transpose();
+        setSkew(h, out.topRightCorner<3, 3>());
+        setSkew(-h, out.bottomLeftCorner<3, 3>());  // [h]×ᵀ = [−h]×
         out.bottomRightCorner<3, 3>() = m * Eigen::Matrix3d::Identity();
     }
 };
 
 /// The spatial inertia about O of a body of mass m [kg] with its centre of mass at the
-/// world point c [m] and rotational inertia Ic about c in world axes [kg m^2].
-inline RigidInertia rigidInertiaAt(double m, const Eigen::Vector3d& c, const Eigen::Matrix3d& Ic)
+/// world point c [m] and rotational inertia Ic about c in world axes [kg m^2], written
+/// into `out`. Ic may be out.Ibar itself (the dynamics compute it there: copying a
+/// 3×3 matrix just written costs more than the parallel-axis term).
+PADROB_SPATIAL_INLINE void rigidInertiaAt(double m, const Eigen::Vector3d& c, const Eigen::Matrix3d& Ic,
+                                          RigidInertia& out)
 {
-    RigidInertia I;
-    I.m = m;
-    I.h = m * c;
-    I.Ibar = Ic;
+    out.m = m;
+    out.h = m * c;
+    if (&Ic != &out.Ibar) out.Ibar = Ic;
     // m([c]×)ᵀ[c]× = m(|c|² 1 − c cᵀ)
-    I.Ibar.noalias() -= m * c * c.transpose();
-    I.Ibar.diagonal().array() += m * c.squaredNorm();
-    return I;
+    out.Ibar.noalias() -= m * c * c.transpose();
+    out.Ibar.diagonal().array() += m * c.squaredNorm();
 }
 
 }  // namespace solver

@@ -337,6 +337,9 @@ Eigen::VectorXd constraintCorrection(const Eigen::MatrixXd& M, const std::vector
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(freeBlock(M, free));
     const Eigen::MatrixXd minvGt = ldlt.solve(gf.transpose());  // M_FF⁻¹ G_Fᵀ
     const Eigen::MatrixXd S = gf * minvGt;
+    // a factorisation of non-finite numbers is undefined (Eigen's SVD crashes on them):
+    // no correction, and the caller reports the constraints unmet
+    if (!S.allFinite() || !target.allFinite()) return out;
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(S, Eigen::ComputeThinU | Eigen::ComputeThinV);
     svd.setThreshold(1e-10);
     const Eigen::VectorXd mu = svd.solve(target);

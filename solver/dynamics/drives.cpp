@@ -7,17 +7,6 @@
 
 namespace solver {
 
-CoordinateMap coordinateMap(const Model& model, int i, double theta)
-{
-    CoordinateMap map;
-    if (model.jointType[i] == JointType::Actuator) {
-        model.lengthLaw[i].lengthDerivatives(theta, map.q, map.dq, map.ddq);
-    } else {
-        map.q = theta;
-    }
-    return map;
-}
-
 bool isPrescribed(const Model& model, const State& state, int i)
 {
     if (state.limit[i] != LimitState::Free) return true;
@@ -46,7 +35,7 @@ double prescribedRate(const Model& model, const State& state, int i)
 
 double prescribedAcceleration(const Model& model, const State& state, int i)
 {
-    return prescribedAcceleration(model, state, i, coordinateMap(model, i, state.q[i]));
+    return prescribedAcceleration(model, state, i, model.coordinateMap(i, state.q[i]));
 }
 
 double prescribedAcceleration(const Model& model, const State& state, int i, const CoordinateMap& map)
@@ -75,7 +64,7 @@ double servoError(const Model& model, const State& state, int i)
 double driveForceLaw(const Model& model, const State& state, int i)
 {
     if (model.drive[i].type == DriveType::None) return 0.0;
-    return driveForceLaw(model, state, i, coordinateMap(model, i, state.q[i]));
+    return driveForceLaw(model, state, i, model.coordinateMap(i, state.q[i]));
 }
 
 double driveForceLaw(const Model& model, const State& state, int i, const CoordinateMap& map)

@@ -27,15 +27,6 @@
 
 namespace solver {
 
-/// The modeler's coordinate of a joint as a function of θ, at one θ: q, dq/dθ and
-/// d²q/dθ² (T 1: L, L', L''; otherwise θ, 1, 0).
-struct CoordinateMap {
-    double q = 0;    ///< [rad or m]
-    double dq = 1;   ///< [m/rad for T 1, else 1]
-    double ddq = 0;  ///< [m/rad^2 for T 1, else 0]
-};
-CoordinateMap coordinateMap(const Model& model, int i, double theta);
-
 /// True when joint i's acceleration is prescribed at `state` (see above).
 bool isPrescribed(const Model& model, const State& state, int i);
 

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace solver {
@@ -27,6 +28,17 @@ double flooredInertia(const Data& data, int i, double D)
     if (data.inertiaFloor.size() == 0) return D;
     const double floor = data.inertiaFloor[i] * data.dq[i] * data.dq[i];
     return D < floor ? floor : D;
+}
+
+/// parent += IA − U Uᵀ/D: the articulated inertia a free joint passes to its parent
+/// (RBDA table 7.1), column by column (Eigen's outer product is a call at -O2).
+void passArticulatedInertia(Matrix6d& parent, const Matrix6d& IA, const Vector6d& U, double D)
+{
+    const Vector6d Ud = U / D;
+    for (int k = 0; k < 6; ++k) {
+        parent.col(k) += IA.col(k);
+        parent.col(k) -= Ud * U(k);
+    }
 }
 
 [[maybe_unused]] bool sized(const Model& model, const State& state, const Data& data)
@@ -56,19 +68,23 @@ void forwardDynamics(const Model& model, const State& state, Data& data)
 
 namespace {
 
-/// Body i's spatial inertia about the world origin at the pose data.X_wb[i] (into
-/// data.Ib[i]); returns its centre of mass in the world.
-Vector3d bodyInertia(const Model& model, Data& data, int i)
+/// Body i's centre of mass in the world at the pose data.X_wb[i].
+Vector3d worldCom(const Model& model, const Data& data, int i)
 {
     const Eigen::Isometry3d& X = data.X_wb[i];
-    const Matrix3d R = X.linear();
-    const Vector3d com = R * model.com[i] + X.translation();
+    return multiply3(X.linear(), model.com[i]) + X.translation();
+}
+
+/// Body i's spatial inertia about the world origin at the pose data.X_wb[i] (into
+/// data.Ib[i]).
+void bodyInertia(const Model& model, Data& data, int i)
+{
+    const Eigen::Isometry3d& X = data.X_wb[i];
     Matrix3d ri;
-    ri.noalias() = R * model.inertia[i];
-    Matrix3d ic;
-    ic.noalias() = ri * R.transpose();
-    data.Ib[i] = rigidInertiaAt(model.mass[i], com, ic);
-    return com;
+    multiply3(X.linear(), model.inertia[i], ri);
+    RigidInertia& I = data.Ib[i];
+    multiply3(ri, X.linear().transpose(), I.Ibar);  // about the centre of mass, world axes
+    rigidInertiaAt(model.mass[i], worldCom(model, data, i), I.Ibar, I);
 }
 
 /// Pass 1: body inertias and bias forces about the world origin; per joint its drive
@@ -79,11 +95,13 @@ int bodyTerms(const Model& model, const State& state, Data& data, bool keepInert
     const int nb = model.nb;
     int nFree = 0;
 
-    // 1. body inertias and bias forces about the world origin; known θ̈ or τ per joint
+    // 1. body inertias, all of them before they are read: an inertia read right after
+    // it was written (3×3 blocks stored in pieces) stalls the processor's store forwarding
+    for (int i = 0; i < nb && !keepInertias; ++i) bodyInertia(model, data, i);
+    // bias forces about the world origin; known θ̈ or τ per joint
     for (int i = 0; i < nb; ++i) {
         const Vector3d o = data.X_wb[i].translation();
-        const Vector3d com =
-            keepInertias ? Vector3d(data.X_wb[i].linear() * model.com[i] + o) : bodyInertia(model, data, i);
+        const Vector3d com = worldCom(model, data, i);
 
         // p = v ×* I v − fext − gravity (fext is about the body origin o)
         Vector6d& p = data.pb[i];
@@ -95,7 +113,7 @@ int bodyTerms(const Model& model, const State& state, Data& data, bool keepInert
         p.tail<3>() -= fo + fg;
 
         // the drive's force along θ; known acceleration or known force
-        const CoordinateMap map = coordinateMap(model, i, state.q[i]);
+        const CoordinateMap map = model.coordinateMap(i, state.q[i]);
         data.dq[i] = map.dq;
         data.driveForce[i] = driveForceLaw(model, state, i, map);
         data.tauDrive[i] = data.driveForce[i] * map.dq;
@@ -197,7 +215,7 @@ void hybridDynamicsFrom(const Model& model, const State& state, Data& data, Dyna
         const Vector6d& s = data.S[i];
         if (!data.prescribed[i]) {
             Vector6d& U = data.U[i];
-            U.noalias() = data.IA[i] * s;
+            U = multiply6(data.IA[i], s);
             const double D = flooredInertia(data, i, s.dot(U));
             const double u = data.tauKnown[i] - s.dot(data.pA[i]);
             data.D[i] = D;
@@ -206,15 +224,14 @@ void hybridDynamicsFrom(const Model& model, const State& state, Data& data, Dyna
                 // I^a = I^A − U Uᵀ/D;  p^a = p^A + I^a c + U u/D
                 const double k = (u - U.dot(data.c[i])) / D;
                 data.pA[lam] += data.pA[i] + k * U;
-                data.pA[lam].noalias() += data.IA[i] * data.c[i];
-                data.IA[lam] += data.IA[i];
-                data.IA[lam].noalias() -= (U / D) * U.transpose();
+                data.pA[lam] += multiply6(data.IA[i], data.c[i]);
+                passArticulatedInertia(data.IA[lam], data.IA[i], U, D);
             }
         } else if (lam >= 0) {
             // a known θ̈ passes the whole inertia to the parent
             const Vector6d ac = data.c[i] + s * data.qdd[i];
             data.pA[lam] += data.pA[i];
-            data.pA[lam].noalias() += data.IA[i] * ac;
+            data.pA[lam] += multiply6(data.IA[i], ac);
             data.IA[lam] += data.IA[i];
         }
     }
@@ -267,19 +284,18 @@ void impulseResponse(const Model& model, const State& state, Data& data, const E
         const Vector6d& s = data.S[i];
         if (!data.prescribed[i]) {
             Vector6d& U = data.U[i];
-            U.noalias() = data.IA[i] * s;
+            U = multiply6(data.IA[i], s);
             const double D = flooredInertia(data, i, s.dot(U));
             const double u = freeImpulse[i] - s.dot(data.pA[i]);
             data.D[i] = D;
             data.uA[i] = u;
             if (lam >= 0) {
                 data.pA[lam] += data.pA[i] + (u / D) * U;
-                data.IA[lam] += data.IA[i];
-                data.IA[lam].noalias() -= (U / D) * U.transpose();
+                passArticulatedInertia(data.IA[lam], data.IA[i], U, D);
             }
         } else if (lam >= 0) {
             data.pA[lam] += data.pA[i];
-            data.pA[lam].noalias() += data.IA[i] * (s * prescribedJump[i]);
+            data.pA[lam] += multiply6(data.IA[i], s * prescribedJump[i]);
             data.IA[lam] += data.IA[i];
         }
     }
@@ -362,7 +378,13 @@ void constrainedDynamics(const Model& model, const State& state, Data& data)
     // θ̈_F = particular + null-space part: G_F θ̈_F = γ' (least squares, redundant rows
     // allowed), Nᵀ(M_FF θ̈_F − rhs) = 0; then λ from G_Fᵀ λ = M_FF θ̈_F − rhs (min-norm)
     data.lambda.setZero(m);
-    if (nF > 0 && m > 0) {
+    if (!GF.allFinite() || !MFF.allFinite() || !rhs.allFinite() || !gp.allFinite()) {
+        // a factorisation of non-finite numbers is undefined (Eigen's SVD crashes on
+        // them): non-finite accelerations, which the integrator reports with the time
+        for (int i : F) data.qdd[i] = std::numeric_limits<double>::quiet_NaN();
+        data.constraintSingular.resize(0);
+        data.constraintRank = 0;
+    } else if (nF > 0 && m > 0) {
         Eigen::JacobiSVD<Eigen::MatrixXd> svd(GF, Eigen::ComputeThinU | Eigen::ComputeFullV);
         data.constraintSingular = svd.singularValues();
         const Eigen::VectorXd& sv = data.constraintSingular;

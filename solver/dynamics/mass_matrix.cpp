@@ -29,7 +29,9 @@ void massMatrix(const Model& model, const Data& data, Eigen::MatrixXd& M)
     for (int i = 0; i < model.nb; ++i) {
         const Eigen::Matrix3d R = data.X_wb[i].linear();
         const Eigen::Vector3d com = data.X_wb[i] * model.com[i];
-        rigidInertiaAt(model.mass[i], com, R * model.inertia[i] * R.transpose()).toMatrix(composite[i]);
+        RigidInertia I;
+        rigidInertiaAt(model.mass[i], com, R * model.inertia[i] * R.transpose(), I);
+        I.toMatrix(composite[i]);
     }
     massMatrixFromInertias(model, data, composite, M);
 }

@@ -9,12 +9,12 @@ double actuatorForce(const CompiledCircuit& c, double pA, double pB, double qd)
     return std::max(0.0, pA) * c.areaA - std::max(0.0, pB) * c.areaB - c.friction * qd;
 }
 
-ChamberRates chamberRates(const CompiledCircuit& c, double bulk, double q, double qd, double pA, double pB, double qA,
-                          double qB)
+ChamberRates chamberRates(const CompiledCircuit& c, double stiffA, double stiffB, double qd, double pA, double pB,
+                          double qA, double qB)
 {
     ChamberRates r;
-    r.dpA = bulk / c.volumeA(q) * (qA - c.areaA * qd);
-    r.dpB = bulk / c.volumeB(q) * (qB + c.areaB * qd);
+    r.dpA = stiffA * (qA - c.areaA * qd);
+    r.dpB = stiffB * (qB + c.areaB * qd);
     // (reported as cavitation only when the oil would leave faster than 5 % of the
     // valve's nominal flow: a chamber at tank pressure at rest, or crept on by a
     // neighbour's motion, is not cavitating)

@@ -26,8 +26,9 @@ struct ChamberRates {
     int cavitation = 0;       ///< 1: A held at 0, 2: B held at 0, 3: both
 };
 /// The chambers' pressure rates for the net flows into them (valve minus relief)
-/// qA, qB [m^3/s] at the modeler's coordinate q and rate qd.
-ChamberRates chamberRates(const CompiledCircuit& c, double bulk, double q, double qd, double pA, double pB, double qA,
-                          double qB);
+/// qA, qB [m^3/s] at the modeler's rate qd, with stiffA = β/V_A and stiffB = β/V_B
+/// [Pa/m^3] the oil's stiffness in each chamber at the current volumes.
+ChamberRates chamberRates(const CompiledCircuit& c, double stiffA, double stiffB, double qd, double pA, double pB,
+                          double qA, double qB);
 
 }  // namespace solver::hydraulics

@@ -32,11 +32,13 @@ void evaluateHydraulics(const Model& model, const State& state, Data& data)
         const double pS = data.supplyPressure[k.pump];
         const SectionFlows f = sectionFlows(k, x, pS, pA, pB, pLam, data.pumpShare[k.pump]);
         const double rA = reliefFlow(k, pA, pump.pmax), rB = reliefFlow(k, pB, pump.pmax);
-        const double theta = state.q[j];
-        const double q = model.coordinate(j, theta);
-        const double qd = model.coordinateRate(j, theta) * state.qd[j];
-        const ChamberRates r = chamberRates(k, bulk, q, qd, state.fluid[i + 1], state.fluid[i + 2], f.intoA - rA,
-                                            f.intoB - rB);
+        const CoordinateMap map = model.coordinateMap(j, state.q[j]);
+        const double q = map.q;
+        const double qd = map.dq * state.qd[j];
+        const double vA = k.volumeA(q), vB = k.volumeB(q);
+        const double stiffA = bulk / vA, stiffB = bulk / vB;
+        const ChamberRates r = chamberRates(k, stiffA, stiffB, qd, state.fluid[i + 1], state.fluid[i + 2],
+                                            f.intoA - rA, f.intoB - rB);
         data.fluidRate[i] = spoolRate(k, x, state.u[j]);
         data.fluidRate[i + 1] = r.dpA;
         data.fluidRate[i + 2] = r.dpB;
@@ -46,7 +48,6 @@ void evaluateHydraulics(const Model& model, const State& state, Data& data)
         data.flowB[ci] = f.intoB;
         data.reliefFlow[ci] = rA + rB;
         data.cavitation[c] = r.cavitation;
-        const double vA = k.volumeA(q), vB = k.volumeB(q);
         data.oilStiffness[ci] = bulk * (k.areaA * k.areaA / vA + k.areaB * k.areaB / vB);
         if (data.oilSpringStep > 0 && model.drive[static_cast<std::size_t>(j)].type == DriveType::FluidPower) {
             const double r = data.oilSpringStep / kOilSpringStep;
@@ -54,7 +55,7 @@ void evaluateHydraulics(const Model& model, const State& state, Data& data)
         }
         const double gA = f.slopeA + (pA > pump.pmax ? k.reliefGain : 0.0);
         const double gB = f.slopeB + (pB > pump.pmax ? k.reliefGain : 0.0);
-        data.fluidDecay[ci] = std::max({bulk / vA * gA, bulk / vB * gB, 1.0 / k.tau});
+        data.fluidDecay[ci] = std::max({stiffA * gA, stiffB * gB, 1.0 / k.tau});
     }
 }
 

@@ -23,8 +23,9 @@ double demandAt(const Model& model, int p, const Eigen::VectorXd& fluid, double 
         if (std::abs(x) < kSpoolClosed) continue;
         const double opening = std::min(1.0, std::abs(x));
         const double pFed = std::max(0.0, x > 0 ? fluid[i + 1] : fluid[i + 2]);
-        sum += meterIn(k, opening, pS, pFed, pLam);
-        if (slope) ds -= meterInSlope(k, opening, pS, pFed, pLam);  // (meterInSlope is ∂/∂p_fed = −∂/∂p_S)
+        const MeterIn in = meterIn(k, opening, pS, pFed, pLam);
+        sum += in.flow;
+        ds -= in.slope;  // (the slope is ∂/∂p_fed = −∂/∂p_S)
     }
     if (slope) *slope = ds;
     return sum;
@@ -36,25 +37,21 @@ PumpOperatingPoint operatePump(const Model& model, int p, const Eigen::VectorXd&
 {
     const CompiledPump& pump = model.pumps[static_cast<std::size_t>(p)];
     PumpOperatingPoint op;
-    bool allPost = true, any = false;
     double highest = -1;
     for (std::size_t c = 0; c < model.circuits.size(); ++c) {
         const CompiledCircuit& k = model.circuits[c];
         if (k.pump != p) continue;
-        any = true;
-        if (k.comp != Compensation::Post) allPost = false;
         const Eigen::Index i = kFluidStates * static_cast<Eigen::Index>(c);
         const double x = fluid[i];
         if (std::abs(x) < kSpoolClosed) continue;
         highest = std::max(highest, std::max(0.0, x > 0 ? fluid[i + 1] : fluid[i + 2]));
     }
-    if (!any) allPost = false;
     op.supply = pump.pmax;
     if (pump.loadSensing) op.supply = std::min(pump.pmax, std::max(0.0, highest) + pump.margin);
     op.demand = demandAt(model, p, fluid, op.supply);
     op.flow = op.demand;
     if (!(op.demand > pump.qmax)) return op;
-    if (allPost) {
+    if (pump.allPost) {
         op.share = pump.qmax / op.demand;
         op.flow = pump.qmax;
         return op;
@@ -66,9 +63,11 @@ PumpOperatingPoint operatePump(const Model& model, int p, const Eigen::VectorXd&
     double lo = 0, hi = op.supply;
     double x = guess > lo && guess < hi ? guess : 0.5 * (lo + hi);
     const double tolFlow = 1e-10 * pump.qmax;
+    double demandX = NAN;  // the demand at x, once evaluated there
     for (int iter = 0; iter < 100; ++iter) {
         double slope = 0;
-        const double f = demandAt(model, p, fluid, x, &slope) - pump.qmax;
+        demandX = demandAt(model, p, fluid, x, &slope);
+        const double f = demandX - pump.qmax;
         if (std::abs(f) <= tolFlow) break;
         if (f > 0) hi = x;
         else lo = x;
@@ -76,9 +75,10 @@ PumpOperatingPoint operatePump(const Model& model, int p, const Eigen::VectorXd&
         double next = slope > 0 ? x - f / slope : -1;
         if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
         x = next;
+        demandX = NAN;
     }
     op.supply = x;
-    op.flow = demandAt(model, p, fluid, op.supply);
+    op.flow = std::isnan(demandX) ? demandAt(model, p, fluid, x) : demandX;
     return op;
 }
 

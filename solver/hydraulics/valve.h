@@ -17,10 +17,13 @@ namespace solver::hydraulics {
 double spoolRate(const CompiledCircuit& c, double x, double u);
 
 /// The meter-in flow into the fed chamber [m^3/s] at spool opening |x| = `opening`,
-/// supply p_S and fed-chamber pressure pFed (≥ 0: the load-check valve).
-double meterIn(const CompiledCircuit& c, double opening, double pS, double pFed, double pLam);
-/// d(meterIn)/d(p_fed) (≤ 0), for the stiffness estimate.
-double meterInSlope(const CompiledCircuit& c, double opening, double pS, double pFed, double pLam);
+/// supply p_S and fed-chamber pressure pFed (≥ 0: the load-check valve), and its
+/// derivative in p_fed (≤ 0 [m^3/(s Pa)]; −∂/∂p_S), for the stiffness estimate and
+/// the pump's Newton iteration.
+struct MeterIn {
+    double flow = 0, slope = 0;
+};
+MeterIn meterIn(const CompiledCircuit& c, double opening, double pS, double pFed, double pLam);
 
 /// The section's flows into A and into B [m^3/s] (negative: out of the chamber), with
 /// the meter-in flow scaled by `share` (a POST pump's flow sharing; 1 otherwise).

@@ -40,14 +40,17 @@ void forwardKinematics(const Model& model, const Eigen::VectorXd& q, const Eigen
         const double th = sigma * q[i];
 
         // the child's joint frame: the parent's joint frame moved by J(σθ) (eq. 2.1)
-        // (3×3 and 3×1 parts, which Eigen multiplies faster than the 4×4 storage)
-        Eigen::Matrix3d R = model.X_pj[i].linear();
-        Vector3d x = model.X_pj[i].translation();
+        // (the 3×3 and 3×1 parts, which multiply faster than the 4×4 storage)
+        const Eigen::Isometry3d& X_pj = model.X_pj[i];
+        Eigen::Matrix3d R;
+        Vector3d x;
         if (p >= 0) {
-            const Eigen::Matrix3d Rp = data.X_wb[p].linear();
-            const Eigen::Matrix3d Rpj = R;
-            R.noalias() = Rp * Rpj;
-            x = Rp * x + data.X_wb[p].translation();
+            const Eigen::Isometry3d& X_wp = data.X_wb[p];
+            multiply3(X_wp.linear(), X_pj.linear(), R);
+            x = multiply3(X_wp.linear(), X_pj.translation()) + X_wp.translation();
+        } else {
+            R = X_pj.linear();
+            x = X_pj.translation();
         }
         Vector6d& s = data.S[i];
         if (model.jointType[i] == JointType::Prismatic) {
@@ -69,13 +72,14 @@ void forwardKinematics(const Model& model, const Eigen::VectorXd& q, const Eigen
         X_wj.linear() = R;
         X_wj.translation() = x;
         Eigen::Isometry3d& X_wb = data.X_wb[i];
-        const Eigen::Matrix3d Rjc = model.X_jc[i].linear();
-        X_wb.linear().noalias() = R * Rjc;
-        X_wb.translation().noalias() = R * model.X_jc[i].translation();
-        X_wb.translation() += x;
-
-        bodyVelocity(model, qd, data, i);
+        Eigen::Matrix3d Rwb;
+        multiply3(R, model.X_jc[i].linear(), Rwb);
+        X_wb.linear() = Rwb;
+        X_wb.translation() = multiply3(R, model.X_jc[i].translation()) + x;
     }
+    // the velocities in a pass of their own: reading S and X_wb right after they were
+    // written (in pieces) stalls the processor's store forwarding
+    velocityKinematics(model, qd, data);
 }
 
 void velocityKinematics(const Model& model, const Eigen::VectorXd& qd, Data& data)

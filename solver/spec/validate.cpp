@@ -60,6 +60,9 @@ void checkDuplicates(const Items& items, Id idOf, const Text& what, Diagnostics&
     }
 }
 
+constexpr double kMaxBodyMass = 1e12;     // [kg] (a million tonnes is 1e9)
+constexpr double kMaxBodyInertia = 1e18;  // [kg m²]
+
 void checkBody(const BodySpec& b, Diagnostics& d)
 {
     auto who = [&] { return bodyNamed(b.id, b.name); };
@@ -77,7 +80,24 @@ void checkBody(const BodySpec& b, Diagnostics& d)
                 trText("Diagnostics", "%1 has a negative mass (%2 kg)").with(who()).with(fmt(b.mass)),
                 trText("Diagnostics", "a mass is zero or positive, in kg"));
     }
+    // beyond any machine, and summed along the tree (composite inertias, parallel axes)
+    // they would overflow to inf: the dynamics would have nothing finite to factorise
+    if (b.mass > kMaxBodyMass) {
+        d.error("too-large", b.src.where("m"),
+                trText("Diagnostics", "%1's mass %2 kg is beyond any machine's (at most %3 kg)").with(who()).with(fmt(b.mass)).with(fmt(kMaxBodyMass)),
+                trText("Diagnostics", "check the units: a mass is in kg"));
+        return;
+    }
     Eigen::Matrix3d I = b.inertiaTensor();
+    if (I.cwiseAbs().maxCoeff() > kMaxBodyInertia) {
+        d.error("too-large", b.src.where("I"),
+                trText("Diagnostics", "%1's inertia %2 kg m² is beyond any machine's (at most %3 kg m²)")
+                    .with(who())
+                    .with(fmt(I.cwiseAbs().maxCoeff()))
+                    .with(fmt(kMaxBodyInertia)),
+                trText("Diagnostics", "check the units: moments and products of inertia are in kg m²"));
+        return;
+    }
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(I, Eigen::EigenvaluesOnly);
     Eigen::Vector3d ev = es.eigenvalues();  // ascending
     const double scale = std::max(1.0, I.cwiseAbs().maxCoeff());

@@ -237,6 +237,31 @@ B nan
     EXPECT_FALSE(m.topology.has_value());
 }
 
+TEST(BadInput, AMassOrInertiaBeyondAnyMachineIsAnError)
+{
+    // summed along the tree they would overflow: the closed loop's SVD crashed on them
+    std::ifstream in(std::string(PADROB_SOURCE_DIR) + "/models/slider_crank.pad");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string piston = "B 3 0.5 0.000225 ";
+    ASSERT_NE(text.find(piston), std::string::npos);
+    std::string huge = text;
+    huge.replace(huge.find(piston), piston.size(), "B 3 0.5 1.7976931348623157e308 ");
+    CompiledModel m = compileText(huge, "m.pad");
+    ASSERT_FALSE(m.ok());
+    ASSERT_EQ(m.diagnostics.errorCount(), 1u) << listing(m.diagnostics);
+    const Diagnostic& d = m.diagnostics.items().front();
+    EXPECT_EQ(d.code, "too-large");
+    EXPECT_EQ(d.format(), "m.pad:44:9: error: body 3 (piston)'s inertia 1.79769e+308 kg m² is beyond any machine's (at most 1e+18 kg "
+                          "m²) [check the units: moments and products of inertia are in kg m²]");
+    std::string heavy = text;
+    heavy.replace(heavy.find(piston), piston.size(), "B 3 5e12 0.000225 ");
+    m = compileText(heavy, "m.pad");
+    ASSERT_FALSE(m.ok());
+    EXPECT_EQ(m.diagnostics.items().front().code, "too-large");
+    EXPECT_NE(m.diagnostics.items().front().format().find("m.pad:44:5: error: body 3 (piston)'s mass 5e+12 kg"), std::string::npos)
+        << listing(m.diagnostics);
+}
+
 TEST(BadInput, HugeAndTinyNumbers)
 {
     CompiledModel m = compileText(R"pad(GRAVITY 1e308 -1.7976931348623157e308 1e-400

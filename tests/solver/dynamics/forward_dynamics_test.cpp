@@ -2,6 +2,7 @@
 
 #include "solver/pipeline.h"
 #include "solver/dynamics/applied_forces.h"
+#include "solver/dynamics/constraints.h"
 #include "solver/dynamics/drives.h"
 #include "solver/dynamics/mass_matrix.h"
 #include "solver/kinematics/kinematics.h"
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <random>
@@ -171,6 +173,30 @@ D 1 HYD VMAX 0.1 FMAX 20 FMIN 10
     EXPECT_NEAR(d.driveForce[0], weight - 5.0, 1e-12);
     EXPECT_NEAR(d.tau[0], weight, 1e-12);
     EXPECT_EQ(d.limitForce[0], 0.0);
+}
+
+TEST(ForwardDynamics, ANonFiniteLoopGivesNonFiniteAccelerationsNotACrash)
+{
+    // a factorisation of non-finite numbers is undefined: Eigen's SVD of the constraint
+    // rows crashed on them (a piston with Ixx = 1.8e308 in the slider-crank)
+    const auto model = test::compileExample("slider_crank.pad");
+    ASSERT_TRUE(model);
+    const Model& m = *model;
+    Data d(m);
+    clearAppliedForces(d);
+    State s = makeState(m);
+    s.q[0] = std::numeric_limits<double>::quiet_NaN();
+    forwardDynamics(m, s, d);
+    EXPECT_FALSE(d.qdd.allFinite());
+
+    // the projection onto the constraints: no correction from a non-finite mass matrix
+    const auto n = static_cast<Eigen::Index>(m.nb);
+    Eigen::MatrixXd M = Eigen::MatrixXd::Identity(n, n);
+    M(0, 0) = std::numeric_limits<double>::infinity();
+    std::vector<int> free(static_cast<std::size_t>(m.nb));
+    for (int i = 0; i < m.nb; ++i) free[static_cast<std::size_t>(i)] = i;
+    const Eigen::MatrixXd G = Eigen::MatrixXd::Ones(2, n);
+    EXPECT_TRUE(constraintCorrection(M, free, G, Eigen::VectorXd::Ones(2)).isZero());
 }
 
 TEST(ForwardDynamics, LinerManipulatorHoldsStillWithEveryValveClosed)
