@@ -4,6 +4,7 @@
 #include "ide/cli/inertia.h"
 #include "ide/cli/cli_io.h"
 
+#include "solver/core/output_file.h"
 #include "solver/inertia/solid_inertia.h"
 #include "solver/pipeline.h"
 
@@ -14,7 +15,6 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <optional>
 
@@ -96,14 +96,6 @@ bool readFile(const std::string& path, std::string& out)
     if (!in) return false;
     out.assign(std::istreambuf_iterator<char>(in), {});
     return !in.bad();
-}
-
-bool writeFile(const std::string& path, const std::string& bytes)
-{
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out << bytes;
-    out.close();
-    return static_cast<bool>(out);
 }
 
 }  // namespace
@@ -317,23 +309,15 @@ int runInertia(const std::vector<std::string>& args)
         print(stderr, "padrob inertia: " + trStd("padrob", "the updated model would not load as computed; nothing written") + "\n");
         return kModelErrors;
     }
+    // both whole, on the disk, or not at all; the model keeps its permissions
+    // (solver/core/output_file.h)
     const std::string backup = file + ".bak";
-    if (!writeFile(backup, text)) {
+    solver::Text writeError;
+    if (!solver::writeWholeFile(backup, text, {file}, writeError)) {
         print(stderr, "padrob inertia: " + fill(trStd("padrob", "cannot write the backup '%1'; nothing written"), {backup}) + "\n");
         return kUsage;
     }
-    const std::string temp = file + ".tmp";
-    std::error_code ec;
-    const auto perms = std::filesystem::status(file, ec).permissions();
-    if (!writeFile(temp, updated)) {
-        std::filesystem::remove(temp, ec);
-        print(stderr, "padrob inertia: " + fill(trStd("padrob", "cannot write '%1'"), {file}) + "\n");
-        return kUsage;
-    }
-    std::filesystem::permissions(temp, perms, ec);
-    std::filesystem::rename(temp, file, ec);
-    if (ec) {
-        std::filesystem::remove(temp, ec);
+    if (!solver::writeWholeFile(file, updated, {}, writeError)) {
         print(stderr, "padrob inertia: " + fill(trStd("padrob", "cannot write '%1'"), {file}) + "\n");
         return kUsage;
     }

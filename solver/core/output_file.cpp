@@ -82,6 +82,8 @@ bool OutputFile::open(const std::string& target, const std::vector<std::string>&
         return true;
     }
     m_replacing = true;
+    // a file that replaces another keeps its permissions (a model kept private stays so)
+    m_mode = !ec && fs::exists(st) ? static_cast<int>(st.permissions() & fs::perms::mask) : -1;
     // an unnamed file in the target's folder (a rename within one file system replaces
     // the target in one step)
     m_fd = ::open(folderOf(target).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
@@ -125,6 +127,8 @@ bool OutputFile::commit()
     }
     // on the disk before it takes the target's place (a full disk is found here, not
     // after a power cut)
+    if (m_mode >= 0 && ::fchmod(::fileno(f), static_cast<mode_t>(m_mode)) != 0)
+        return fail(trText("Diagnostics", "cannot write %1: %2").with(m_target).with(errnoText(errno)));
     if (::fsync(::fileno(f)) != 0) return fail(trText("Diagnostics", "cannot write %1: %2").with(m_target).with(errnoText(errno)));
     if (m_fd >= 0) {
         // give the unnamed file a fresh name, then rename that over the target

@@ -8,7 +8,7 @@
 // - otherwise into an unnamed temporary file in the target's folder (Linux O_TMPFILE: a
 //   run that dies, even by kill -9, leaves nothing behind), flushed to the disk (fsync)
 //   at commit() and only then put in the target's place in one step (linked under a
-//   fresh name, renamed over the target). On a file system without O_TMPFILE a named
+//   fresh name, renamed over the target), with the permissions of the file it replaces. On a file system without O_TMPFILE a named
 //   ".<name>.<random>.tmp" is used, removed on every failure the process sees.
 
 #include "solver/core/diagnostic.h"
@@ -56,7 +56,8 @@ private:
     std::string m_target;
     std::string m_tmpPath;
     std::FILE* m_file = nullptr;
-    int m_fd = -1;  // the unnamed temporary's descriptor (O_TMPFILE), else −1
+    int m_fd = -1;    // the unnamed temporary's descriptor (O_TMPFILE), else −1
+    int m_mode = -1;  // the replaced target's permissions, else −1 (a new file: 0666 & ~umask)
     bool m_replacing = true;
     Text m_error;
 };

@@ -28,7 +28,4 @@ inline OrificeLaw orificeLaw(double dp, double pLam)
     return o;
 }
 
-/// g(Δp) [√Pa].
-inline double orificeRoot(double dp, double pLam) { return orificeLaw(dp, pLam).g; }
-
 }  // namespace solver::hydraulics

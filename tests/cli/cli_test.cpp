@@ -586,8 +586,16 @@ TEST(CliInertia, WriteKeepsEverythingElseAndMakesABackup)
 {
     const std::string model = writeTemp("inertia_write.pad", inertiaModel());
     std::filesystem::remove(model + ".bak");
+    namespace fs = std::filesystem;
+    fs::permissions(model, fs::perms::owner_read | fs::perms::owner_write);  // a model kept private
     CliRun r = padrob("inertia '" + model + "' --write");
     EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(fs::status(model).permissions() & fs::perms::mask, fs::perms::owner_read | fs::perms::owner_write);
+    std::vector<std::string> left;  // the model, its backup, nothing else of it
+    for (const auto& e : fs::directory_iterator(fs::path(model).parent_path()))
+        if (e.path().filename().string().find("inertia_write") != std::string::npos) left.push_back(e.path().filename().string());
+    std::sort(left.begin(), left.end());
+    EXPECT_EQ(left, (std::vector<std::string>{"inertia_write.pad", "inertia_write.pad.bak"}));
     EXPECT_NE(r.out.find("Wrote 2 B lines to " + model), std::string::npos) << r.out;
     EXPECT_EQ(slurp(model + ".bak"), inertiaModel());
     std::string want = inertiaModel();

@@ -23,10 +23,9 @@ inline constexpr std::uintmax_t kMaxProfileBytes = 1u << 20;
 inline constexpr std::uintmax_t kMaxAutopilotPathBytes = 1u << 20;
 inline constexpr std::uintmax_t kMaxPendingBytes = 64u << 20;
 
-/// `path` whole, or nullopt with `*error` saying why, without the path, as the readers'
-/// parse errors (`fileKind` names what the file
-/// should be, with its article; `extension` its usual ending; `tooLargeHint` what to do
-/// with one over `maxBytes`).
+/// `path` whole, or nullopt with `*error` saying why, without the path (as the readers'
+/// parse errors). `fileKind` names what the file should be, with its article;
+/// `extension` its usual ending; `tooLargeHint` what to do with one over `maxBytes`.
 std::optional<QByteArray> readLimitedFile(const QString& path, std::uintmax_t maxBytes, const solver::Text& fileKind,
                                           const char* extension, const solver::Text& tooLargeHint, QString* error);
 

@@ -525,7 +525,7 @@ void TutorialSession::checkClearances()
         const solver::Clearance c = m_world->bodyToScene(t.loadBody);
         if (!c.valid() || c.distance > kLiftedClear) m_loadResting = false;
     }
-    bool loadCounts = m_grasped && !(m_loadResting && sc.avoidScene);
+    bool loadCounts = m_grasped && !m_loadResting;
     bool seating = false;
     const std::vector<Goal>& goals = t.spec.goals;
     if (loadCounts && m_progress.goal < int(goals.size())) {

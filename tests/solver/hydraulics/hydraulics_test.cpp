@@ -71,11 +71,11 @@ std::pair<double, double> meanRates(Simulation& sim, double duration)
 TEST(Hydraulics, OrificeLawIsContinuousAtTheLaminarThreshold)
 {
     const double pLam = 2e5;
-    EXPECT_NEAR(hydraulics::orificeRoot(pLam, pLam), std::sqrt(pLam), 1e-9);
-    EXPECT_NEAR(hydraulics::orificeRoot(pLam * (1 - 1e-12), pLam), std::sqrt(pLam), 1e-6);
-    EXPECT_DOUBLE_EQ(hydraulics::orificeRoot(-4e6, pLam), -2000.0);
-    EXPECT_DOUBLE_EQ(hydraulics::orificeRoot(1e5, pLam), 1e5 / std::sqrt(pLam));
-    EXPECT_DOUBLE_EQ(hydraulics::orificeRoot(0, pLam), 0.0);
+    EXPECT_NEAR(hydraulics::orificeLaw(pLam, pLam).g, std::sqrt(pLam), 1e-9);
+    EXPECT_NEAR(hydraulics::orificeLaw(pLam * (1 - 1e-12), pLam).g, std::sqrt(pLam), 1e-6);
+    EXPECT_DOUBLE_EQ(hydraulics::orificeLaw(-4e6, pLam).g, -2000.0);
+    EXPECT_DOUBLE_EQ(hydraulics::orificeLaw(1e5, pLam).g, 1e5 / std::sqrt(pLam));
+    EXPECT_DOUBLE_EQ(hydraulics::orificeLaw(0, pLam).g, 0.0);
 }
 
 TEST(Hydraulics, InitialPressuresHoldThePoseAtRest)
