@@ -4,24 +4,50 @@
 <context>
     <name>AttemptLog</name>
     <message>
-        <location filename="../trainer/training/attempt_log.cpp" line="+72" />
+        <location filename="../trainer/training/attempt_log.cpp" line="+79" />
         <source>the records database is not open: this attempt is kept aside and recorded later</source>
         <translation>the records database is not open: this attempt is kept aside and recorded later</translation>
     </message>
     <message>
-        <location line="+70" />
+        <location line="+47" />
         <source>%1 — this attempt was saved in %2 and will be recorded when the database can be written</source>
         <translation>%1 — this attempt was saved in %2 and will be recorded when the database can be written</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+46" />
+        <source>cannot write %1</source>
+        <translation>cannot write %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>this attempt cannot be kept aside: %1</source>
+        <translation>this attempt cannot be kept aside: %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>%1 — and the attempt could not be saved aside either: %2</source>
         <translation>%1 — and the attempt could not be saved aside either: %2</translation>
     </message>
     <message>
-        <location line="+17" />
-        <source>%1 is not a pending attempt: left where it is</source>
-        <translation>%1 is not a pending attempt: left where it is</translation>
+        <location line="+16" />
+        <source>%1 is not a pending attempt (%2), and it cannot be moved aside</source>
+        <translation>%1 is not a pending attempt (%2), and it cannot be moved aside</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 is not a pending attempt (%2): moved to %3</source>
+        <translation>%1 is not a pending attempt (%2): moved to %3</translation>
+    </message>
+    <message>
+        <location line="+30" />
+        <source>not its format</source>
+        <translation>not its format</translation>
+    </message>
+    <message>
+        <location line="+36" />
+        <location line="+7" />
+        <source>it names no operator</source>
+        <translation>it names no operator</translation>
     </message>
 </context>
 <context>
@@ -269,7 +295,7 @@
         <translation>note</translation>
     </message>
     <message>
-        <location filename="../solver/core/diagnostic.cpp" line="+105" />
+        <location filename="../solver/core/diagnostic.cpp" line="+131" />
         <source>too many problems; the rest are not listed</source>
         <translation>too many problems; the rest are not listed</translation>
     </message>
@@ -282,7 +308,7 @@
         <location filename="../solver/inertia/solid_inertia.cpp" line="+68" />
         <location line="+131" />
         <location filename="../solver/parse/parser.cpp" line="+1362" />
-        <location filename="../solver/spec/validate.cpp" line="+452" />
+        <location filename="../solver/spec/validate.cpp" line="+468" />
         <location line="+107" />
         <source>graphic %1</source>
         <translation>graphic %1</translation>
@@ -382,8 +408,8 @@
         <location line="+9" />
         <location filename="../solver/parse/parser.cpp" line="-550" />
         <location line="+134" />
-        <location filename="../solver/spec/validate.cpp" line="-500" />
-        <location line="+524" />
+        <location filename="../solver/spec/validate.cpp" line="-516" />
+        <location line="+540" />
         <source>joint %1</source>
         <translation>joint %1</translation>
     </message>
@@ -419,10 +445,10 @@
     </message>
     <message>
         <location filename="../solver/compile/topology.cpp" line="+24" />
-        <location filename="../solver/integrate/simulation.cpp" line="+52" />
+        <location filename="../solver/integrate/simulation.cpp" line="+53" />
         <location filename="../solver/parse/parser.cpp" line="-199" />
-        <location filename="../solver/spec/validate.cpp" line="-531" />
-        <location line="+530" />
+        <location filename="../solver/spec/validate.cpp" line="-547" />
+        <location line="+546" />
         <source>body %1</source>
         <translation>body %1</translation>
     </message>
@@ -930,7 +956,7 @@
         <translation>a model is a short text; put meshes in their own files (G … MESH "file")</translation>
     </message>
     <message>
-        <location filename="../solver/spec/validate.cpp" line="-529" />
+        <location filename="../solver/spec/validate.cpp" line="-545" />
         <source>body %1 (%2)</source>
         <translation>body %1 (%2)</translation>
     </message>
@@ -956,7 +982,7 @@
         <translation>give it another id or remove one of the two</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+17" />
         <source>body 0 is the ground and cannot have a mass or inertia</source>
         <translation>body 0 is the ground and cannot have a mass or inertia</translation>
     </message>
@@ -1028,13 +1054,13 @@
     <message>
         <location line="+12" />
         <location line="+5" />
-        <location line="+282" />
+        <location line="+295" />
         <location line="+84" />
         <source>%1: %2 has zero length</source>
         <translation>%1: %2 has zero length</translation>
     </message>
     <message>
-        <location line="-370" />
+        <location line="-383" />
         <source>the axis is a direction, e.g. A%1 0 0 1</source>
         <translation>the axis is a direction, e.g. A%1 0 0 1</translation>
     </message>
@@ -1090,12 +1116,12 @@
     </message>
     <message>
         <location line="+1" />
-        <location line="+229" />
+        <location line="+242" />
         <source>B1 and B2 must name two different bodies</source>
         <translation>B1 and B2 must name two different bodies</translation>
     </message>
     <message>
-        <location line="-222" />
+        <location line="-235" />
         <source>%1 is a pivoted linear actuator (T 1) but has no CL1/CL2 line</source>
         <translation>%1 is a pivoted linear actuator (T 1) but has no CL1/CL2 line</translation>
     </message>
@@ -1120,7 +1146,17 @@
         <translation>CL1/CL2 belong to T 1 joints; add 'T 1' to the C line, or remove the CL line</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+10" />
+        <source>%1: %2 = %3 is beyond any machine's (at most %4 in size)</source>
+        <translation>%1: %2 = %3 is beyond any machine's (at most %4 in size)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>check the units: lengths in m, angles in rad, rates in m/s or rad/s</source>
+        <translation>check the units: lengths in m, angles in rad, rates in m/s or rad/s</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>%1: the lower limit LL = %2 is above the upper limit UL = %3</source>
         <translation>%1: the lower limit LL = %2 is above the upper limit UL = %3</translation>
     </message>
@@ -2476,7 +2512,22 @@
         <translation>the closed loops locked up at t = %1 s (a singular configuration: the loop-closure equations lost rank, so the mechanism cannot move on there); drive it another way or change the geometry</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+30" />
+        <source>the likely cause: spring force %1 (K = %2 N/m on a body of %3 kg, a natural period of %4 s) is too stiff for the step of %5 s; use a step under %6 s or the adaptive integrator, or soften the spring</source>
+        <translation>the likely cause: spring force %1 (K = %2 N/m on a body of %3 kg, a natural period of %4 s) is too stiff for the step of %5 s; use a step under %6 s or the adaptive integrator, or soften the spring</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>the likely cause: a spring, force or hydraulic drive too stiff for the step of %1 s, or a body too light for the forces on it; try a smaller step or the adaptive integrator, and check the masses and force magnitudes</source>
+        <translation>the likely cause: a spring, force or hydraulic drive too stiff for the step of %1 s, or a body too light for the forces on it; try a smaller step or the adaptive integrator, and check the masses and force magnitudes</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the likely cause: a force or spring that grows without bound, or a body too light for the forces on it; check the masses and force magnitudes</source>
+        <translation>the likely cause: a force or spring that grows without bound, or a body too light for the forces on it; check the masses and force magnitudes</translation>
+    </message>
+    <message>
+        <location line="+22" />
         <source>the closed loops cannot be closed at t = %1 s from the coordinates given: set coordinates the loops can reach</source>
         <translation>the closed loops cannot be closed at t = %1 s from the coordinates given: set coordinates the loops can reach</translation>
     </message>
@@ -2492,16 +2543,16 @@
     </message>
     <message>
         <location line="+3" />
-        <source>the simulation failed at t = %1 s, joint %2: %3</source>
-        <translation>the simulation failed at t = %1 s, joint %2: %3</translation>
+        <source>the simulation failed at t = %1 s, joint %2: %3; %4</source>
+        <translation>the simulation failed at t = %1 s, joint %2: %3; %4</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>the simulation failed at t = %1 s, joint %2 (%3): %4</source>
-        <translation>the simulation failed at t = %1 s, joint %2 (%3): %4</translation>
+        <location line="+7" />
+        <source>the simulation failed at t = %1 s, joint %2 (%3): %4; %5</source>
+        <translation>the simulation failed at t = %1 s, joint %2 (%3): %4; %5</translation>
     </message>
     <message>
-        <location line="+52" />
+        <location line="+53" />
         <source>more than %1 events before t = %2 s: the joints keep switching (chattering)</source>
         <translation>more than %1 events before t = %2 s: the joints keep switching (chattering)</translation>
     </message>
@@ -2547,7 +2598,7 @@
         <translation>cannot write %1: it is %2, which this run reads; give another output file</translation>
     </message>
     <message>
-        <location line="+43" />
+        <location line="+45" />
         <location line="+6" />
         <location line="+13" />
         <source>cannot create %1: %2</source>
@@ -2560,13 +2611,16 @@
         <translation>cannot write to standard output: %1</translation>
     </message>
     <message>
-        <location filename="../solver/core/output_file.cpp" line="-32" />
-        <location line="+39" />
+        <location filename="../solver/core/output_file.cpp" line="-34" />
+        <location line="+41" />
         <location line="+3" />
+        <location line="+6" />
+        <location line="+1" />
         <location line="+5" />
         <location line="+14" />
         <location line="+4" />
         <location line="+3" />
+        <location line="+8" />
         <location line="+23" />
         <location filename="../solver/io/csv_writer.cpp" line="-71" />
         <source>cannot write %1: %2</source>
@@ -2583,7 +2637,7 @@
         <translation>a row has %1 values; the header has %2 columns</translation>
     </message>
     <message>
-        <location filename="../solver/core/output_file.cpp" line="-54" />
+        <location filename="../solver/core/output_file.cpp" line="-69" />
         <location filename="../solver/io/csv_writer.cpp" line="+21" />
         <source>the output was already closed</source>
         <translation>the output was already closed</translation>
@@ -2610,6 +2664,21 @@
         <location line="+5" />
         <source>The tutorials of one station must all use the same model: %1 uses %2, %3 uses %4.</source>
         <translation>The tutorials of one station must all use the same model: %1 uses %2, %3 uses %4.</translation>
+    </message>
+    <message>
+        <location line="+107" />
+        <source>the records journal takes writes again</source>
+        <translation>the records journal takes writes again</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the records journal refuses writes: %1</source>
+        <translation>the records journal refuses writes: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3" />
+        <source>%n pending attempt(s) recorded in the journal</source>
+        <translation><numerusform>%n pending attempt recorded in the journal</numerusform><numerusform>%n pending attempts recorded in the journal</numerusform></translation>
     </message>
 </context>
 <context>
@@ -3438,6 +3507,21 @@
         <translation>write a number such as 0.5</translation>
     </message>
     <message>
+        <location line="+3" />
+        <source>%1: '%2' is not a finite number</source>
+        <translation>%1: '%2' is not a finite number</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1: '%2' is too large for a number</source>
+        <translation>%1: '%2' is too large for a number</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>write a number within ±1e308; check the units</source>
+        <translation>write a number within ±1e308; check the units</translation>
+    </message>
+    <message>
         <location line="+6" />
         <source>decimals take a point, not a comma: %1</source>
         <translation>decimals take a point, not a comma: %1</translation>
@@ -4180,7 +4264,7 @@
         <translation>an autopilot path is a short text file of waypoints; check that this is one</translation>
     </message>
     <message>
-        <location filename="../trainer/input/input_log.cpp" line="+54" />
+        <location filename="../trainer/input/input_log.cpp" line="+62" />
         <source>an input log</source>
         <translation>an input log</translation>
     </message>
@@ -4200,7 +4284,7 @@
         <translation>a station profile is a short JSON file; check that this is one</translation>
     </message>
     <message>
-        <location filename="../trainer/training/attempt_log.cpp" line="-5" />
+        <location filename="../trainer/training/attempt_log.cpp" line="-54" />
         <source>a pending attempt</source>
         <translation>a pending attempt</translation>
     </message>
@@ -4532,9 +4616,9 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
         <location line="+2" />
         <location line="+3" />
         <location line="+3" />
-        <location line="+561" />
+        <location line="+565" />
         <location filename="../ide/cli/export.cpp" line="+85" />
-        <location filename="../ide/cli/simulate.cpp" line="+245" />
+        <location filename="../ide/cli/simulate.cpp" line="+240" />
         <location filename="../ide/cli/tutorial.cpp" line="-58" />
         <source>%1 needs a value</source>
         <translation>%1 needs a value</translation>
@@ -4557,12 +4641,12 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
     </message>
     <message>
         <location line="+4" />
-        <location filename="../ide/cli/centre.cpp" line="-433" />
-        <location line="+261" />
+        <location filename="../ide/cli/centre.cpp" line="-437" />
+        <location line="+265" />
         <location line="+175" />
         <location line="+51" />
         <location filename="../ide/cli/export.cpp" line="+12" />
-        <location filename="../ide/cli/inertia.cpp" line="+204" />
+        <location filename="../ide/cli/inertia.cpp" line="+196" />
         <location filename="../ide/cli/main.cpp" line="+138" />
         <location line="+26" />
         <location filename="../ide/cli/simulate.cpp" line="+23" />
@@ -4608,6 +4692,11 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
         <location filename="../ide/cli/cli_io.cpp" line="+26" />
         <source>Try 'padrob %1 --help'.</source>
         <translation>Try 'padrob %1 --help'.</translation>
+    </message>
+    <message>
+        <location line="+81" />
+        <source>the values given on the command line do not fit the model:</source>
+        <translation>the values given on the command line do not fit the model:</translation>
     </message>
     <message>
         <location filename="../ide/cli/export.cpp" line="-57" />
@@ -4704,12 +4793,12 @@ built without MuJoCo. On failure nothing is written.
         <translation>cannot write to standard output</translation>
     </message>
     <message>
-        <location filename="../ide/cli/inertia.cpp" line="-168" />
+        <location filename="../ide/cli/inertia.cpp" line="-160" />
         <source>n/a (file: 0)</source>
         <translation>n/a (file: 0)</translation>
     </message>
     <message>
-        <location line="+125" />
+        <location line="+117" />
         <source>Usage: padrob inertia MODEL [--body I] [--write]
 
 Computes each body's mass, centre of mass and inertia tensor (about the centre of
@@ -4811,13 +4900,12 @@ Exit status 2 on a usage error or a file that cannot be read or written.
         <translation>the updated model would not load as computed; nothing written</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+8" />
         <source>cannot write the backup '%1'; nothing written</source>
         <translation>cannot write the backup '%1'; nothing written</translation>
     </message>
     <message>
-        <location line="+8" />
-        <location line="+7" />
+        <location line="+4" />
         <source>cannot write '%1'</source>
         <translation>cannot write '%1'</translation>
     </message>
@@ -5231,12 +5319,12 @@ A model with errors is not described: its problems are printed as by
         </translation>
     </message>
     <message>
-        <location filename="../ide/cli/simulate.cpp" line="-179" />
+        <location filename="../ide/cli/simulate.cpp" line="-174" />
         <source>warning: %1</source>
         <translation>warning: %1</translation>
     </message>
     <message>
-        <location line="+59" />
+        <location line="+54" />
         <source>--weld takes T:A:B: a time [s] and two body ids, to weld body B to body A (0 = the ground), e.g. 0.5:0:2; not '%1'</source>
         <translation>--weld takes T:A:B: a time [s] and two body ids, to weld body B to body A (0 = the ground), e.g. 0.5:0:2; not '%1'</translation>
     </message>
@@ -5390,12 +5478,12 @@ Exit status: 0 success; 1 the model has errors or the simulation failed;
     </message>
     <message>
         <location line="+22" />
-        <location line="+37" />
+        <location line="+35" />
         <source>%1 takes J=VALUE (a joint id and a number), not '%2'</source>
         <translation>%1 takes J=VALUE (a joint id and a number), not '%2'</translation>
     </message>
     <message>
-        <location line="-26" />
+        <location line="-24" />
         <source>--time is required</source>
         <translation>--time is required</translation>
     </message>
@@ -5425,12 +5513,12 @@ Exit status: 0 success; 1 the model has errors or the simulation failed;
         <translation>the time is after the end of the simulation (--time %1 s): give a T between 0 and --time</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+22" />
         <source>%1: the model has no joint %2</source>
         <translation>%1: the model has no joint %2</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+17" />
         <source>0 (the ground)</source>
         <translation>0 (the ground)</translation>
     </message>
@@ -5440,14 +5528,14 @@ Exit status: 0 success; 1 the model has errors or the simulation failed;
         <translation>the model has no body %1; its bodies are %2</translation>
     </message>
     <message>
-        <location line="+111" />
-        <source>--set %1: the actuator cannot reach that length</source>
-        <translation>--set %1: the actuator cannot reach that length</translation>
+        <location line="+160" />
+        <source>the adaptive integrator failed too: check the model's masses, springs and forces</source>
+        <translation>the adaptive integrator failed too: check the model's masses, springs and forces</translation>
     </message>
     <message>
-        <location line="+9" />
-        <source>--rate: the joint is at a dead point; its rate cannot be set</source>
-        <translation>--rate: the joint is at a dead point; its rate cannot be set</translation>
+        <location line="+1" />
+        <source>run it again with a smaller --dt (now %1 s; e.g. --dt %2) or with --integrator adaptive</source>
+        <translation>run it again with a smaller --dt (now %1 s; e.g. --dt %2) or with --integrator adaptive</translation>
     </message>
     <message>
         <location filename="../ide/cli/tutorial.cpp" line="-170" />
@@ -5633,7 +5721,7 @@ Exit status: 0 the tutorial is fine (checked) or the run passed; 1 the run faile
         <translation>the tutorial has no usable demonstration (DEMO)</translation>
     </message>
     <message>
-        <location filename="../ide/cli/centre.cpp" line="-655" />
+        <location filename="../ide/cli/centre.cpp" line="-659" />
         <source>Network options (every node of a centre uses the same):
   --domain N            the centre's DDS domain, 0-232 (default 0)
   --key FILE            the centre's key (make one with 'padrob centre key FILE');
@@ -5754,7 +5842,14 @@ Runs until interrupted (Ctrl+C or SIGTERM), then says it is leaving.
         <translation>--records-server needs --records FILE, the station's local journal</translation>
     </message>
     <message>
-        <location line="+49" />
+        <location line="+35" />
+        <source>station %1: %2
+</source>
+        <translation>station %1: %2
+</translation>
+    </message>
+    <message>
+        <location line="+18" />
         <source>station %1: on the centre's network (domain %2), ready
 </source>
         <translation>station %1: on the centre's network (domain %2), ready
@@ -7086,6 +7181,11 @@ never the .key files of the CAs; then run it with --security DIR.
         <location line="+1" />
         <source>records offline</source>
         <translation>records offline</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>records kept aside (journal refuses writes)</source>
+        <translation>records kept aside (journal refuses writes)</translation>
     </message>
     <message>
         <location line="+5" />
@@ -8634,7 +8734,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
 <context>
     <name>studio::PlotPanel</name>
     <message>
-        <location filename="../ide/studio/plots/plot_panel.cpp" line="+142" />
+        <location filename="../ide/studio/plots/plot_panel.cpp" line="+144" />
         <source>Tick the signals to plot; each unit gets its own chart.</source>
         <translation>Tick the signals to plot; each unit gets its own chart.</translation>
     </message>
@@ -8781,18 +8881,12 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
     </message>
     <message>
         <location line="+36" />
-        <location line="+102" />
+        <location line="+97" />
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
     <message>
-        <location line="-4" />
-        <location line="+20" />
-        <source>Cannot write %1: %2</source>
-        <translation>Cannot write %1: %2</translation>
-    </message>
-    <message>
-        <location line="+12" />
+        <location line="+31" />
         <source>Cannot save the image %1</source>
         <translation>Cannot save the image %1</translation>
     </message>
@@ -9683,17 +9777,18 @@ Id: %3</translation>
         <translation>The trainer's PIN:</translation>
     </message>
     <message>
-        <location line="+350" />
+        <location line="+347" />
         <source>This tutorial cannot be loaded.</source>
         <translation>This tutorial cannot be loaded.</translation>
     </message>
     <message>
         <location line="-198" />
+        <location line="+727" />
         <source>Guest</source>
         <translation>Guest</translation>
     </message>
     <message>
-        <location line="+99" />
+        <location line="-628" />
         <source>Training course</source>
         <translation>Training course</translation>
     </message>
@@ -9791,13 +9886,13 @@ Id: %3</translation>
         <location line="+19" />
         <location line="+43" />
         <location line="+32" />
-        <location line="+722" />
+        <location line="+724" />
         <location line="+23" />
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location line="-793" />
+        <location line="-795" />
         <source>Speed:</source>
         <translation>Speed:</translation>
     </message>
@@ -9814,7 +9909,7 @@ Id: %3</translation>
     <message>
         <location line="-29" />
         <location line="+43" />
-        <location line="+350" />
+        <location line="+352" />
         <location line="+19" />
         <location line="+120" />
         <location line="+265" />
@@ -9824,7 +9919,7 @@ Id: %3</translation>
         <translation>Play</translation>
     </message>
     <message>
-        <location line="-1527" />
+        <location line="-1526" />
         <source>OK</source>
         <translation>OK</translation>
     </message>
@@ -9834,7 +9929,7 @@ Id: %3</translation>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location line="+833" />
+        <location line="+830" />
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc or Stop ends the attempt.</translation>
     </message>
@@ -9869,7 +9964,7 @@ Id: %3</translation>
         <translation>Stop</translation>
     </message>
     <message>
-        <location line="+88" />
+        <location line="+90" />
         <source>On the centre's network as %1</source>
         <translation>On the centre's network as %1</translation>
     </message>
@@ -10638,6 +10733,11 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+3" />
+        <source>the device number (the second field, after the time) is missing</source>
+        <translation>the device number (the second field, after the time) is missing</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>device %1 is not described above this line</source>
         <translation>device %1 is not described above this line</translation>
     </message>
@@ -10679,7 +10779,7 @@ Id: %3</translation>
 <context>
     <name>trainer::ProfileStore</name>
     <message>
-        <location filename="../trainer/station/profile_store.cpp" line="+96" />
+        <location filename="../trainer/station/profile_store.cpp" line="+97" />
         <source>there is no profile “%1” for %2</source>
         <translation>there is no profile “%1” for %2</translation>
     </message>
@@ -10867,7 +10967,7 @@ Id: %3</translation>
 <context>
     <name>trainer::StationEngine</name>
     <message>
-        <location filename="../trainer/station/station_engine.cpp" line="+390" />
+        <location filename="../trainer/station/station_engine.cpp" line="+402" />
         <source>not connected</source>
         <translation>not connected</translation>
     </message>
@@ -10877,7 +10977,17 @@ Id: %3</translation>
         <translation>%1: %2 — valves closed, holding %3</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+16" />
+        <source>%1, %2: device fault, it reads %3 where it can read only %4…%5 — valve closed%6</source>
+        <translation>%1, %2: device fault, it reads %3 where it can read only %4…%5 — valve closed%6</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>, holding %1</source>
+        <translation>, holding %1</translation>
+    </message>
+    <message>
+        <location line="+10" />
         <source>No %1 found: its drives hold</source>
         <translation>No %1 found: its drives hold</translation>
     </message>
@@ -10996,7 +11106,7 @@ Id: %3</translation>
         <translation>the baud rate must be positive</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+11" />
         <source>Keyboard and gamepad</source>
         <translation>Keyboard and gamepad</translation>
     </message>
@@ -11019,7 +11129,7 @@ Id: %3</translation>
 <context>
     <name>trainer::records::RecordsDb</name>
     <message>
-        <location filename="../trainer/records/records_db.cpp" line="+286" />
+        <location filename="../trainer/records/records_db.cpp" line="+288" />
         <source>the records database is in use by another program, which has kept it locked for over %1 s; close that program or try again</source>
         <translation>the records database is in use by another program, which has kept it locked for over %1 s; close that program or try again</translation>
     </message>
@@ -11173,18 +11283,18 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+224" />
-        <location line="+449" />
+        <location line="+451" />
         <source>cannot add the operator “%1”</source>
         <translation>cannot add the operator “%1”</translation>
     </message>
     <message>
-        <location line="-447" />
-        <location line="+449" />
+        <location line="-449" />
+        <location line="+451" />
         <source>an operator needs an id</source>
         <translation>an operator needs an id</translation>
     </message>
     <message>
-        <location line="-443" />
+        <location line="-445" />
         <source>the id is taken already, by “%1”</source>
         <translation>the id is taken already, by “%1”</translation>
     </message>
@@ -11227,22 +11337,17 @@ Id: %3</translation>
     <message>
         <location line="+5" />
         <location line="+54" />
-        <location line="+254" />
+        <location line="+256" />
         <source>there is no attempt %1</source>
         <translation>there is no attempt %1</translation>
     </message>
     <message>
-        <location line="-279" />
+        <location line="-281" />
         <source>cannot record the attempt's result</source>
         <translation>cannot record the attempt's result</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>an attempt ends finished or aborted, not %1</source>
-        <translation>an attempt ends finished or aborted, not %1</translation>
-    </message>
-    <message>
-        <location line="+2" />
+        <location line="+5" />
         <source>the score %1 is not within 0…100</source>
         <translation>the score %1 is not within 0…100</translation>
     </message>
@@ -11278,13 +11383,13 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+7" />
-        <location line="+76" />
+        <location line="+78" />
         <location line="+82" />
         <source>cannot read the attempt</source>
         <translation>cannot read the attempt</translation>
     </message>
     <message>
-        <location line="-146" />
+        <location line="-148" />
         <source>cannot export the records to %1</source>
         <translation>cannot export the records to %1</translation>
     </message>
@@ -11294,7 +11399,12 @@ Id: %3</translation>
         <translation>there is an attempt with the id %1 already</translation>
     </message>
     <message>
-        <location line="+268" />
+        <location line="+63" />
+        <source>an attempt ends finished, aborted or interrupted, not %1</source>
+        <translation>an attempt ends finished, aborted or interrupted, not %1</translation>
+    </message>
+    <message>
+        <location line="+207" />
         <source>cannot read what the centre's server lacks</source>
         <translation>cannot read what the centre's server lacks</translation>
     </message>

@@ -4,24 +4,50 @@
 <context>
     <name>AttemptLog</name>
     <message>
-        <location filename="../trainer/training/attempt_log.cpp" line="+72" />
+        <location filename="../trainer/training/attempt_log.cpp" line="+79" />
         <source>the records database is not open: this attempt is kept aside and recorded later</source>
         <translation>la base de datos de registros no está abierta: este intento se guarda aparte y se registra después</translation>
     </message>
     <message>
-        <location line="+70" />
+        <location line="+47" />
         <source>%1 — this attempt was saved in %2 and will be recorded when the database can be written</source>
         <translation>%1 — este intento se guardó en %2 y se registrará cuando se pueda escribir en la base de datos</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+46" />
+        <source>cannot write %1</source>
+        <translation>no se puede escribir %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>this attempt cannot be kept aside: %1</source>
+        <translation>este intento no se puede guardar aparte: %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>%1 — and the attempt could not be saved aside either: %2</source>
         <translation>%1 — y tampoco se pudo guardar el intento aparte: %2</translation>
     </message>
     <message>
-        <location line="+17" />
-        <source>%1 is not a pending attempt: left where it is</source>
-        <translation>%1 no es un intento pendiente: se deja donde está</translation>
+        <location line="+16" />
+        <source>%1 is not a pending attempt (%2), and it cannot be moved aside</source>
+        <translation>%1 no es un intento pendiente (%2), y no se puede apartar</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 is not a pending attempt (%2): moved to %3</source>
+        <translation>%1 no es un intento pendiente (%2): se movió a %3</translation>
+    </message>
+    <message>
+        <location line="+30" />
+        <source>not its format</source>
+        <translation>no tiene su formato</translation>
+    </message>
+    <message>
+        <location line="+36" />
+        <location line="+7" />
+        <source>it names no operator</source>
+        <translation>no indica ningún operador</translation>
     </message>
 </context>
 <context>
@@ -269,7 +295,7 @@
         <translation>nota</translation>
     </message>
     <message>
-        <location filename="../solver/core/diagnostic.cpp" line="+105" />
+        <location filename="../solver/core/diagnostic.cpp" line="+131" />
         <source>too many problems; the rest are not listed</source>
         <translation>demasiados problemas; el resto no se muestra</translation>
     </message>
@@ -282,7 +308,7 @@
         <location filename="../solver/inertia/solid_inertia.cpp" line="+68" />
         <location line="+131" />
         <location filename="../solver/parse/parser.cpp" line="+1362" />
-        <location filename="../solver/spec/validate.cpp" line="+452" />
+        <location filename="../solver/spec/validate.cpp" line="+468" />
         <location line="+107" />
         <source>graphic %1</source>
         <translation>gráfico %1</translation>
@@ -382,8 +408,8 @@
         <location line="+9" />
         <location filename="../solver/parse/parser.cpp" line="-550" />
         <location line="+134" />
-        <location filename="../solver/spec/validate.cpp" line="-500" />
-        <location line="+524" />
+        <location filename="../solver/spec/validate.cpp" line="-516" />
+        <location line="+540" />
         <source>joint %1</source>
         <translation>articulación %1</translation>
     </message>
@@ -419,10 +445,10 @@
     </message>
     <message>
         <location filename="../solver/compile/topology.cpp" line="+24" />
-        <location filename="../solver/integrate/simulation.cpp" line="+52" />
+        <location filename="../solver/integrate/simulation.cpp" line="+53" />
         <location filename="../solver/parse/parser.cpp" line="-199" />
-        <location filename="../solver/spec/validate.cpp" line="-531" />
-        <location line="+530" />
+        <location filename="../solver/spec/validate.cpp" line="-547" />
+        <location line="+546" />
         <source>body %1</source>
         <translation>cuerpo %1</translation>
     </message>
@@ -930,7 +956,7 @@
         <translation>un modelo es un texto corto; ponga las mallas en sus propios archivos (G … MESH "file")</translation>
     </message>
     <message>
-        <location filename="../solver/spec/validate.cpp" line="-529" />
+        <location filename="../solver/spec/validate.cpp" line="-545" />
         <source>body %1 (%2)</source>
         <translation>cuerpo %1 (%2)</translation>
     </message>
@@ -956,7 +982,7 @@
         <translation>dele otro id o elimine una de las dos</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+17" />
         <source>body 0 is the ground and cannot have a mass or inertia</source>
         <translation>el cuerpo 0 es la tierra y no puede tener masa ni inercia</translation>
     </message>
@@ -1028,13 +1054,13 @@
     <message>
         <location line="+12" />
         <location line="+5" />
-        <location line="+282" />
+        <location line="+295" />
         <location line="+84" />
         <source>%1: %2 has zero length</source>
         <translation>%1: %2 tiene longitud cero</translation>
     </message>
     <message>
-        <location line="-370" />
+        <location line="-383" />
         <source>the axis is a direction, e.g. A%1 0 0 1</source>
         <translation>el eje es una dirección, p. ej. A%1 0 0 1</translation>
     </message>
@@ -1090,12 +1116,12 @@
     </message>
     <message>
         <location line="+1" />
-        <location line="+229" />
+        <location line="+242" />
         <source>B1 and B2 must name two different bodies</source>
         <translation>B1 y B2 deben indicar dos cuerpos distintos</translation>
     </message>
     <message>
-        <location line="-222" />
+        <location line="-235" />
         <source>%1 is a pivoted linear actuator (T 1) but has no CL1/CL2 line</source>
         <translation>la %1 es un actuador lineal pivotado (T 1), pero no tiene línea CL1/CL2</translation>
     </message>
@@ -1120,7 +1146,17 @@
         <translation>CL1/CL2 son propios de las articulaciones T 1; agregue 'T 1' a la línea C, o quite la línea CL</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+10" />
+        <source>%1: %2 = %3 is beyond any machine's (at most %4 in size)</source>
+        <translation>%1: %2 = %3 excede lo de cualquier máquina (a lo más %4 en magnitud)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>check the units: lengths in m, angles in rad, rates in m/s or rad/s</source>
+        <translation>revise las unidades: longitudes en m, ángulos en rad, velocidades en m/s o rad/s</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>%1: the lower limit LL = %2 is above the upper limit UL = %3</source>
         <translation>%1: el límite inferior LL = %2 está por encima del límite superior UL = %3</translation>
     </message>
@@ -2476,7 +2512,22 @@
         <translation>los lazos cerrados se trabaron en t = %1 s (una configuración singular: las ecuaciones de cierre de los lazos perdieron rango, así que el mecanismo no puede seguir moviéndose desde ahí); accione el mecanismo de otra forma o cambie la geometría</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+30" />
+        <source>the likely cause: spring force %1 (K = %2 N/m on a body of %3 kg, a natural period of %4 s) is too stiff for the step of %5 s; use a step under %6 s or the adaptive integrator, or soften the spring</source>
+        <translation>la causa probable: la fuerza de resorte %1 (K = %2 N/m sobre un cuerpo de %3 kg, un período natural de %4 s) es demasiado rígida para el paso de %5 s; use un paso menor que %6 s o el integrador adaptativo, o ablande el resorte</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>the likely cause: a spring, force or hydraulic drive too stiff for the step of %1 s, or a body too light for the forces on it; try a smaller step or the adaptive integrator, and check the masses and force magnitudes</source>
+        <translation>la causa probable: un resorte, una fuerza o un accionamiento hidráulico demasiado rígido para el paso de %1 s, o un cuerpo demasiado liviano para las fuerzas que recibe; pruebe un paso menor o el integrador adaptativo, y revise las masas y las magnitudes de las fuerzas</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the likely cause: a force or spring that grows without bound, or a body too light for the forces on it; check the masses and force magnitudes</source>
+        <translation>la causa probable: una fuerza o un resorte que crece sin límite, o un cuerpo demasiado liviano para las fuerzas que recibe; revise las masas y las magnitudes de las fuerzas</translation>
+    </message>
+    <message>
+        <location line="+22" />
         <source>the closed loops cannot be closed at t = %1 s from the coordinates given: set coordinates the loops can reach</source>
         <translation>los lazos cerrados no se pueden cerrar en t = %1 s con las coordenadas indicadas: indique coordenadas que los lazos puedan alcanzar</translation>
     </message>
@@ -2492,16 +2543,16 @@
     </message>
     <message>
         <location line="+3" />
-        <source>the simulation failed at t = %1 s, joint %2: %3</source>
-        <translation>la simulación falló en t = %1 s, articulación %2: %3</translation>
+        <source>the simulation failed at t = %1 s, joint %2: %3; %4</source>
+        <translation>la simulación falló en t = %1 s, articulación %2: %3; %4</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>the simulation failed at t = %1 s, joint %2 (%3): %4</source>
-        <translation>la simulación falló en t = %1 s, articulación %2 (%3): %4</translation>
+        <location line="+7" />
+        <source>the simulation failed at t = %1 s, joint %2 (%3): %4; %5</source>
+        <translation>la simulación falló en t = %1 s, articulación %2 (%3): %4; %5</translation>
     </message>
     <message>
-        <location line="+52" />
+        <location line="+53" />
         <source>more than %1 events before t = %2 s: the joints keep switching (chattering)</source>
         <translation>más de %1 eventos antes de t = %2 s: las articulaciones no dejan de conmutar (chattering)</translation>
     </message>
@@ -2547,7 +2598,7 @@
         <translation>no se puede escribir %1: es %2, que esta ejecución lee; indique otro archivo de salida</translation>
     </message>
     <message>
-        <location line="+43" />
+        <location line="+45" />
         <location line="+6" />
         <location line="+13" />
         <source>cannot create %1: %2</source>
@@ -2560,13 +2611,16 @@
         <translation>no se puede escribir en la salida estándar: %1</translation>
     </message>
     <message>
-        <location filename="../solver/core/output_file.cpp" line="-32" />
-        <location line="+39" />
+        <location filename="../solver/core/output_file.cpp" line="-34" />
+        <location line="+41" />
         <location line="+3" />
+        <location line="+6" />
+        <location line="+1" />
         <location line="+5" />
         <location line="+14" />
         <location line="+4" />
         <location line="+3" />
+        <location line="+8" />
         <location line="+23" />
         <location filename="../solver/io/csv_writer.cpp" line="-71" />
         <source>cannot write %1: %2</source>
@@ -2583,7 +2637,7 @@
         <translation>una fila tiene %1 valores; el encabezado tiene %2 columnas</translation>
     </message>
     <message>
-        <location filename="../solver/core/output_file.cpp" line="-54" />
+        <location filename="../solver/core/output_file.cpp" line="-69" />
         <location filename="../solver/io/csv_writer.cpp" line="+21" />
         <source>the output was already closed</source>
         <translation>la salida ya estaba cerrada</translation>
@@ -2610,6 +2664,21 @@
         <location line="+5" />
         <source>The tutorials of one station must all use the same model: %1 uses %2, %3 uses %4.</source>
         <translation>Los tutoriales de una estación deben usar todos el mismo modelo: %1 usa %2, %3 usa %4.</translation>
+    </message>
+    <message>
+        <location line="+107" />
+        <source>the records journal takes writes again</source>
+        <translation>el registro local vuelve a aceptar escrituras</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the records journal refuses writes: %1</source>
+        <translation>el registro local rechaza escrituras: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3" />
+        <source>%n pending attempt(s) recorded in the journal</source>
+        <translation><numerusform>%n intento pendiente incorporado al registro local</numerusform><numerusform>%n intentos pendientes incorporados al registro local</numerusform></translation>
     </message>
 </context>
 <context>
@@ -3438,6 +3507,21 @@
         <translation>escriba un número como 0.5</translation>
     </message>
     <message>
+        <location line="+3" />
+        <source>%1: '%2' is not a finite number</source>
+        <translation>%1: '%2' no es un número finito</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1: '%2' is too large for a number</source>
+        <translation>%1: '%2' es demasiado grande para un número</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>write a number within ±1e308; check the units</source>
+        <translation>escriba un número dentro de ±1e308; revise las unidades</translation>
+    </message>
+    <message>
         <location line="+6" />
         <source>decimals take a point, not a comma: %1</source>
         <translation>los decimales llevan punto, no coma: %1</translation>
@@ -4180,7 +4264,7 @@
         <translation>un recorrido de piloto automático es un archivo de texto corto con puntos de paso; compruebe que este lo es</translation>
     </message>
     <message>
-        <location filename="../trainer/input/input_log.cpp" line="+54" />
+        <location filename="../trainer/input/input_log.cpp" line="+62" />
         <source>an input log</source>
         <translation>un registro de entradas</translation>
     </message>
@@ -4200,7 +4284,7 @@
         <translation>un perfil de puesto es un archivo JSON corto; compruebe que este lo es</translation>
     </message>
     <message>
-        <location filename="../trainer/training/attempt_log.cpp" line="-5" />
+        <location filename="../trainer/training/attempt_log.cpp" line="-54" />
         <source>a pending attempt</source>
         <translation>un intento pendiente</translation>
     </message>
@@ -4535,9 +4619,9 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
         <location line="+2" />
         <location line="+3" />
         <location line="+3" />
-        <location line="+561" />
+        <location line="+565" />
         <location filename="../ide/cli/export.cpp" line="+85" />
-        <location filename="../ide/cli/simulate.cpp" line="+245" />
+        <location filename="../ide/cli/simulate.cpp" line="+240" />
         <location filename="../ide/cli/tutorial.cpp" line="-58" />
         <source>%1 needs a value</source>
         <translation>%1 necesita un valor</translation>
@@ -4560,12 +4644,12 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
     </message>
     <message>
         <location line="+4" />
-        <location filename="../ide/cli/centre.cpp" line="-433" />
-        <location line="+261" />
+        <location filename="../ide/cli/centre.cpp" line="-437" />
+        <location line="+265" />
         <location line="+175" />
         <location line="+51" />
         <location filename="../ide/cli/export.cpp" line="+12" />
-        <location filename="../ide/cli/inertia.cpp" line="+204" />
+        <location filename="../ide/cli/inertia.cpp" line="+196" />
         <location filename="../ide/cli/main.cpp" line="+138" />
         <location line="+26" />
         <location filename="../ide/cli/simulate.cpp" line="+23" />
@@ -4611,6 +4695,11 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
         <location filename="../ide/cli/cli_io.cpp" line="+26" />
         <source>Try 'padrob %1 --help'.</source>
         <translation>Pruebe 'padrob %1 --help'.</translation>
+    </message>
+    <message>
+        <location line="+81" />
+        <source>the values given on the command line do not fit the model:</source>
+        <translation>los valores dados en la línea de comandos no calzan con el modelo:</translation>
     </message>
     <message>
         <location filename="../ide/cli/export.cpp" line="-57" />
@@ -4708,12 +4797,12 @@ compilado sin MuJoCo. Si falla, no se escribe nada.
         <translation>no se puede escribir en la salida estándar</translation>
     </message>
     <message>
-        <location filename="../ide/cli/inertia.cpp" line="-168" />
+        <location filename="../ide/cli/inertia.cpp" line="-160" />
         <source>n/a (file: 0)</source>
         <translation>n/a (archivo: 0)</translation>
     </message>
     <message>
-        <location line="+125" />
+        <location line="+117" />
         <source>Usage: padrob inertia MODEL [--body I] [--write]
 
 Computes each body's mass, centre of mass and inertia tensor (about the centre of
@@ -4816,13 +4905,12 @@ escribir.
         <translation>el modelo actualizado no se cargaría tal como se calculó; no se escribió nada</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+8" />
         <source>cannot write the backup '%1'; nothing written</source>
         <translation>no se puede escribir el respaldo '%1'; no se escribió nada</translation>
     </message>
     <message>
-        <location line="+8" />
-        <location line="+7" />
+        <location line="+4" />
         <source>cannot write '%1'</source>
         <translation>no se puede escribir '%1'</translation>
     </message>
@@ -5245,12 +5333,12 @@ Un modelo con errores no se describe: sus problemas se informan como con
         </translation>
     </message>
     <message>
-        <location filename="../ide/cli/simulate.cpp" line="-179" />
+        <location filename="../ide/cli/simulate.cpp" line="-174" />
         <source>warning: %1</source>
         <translation>advertencia: %1</translation>
     </message>
     <message>
-        <location line="+59" />
+        <location line="+54" />
         <source>--weld takes T:A:B: a time [s] and two body ids, to weld body B to body A (0 = the ground), e.g. 0.5:0:2; not '%1'</source>
         <translation>--weld recibe T:A:B: un instante [s] y dos ids de cuerpo, para soldar el cuerpo B al cuerpo A (0 = el suelo), p. ej. 0.5:0:2; no '%1'</translation>
     </message>
@@ -5408,12 +5496,12 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o la simulación falló;
     </message>
     <message>
         <location line="+22" />
-        <location line="+37" />
+        <location line="+35" />
         <source>%1 takes J=VALUE (a joint id and a number), not '%2'</source>
         <translation>%1 recibe J=VALOR (un id de articulación y un número), no '%2'</translation>
     </message>
     <message>
-        <location line="-26" />
+        <location line="-24" />
         <source>--time is required</source>
         <translation>--time es obligatorio</translation>
     </message>
@@ -5443,12 +5531,12 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o la simulación falló;
         <translation>el instante es posterior al final de la simulación (--time %1 s): indique un T entre 0 y --time</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+22" />
         <source>%1: the model has no joint %2</source>
         <translation>%1: el modelo no tiene la articulación %2</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+17" />
         <source>0 (the ground)</source>
         <translation>0 (el suelo)</translation>
     </message>
@@ -5458,14 +5546,14 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o la simulación falló;
         <translation>el modelo no tiene el cuerpo %1; sus cuerpos son %2</translation>
     </message>
     <message>
-        <location line="+111" />
-        <source>--set %1: the actuator cannot reach that length</source>
-        <translation>--set %1: el actuador no alcanza ese largo</translation>
+        <location line="+160" />
+        <source>the adaptive integrator failed too: check the model's masses, springs and forces</source>
+        <translation>el integrador adaptativo también falló: revise las masas, resortes y fuerzas del modelo</translation>
     </message>
     <message>
-        <location line="+9" />
-        <source>--rate: the joint is at a dead point; its rate cannot be set</source>
-        <translation>--rate: la articulación está en un punto muerto; no se puede fijar su velocidad</translation>
+        <location line="+1" />
+        <source>run it again with a smaller --dt (now %1 s; e.g. --dt %2) or with --integrator adaptive</source>
+        <translation>ejecútelo de nuevo con un --dt menor (ahora %1 s; p. ej. --dt %2) o con --integrator adaptive</translation>
     </message>
     <message>
         <location filename="../ide/cli/tutorial.cpp" line="-170" />
@@ -5654,7 +5742,7 @@ registro ilegible.
         <translation>el tutorial no tiene una demostración utilizable (DEMO)</translation>
     </message>
     <message>
-        <location filename="../ide/cli/centre.cpp" line="-655" />
+        <location filename="../ide/cli/centre.cpp" line="-659" />
         <source>Network options (every node of a centre uses the same):
   --domain N            the centre's DDS domain, 0-232 (default 0)
   --key FILE            the centre's key (make one with 'padrob centre key FILE');
@@ -5778,7 +5866,14 @@ entonces avisa que se va.
         <translation>--records-server necesita --records ARCHIVO, el registro local de la estación</translation>
     </message>
     <message>
-        <location line="+49" />
+        <location line="+35" />
+        <source>station %1: %2
+</source>
+        <translation>estación %1: %2
+</translation>
+    </message>
+    <message>
+        <location line="+18" />
         <source>station %1: on the centre's network (domain %2), ready
 </source>
         <translation>estación %1: en la red del centro (dominio %2), lista
@@ -7112,6 +7207,11 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <location line="+1" />
         <source>records offline</source>
         <translation>registros fuera de línea</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>records kept aside (journal refuses writes)</source>
+        <translation>registros guardados aparte (el registro local rechaza escrituras)</translation>
     </message>
     <message>
         <location line="+5" />
@@ -8660,7 +8760,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
 <context>
     <name>studio::PlotPanel</name>
     <message>
-        <location filename="../ide/studio/plots/plot_panel.cpp" line="+142" />
+        <location filename="../ide/studio/plots/plot_panel.cpp" line="+144" />
         <source>Tick the signals to plot; each unit gets its own chart.</source>
         <translation>Marque las señales que quiere graficar; cada unidad tiene su propio gráfico.</translation>
     </message>
@@ -8807,18 +8907,12 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
     </message>
     <message>
         <location line="+36" />
-        <location line="+102" />
+        <location line="+97" />
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
     <message>
-        <location line="-4" />
-        <location line="+20" />
-        <source>Cannot write %1: %2</source>
-        <translation>No se puede escribir %1: %2</translation>
-    </message>
-    <message>
-        <location line="+12" />
+        <location line="+31" />
         <source>Cannot save the image %1</source>
         <translation>No se puede guardar la imagen %1</translation>
     </message>
@@ -9709,17 +9803,18 @@ Id: %3</translation>
         <translation>El PIN del instructor:</translation>
     </message>
     <message>
-        <location line="+350" />
+        <location line="+347" />
         <source>This tutorial cannot be loaded.</source>
         <translation>Este tutorial no se puede cargar.</translation>
     </message>
     <message>
         <location line="-198" />
+        <location line="+727" />
         <source>Guest</source>
         <translation>Invitado</translation>
     </message>
     <message>
-        <location line="+99" />
+        <location line="-628" />
         <source>Training course</source>
         <translation>Curso de entrenamiento</translation>
     </message>
@@ -9817,13 +9912,13 @@ Id: %3</translation>
         <location line="+19" />
         <location line="+43" />
         <location line="+32" />
-        <location line="+722" />
+        <location line="+724" />
         <location line="+23" />
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
     <message>
-        <location line="-793" />
+        <location line="-795" />
         <source>Speed:</source>
         <translation>Velocidad:</translation>
     </message>
@@ -9840,7 +9935,7 @@ Id: %3</translation>
     <message>
         <location line="-29" />
         <location line="+43" />
-        <location line="+350" />
+        <location line="+352" />
         <location line="+19" />
         <location line="+120" />
         <location line="+265" />
@@ -9850,7 +9945,7 @@ Id: %3</translation>
         <translation>Reproducir</translation>
     </message>
     <message>
-        <location line="-1527" />
+        <location line="-1526" />
         <source>OK</source>
         <translation>Aceptar</translation>
     </message>
@@ -9860,7 +9955,7 @@ Id: %3</translation>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location line="+833" />
+        <location line="+830" />
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc o Detener termina el intento.</translation>
     </message>
@@ -9895,7 +9990,7 @@ Id: %3</translation>
         <translation>Detener</translation>
     </message>
     <message>
-        <location line="+88" />
+        <location line="+90" />
         <source>On the centre's network as %1</source>
         <translation>En la red del centro como %1</translation>
     </message>
@@ -10664,6 +10759,11 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+3" />
+        <source>the device number (the second field, after the time) is missing</source>
+        <translation>falta el número de dispositivo (el segundo campo, después del tiempo)</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>device %1 is not described above this line</source>
         <translation>el dispositivo %1 no está descrito antes de esta línea</translation>
     </message>
@@ -10705,7 +10805,7 @@ Id: %3</translation>
 <context>
     <name>trainer::ProfileStore</name>
     <message>
-        <location filename="../trainer/station/profile_store.cpp" line="+96" />
+        <location filename="../trainer/station/profile_store.cpp" line="+97" />
         <source>there is no profile “%1” for %2</source>
         <translation>no hay un perfil “%1” para %2</translation>
     </message>
@@ -10893,7 +10993,7 @@ Id: %3</translation>
 <context>
     <name>trainer::StationEngine</name>
     <message>
-        <location filename="../trainer/station/station_engine.cpp" line="+390" />
+        <location filename="../trainer/station/station_engine.cpp" line="+402" />
         <source>not connected</source>
         <translation>no conectado</translation>
     </message>
@@ -10903,7 +11003,17 @@ Id: %3</translation>
         <translation>%1: %2 — válvulas cerradas, se mantienen %3</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+16" />
+        <source>%1, %2: device fault, it reads %3 where it can read only %4…%5 — valve closed%6</source>
+        <translation>%1, %2: falla del dispositivo, lee %3 donde solo puede leer %4…%5 — válvula cerrada%6</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>, holding %1</source>
+        <translation>, sosteniendo %1</translation>
+    </message>
+    <message>
+        <location line="+10" />
         <source>No %1 found: its drives hold</source>
         <translation>No se encontró %1: sus accionamientos se mantienen</translation>
     </message>
@@ -11022,7 +11132,7 @@ Id: %3</translation>
         <translation>la velocidad en baudios debe ser positiva</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+11" />
         <source>Keyboard and gamepad</source>
         <translation>Teclado y gamepad</translation>
     </message>
@@ -11045,7 +11155,7 @@ Id: %3</translation>
 <context>
     <name>trainer::records::RecordsDb</name>
     <message>
-        <location filename="../trainer/records/records_db.cpp" line="+286" />
+        <location filename="../trainer/records/records_db.cpp" line="+288" />
         <source>the records database is in use by another program, which has kept it locked for over %1 s; close that program or try again</source>
         <translation>la base de datos de registros está en uso por otro programa, que la tiene bloqueada hace más de %1 s; cierre ese programa o intente de nuevo</translation>
     </message>
@@ -11199,18 +11309,18 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+224" />
-        <location line="+449" />
+        <location line="+451" />
         <source>cannot add the operator “%1”</source>
         <translation>no se puede agregar al operador “%1”</translation>
     </message>
     <message>
-        <location line="-447" />
-        <location line="+449" />
+        <location line="-449" />
+        <location line="+451" />
         <source>an operator needs an id</source>
         <translation>un operador necesita un id</translation>
     </message>
     <message>
-        <location line="-443" />
+        <location line="-445" />
         <source>the id is taken already, by “%1”</source>
         <translation>el id ya está en uso, por “%1”</translation>
     </message>
@@ -11253,22 +11363,17 @@ Id: %3</translation>
     <message>
         <location line="+5" />
         <location line="+54" />
-        <location line="+254" />
+        <location line="+256" />
         <source>there is no attempt %1</source>
         <translation>no existe el intento %1</translation>
     </message>
     <message>
-        <location line="-279" />
+        <location line="-281" />
         <source>cannot record the attempt's result</source>
         <translation>no se puede registrar el resultado del intento</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>an attempt ends finished or aborted, not %1</source>
-        <translation>un intento termina finalizado o abortado, no %1</translation>
-    </message>
-    <message>
-        <location line="+2" />
+        <location line="+5" />
         <source>the score %1 is not within 0…100</source>
         <translation>el puntaje %1 no está entre 0…100</translation>
     </message>
@@ -11304,13 +11409,13 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+7" />
-        <location line="+76" />
+        <location line="+78" />
         <location line="+82" />
         <source>cannot read the attempt</source>
         <translation>no se puede leer el intento</translation>
     </message>
     <message>
-        <location line="-146" />
+        <location line="-148" />
         <source>cannot export the records to %1</source>
         <translation>no se pueden exportar los registros a %1</translation>
     </message>
@@ -11320,7 +11425,12 @@ Id: %3</translation>
         <translation>ya hay un intento con el identificador %1</translation>
     </message>
     <message>
-        <location line="+268" />
+        <location line="+63" />
+        <source>an attempt ends finished, aborted or interrupted, not %1</source>
+        <translation>un intento termina finalizado, abortado o interrumpido, no %1</translation>
+    </message>
+    <message>
+        <location line="+207" />
         <source>cannot read what the centre's server lacks</source>
         <translation>no se puede leer lo que le falta al servidor del centro</translation>
     </message>

@@ -309,6 +309,10 @@ int runStation(const std::vector<std::string>& argsIn)
     auto bus = openBus(net, centre::TopicCommand);
     if (!bus) return kExitUsage;
     const std::string name = o.name;
+    o.notice = [name](const QString& what) {
+        printOut(fill(trStd("padrob", "station %1: %2\n"), {name, what.toStdString()}));
+        std::fflush(stdout);
+    };
     centre::StationNode node(*bus, std::move(o));
     if (!node.ok()) {
         printErr("padrob station: " + node.error().toStdString() + "\n");

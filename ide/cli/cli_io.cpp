@@ -87,7 +87,30 @@ void printDiagnostic(std::FILE* f, const solver::Diagnostic& d)
 
 std::shared_ptr<const solver::Model> loadAndCompile(const std::string& path, int& status)
 {
-    const solver::CompiledModel compiled = solver::compileFile(path);
+    return loadAndCompile(path, status, nullptr);
+}
+
+std::shared_ptr<const solver::Model> loadAndCompile(const std::string& path, int& status,
+                                                    const std::function<std::string(solver::ModelSpec&)>& edit)
+{
+    solver::CompiledModel compiled = solver::compileFile(path);
+    if (edit && compiled.ok()) {
+        solver::ModelSpec spec = compiled.spec;
+        if (const std::string why = edit(spec); !why.empty()) {
+            printErr(why + "\n");
+            status = kExitUsage;
+            return nullptr;
+        }
+        compiled = solver::compileSpec(std::move(spec));
+        if (!compiled.ok()) {
+            // the file is fine: the command line's values are what does not fit
+            printErr(i18n::trStd("padrob", "the values given on the command line do not fit the model:") + "\n");
+            for (const solver::Diagnostic& d : compiled.diagnostics)
+                if (d.severity == solver::Severity::Error) printDiagnostic(stderr, d);
+            status = kExitUsage;
+            return nullptr;
+        }
+    }
     bool io = false;
     for (const solver::Diagnostic& d : compiled.diagnostics) {
         if (d.severity == solver::Severity::Error || d.code == "io-error") printDiagnostic(stderr, d);

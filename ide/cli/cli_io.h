@@ -10,9 +10,11 @@
 
 #include "solver/core/diagnostic.h"
 #include "solver/core/model.h"
+#include "solver/spec/model_spec.h"
 
 #include <cstdio>
 #include <initializer_list>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -51,5 +53,10 @@ void printDiagnostic(std::FILE* f, const solver::Diagnostic& d);
 /// file's io-error) on standard error. nullptr with `status` kExitUsage (unreadable) or
 /// kExitModelErrors (errors in the model) when it cannot.
 std::shared_ptr<const solver::Model> loadAndCompile(const std::string& path, int& status);
+/// The same, with the spec changed by `edit` before it is checked and compiled (command-line
+/// overrides such as --set and --rate: checked as if they were written in the file). `edit`
+/// returns "" or a usage error (e.g. a joint the model lacks), printed with status kExitUsage.
+std::shared_ptr<const solver::Model> loadAndCompile(const std::string& path, int& status,
+                                                    const std::function<std::string(solver::ModelSpec&)>& edit);
 
 }  // namespace ide::cli

@@ -92,11 +92,6 @@ std::optional<long> toInteger(const std::string& s)
     return v;
 }
 
-struct Assignment {
-    int joint = 0;
-    double value = 0;
-};
-
 /// A --weld or --release T:A:B: at time t, weld body b to body a (or release that weld).
 struct WeldSwitch {
     bool weld = true;  ///< false: --release
@@ -303,32 +298,32 @@ int runSimulate(const std::vector<std::string>& args)
         }
     }
 
-    // the model
+    // the model, with --set and --rate written into it as QI and VI: checked as the file's
+    // own values are (limits, lengths a T 1 joint can reach, VI within VMAX, sizes)
     int status = kExitOk;
-    std::shared_ptr<const solver::Model> model = loadAndCompile(modelPath, status);
+    const auto edit = [&](solver::ModelSpec& spec) -> std::string {
+        for (const auto* list : {&sets, &rates}) {
+            const char* option = list == &sets ? "--set" : "--rate";
+            for (const auto& [js, vs] : *list) {
+                auto id = toInteger(js);
+                auto v = toNumber(vs);
+                if (!id || !v || !std::isfinite(*v)) {
+                    return "padrob simulate: " + fill(trStd("padrob", "%1 takes J=VALUE (a joint id and a number), not '%2'"),
+                                                      {option, js + "=" + vs});
+                }
+                solver::JointSpec* joint = nullptr;
+                for (solver::JointSpec& j : spec.joints)
+                    if (*id >= INT_MIN && *id <= INT_MAX && j.id == static_cast<int>(*id)) joint = &j;
+                if (!joint) return "padrob simulate: " + fill(trStd("padrob", "%1: the model has no joint %2"), {option, js});
+                (list == &sets ? joint->qi : joint->vi) = *v;
+            }
+        }
+        return {};
+    };
+    std::shared_ptr<const solver::Model> model =
+        sets.empty() && rates.empty() ? loadAndCompile(modelPath, status) : loadAndCompile(modelPath, status, edit);
     if (!model) return status;
     const solver::Model& m = *model;
-
-    // --set / --rate
-    auto parseAssignments = [&](const auto& raw, const char* option, std::vector<Assignment>& out) -> bool {
-        for (const auto& [js, vs] : raw) {
-            auto id = toInteger(js);
-            auto v = toNumber(vs);
-            if (!id || !v) {
-                usage(fill(trStd("padrob", "%1 takes J=VALUE (a joint id and a number), not '%2'"), {option, js + "=" + vs}));
-                return false;
-            }
-            const int j = m.jointIndex(static_cast<int>(*id));
-            if (j < 0) {
-                usage(fill(trStd("padrob", "%1: the model has no joint %2"), {option, js}));
-                return false;
-            }
-            out.push_back({j, *v});
-        }
-        return true;
-    };
-    std::vector<Assignment> setList, rateList;
-    if (!parseAssignments(sets, "--set", setList) || !parseAssignments(rates, "--rate", rateList)) return kUsage;
 
     // --weld / --release: the bodies must exist
     for (const WeldSwitch& w : switches) {
@@ -444,23 +439,6 @@ int runSimulate(const std::vector<std::string>& args)
     options.drives = !passive;
     options.limits = !noLimits;
     solver::Simulation sim(model, options);
-    for (const Assignment& s : setList) {
-        double theta = s.value;
-        if (m.jointType[s.joint] == solver::JointType::Actuator) {
-            auto a = m.lengthLaw[s.joint].angle(s.value);
-            if (!a) {
-                return usage(fill(trStd("padrob", "--set %1: the actuator cannot reach that length"),
-                                  {std::to_string(m.jointId[s.joint]) + "=" + fmtNumber(s.value)}));
-            }
-            theta = *a;
-        }
-        sim.setInitial(s.joint, theta, sim.state().qd[s.joint]);
-    }
-    for (const Assignment& r : rateList) {
-        const double dqdtheta = m.coordinateRate(r.joint, sim.state().q[r.joint]);
-        if (dqdtheta == 0) return usage(trStd("padrob", "--rate: the joint is at a dead point; its rate cannot be set"));
-        sim.setInitial(r.joint, sim.state().q[r.joint], r.value / dqdtheta);
-    }
 
     std::vector<solver::SimulationEvent> events;
     std::vector<solver::CutReading> cutReadings;
@@ -513,6 +491,14 @@ int runSimulate(const std::vector<std::string>& args)
         if (!ok) {
             out.abandon();
             printErr("padrob simulate: " + errorPrefix + i18n::text(errorText).toStdString() + "\n");
+            if (error.rfind("the simulation failed at", 0) == 0) {
+                printErr("padrob simulate: " +
+                         (adaptive ? trStd("padrob", "the adaptive integrator failed too: check the model's masses, springs and forces")
+                                   : fill(trStd("padrob", "run it again with a smaller --dt (now %1 s; e.g. --dt %2) or with "
+                                                          "--integrator adaptive"),
+                                          {fmtNumber(dt), fmtNumber(dt / 10)})) +
+                         "\n");
+            }
         }
         return ok;
     };

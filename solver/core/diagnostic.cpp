@@ -14,9 +14,35 @@ const char* severityName(Severity s)
     return "error";
 }
 
+std::string escapeControls(std::string_view value)
+{
+    std::string out;
+    out.reserve(value.size());
+    for (const char c : value) {
+        const auto u = static_cast<unsigned char>(c);
+        if (u >= 0x20 && u != 0x7f) {
+            out += c;
+        } else if (c == '\n') {
+            out += c;  // (a message's own line break, e.g. in a list)
+        } else if (c == '\t') {
+            out += "\\t";
+        } else if (c == '\r') {
+            out += "\\r";
+        } else {
+            static constexpr char kHex[] = "0123456789abcdef";
+            out += "\\x";
+            out += kHex[u >> 4];
+            out += kHex[u & 15];
+        }
+    }
+    return out;
+}
+
 Text& Text::arg(std::string value)
 {
-    m_args.push_back(plainText(std::move(value)));
+    // a value from a file or the command line may hold control characters (an escape
+    // sequence, a NUL): shown escaped, never sent raw to a terminal or a log
+    m_args.push_back(plainText(escapeControls(value)));
     return *this;
 }
 

@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace solver {
@@ -20,6 +21,10 @@ namespace solver {
 /// A translatable text: a context and an English template with %1…%9, and its
 /// arguments, each a plain value (a name, a number as written) or a Text of its own
 /// (a phrase that is translated too). Built with trText(…).arg(…).
+/// `value` with control characters escaped (\t, \r, \xNN; a line break kept): how a
+/// value from a file or the command line is shown in a message.
+std::string escapeControls(std::string_view value);
+
 class Text {
 public:
     Text() = default;

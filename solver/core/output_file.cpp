@@ -130,6 +130,11 @@ bool OutputFile::commit()
     if (m_mode >= 0 && ::fchmod(::fileno(f), static_cast<mode_t>(m_mode)) != 0)
         return fail(trText("Diagnostics", "cannot write %1: %2").with(m_target).with(errnoText(errno)));
     if (::fsync(::fileno(f)) != 0) return fail(trText("Diagnostics", "cannot write %1: %2").with(m_target).with(errnoText(errno)));
+    // all of it on the disk (a file system that took less than was written says so here)
+    struct stat written {};
+    const long end = std::ftell(f);
+    if (::fstat(::fileno(f), &written) != 0 || end < 0 || written.st_size != static_cast<off_t>(end))
+        return fail(trText("Diagnostics", "cannot write %1: %2").with(m_target).with(errnoText(ENOSPC)));
     if (m_fd >= 0) {
         // give the unnamed file a fresh name, then rename that over the target
         const std::string proc = "/proc/self/fd/" + std::to_string(m_fd);
@@ -152,6 +157,14 @@ bool OutputFile::commit()
     fs::rename(m_tmpPath, m_target, ec);
     if (ec) return fail(trText("Diagnostics", "cannot write %1: %2").with(m_target).with(ec.message()));
     m_tmpPath.clear();
+    // the rename itself on the disk: the folder's entry (a power cut keeps the new file)
+    fs::path folder = fs::path(m_target).parent_path();
+    if (folder.empty()) folder = ".";
+    if (const int dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); dir >= 0) {
+        const int err = ::fsync(dir) == 0 || errno == EINVAL ? 0 : errno;  // (some file systems cannot sync a folder)
+        ::close(dir);
+        if (err != 0) return fail(trText("Diagnostics", "cannot write %1: %2").with(m_target).with(errnoText(err)));
+    }
     return true;
 }
 

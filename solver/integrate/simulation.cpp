@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
@@ -891,6 +892,48 @@ Text lockMessage(double t)
         .with(fmt(t));
 }
 
+/// Why a simulation probably diverged on tree joint `joint`: the stiffest spring on its
+/// body or a body below it when it is too stiff for the fixed step (RK4 is unstable past
+/// ω·h ≈ 2.8; beyond ω·h ≈ 1 it is already far from the physics), else the usual suspects.
+Text divergenceCause(const Model& m, const IntegratorOptions& io, int joint)
+{
+    const bool fixed = io.method == IntegrationMethod::Rk4Fixed;
+    const CompiledForce* stiffest = nullptr;
+    double omega = 0.0;
+    int on = -1;
+    for (const CompiledForce& f : m.forces) {
+        if (f.kind != ForceKind::Spring || !(f.stiffness > 0)) continue;
+        for (const int b : {f.body, f.body2}) {
+            bool below = false;
+            for (int x = b; x >= 0 && !below; x = m.parent[static_cast<std::size_t>(x)]) below = x == joint;
+            if (!below || !(m.mass[static_cast<std::size_t>(b)] > 0)) continue;
+            const double w = std::sqrt(f.stiffness / m.mass[static_cast<std::size_t>(b)]);
+            if (w > omega) {
+                omega = w;
+                stiffest = &f;
+                on = b;
+            }
+        }
+    }
+    if (fixed && stiffest && omega * io.step > 1.0) {
+        return trText("Diagnostics", "the likely cause: spring force %1 (K = %2 N/m on a body of %3 kg, a natural period of "
+                                     "%4 s) is too stiff for the step of %5 s; use a step under %6 s or the adaptive "
+                                     "integrator, or soften the spring")
+            .with(std::to_string(stiffest->id))
+            .with(fmt(stiffest->stiffness))
+            .with(fmt(m.mass[static_cast<std::size_t>(on)]))
+            .with(fmt(2 * std::numbers::pi / omega))
+            .with(fmt(io.step))
+            .with(fmt(0.5 / omega));
+    }
+    return fixed ? trText("Diagnostics", "the likely cause: a spring, force or hydraulic drive too stiff for the step of %1 s, "
+                                         "or a body too light for the forces on it; try a smaller step or the adaptive "
+                                         "integrator, and check the masses and force magnitudes")
+                       .with(fmt(io.step))
+                 : trText("Diagnostics", "the likely cause: a force or spring that grows without bound, or a body too light "
+                                         "for the forces on it; check the masses and force magnitudes");
+}
+
 }  // namespace
 
 bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, std::string& error, Text* errorText)
@@ -952,17 +995,19 @@ bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, st
                 setError(trText("Diagnostics", "the simulation failed at t = %1 s: %2").with(t0).with(r.messageText),
                          error, errorText);
             } else if (m_model->jointName[joint].empty()) {
-                setError(trText("Diagnostics", "the simulation failed at t = %1 s, joint %2: %3")
+                setError(trText("Diagnostics", "the simulation failed at t = %1 s, joint %2: %3; %4")
                              .with(t0)
                              .with(std::to_string(m_model->jointId[joint]))
-                             .with(r.messageText),
+                             .with(r.messageText)
+                             .with(divergenceCause(*m_model, m_options.integrator, joint)),
                          error, errorText);
             } else {
-                setError(trText("Diagnostics", "the simulation failed at t = %1 s, joint %2 (%3): %4")
+                setError(trText("Diagnostics", "the simulation failed at t = %1 s, joint %2 (%3): %4; %5")
                              .with(t0)
                              .with(std::to_string(m_model->jointId[joint]))
                              .with(m_model->jointName[joint])
-                             .with(r.messageText),
+                             .with(r.messageText)
+                             .with(divergenceCause(*m_model, m_options.integrator, joint)),
                          error, errorText);
             }
             return false;

@@ -61,6 +61,9 @@ void checkDuplicates(const Items& items, Id idOf, const Text& what, Diagnostics&
 }
 
 constexpr double kMaxBodyMass = 1e12;     // [kg] (a million tonnes is 1e9)
+// [m, rad, m/s, rad/s] LL, UL, QI, VI: a kilometre-long stroke or a thousand turns is
+// already no machine; beyond this a value is a slip of units or a typo (1e308)
+constexpr double kMaxJointValue = 1e6;
 constexpr double kMaxBodyInertia = 1e18;  // [kg m²]
 
 void checkBody(const BodySpec& b, Diagnostics& d)
@@ -211,6 +214,19 @@ void checkJoint(const ModelSpec& spec, const JointSpec& j, Diagnostics& d)
     // limits and initial values, with their unit
     const char* unit = j.type == JointType::Revolute ? " rad" : " m";
     auto value = [&](double v) { return fmt(v) + unit; };
+    bool tooLarge = false;
+    for (const auto& [key, v] : {std::pair{"LL", j.ll}, std::pair{"UL", j.ul}, std::pair{"QI", j.qi}, std::pair{"VI", j.vi}}) {
+        if (!v || std::abs(*v) <= kMaxJointValue) continue;
+        d.error("too-large", j.src.where(key),
+                trText("Diagnostics", "%1: %2 = %3 is beyond any machine's (at most %4 in size)")
+                    .with(who())
+                    .with(key)
+                    .with(fmt(*v))
+                    .with(fmt(kMaxJointValue)),
+                trText("Diagnostics", "check the units: lengths in m, angles in rad, rates in m/s or rad/s"));
+        tooLarge = true;
+    }
+    if (tooLarge) return;
     if (j.ll && j.ul && *j.ll > *j.ul) {
         d.error("limits-reversed", j.src.where("LL"),
                 trText("Diagnostics", "%1: the lower limit LL = %2 is above the upper limit UL = %3")

@@ -275,6 +275,11 @@ TEST(CliSimulate, BadArgumentsExitTwoAndLeaveNoFile)
         {model + " --time 1 --every 0", "--every must be a whole number ≥ 1, not '0'"},
         {model + " --time 1 --set 42=1", "--set: the model has no joint 42"},
         {model + " --time 1 --set 1", "--set takes J=VALUE (a joint id and a number), not '1'"},
+        // checked as QI and VI in the file are
+        {model + " --time 1 --set 1=1e308", "QI = 1e+308 is beyond any machine's"},
+        {model + " --time 1 --set 1=nan", "--set takes J=VALUE (a joint id and a number), not '1=nan'"},
+        {model + " --time 1 --rate 1=5", "VI = 5 is faster than its hydraulic drive can move it"},
+        {model + " --time 1 --set 3=99", "is above the upper limit"},
         {model + " --time 1 --input " + missingT, "t"},
         {model + " --time 1 --input " + missingCol, "error: no column for joint 3's drive"},
         {model + " --time 1 --input " + text, "'abc' is not a number"},
@@ -321,6 +326,11 @@ TEST(CliSimulate, ADivergingSimulationFailsWithoutOutput)
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.err.find("padrob simulate: the simulation failed at t = "), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("joint 7 (slider)"), std::string::npos) << r.err;
+    // the likely cause, and what to do
+    EXPECT_NE(r.err.find("the likely cause: spring force 1 (K = 1e+12 N/m on a body of 1 kg"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("run it again with a smaller --dt (now 0.01 s; e.g. --dt 0.001) or with --integrator adaptive"),
+              std::string::npos)
+        << r.err;
     EXPECT_FALSE(std::filesystem::exists(out));
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/common/components.h"
 #include "cli_run.h"
 
 using namespace test;
@@ -220,7 +221,7 @@ TEST(CliExport, CheckAgreesWithMujocoOnEveryTreeModel)
         EXPECT_NE(r.err.find("MuJoCo agrees with Padrob over 0.2 s"), std::string::npos) << model << "\n" << r.err;
         EXPECT_EQ(r.out, padrob("export --mjcf " + model).out) << model;
     }
-    if (!mujoco) GTEST_SKIP() << "padrob was built without MuJoCo: --check refused as documented";
+    if (!mujoco) PADROB_NEEDS_COMPONENT("padrob was built without MuJoCo: --check refused as documented");
 
     // the liner manipulator's placeholders are replaced by the true values
     CliRun liner = padrob("export --mjcf models/liner_manipulator.pad --check");

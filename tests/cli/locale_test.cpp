@@ -2,6 +2,7 @@
 // a decimal comma: under es_CL.UTF-8 the texts come out in Spanish, every number a script
 // reads (CSV, JSON, the values in the texts) keeps the '.', exactly as under C.
 
+#include "tests/common/components.h"
 #include "cli_run.h"
 
 #include <gtest/gtest.h>
@@ -27,7 +28,7 @@ bool haveSpanishLocale()
 
 #define SKIP_WITHOUT_SPANISH_LOCALE()                                                                             \
     if (!haveSpanishLocale())                                                                                     \
-    GTEST_SKIP() << "the locale es_CL.UTF-8 is not installed here (scripts/install-deps.sh generates it)"
+    PADROB_NEEDS_COMPONENT("the locale es_CL.UTF-8 is not installed here (scripts/install-deps.sh generates it)")
 
 /// A pendulum written with decimals everywhere; its lower limit is hit within 0.5 s (an
 /// event line with a time), and a drive-less joint.

@@ -1,6 +1,7 @@
 // The built-in catalogues at run time: install() switches the language (and the
 // locale's decimal separator) back and forth without a restart, the system locale
 // chooses the first language, and the model layer's diagnostics come out translated.
+#include "tests/common/components.h"
 #include "ide/i18n/diagnostic_text.h"
 #include "ide/i18n/language.h"
 #include "solver/pipeline.h"
@@ -76,7 +77,7 @@ TEST(Language, ModelFilesReadPointDecimalsUnderASpanishCLocale)
     // not make the parser read 1.5 as 1 (docs/glossary.md: model files use the point)
     const char* previous = std::setlocale(LC_ALL, nullptr);
     const std::string saved = previous ? previous : "C";
-    if (!std::setlocale(LC_ALL, "es_CL.UTF-8")) GTEST_SKIP() << "the es_CL.UTF-8 locale is not installed (scripts/install-deps.sh makes it)";
+    if (!std::setlocale(LC_ALL, "es_CL.UTF-8")) PADROB_NEEDS_COMPONENT("the es_CL.UTF-8 locale is not installed (scripts/install-deps.sh makes it)");
     const solver::CompiledModel m = solver::compileText("GRAVITY 0 0 -9.81\nB 1 1.5 0.25 0.25 0.125\nC 1 QI 0.5\n"
                                                          "B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 -1\nB2 1 P2 0 0 1 A2 1 0 0 R2 0 0 -1\n", "m.pad");
     std::setlocale(LC_ALL, saved.c_str());

@@ -1185,3 +1185,13 @@ B2 1 P2 0 0 0 A2 0 0 1 R2 0 1 0
 }
 
 }  // namespace
+
+TEST(Diagnostics, ValuesInMessagesHaveTheirControlCharactersEscaped)
+{
+    // a value from a file or the command line (a quoted name, a path) may hold an escape
+    // sequence or a NUL: a message shows it escaped, never sends it raw to a terminal
+    const std::string raw = std::string("a\x1b[2Jb\tc\rd") + '\0' + "e\x7f";
+    const Text t = trText("Diagnostics", "cannot write %1: %2").with(raw).with("line\nbreak");
+    EXPECT_EQ(t.english(), "cannot write a\\x1b[2Jb\\tc\\rd\\x00e\\x7f: line\nbreak");
+    EXPECT_EQ(escapeControls("plain ñandú"), "plain ñandú");  // UTF-8 untouched
+}

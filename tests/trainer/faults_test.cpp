@@ -327,7 +327,7 @@ TEST(Faults, TheAttemptsRecordSaysWhatTheInstructorDidAndWhen)
     ASSERT_TRUE(db.openSqlite(dir.filePath("records.sqlite"), false, &error)) << error.toStdString();
     const qint64 op = db.addOperator("OP-9", "Juan Soto", &error);
     ASSERT_GT(op, 0) << error.toStdString();
-    AttemptLog log(&db, dir.filePath("pending"), op, *t, "es");
+    AttemptLog log(&db, dir.filePath("pending"), "OP-9", "Juan Soto", *t, "es");
     ASSERT_TRUE(log.finish(s.events(), s.result(), true)) << log.problem().toStdString();
     records::Attempt stored;
     ASSERT_TRUE(db.attempt(log.attemptId(), stored, &error)) << error.toStdString();

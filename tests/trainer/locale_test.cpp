@@ -4,6 +4,7 @@
 // the parsers and writers must not depend on it (docs/glossary.md: model files always use
 // the point). Skipped where the locale is not installed (scripts/install-deps.sh makes it).
 
+#include "tests/common/components.h"
 #include "solver/pipeline.h"
 #include "solver/parse/writer.h"
 #include "trainer/input/input_log.h"
@@ -66,7 +67,7 @@ std::string problems(const solver::CompiledModel& m)
 TEST(SpanishLocale, ModelFilesKeepThePoint)
 {
     SpanishLocale es;
-    if (!es.ok()) GTEST_SKIP() << kNoLocale;
+    if (!es.ok()) PADROB_NEEDS_COMPONENT(kNoLocale);
     ASSERT_STREQ(std::localeconv()->decimal_point, ",");  // the C library's numbers are 1,5 now
     const solver::CompiledModel m = solver::compileText(kModel, "es.pad");
     ASSERT_TRUE(m.ok()) << problems(m);
@@ -97,7 +98,7 @@ TEST(SpanishLocale, ModelFilesKeepThePoint)
 TEST(SpanishLocale, TrainerFilesKeepThePoint)
 {
     SpanishLocale es;
-    if (!es.ok()) GTEST_SKIP() << kNoLocale;
+    if (!es.ok()) PADROB_NEEDS_COMPONENT(kNoLocale);
     // a camera path
     trainer::CameraPath path;
     QString error;

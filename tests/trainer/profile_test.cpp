@@ -1,6 +1,9 @@
 // Station profiles: JSON round trip, every kind of bad file refused with where and
 // why (never half-read), checks against a model's drives, the default profile.
 #include "trainer/station/profile.h"
+#include "trainer/station/profile_store.h"
+
+#include <QTemporaryDir>
 
 #include <gtest/gtest.h>
 
@@ -118,6 +121,26 @@ TEST(Profile, CheckWarnsOfDrivesTheModelLacksAndRefusesBadGains)
     EXPECT_TRUE(issues[1].error);  // sign
     EXPECT_TRUE(issues[2].error);  // gain
     EXPECT_TRUE(sample().check(linerDrives()).isEmpty());
+}
+
+TEST(Profile, IssuesOfAProfileReadFromAFileNameTheFile)
+{
+    QTemporaryDir dir;
+    StationProfile p = sample();
+    p.banks[1].mappings.append({"gamepad", 3, 2, 99.0, 1});  // a gain out of range
+    const QString file = dir.filePath("console.json");
+    QString error;
+    ASSERT_TRUE(ProfileStore::exportFile(p, file, false, &error)) << error.toStdString();
+    ProfileStore store(dir.filePath("store"));
+    StationProfile read;
+    QList<ProfileIssue> issues;
+    ASSERT_TRUE(store.resolve(dir.filePath("liner_manipulator.pad"), file, linerDrives(), read, issues));
+    EXPECT_EQ(read, p);  // the file it came from is no part of the profile
+    const QList<ProfileIssue> found = read.check(linerDrives());
+    ASSERT_EQ(found.size(), 1);
+    EXPECT_TRUE(found[0].error);
+    EXPECT_EQ(found[0].where, file + ": banks[1].mappings[1]") << found[0].text().toStdString();
+    EXPECT_TRUE(found[0].message.contains("gain"));
 }
 
 TEST(Profile, DefaultProfileMapsKeysOneToOneAndTheGamepadInBanksOfFour)

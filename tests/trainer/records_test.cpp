@@ -5,6 +5,8 @@
 // process that dies during an attempt (this binary re-run as a child that calls
 // std::abort()). The same round trip runs on a throwaway PostgreSQL server when the
 // QPSQL driver and the server programs are installed; otherwise it is skipped, saying why.
+#include "tests/common/as_user.h"
+#include "tests/common/components.h"
 #include "local_postgres.h"
 #include "trainer/records/records_db.h"
 
@@ -456,6 +458,14 @@ TEST(Records, LockedDatabaseGivesAClearMessageWithinTheTimeout)
 
 TEST(Records, ReadOnlyFileIsRefusedWithAClearMessage)
 {
+    if (geteuid() == 0) {
+        // root writes whatever the modes say: the test runs as an ordinary user
+        const padrob_test::UserRun r = padrob_test::runAsUser({"--gtest_filter=Records.ReadOnlyFileIsRefusedWithAClearMessage"});
+        ASSERT_TRUE(r.ran) << str(r.output);
+        EXPECT_EQ(r.exitCode, 0) << str(r.output);
+        EXPECT_TRUE(r.output.contains("[  PASSED  ] 1 test")) << str(r.output);
+        return;
+    }
     QTemporaryDir dir;
     Sample s;
     const QString path = sampleFile(dir, s);
@@ -477,9 +487,7 @@ TEST(Records, ReadOnlyFileIsRefusedWithAClearMessage)
     } restore{folder, ro};
     {
         QFile probe(ro);
-        if (probe.open(QIODevice::ReadWrite))
-            GTEST_SKIP() << "the test runs as root (or with CAP_DAC_OVERRIDE): chmod does not stop it writing; "
-                            "Records.ReadOnlyOpenReadsButNeverWrites covers the read-only path";
+        ASSERT_FALSE(probe.open(QIODevice::ReadWrite)) << "the read-only file can be written: chmod had no effect";
     }
     const QByteArray before = bytesOf(ro);
     RecordsDb db;
@@ -757,9 +765,10 @@ TEST(Records, CrashDuringAnAttemptLeavesItInterruptedWithItsCommittedEvents)
 
 TEST(RecordsChild, FillsTheDiskUntilFull)
 {
-    const QString path = qEnvironmentVariable(kFullEnv);
-    if (path.isEmpty())
+    const QString folder = qEnvironmentVariable(kFullEnv);
+    if (folder.isEmpty())
         GTEST_SKIP() << "a child process of Records.DiskFull…; runs only with " << kFullEnv << " set";
+    const QString path = folder + "/records.sqlite";
     RecordsDb db;
     QString error;
     ASSERT_TRUE(db.openSqlite(path, false, &error)) << str(error);
@@ -784,28 +793,14 @@ TEST(RecordsChild, FillsTheDiskUntilFull)
 
 TEST(Records, DiskFullIsReportedAndReadsStillWork)
 {
-    const QString unshare = QStandardPaths::findExecutable("unshare");
-    if (geteuid() != 0 || unshare.isEmpty())
-        GTEST_SKIP() << "needs root and unshare(1) to mount a small tmpfs in a private mount namespace";
     QTemporaryDir dir;
     const QString small = dir.filePath("small");
     ASSERT_TRUE(QDir().mkpath(small));
-    QProcess child;
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.insert(kFullEnv, small + "/records.sqlite");
-    child.setProcessEnvironment(env);
-    child.start(unshare, {"-m", "--propagation", "private", "sh", "-c",
-                          "mount -t tmpfs -o size=384k padrob-full \"$0\" || exit 77; "
-                          "exec \"$1\" --gtest_filter=RecordsChild.FillsTheDiskUntilFull",
-                          small, QCoreApplication::applicationFilePath()});
-    ASSERT_TRUE(child.waitForFinished(60000));
-    const QString err = QString::fromLocal8Bit(child.readAllStandardError());
-    const QString out = QString::fromLocal8Bit(child.readAllStandardOutput());
-    if (child.exitCode() == 77 || err.startsWith("unshare:"))
-        GTEST_SKIP() << "cannot mount a small tmpfs here: " << str(err.trimmed());
-    EXPECT_EQ(child.exitStatus(), QProcess::NormalExit);
-    EXPECT_EQ(child.exitCode(), 0) << str(out + err);
-    EXPECT_TRUE(out.contains("[  PASSED  ] 1 test")) << str(out + err);
+    // the child gets the folder; its records file is records.sqlite there
+    const padrob_test::TmpfsRun r =
+        padrob_test::runOnSmallTmpfs(small, "384k", kFullEnv, "RecordsChild.FillsTheDiskUntilFull");
+    if (!r.mounted) PADROB_NEEDS_COMPONENT(str(r.output));
+    EXPECT_TRUE(r.passed) << str(r.output);
 }
 
 // PostgreSQL ------------------------------------------------------------------------------
@@ -816,7 +811,7 @@ TEST(RecordsPostgres, SameRoundTripOnAThrowawayServer)
     timer.start();
     LocalPostgres server;
     QString why;
-    if (!server.start(why)) GTEST_SKIP() << "no PostgreSQL test: " << str(why);
+    if (!server.start(why)) PADROB_NEEDS_COMPONENT("no PostgreSQL server for the test: " << str(why));
     const PostgresConfig config = server.config();
 
     Sample s;

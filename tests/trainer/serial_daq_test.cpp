@@ -169,10 +169,15 @@ TEST_F(SerialDaqPty, IdentificationAndSamplesArrive)
     EXPECT_EQ(d.droppedSamples(), 0u);
     EXPECT_DOUBLE_EQ(d.stallTimeout(), 0.25);  // 20 periods at 100 Hz is less
 
-    // a slow box waits longer before it counts as stalled
-    ASSERT_TRUE(send(d, ident(8, 10, "Bench console")));
+    // a slower box waits longer before it counts as stalled, but never over 0.3 s,
+    // whatever rate it claims (a box that says 1 Hz and freezes keeps no valve open)
+    ASSERT_TRUE(send(d, ident(8, 70, "Bench console")));
     ASSERT_TRUE(pollUntil(d, [&] { return d.stats().identLines == 2; }));
-    EXPECT_DOUBLE_EQ(d.stallTimeout(), 2.0);
+    EXPECT_NEAR(d.stallTimeout(), 20.0 / 70.0, 1e-12);
+    ASSERT_TRUE(send(d, ident(8, 1, "Bench console")));
+    ASSERT_TRUE(pollUntil(d, [&] { return d.stats().identLines == 3; }));
+    EXPECT_DOUBLE_EQ(d.stallTimeout(), SerialDaq::kMaxStallTimeout);
+    EXPECT_DOUBLE_EQ(SerialDaq::kMaxStallTimeout, 0.3);
     EXPECT_EQ(d.infoVersion(), 1u);  // same name and axes
 }
 
@@ -282,6 +287,20 @@ TEST_F(SerialDaqPty, StallAndRecovery)
     d.poll(now);
     EXPECT_EQ(d.status(), DeviceStatus::Connected);
     now = 7.1;
+    d.poll(now);
+    EXPECT_EQ(d.status(), DeviceStatus::Stalled);
+}
+
+TEST_F(SerialDaqPty, ABoxThatClaimsOneHertzAndFreezesStallsWithinThreeTenthsOfASecond)
+{
+    SerialDaq d(pty.slavePath());
+    ASSERT_TRUE(send(d, ident(8, 1) + line(900)));  // a lever held
+    ASSERT_TRUE(pollUntil(d, [&] { return d.sample().count == 1; }));
+    EXPECT_EQ(d.status(), DeviceStatus::Connected);
+    now = 0.29;
+    d.poll(now);
+    EXPECT_EQ(d.status(), DeviceStatus::Connected);
+    now = 0.31;
     d.poll(now);
     EXPECT_EQ(d.status(), DeviceStatus::Stalled);
 }

@@ -4,6 +4,7 @@
 // outages; a station that dies (this binary re-run as a child that calls std::abort())
 // during an attempt or in the middle of a sync. Also the schema's step 3 on an old file,
 // and AttemptLog recording through a station.
+#include "tests/common/components.h"
 #include "local_postgres.h"
 #include "trainer/records/shared_records.h"
 #include "trainer/training/attempt_log.h"
@@ -177,7 +178,7 @@ TEST(SharedRecordsPostgres, OnlineAnAttemptReachesTheServerOnceWithItsEventsInOr
 {
     LocalPostgres server;
     QString why;
-    if (!server.start(why)) GTEST_SKIP() << "no PostgreSQL test: " << str(why);
+    if (!server.start(why)) PADROB_NEEDS_COMPONENT("no PostgreSQL server for the test: " << str(why));
     QTemporaryDir dir;
     SharedRecords st;
     QString error;
@@ -234,7 +235,7 @@ TEST(SharedRecordsPostgres, AnOutageRecordsLocallyAndTheSyncAfterItDuplicatesAnd
 {
     LocalPostgres server;
     QString why;
-    if (!server.start(why)) GTEST_SKIP() << "no PostgreSQL test: " << str(why);
+    if (!server.start(why)) PADROB_NEEDS_COMPONENT("no PostgreSQL server for the test: " << str(why));
     QTemporaryDir dir;
     SharedRecords st;
     QString error;
@@ -291,7 +292,7 @@ TEST(SharedRecordsPostgres, AfterAFailureTheNextTryWaitsRetryAfter)
 {
     LocalPostgres server;
     QString why;
-    if (!server.start(why)) GTEST_SKIP() << "no PostgreSQL test: " << str(why);
+    if (!server.start(why)) PADROB_NEEDS_COMPONENT("no PostgreSQL server for the test: " << str(why));
     QTemporaryDir dir;
     SharedLocation where = stationAt(dir.filePath("station.sqlite"), server.config(), "bay-3");
     where.retryAfterS = 1.5;
@@ -315,7 +316,7 @@ TEST(SharedRecordsPostgres, ACrashInTheMiddleOfASyncLeavesNothingTwiceNorMissing
 {
     LocalPostgres server;
     QString why;
-    if (!server.start(why)) GTEST_SKIP() << "no PostgreSQL test: " << str(why);
+    if (!server.start(why)) PADROB_NEEDS_COMPONENT("no PostgreSQL server for the test: " << str(why));
     QTemporaryDir dir;
     const QString journal = dir.filePath("station.sqlite");
     QString uid, error;
@@ -361,7 +362,7 @@ TEST(SharedRecordsPostgres, AStationsRunningAttemptIsInterruptedOnlyByThatStatio
 {
     LocalPostgres server;
     QString why;
-    if (!server.start(why)) GTEST_SKIP() << "no PostgreSQL test: " << str(why);
+    if (!server.start(why)) PADROB_NEEDS_COMPONENT("no PostgreSQL server for the test: " << str(why));
     QTemporaryDir dir;
     const QString journal = dir.filePath("station.sqlite");
     QProcess::ExitStatus how = QProcess::NormalExit;
@@ -424,7 +425,7 @@ TEST(SharedRecordsPostgres, TwoStationsWithTheSameOperatorMakeOneOperatorRow)
 {
     LocalPostgres server;
     QString why;
-    if (!server.start(why)) GTEST_SKIP() << "no PostgreSQL test: " << str(why);
+    if (!server.start(why)) PADROB_NEEDS_COMPONENT("no PostgreSQL server for the test: " << str(why));
     QTemporaryDir dir;
     SharedRecords one, two, three;
     QString error;
@@ -477,7 +478,7 @@ TEST(SharedRecordsPostgres, ThePasswordIsInNoMessageNorInTheJournal)
 {
     LocalPostgres server;
     QString why;
-    if (!server.start(why)) GTEST_SKIP() << "no PostgreSQL test: " << str(why);
+    if (!server.start(why)) PADROB_NEEDS_COMPONENT("no PostgreSQL server for the test: " << str(why));
     QTemporaryDir dir;
     const QString journal = dir.filePath("station.sqlite");
     PostgresConfig config = server.config();
@@ -544,8 +545,8 @@ TEST(SharedRecords, WithoutItsServerAStationRecordsAndAttemptLogSeesNoProblem)
     solver::Diagnostics diags;
     const auto tutorial = trainer::loadTutorial(std::string(PADROB_SOURCE_DIR) + "/resources/tutorials/t0_reach.tut", diags);
     ASSERT_TRUE(tutorial);
-    const qint64 op = st.addOperator("L-1", "Lia", &error);
-    trainer::AttemptLog log(&st, dir.filePath("pending"), op, *tutorial, "en");
+    ASSERT_GT(st.addOperator("L-1", "Lia", &error), 0) << str(error);
+    trainer::AttemptLog log(&st, dir.filePath("pending"), "L-1", "Lia", *tutorial, "en");
     ASSERT_GT(log.attemptId(), 0) << str(log.problem());
     std::vector<trainer::TutorialEvent> events(3);
     for (int i = 0; i < 3; ++i) {
@@ -590,7 +591,7 @@ TEST(SharedRecords, APendingFileCompletesTheAttemptTheDatabaseHadBegunNeverASeco
     const qint64 op = db.addOperator("M-1", "Mar", &error);
     std::vector<trainer::TutorialEvent> events(5);
     for (int i = 0; i < 5; ++i) events[i].t = i, events[i].detail = "g" + std::to_string(i);
-    trainer::AttemptLog log(&db, dir.filePath("pending"), op, *tutorial, "en");
+    trainer::AttemptLog log(&db, dir.filePath("pending"), "M-1", "Mar", *tutorial, "en");
     ASSERT_GT(log.attemptId(), 0);
     log.update({events.begin(), events.begin() + 2});  // begun, two events in the database
     ASSERT_TRUE(log.problem().isEmpty()) << str(log.problem());

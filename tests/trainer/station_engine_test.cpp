@@ -170,6 +170,55 @@ TEST(StationEngine, DisconnectionClosesTheValvesWarnsAndResumesAfterCentring)
     EXPECT_TRUE(r.engine.state().warnings.isEmpty());
 }
 
+TEST(StationEngine, AReadingNoLeverCanGiveIsADeviceFaultThatClosesItsValve)
+{
+    // a 10-bit console (0…1023) whose first lever's wire breaks: 65535, not "fully open"
+    StationEngine engine;
+    engine.setDrives(5, drives());
+    auto box = std::make_shared<FakeDevice>("serial:/dev/ttyACM0", DeviceKind::SerialDaq, 2, 0, 0.0, 511.5, 1023.0);
+    engine.addDevice(box);
+    StationProfile p;
+    p.name = "console";
+    p.always.append({"serial:/dev/ttyACM0", 0, 1, 1.0, 1});
+    p.always.append({"serial:/dev/ttyACM0", 1, 3, 1.0, 1});
+    engine.setProfile(p);
+    double t = 0.0;
+    const auto step = [&](int n = 1) -> const std::vector<double>& {
+        for (int i = 0; i < n; ++i) engine.update(t += 1e-3);
+        return engine.commands();
+    };
+    box->setAxis(0, 511.5);
+    box->setAxis(1, 511.5);
+    step();
+    box->setAxis(0, 1023.0);
+    box->setAxis(1, 1023.0);
+    EXPECT_NEAR(step()[0], 1.0, 1e-12);
+    EXPECT_NEAR(step()[2], 1.0, 1e-12);
+    box->setAxis(0, 65535.0);
+    const std::vector<double> u = step();
+    EXPECT_EQ(u[0], 0.0) << "the valve of a broken lever must close";
+    EXPECT_NEAR(u[2], 1.0, 1e-12) << "the other lever still drives";
+    StationState st = engine.state();
+    EXPECT_TRUE(st.devices[0].channels[0].fault);
+    EXPECT_FALSE(st.devices[0].channels[1].fault);
+    const QString warnings = st.warnings.join("\n");
+    EXPECT_TRUE(warnings.contains("device fault") && warnings.contains("65535") && warnings.contains("GIRO"))
+        << warnings.toStdString();
+    EXPECT_EQ(step(50)[0], 0.0);
+    // sane again but held over: still closed until the lever is at the centre
+    box->setAxis(0, 900.0);
+    EXPECT_EQ(step(5)[0], 0.0);
+    EXPECT_FALSE(engine.state().devices[0].channels[0].fault);
+    box->setAxis(0, 511.5);
+    step();
+    box->setAxis(0, 1023.0);
+    EXPECT_NEAR(step()[0], 1.0, 1e-12);
+    // a reading a little past the nominal end (a worn potentiometer) is no fault
+    box->setAxis(0, 1040.0);
+    EXPECT_NEAR(step()[0], 1.0, 1e-12);
+    EXPECT_FALSE(engine.state().devices[0].channels[0].fault);
+}
+
 TEST(StationEngine, MappingToAMissingDriveOrDeviceIsIgnoredWithAWarning)
 {
     Rig r;
@@ -273,6 +322,13 @@ TEST(InputLog, MalformedLogsSayWhichLine)
     EXPECT_FALSE(InputLog::parse(head + "0.5,0,1,1\n", log, &error));
     EXPECT_TRUE(error.startsWith("line 3"));
     EXPECT_FALSE(InputLog::parse(head + "0.5,1,1\n", log, &error));
+    // an empty device field says so (not "device  is not described"); control characters
+    // of a field are shown escaped, never sent raw to a terminal
+    EXPECT_FALSE(InputLog::parse(head + "0.5,,1\n", log, &error));
+    EXPECT_TRUE(error.contains("device number") && error.contains("missing")) << error.toStdString();
+    EXPECT_FALSE(InputLog::parse(head + "0.5,\x1b[2J7,1\n", log, &error));
+    EXPECT_TRUE(error.contains("\\x1b[2J7")) << error.toStdString();
+    EXPECT_FALSE(error.contains(QChar(0x1b)));
     EXPECT_FALSE(InputLog::load("/nonexistent/x.log", log, &error));
     EXPECT_TRUE(error.contains("/nonexistent/x.log"));
 }

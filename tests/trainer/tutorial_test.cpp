@@ -137,6 +137,35 @@ TEST(TutorialFile, ProblemsAreReportedWhereTheyAreWithAHint)
     }
 }
 
+TEST(TutorialFile, NotANumberIsSaidAsSuchAndControlCharactersAreEscaped)
+{
+    for (const char* bad : {"NaN", "inf", "-Infinity"}) {
+        solver::Diagnostics d;
+        EXPECT_FALSE(load(header(kManipulator, std::string("PASS ") + bad + "\n") + kReachGoal, d)) << bad;
+        const solver::Diagnostic* x = find(d, "expected-number");
+        ASSERT_TRUE(x) << dump(d);
+        EXPECT_NE(x->message.find("is not a finite number"), std::string::npos) << x->format();
+        EXPECT_EQ(x->hint.find("comma"), std::string::npos) << "no decimal comma in " << bad << ": " << x->format();
+    }
+    {
+        solver::Diagnostics d;
+        EXPECT_FALSE(load(header(kManipulator, "PASS 60,5\n") + kReachGoal, d));
+        const solver::Diagnostic* x = find(d, "expected-number");
+        ASSERT_TRUE(x) << dump(d);
+        EXPECT_NE(x->hint.find("60.5"), std::string::npos) << x->format();
+    }
+    {
+        // an escape sequence in a quoted token (a pasted terminal control, a corrupt file)
+        // is named by its code, never printed raw
+        solver::Diagnostics d;
+        EXPECT_FALSE(load(header("/nonexistent/\x1b[2Jm\x07.pad") + kReachGoal, d));
+        const std::string all = dump(d);
+        EXPECT_EQ(all.find('\x1b'), std::string::npos) << all;
+        EXPECT_EQ(all.find('\x07'), std::string::npos) << all;
+        EXPECT_NE(all.find("unexpected control character (code 27)"), std::string::npos) << all;
+    }
+}
+
 TEST(TutorialFile, AModelWithErrorsIsReportedInItsOwnFile)
 {
     QTemporaryDir dir;

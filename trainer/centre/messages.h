@@ -32,6 +32,7 @@ enum StateWarning : std::uint32_t {
     WarnNearScene = 4,       ///< closer than the near-miss distance to the scene
     WarnFault = 8,           ///< an injected fault is active
     WarnRecordsOffline = 16, ///< the centre's records database is out of reach (recording locally)
+    WarnRecordsRefused = 32, ///< the station's own journal refuses writes (attempts kept in pending files)
 };
 
 /// A station's state at display rate. Best effort: a lost one is replaced by the next.

@@ -138,6 +138,7 @@ void StationNode::tick(double nowS)
         }
     }
     if (nowS >= m_nextState) {
+        noticeRecords();
         publishEvents();
         publishState(nowS);
         m_nextState = std::max(m_nextState + 1.0 / m_o.stateRate, nowS - 0.5 / m_o.stateRate);
@@ -146,6 +147,22 @@ void StationNode::tick(double nowS)
         m_records->update(m_session->events());
         m_nextRecord = nowS + 1.0;
     }
+}
+
+void StationNode::noticeRecords()
+{
+    if (!m_records) return;
+    const QString problem = m_records->problem();
+    const int imported = m_records->imported();
+    if (problem != m_recordsProblem && m_o.notice) {
+        m_o.notice(problem.isEmpty() ? Tr::tr("the records journal takes writes again")
+                                     : Tr::tr("the records journal refuses writes: %1").arg(problem));
+    }
+    if (imported != m_recordsImported && m_o.notice) {
+        m_o.notice(Tr::tr("%n pending attempt(s) recorded in the journal", nullptr, imported - m_recordsImported));
+    }
+    m_recordsProblem = problem;
+    m_recordsImported = imported;
 }
 
 void StationNode::publishState(double /*nowS*/)
@@ -177,6 +194,7 @@ void StationNode::publishState(double /*nowS*/)
         s.faults += (s.faults.empty() ? "" : ",") + std::string(Fault::key(f.kind)) + (f.drive.empty() ? "" : ":" + f.drive);
     }
     if (m_records && m_records->offline()) s.warnings |= WarnRecordsOffline;
+    if (!m_recordsProblem.isEmpty()) s.warnings |= WarnRecordsRefused;
     s.commands.assign(sim.state().u.data(), sim.state().u.data() + sim.state().u.size());
     m_bus.publish(s);
 }

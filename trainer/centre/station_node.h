@@ -52,6 +52,10 @@ struct StationNodeOptions {
     bool record = false;
     records::SharedLocation records;
     QString pendingFolder;  ///< for records the journal itself refused (AttemptLog)
+    /// Told (from the node's thread) what an operator at the station's console should
+    /// know about its records: the journal refusing writes (and when it takes them again),
+    /// pending attempts brought in. `padrob station` prints these on stdout.
+    std::function<void(const QString&)> notice;
 };
 
 class StationNode {
@@ -85,6 +89,7 @@ private:
     void instructorEvent(const Command& c, const std::string& what);
     void publishState(double nowS);
     void publishEvents();
+    void noticeRecords();
     std::shared_ptr<const Tutorial> tutorial(const std::string& id) const;
 
     Bus& m_bus;
@@ -97,6 +102,8 @@ private:
     std::shared_ptr<const InputLog> m_demo;
     std::unique_ptr<StationRecords> m_records;
     bool m_recording = false;  ///< an attempt's record is open
+    QString m_recordsProblem;  ///< the last told (notice)
+    int m_recordsImported = 0; ///< the last told (notice)
     std::vector<double> m_input;
     std::size_t m_published = 0;  ///< how many of the session's events went out
     std::string m_status = "idle";

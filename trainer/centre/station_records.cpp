@@ -42,23 +42,22 @@ void StationRecords::flush()
 QString StationRecords::problem() const
 {
     std::lock_guard lock(m_mutex);
-    return m_problem;
+    return m_problem.isEmpty() ? m_importProblem : m_problem;
+}
+
+int StationRecords::imported() const
+{
+    std::lock_guard lock(m_mutex);
+    return m_imported;
 }
 
 void StationRecords::begin(std::shared_ptr<const Tutorial> tutorial, const QString& operatorCode)
 {
     post([this, tutorial, operatorCode] {
-        if (!m_db) return;
-        QString error;
-        records::Operator op;
-        qint64 id = 0;
-        if (m_db->findOperator(operatorCode, op, &error)) {
-            id = op.id;
-        } else {
-            id = m_db->addOperator(operatorCode, operatorCode, &error);
-        }
+        // without a journal (it could not be opened) the attempt goes to a pending file
+        m_endProblem.clear();
         m_tutorial = tutorial;
-        m_log = std::make_unique<AttemptLog>(m_db.get(), m_pending, id, *m_tutorial, m_language);
+        m_log = std::make_unique<AttemptLog>(m_db.get(), m_pending, operatorCode, operatorCode, *m_tutorial, m_language);
     });
 }
 
@@ -73,10 +72,22 @@ void StationRecords::finish(std::vector<TutorialEvent> events, TutorialResult re
 {
     post([this, events = std::move(events), result = std::move(result), aborted] {
         if (!m_log) return;
-        m_log->finish(events, result, aborted);
+        const bool recorded = m_log->finish(events, result, aborted);
+        m_endProblem = m_log->problem();  // kept aside: said until the next attempt
         m_log.reset();
         m_tutorial.reset();
+        if (recorded) importPending();  // the journal takes writes again: what waited goes in
     });
+}
+
+void StationRecords::importPending()
+{
+    if (!m_db) return;
+    QString error;
+    const int n = AttemptLog::importPending(*m_db, m_pending, &error);
+    std::lock_guard lock(m_mutex);
+    m_imported += n;
+    m_importProblem = error;
 }
 
 void StationRecords::loop(records::SharedLocation where, double syncEveryS)
@@ -92,6 +103,13 @@ void StationRecords::loop(records::SharedLocation where, double syncEveryS)
             m_openError = error;
         }
         m_opened = true;
+        m_busy = true;  // (flush() waits for the import)
+    }
+    m_idle.notify_all();
+    importPending();  // attempts kept aside by earlier runs
+    {
+        std::lock_guard lock(m_mutex);
+        m_busy = false;
     }
     m_idle.notify_all();
     using clock = std::chrono::steady_clock;
@@ -113,7 +131,7 @@ void StationRecords::loop(records::SharedLocation where, double syncEveryS)
             job();
             std::lock_guard lock(m_mutex);
             m_busy = false;
-            m_problem = m_log ? m_log->problem() : QString();
+            m_problem = m_log ? m_log->problem() : m_endProblem;
             if (m_queue.empty()) m_idle.notify_all();
         }
         if (m_db && m_db->hasServer() && clock::now() >= nextSync) {

@@ -45,25 +45,32 @@ public:
 
     /// The centre's server is set and the last sync did not reach it.
     bool offline() const { return m_offline.load(std::memory_order_relaxed); }
-    /// A problem writing the journal (translated; "" none).
+    /// A problem writing the journal, or importing pending attempts into it (translated;
+    /// "" none).
     QString problem() const;
+    /// How many pending attempts (kept aside when the journal refused them) were brought
+    /// into the journal: at the start, and after each attempt the journal took whole.
+    int imported() const;
     /// Blocks until everything posted so far is written (tests).
     void flush();
 
 private:
     void post(std::function<void()> f);
     void loop(records::SharedLocation where, double syncEveryS);
+    void importPending();  // thread
 
     QString m_pending, m_language, m_openError;
     std::unique_ptr<records::SharedRecords> m_db;  // used only in the thread
     std::shared_ptr<const Tutorial> m_tutorial;    // of m_log (thread)
     std::unique_ptr<AttemptLog> m_log;             // thread
+    QString m_endProblem;                          // thread: the last attempt's, once ended
     std::atomic<bool> m_offline{false};
     mutable std::mutex m_mutex;
     std::condition_variable m_wake, m_idle;
     std::deque<std::function<void()>> m_queue;
     bool m_stop = false, m_busy = false, m_opened = false;
-    QString m_problem;
+    QString m_problem, m_importProblem;
+    int m_imported = 0;
     std::thread m_thread;
 };
 

@@ -1,5 +1,7 @@
 #include "trainer/input/input_log.h"
 
+#include "solver/core/diagnostic.h"
+
 #include "trainer/io/read_file.h"
 
 #include <QCoreApplication>
@@ -13,6 +15,12 @@
 namespace trainer {
 
 namespace {
+
+/// A field of the log as shown in a message (control characters escaped).
+QString escapedField(const QByteArray& field)
+{
+    return QString::fromStdString(solver::escapeControls(field.toStdString()));
+}
 
 /// The translation context of this file's messages (lupdate reads Tr::tr).
 struct Tr {
@@ -107,9 +115,12 @@ bool InputLog::parse(const QByteArray& text, InputLog& out, QString* error)
         s.time = fields.value(0).toDouble(&ok);
         if (!ok || !std::isfinite(s.time) || s.time < lastTime)
             return fail(lineNo, Tr::tr("the time must be a number that never goes back"));
-        s.device = fields.value(1).toInt(&ok);
+        const QByteArray deviceField = fields.value(1).trimmed();
+        if (deviceField.isEmpty())
+            return fail(lineNo, Tr::tr("the device number (the second field, after the time) is missing"));
+        s.device = deviceField.toInt(&ok);
         if (!ok || s.device < 0 || s.device >= log.devices.size())
-            return fail(lineNo, Tr::tr("device %1 is not described above this line").arg(QString(fields.value(1))));
+            return fail(lineNo, Tr::tr("device %1 is not described above this line").arg(escapedField(deviceField)));
         const DeviceInfo& info = log.devices[s.device];
         const int expected = 2 + int(info.axes.size()) + int(info.buttons.size());
         if (fields.size() != expected)

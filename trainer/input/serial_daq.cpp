@@ -88,7 +88,7 @@ double SerialDaq::stallTimeout() const
     const auto& id = m_parser.identification();
     if (!id)
         return kMinStallTimeout;
-    return std::max(kMinStallTimeout, kStallPeriods / double(id->rate));
+    return std::clamp(kStallPeriods / double(id->rate), kMinStallTimeout, kMaxStallTimeout);
 }
 
 void SerialDaq::open()

@@ -56,6 +56,9 @@ public:
     static constexpr qint32 kDefaultBaudRate = 115200;
     static constexpr double kRetryInterval = 1.0;        ///< [s] between attempts to (re)open
     static constexpr double kMinStallTimeout = 0.25;     ///< [s]
+    /// [s] The longest a silent box keeps its valves: whatever rate it claims (a box
+    /// that says 1 Hz and freezes with a lever held must not hold that valve open 20 s).
+    static constexpr double kMaxStallTimeout = 0.3;
     static constexpr int kStallPeriods = 20;             ///< sample periods before Stalled
 
     /// A serial port of this computer, for a port chooser. Pseudo-terminals and
@@ -103,9 +106,9 @@ public:
     std::uint64_t openAttempts() const { return m_openAttempts; }
 
     /// [s] How long without a good sample before Stalled: the value set, or by default
-    /// max(0.25 s, 20 periods at the identification's rate).
+    /// 20 periods at the identification's rate, within 0.25…0.3 s (kMaxStallTimeout).
     double stallTimeout() const;
-    /// seconds ≤ 0 returns to the default.
+    /// seconds ≤ 0 returns to the default; a value set is not capped (tests).
     void setStallTimeout(double seconds) { m_stallTimeoutOverride = seconds; }
 
     /// Asks the box for rate `hz` (1…1000) now if the port is open, and again after

@@ -1,12 +1,14 @@
 #include "trainer/records/records_db.h"
 
+#include "solver/core/output_file.h"
+#include "trainer/io/read_file.h"
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QHash>
 #include <QLockFile>
-#include <QSaveFile>
 #include <QSet>
 #include <QSqlDatabase>
 #include <QSqlError>
@@ -962,8 +964,8 @@ bool RecordsDb::finishAttempt(qint64 attemptId, const AttemptResult& r, QString*
 {
     const QString what = Tr::tr("cannot record the attempt's result");
     if (!d->usable(true, what, error)) return false;
-    if (r.status != AttemptStatus::Finished && r.status != AttemptStatus::Aborted)
-        return d->fail(error, what, Tr::tr("an attempt ends finished or aborted, not %1").arg(statusName(r.status)));
+    if (r.status == AttemptStatus::Running)
+        return d->fail(error, what, Tr::tr("an attempt ends finished, aborted or interrupted, not %1").arg(statusName(r.status)));
     if (!(r.score >= 0 && r.score <= 100))
         return d->fail(error, what, Tr::tr("the score %1 is not within 0…100").arg(number(r.score)));
     if (r.stars < 0 || r.stars > 3)
@@ -1145,9 +1147,11 @@ bool RecordsDb::exportCsv(const QString& path, QString* error) const
     QByteArray text = "attempt,operator_code,operator_name,tutorial_id,tutorial_title,started_utc,duration_s,"
                       "score,stars,passed,status,language,breakdown\r\n";
     for (const Row& r : rows) text += r.line.toUtf8() + "\r\n";
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly) || f.write(text) != text.size() || !f.commit())
-        return d->fail(error, what, f.errorString());
+    // durably (fsynced, then renamed over the old file), never over the records file itself
+    solver::Text werr;
+    if (!solver::writeWholeFile(QFile::encodeName(path).toStdString(), std::string_view(text.constData(), std::size_t(text.size())),
+                                {QFile::encodeName(d->sqlitePath).toStdString()}, werr))
+        return d->fail(error, what, translated(werr));
     return true;
 }
 

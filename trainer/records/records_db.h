@@ -102,7 +102,7 @@ struct AttemptStart {
 
 /// What finishAttempt() records.
 struct AttemptResult {
-    AttemptStatus status = AttemptStatus::Finished;  ///< Finished or Aborted
+    AttemptStatus status = AttemptStatus::Finished;  ///< Finished, Aborted or Interrupted (a pending record that never ended)
     double durationS = 0;  ///< [s]
     double score = 0;      ///< 0…100
     int stars = 0;         ///< 0…3
@@ -184,7 +184,22 @@ public:
     /// The attempt with `uid`, with breakdown and events. False when there is none
     /// (`error` empty) or on failure.
     virtual bool findAttempt(const QString& uid, Attempt& out, QString* error = nullptr) const = 0;
+    /// The id of the operator with `code`, added (named `name`, or the code when empty)
+    /// when there is none. 0 on failure (`error`).
+    virtual qint64 operatorFor(const QString& code, const QString& name, QString* error = nullptr) = 0;
 };
+
+/// operatorFor() of a records object with findOperator() and addOperator().
+template <class Records>
+qint64 findOrAddOperator(Records& db, const QString& code, const QString& name, QString* error)
+{
+    Operator op;
+    QString e;
+    if (db.findOperator(code, op, &e)) return op.id;
+    if (e.isEmpty()) return db.addOperator(code, name.trimmed().isEmpty() ? code : name, error);
+    if (error) *error = e;
+    return 0;
+}
 
 class SharedRecords;
 
@@ -231,6 +246,10 @@ public:
     /// The operator with `code` (trimmed). False when there is none (`error` empty)
     /// or on failure (`error` says why).
     bool findOperator(const QString& code, Operator& out, QString* error = nullptr) const;
+    qint64 operatorFor(const QString& code, const QString& name, QString* error = nullptr) override
+    {
+        return findOrAddOperator(*this, code, name, error);
+    }
 
     // attempts (the recording side)
 

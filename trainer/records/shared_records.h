@@ -78,6 +78,10 @@ public:
     /// server is online, the server's, copied into the journal (an operator registered
     /// at another station). False when there is none (`error` empty) or on failure.
     bool findOperator(const QString& code, Operator& out, QString* error = nullptr);
+    qint64 operatorFor(const QString& code, const QString& name, QString* error = nullptr) override
+    {
+        return findOrAddOperator(*this, code, name, error);
+    }
     /// The attempt gets the station's name (and a new uid unless `start.uid` is given).
     qint64 beginAttempt(const AttemptStart& start, QString* error = nullptr) override;
     bool appendEvents(qint64 attemptId, const QList<AttemptEvent>& events, QString* error = nullptr) override;

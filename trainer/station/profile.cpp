@@ -316,6 +316,9 @@ QList<ProfileIssue> StationProfile::check(const QList<DriveInfo>& drives) const
         else if (d.id.startsWith("serial:") && d.baud <= 0)
             issues.append({QStringLiteral("devices[%1]").arg(i), Tr::tr("the baud rate must be positive"), true});
     }
+    // read from a file: the file too, so that the one to fix is named
+    if (!source.isEmpty())
+        for (ProfileIssue& i : issues) i.where = i.where.isEmpty() ? source : source + ": " + i.where;
     return issues;
 }
 

@@ -107,6 +107,9 @@ struct StationProfile {
     QList<Mapping> always;
     QList<Bank> banks;    ///< at least one when there is anything to map
     ButtonRef nextBank;
+    /// The file it was read from ("" when made in code): named in check()'s issues.
+    /// Not saved, and not compared by ==.
+    QString source;
 
     /// The calibration of (device, axis) if the profile has one, else nullptr.
     const ChannelCalibration* calibration(const QString& device, int axis) const;
@@ -129,7 +132,11 @@ struct StationProfile {
     /// left y, right x, right y), selected by the shoulder buttons (next bank) .
     static StationProfile defaultFor(const QString& model, const QList<DriveInfo>& drives);
 
-    bool operator==(const StationProfile&) const = default;
+    bool operator==(const StationProfile& o) const
+    {
+        return name == o.name && model == o.model && description == o.description && devices == o.devices &&
+               calibrations == o.calibrations && always == o.always && banks == o.banks && nextBank == o.nextBank;
+    }
 };
 
 /// SDL game-controller button and axis indices used by shipped profiles.

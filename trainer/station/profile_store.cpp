@@ -38,6 +38,7 @@ bool readProfile(const QString& path, StationProfile& out, QList<ProfileIssue>& 
         issues += found;
         return false;
     }
+    out.source = path;
     return true;
 }
 

@@ -152,6 +152,8 @@ void StationEngine::refreshCalibrations()
         dev.channels.resize(std::size_t(info.axes.size()));
         for (int a = 0; a < info.axes.size(); ++a) {
             Channel& ch = dev.channels[std::size_t(a)];
+            ch.nominalMin = std::min(info.axes[a].rawMin, info.axes[a].rawMax);
+            ch.nominalMax = std::max(info.axes[a].rawMin, info.axes[a].rawMax);
             const ChannelCalibration* c = m_profile.calibration(info.id, a);
             if (!c) c = m_profile.calibration(kindKey(info.kind), a);
             if (c && c->isValid()) {
@@ -270,8 +272,17 @@ bool StationEngine::update(double now)
             Channel& ch = dev.channels[a];
             const double raw = a < s.axes.size() ? s.axes[a] : ch.calibration.rawCentre;
             ch.state.raw = raw;
-            ch.state.outOfRange = ch.state.calibrated && ch.calibration.outOfRange(raw);
-            ch.state.value = ch.filter.update(ch.calibration.apply(raw), ch.calibration.filterHz, dt);
+            const double margin = kFaultMargin * (ch.nominalMax - ch.nominalMin);
+            const bool fault = !std::isfinite(raw) || raw < ch.nominalMin - margin || raw > ch.nominalMax + margin;
+            if (fault && !ch.state.fault) {
+                // a broken sensor or wire, never a lever pushed fully: that valve closes
+                for (Live& l : m_live)
+                    if (l.device == int(i) && l.mapping.axis == int(a)) l.armed = false;
+                ch.filter.reset();
+            }
+            ch.state.fault = fault;
+            ch.state.outOfRange = fault || (ch.state.calibrated && ch.calibration.outOfRange(raw));
+            ch.state.value = fault ? 0.0 : ch.filter.update(ch.calibration.apply(raw), ch.calibration.filterHz, dt);
         }
         // bank buttons: on the press
         if (connected && !ignored(d)) {
@@ -314,6 +325,7 @@ bool StationEngine::update(double now)
             continue;
         }
         const double v = dev.channels[std::size_t(l.mapping.axis)].state.value;
+        if (dev.channels[std::size_t(l.mapping.axis)].state.fault) continue;  // disarmed: the centre again after it
         if (!l.armed) {
             if (std::abs(v) >= kArmThreshold) continue;
             l.armed = true;
@@ -390,6 +402,26 @@ StationState StationEngine::state() const
         const QString why = d.statusText().isEmpty() ? Tr::tr("not connected") : d.statusText();
         (m_state[i].everConnected ? st.warnings : st.setupWarnings)
             .append(Tr::tr("%1: %2 — valves closed, holding %3").arg(d.info().name, why, held.join(", ")));
+    }
+    // channels whose readings cannot be: a device fault, their valves closed
+    for (std::size_t i = 0; i < m_devices.size(); ++i) {
+        const InputDevice& d = *m_devices[i];
+        if (!isConnected(d) || ignored(d)) continue;
+        const Device& dev = m_state[i];
+        for (std::size_t a = 0; a < dev.channels.size(); ++a) {
+            const Channel& ch = dev.channels[a];
+            if (!ch.state.fault) continue;
+            QStringList held;
+            for (const Live& l : m_live)
+                if (l.device == int(i) && l.mapping.axis == int(a) && l.treeJoint >= 0 && (l.bank < 0 || l.bank == m_activeBank))
+                    held.append(driveLabel(l.treeJoint));
+            held.removeDuplicates();
+            const QString axis = a < std::size_t(d.info().axes.size()) ? d.info().axes[int(a)].name : QString::number(a + 1);
+            st.warnings.append(Tr::tr("%1, %2: device fault, it reads %3 where it can read only %4…%5 — valve closed%6")
+                                   .arg(d.info().name, axis, QString::number(ch.state.raw, 'g', 10),
+                                        QString::number(ch.nominalMin, 'g', 10), QString::number(ch.nominalMax, 'g', 10),
+                                        held.isEmpty() ? QString() : Tr::tr(", holding %1").arg(held.join(", "))));
+        }
     }
     // mappings whose device is not there at all
     QStringList missing;

@@ -43,6 +43,11 @@ struct ChannelState {
     double value = 0.0;       ///< calibrated and filtered, [−1, 1]
     bool calibrated = false;  ///< false: the profile has no calibration for it; the device's nominal range is in use
     bool outOfRange = false;  ///< the raw reading is beyond the calibrated range
+    /// The raw reading is far outside anything the device can read (its nominal range
+    /// widened by kFaultMargin of its span, e.g. 65535 on a 10-bit box): a device fault.
+    /// The channel reads 0 (its valves close), a warning says so, and its mappings wait
+    /// for the lever at the centre once the readings are sane again.
+    bool fault = false;
 };
 
 struct DeviceState {
@@ -88,6 +93,9 @@ struct StationState {
 class StationEngine {
 public:
     static constexpr double kArmThreshold = 0.02;
+    /// A raw reading beyond the device's nominal range by more than this fraction of
+    /// the range's span is a device fault (ChannelState::fault).
+    static constexpr double kFaultMargin = 0.1;
     /// Unless the profile maps the keyboard itself, its first kKeyboardPairs channels
     /// drive the model's drives in joint id order (a laptop always works).
     static constexpr int kKeyboardPairs = 9;
@@ -141,6 +149,7 @@ public:
 
 private:
     struct Channel {
+        double nominalMin = -1.0, nominalMax = 1.0;  ///< what the device says it reads (AxisInfo)
         ChannelCalibration calibration;
         LowPass filter;
         ChannelState state;

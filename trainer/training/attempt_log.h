@@ -4,11 +4,16 @@
 // loses nothing recorded before it: the attempt is found `interrupted` with them), the
 // score breakdown when it ends.
 //
-// When the database refuses (locked by another program, read-only, full, gone), the
-// attempt goes on: what could not be written is kept and tried again at the next
-// update, and at the end, if the database still refuses, the whole record is written to
-// a pending file (JSON, in `pendingFolder`) that importPending() brings into the
-// database the next time it can. problem() says what happened, for the HUD.
+// Nothing of an attempt is lost when the database refuses (locked by another program,
+// read-only, full, gone) or the process dies: a pending file (JSON, `padrob-pending-
+// attempt` version 2, in `pendingFolder`) holds whatever the database does not. It is
+// written when the attempt starts, before the database is asked (fsynced, its size
+// checked), removed as soon as the database holds the attempt and every event, and
+// rewritten with all the events whenever the database refuses them, and with the result
+// at the end. The attempt goes on meanwhile; problem() says what happened, for the HUD.
+// importPending() brings pending files into a database at the next start: a file with a
+// result as that attempt, one without (the process died) as an interrupted attempt with
+// its events. The file names the operator by code (ids differ between databases).
 //
 // A station of a training centre records through a records::SharedRecords: its local
 // journal first (a lost server is no problem of the attempt: sync() sends it later),
@@ -32,10 +37,13 @@ records::AttemptResult toRecordResult(const TutorialResult& result, bool aborted
 
 class AttemptLog {
 public:
-    /// Begins the attempt of `operatorId` at `tutorial` (nullptr db: pending file only);
-    /// `db` is a RecordsDb or a station's SharedRecords; `tutorial` must outlive the log.
-    AttemptLog(records::AttemptRecorder* db, QString pendingFolder, qint64 operatorId, const Tutorial& tutorial,
-               const QString& language);
+    /// Begins the attempt of the operator with `operatorCode` (found, or added named
+    /// `operatorName`) at `tutorial`; `db` is a RecordsDb or a station's SharedRecords
+    /// (nullptr: the pending file only); `tutorial` must outlive the log.
+    AttemptLog(records::AttemptRecorder* db, QString pendingFolder, const QString& operatorCode,
+               const QString& operatorName, const Tutorial& tutorial, const QString& language);
+    AttemptLog(const AttemptLog&) = delete;
+    AttemptLog& operator=(const AttemptLog&) = delete;
     /// Writes the events not written yet (call every few hundred milliseconds).
     void update(const std::vector<TutorialEvent>& events);
     /// Writes the rest and the result. False when it went to the pending file instead.
@@ -45,22 +53,32 @@ public:
     QString attemptUid() const { return m_start.uid; }
     /// Why the database could not be written ("" when it could), translated.
     QString problem() const { return m_problem; }
-    /// The pending file written by finish() ("" none).
-    QString pendingFile() const { return m_pendingFile; }
+    /// The pending file that holds what the database does not ("" when it holds all).
+    QString pendingFile() const { return m_pendingOnDisk ? m_pendingFile : QString(); }
 
     /// Moves every pending file of `folder` into `db` (each in its own attempt, or
     /// completing the attempt with its uid that the database had begun; then deleted).
-    /// Returns how many; a file that cannot be read is left and named in `error`.
+    /// A file that is not a pending attempt (damaged, foreign, an unknown operator) is
+    /// moved to `folder`/quarantine and named in `error`, and the others go on; when the
+    /// database refuses, the rest wait for the next time. Returns how many were imported.
     static int importPending(records::AttemptRecorder& db, const QString& folder, QString* error = nullptr);
 
 private:
     bool ensureBegun();
+    /// Writes the pending file durably: the start, `events` and, when given, the result.
+    bool writePending(const std::vector<TutorialEvent>& events, const TutorialResult* result, bool aborted);
+    /// The database holds the attempt and every event: the pending file goes.
+    void dropPending();
+
     records::AttemptRecorder* m_db;
     const Tutorial* m_tutorial;  ///< outlives the log (the attempt's)
     QString m_folder;
+    QString m_operatorCode, m_operatorName;
     records::AttemptStart m_start;
     qint64 m_attempt = 0;
-    std::size_t m_written = 0;
+    std::size_t m_written = 0;       ///< events the database holds
+    std::size_t m_pendingEvents = 0; ///< events in the pending file
+    bool m_pendingOnDisk = false;
     QString m_problem;
     QString m_pendingFile;
 };

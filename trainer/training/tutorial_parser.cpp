@@ -79,7 +79,13 @@ public:
             Text message = atEnd() ? trText("Tutorials", "expected %1, found the end of the line").with(what)
                                    : trText("Tutorials", "expected %1, found '%2'").with(what).with(peek().text);
             Text hint = trText("Tutorials", "write a number such as 0.5");
-            if (!atEnd() && !solver::parse::numberProblem(peek().text).empty()) {
+            const std::string problem = atEnd() ? std::string() : solver::parse::numberProblem(peek().text);
+            if (problem == "not-finite") {
+                message = trText("Tutorials", "%1: '%2' is not a finite number").with(what).with(peek().text);
+            } else if (problem == "out-of-range") {
+                message = trText("Tutorials", "%1: '%2' is too large for a number").with(what).with(peek().text);
+                hint = trText("Tutorials", "write a number within ±1e308; check the units");
+            } else if (problem == "decimal-comma") {
                 std::string dotted = peek().text;
                 for (char& c : dotted) {
                     if (c == ',') c = '.';

@@ -278,6 +278,7 @@ void InstructorWindow::refreshTable()
             if (s.warnings & centre::WarnNearWorker) w << tr("near a worker");
             if (s.warnings & centre::WarnNearScene) w << tr("near the scene");
             if (s.warnings & centre::WarnRecordsOffline) w << tr("records offline");
+            if (s.warnings & centre::WarnRecordsRefused) w << tr("records kept aside (journal refuses writes)");
             for (const QString& f : QString::fromStdString(s.faults).split(',', Qt::SkipEmptyParts)) {
                 trainer::Fault::Kind k;
                 const QString key = f.section(':', 0, 0), drive = f.section(':', 1);

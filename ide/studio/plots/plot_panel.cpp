@@ -2,6 +2,9 @@
 
 #include "ide/studio/sim/simulation_runner.h"
 
+#include "solver/core/output_file.h"
+#include "ide/i18n/diagnostic_text.h"
+
 #include <QChart>
 #include <QChartView>
 #include <QDir>
@@ -15,7 +18,6 @@
 #include <QLocale>
 #include <QPixmap>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QScrollArea>
 #include <QSplitter>
 #include <QTimer>
@@ -553,11 +555,6 @@ void PlotPanel::refresh()
 
 bool PlotPanel::exportCsv(const QString& path)
 {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        m_error = tr("Cannot write %1: %2").arg(QDir::toNativeSeparators(path), file.errorString());
-        return false;
-    }
     std::vector<std::size_t> columns;
     QByteArray out = csvField(tr("t [s]"));
     for (const QString& key : m_selected) {
@@ -574,8 +571,11 @@ bool PlotPanel::exportCsv(const QString& path)
         }
         out += '\n';
     }
-    if (file.write(out) != out.size() || !file.commit()) {
-        m_error = tr("Cannot write %1: %2").arg(QDir::toNativeSeparators(path), file.errorString());
+    // durably (fsynced, then renamed over the old file), never over a device or a folder
+    solver::Text error;
+    if (!solver::writeWholeFile(QFile::encodeName(path).toStdString(), std::string_view(out.constData(), std::size_t(out.size())), {},
+                                error)) {
+        m_error = i18n::text(error);
         return false;
     }
     m_error.clear();

@@ -370,11 +370,8 @@ void TrainPage::setOperator(const QString& id)
     if (m_db) {
         // the records know operators by code; a new code is a new operator
         const QString code = m_operator.isEmpty() ? guestCode() : m_operator;
-        trainer::records::Operator op;
         QString error;
-        m_operatorDbId = 0;
-        if (m_db->findOperator(code, op, &error)) m_operatorDbId = op.id;
-        else if (error.isEmpty()) m_operatorDbId = m_db->addOperator(code, m_operator.isEmpty() ? tr("Guest") : code, &error);
+        m_operatorDbId = m_db->operatorFor(code, m_operator.isEmpty() ? tr("Guest") : code, &error);
         if (m_operatorDbId == 0) m_recordsProblem = error;
     } else {
         QStringList known = s.value("trainer/operators").toStringList();
@@ -1099,7 +1096,9 @@ void TrainPage::startAttempt(std::shared_ptr<const trainer::InputLog> drive)
     // the trainee records: the attempt now, its events as it goes, the result at the end
     m_attemptLog.reset();
     m_attemptTutorial = t;
-    m_attemptLog = std::make_unique<trainer::AttemptLog>(m_db.get(), pendingFolder(), m_operatorDbId, *t, language());
+    const QString code = m_operator.isEmpty() ? guestCode() : m_operator;
+    m_attemptLog = std::make_unique<trainer::AttemptLog>(m_db.get(), pendingFolder(), code,
+                                                         m_operator.isEmpty() ? tr("Guest") : code, *t, language());
     m_lastLogUpdate = QDateTime::currentMSecsSinceEpoch();
     m_shownStep = -1;
     m_hudText.clear();

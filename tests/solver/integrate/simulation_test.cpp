@@ -268,6 +268,33 @@ F 1 SPRING B1 0 P1 0 0 -1 B2 1 P2 0 0 0 K 1e12 L0 1
     EXPECT_FALSE(sim.advanceTo(100.0, ev, err));
     EXPECT_NE(err.find("the simulation failed at t = "), std::string::npos) << err;
     EXPECT_NE(err.find("joint 7 (slider)"), std::string::npos) << err;
+    // the likely cause: the spring, its period against the step, and what to do
+    EXPECT_NE(err.find("the likely cause: spring force 1 (K = 1e+12 N/m on a body of 1 kg, a natural period of 6.28319e-06 s) "
+                       "is too stiff for the step of 0.01 s; use a step under 5e-07 s or the adaptive integrator"),
+              std::string::npos)
+        << err;
+}
+
+TEST(Simulation, ADivergingModelWithoutASpringNamesTheUsualCauses)
+{
+    // a damper far too hard for the step (no stiffness to blame): the usual suspects and
+    // the remedies
+    auto model = compileModelText(R"(
+B 1 1 0.1 0.1 0.1
+C 3 T 2 QI 0.1 NAME "arm"
+B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 1
+B2 1 P2 0 0 0 A2 1 0 0 R2 0 0 1
+F 1 SPRING B1 0 P1 0 0 -1 B2 1 P2 0 0 0 K 0 L0 1 C 1e9
+)");
+    ASSERT_TRUE(model);
+    Simulation sim(model, rk4(0.01));
+    std::vector<SimulationEvent> ev;
+    std::string err;
+    sim.setInitial(0, 0.1, 1.0);
+    EXPECT_FALSE(sim.advanceTo(100.0, ev, err));
+    EXPECT_NE(err.find("joint 3 (arm)"), std::string::npos) << err;
+    EXPECT_NE(err.find("the likely cause: a spring, force or hydraulic drive too stiff for the step of 0.01 s"), std::string::npos)
+        << err;
 }
 
 TEST(Simulation, AFailureCarriesATranslatableTextOfItsEnglishMessage)
@@ -289,14 +316,17 @@ F 1 SPRING B1 0 P1 0 0 -1 B2 1 P2 0 0 0 K 1e12 L0 1
     EXPECT_FALSE(sim.advanceTo(100.0, ev, err, &text));
     EXPECT_EQ(text.english(), err);
     EXPECT_STREQ(text.context(), "Diagnostics");
-    EXPECT_STREQ(text.tmpl(), "the simulation failed at t = %1 s, joint %2 (%3): %4");
-    ASSERT_EQ(text.args().size(), 4u);
+    EXPECT_STREQ(text.tmpl(), "the simulation failed at t = %1 s, joint %2 (%3): %4; %5");
+    ASSERT_EQ(text.args().size(), 5u);
     EXPECT_EQ(text.args()[1].value(), "7");
     EXPECT_EQ(text.args()[2].value(), "slider");
     const Text& cause = text.args()[3];
     ASSERT_NE(cause.tmpl(), nullptr);  // a phrase, not a plain value
     EXPECT_STREQ(cause.context(), "Diagnostics");
-    EXPECT_EQ(err.substr(err.size() - cause.english().size()), cause.english());
+    EXPECT_NE(err.find(": " + cause.english() + "; "), std::string::npos) << err;
+    const Text& likely = text.args()[4];
+    ASSERT_NE(likely.tmpl(), nullptr);
+    EXPECT_EQ(err.substr(err.size() - likely.english().size()), likely.english());
     // every template translated, every plain value kept
     const std::string marked = text.render([](const char*, const char* tmpl) { return "<" + std::string(tmpl) + ">"; });
     EXPECT_EQ(marked.rfind("<the simulation failed at t = ", 0), 0u) << marked;
