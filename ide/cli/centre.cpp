@@ -61,8 +61,9 @@ std::string netHelp()
 {
     return trStd("padrob", "Network options (every node of a centre uses the same):\n"
                            "  --domain N            the centre's DDS domain, 0-232 (default 0)\n"
-                           "  --key FILE            the centre's key (make one with 'padrob centre key FILE');\n"
-                           "                        commands are signed with it, and stations refuse the rest\n"
+                           "  --key FILE            the centre's key (make one with 'padrob centre key FILE'):\n"
+                           "                        every node signs what it says with it and ignores what is\n"
+                           "                        not signed with it; stations refuse commands without it\n"
                            "  --interface NAME      the network interface to use (name or address; repeatable)\n"
                            "  --peer ADDRESS        discover the other computers by unicast at ADDRESS\n"
                            "                        (repeatable; without it, multicast)\n"
@@ -235,13 +236,17 @@ int runStation(const std::vector<std::string>& argsIn)
     if (o.name.empty()) return usageError("station", trStd("padrob", "--name is required: the station's name in the centre"));
     if (files.empty()) return usageError("station", trStd("padrob", "give at least one tutorial file (.tut)"));
     if (net.keyFile.empty()) {
-        printErr("padrob station: " + trStd("padrob", "without --key the station takes no commands from the instructor") + "\n");
-    } else {
+        return usageError("station", trStd("padrob", "--key FILE is required: the centre's key signs what the station "
+                                                     "says (no instructor or display believes it otherwise) and "
+                                                     "checks the instructor's commands"));
+    }
+    {
         QString error;
         if (!o.key.load(QString::fromStdString(net.keyFile), &error)) {
             printErr("padrob station: " + error.toStdString() + "\n");
             return kExitUsage;
         }
+        net.bus.key = o.key;
     }
     for (const std::string& f : files) {
         solver::Diagnostics diags;
@@ -449,6 +454,8 @@ std::string refusalText(const std::string& code)
     if (code == "bad-signature") return trStd("padrob", "the signature does not match the station's centre key");
     if (code == "stale") return trStd("padrob", "the command is too old or from the future (check the computers' clocks)");
     if (code == "replay") return trStd("padrob", "a replayed command (its nonce was already used)");
+    if (code == "too-long") return trStd("padrob", "a field of the command is longer than the centre allows");
+    if (code == "busy") return trStd("padrob", "the station took too many commands in the last 30 s; try again shortly");
     if (code == "unknown-tutorial") return trStd("padrob", "the station has no such tutorial");
     if (code == "not-running") return trStd("padrob", "no attempt is running");
     if (code == "not-paused") return trStd("padrob", "the attempt is not paused");
@@ -502,14 +509,19 @@ int runInstructor(const std::vector<std::string>& argsIn)
     if (what != "list" && what != "watch" && what != "send")
         return usageError("instructor", fill(trStd("padrob", "unknown instructor command '%1'"), {what}));
     if (what == "send" && words.size() < 3) return usageError("instructor", trStd("padrob", "send needs a station and a command"));
+    // the key signs the commands and checks what the stations say: without it, nothing is believed
     centre::CentreKey key;
-    if (what == "send") {
-        if (net.keyFile.empty()) return usageError("instructor", trStd("padrob", "send needs the centre's key (--key FILE)"));
+    if (net.keyFile.empty()) {
+        return usageError("instructor", trStd("padrob", "the centre's key is required (--key FILE): what the stations "
+                                                        "say is signed with it, and so are the commands"));
+    }
+    {
         QString error;
         if (!key.load(QString::fromStdString(net.keyFile), &error)) {
             printErr("padrob instructor: " + error.toStdString() + "\n");
             return kExitUsage;
         }
+        net.bus.key = key;
     }
     net.bus.node = QString::fromStdString(name);
     auto bus = openBus(net, centre::TopicAnnounce | centre::TopicState | centre::TopicEvent | centre::TopicReply);
@@ -588,6 +600,10 @@ int runInstructor(const std::vector<std::string>& argsIn)
         node.poll(nowS());
     }
     const std::uint64_t nonce = node.send(station, kind, arg, arg2, value);
+    if (nonce == 0) {
+        printErr("padrob instructor: " + bus->lastError().toStdString() + "\n");
+        return kExitUsage;
+    }
     while (nowS() < end && !node.reply(nonce)) {
         bus->wait(20);
         node.poll(nowS());
@@ -742,6 +758,7 @@ int runCentreBench(std::vector<std::string> args)
         printErr("padrob centre: " + error.toStdString() + "\n");
         return kExitUsage;
     }
+    net.bus.key = key;
     const std::string prefix = "bench-" + std::to_string(QCoreApplication::applicationPid()) + "-";
     // with DDS Security every node needs an identity: issued here for this run (the PKI's
     // CA keys must be in the folder), removed at the end
@@ -891,9 +908,10 @@ int runCentre(const std::vector<std::string>& args)
                                      "       padrob centre pki DIR [--node NAME]...\n"
                                      "\n"
                                      "key: makes a new centre key (32 random bytes) in FILE, readable by its owner only.\n"
-                                     "Copy it to every station and instructor of the centre (padrob station --key,\n"
-                                     "padrob instructor --key, padrob-studio --centre-key): commands signed with another\n"
-                                     "key are refused. An existing file is never replaced.\n"
+                                     "Copy it to every station, instructor and display of the centre (padrob station\n"
+                                     "--key, padrob instructor --key, padrob-studio --centre-key): every message is\n"
+                                     "signed with it, and what is not is ignored (commands: refused). An existing file\n"
+                                     "is never replaced.\n"
                                      "\n"
                                      "seal: prints the line read from standard input (the records server's password)\n"
                                      "sealed with the centre's key, for padrob station --records-password FILE.\n"

@@ -129,9 +129,11 @@ int main(int argc, char** argv)
                                                     "the stations and command them."));
     const QCommandLineOption centreKey(
         QStringLiteral("centre-key"),
-        QCoreApplication::translate("studio::main", "With --instructor or --station-name: the centre's key, which "
-                                                    "signs the commands (without it the instructor only watches "
-                                                    "and the station refuses every command)."),
+        QCoreApplication::translate("studio::main", "With --instructor, --display-of or --station-name: the "
+                                                    "centre's key, which signs everything a node of the centre "
+                                                    "says and checks everything it hears (without it the "
+                                                    "instructor and the display see nothing, and the station "
+                                                    "refuses every command and is heard by no one)."),
         QCoreApplication::translate("studio::main", "FILE"));
     const QCommandLineOption domain(
         QStringLiteral("domain"),
@@ -254,6 +256,10 @@ int main(int argc, char** argv)
         studio::DisplayView::Screen side = studio::DisplayView::Centre;
         if (parser.isSet(viewSide) && !studio::DisplayWindow::parseScreen(parser.value(viewSide), &side))
             return fail(QCoreApplication::translate("studio::main", "--view must be left, centre or right."));
+        if (parser.isSet(centreKey)) {
+            QString error;
+            if (!net.key.load(parser.value(centreKey), &error)) return fail(error);
+        }
         studio::DisplayWindow window(parser.value(displayOf), side, net);
         window.resize(1280, 720);
         window.show();

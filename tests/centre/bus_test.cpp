@@ -1,22 +1,31 @@
 // The centre's DDS bus in one process: two participants on loopback, each topic with
 // its QoS — announcements reach late joiners and say when a node leaves, states are
-// the latest, events and commands all arrive in order, replies come back.
+// the latest, events and commands all arrive in order, replies come back. And what a
+// node without the centre's key says (or one over the limits) is dropped.
 #include "centre_test_util.h"
 #include "trainer/centre/bus.h"
 
 #include <gtest/gtest.h>
 
+#include <QElapsedTimer>
+
 #include <cmath>
+#include <set>
 
 using namespace trainer::centre;
 using centre_test::waitFor;
 
 namespace {
 
-std::unique_ptr<Bus> open(unsigned reads)
+const CentreKey kKey = CentreKey::fromBytes(QByteArray(32, 'k'));
+
+/// A node of the centre (the centre's key), or, with another key, a forger.
+std::unique_ptr<Bus> open(unsigned reads, const CentreKey& key = kKey, bool checkWrites = true)
 {
     BusOptions o = BusOptions::loopback(centre_test::domain());
     o.reads = reads;
+    o.key = key;
+    o.checkWrites = checkWrites;
     QString error;
     auto bus = Bus::open(o, &error);
     EXPECT_TRUE(bus) << error.toStdString();
@@ -65,6 +74,7 @@ TEST(CentreBus, EveryTopicCarriesItsMessagesWithTheirQos)
     ASSERT_TRUE(waitFor([&] { return !states.empty() && states.back().seq >= 3; }, 10000, [&] {
         s.seq++;
         s.simTime = 0.001 * double(s.seq);
+        s.sentUs = wallUs();
         station->publish(s);
         for (auto& st : instructor->takeStates()) states.push_back(st);
     }));
@@ -113,13 +123,7 @@ TEST(CentreBus, EveryTopicCarriesItsMessagesWithTheirQos)
     ASSERT_EQ(commands.size(), 10u);
     for (int i = 0; i < 10; ++i) EXPECT_EQ(commands[std::size_t(i)].nonce, std::uint64_t(100 + i));
     EXPECT_TRUE(std::isnan(commands[0].value));
-    Reply r;
-    r.station = name;
-    r.sender = "instructor";
-    r.nonce = 105;
-    r.accepted = true;
-    r.message = "done";
-    ASSERT_TRUE(station->reply(r));
+    ASSERT_TRUE(station->reply(centre_test::doneReply(name, "instructor", 105)));
     std::vector<Reply> replies;
     ASSERT_TRUE(waitFor([&] { return !replies.empty(); }, 10000, [&] {
         for (auto& x : instructor->takeReplies()) replies.push_back(x);
@@ -133,6 +137,151 @@ TEST(CentreBus, EveryTopicCarriesItsMessagesWithTheirQos)
     ASSERT_TRUE(waitFor([&] { return gone; }, 10000, [&] {
         for (auto& x : instructor->takeAnnounces()) gone = gone || (x.gone && x.withdrew && x.announce.node == name);
     }));
+}
+
+// Issue 23: a node without the key announced a fake station and sent states, events and
+// replies that the instructor believed. Now each is dropped and counted: unsigned, signed
+// with another key, stale; a bare dispose does not make a station "left".
+TEST(CentreBus, WhatIsNotSignedWithTheCentresKeyIsDropped)
+{
+    const std::string real = centre_test::unique("real"), fake = centre_test::unique("fake");
+    auto instructor = open(TopicAnnounce | TopicState | TopicEvent | TopicReply);
+    auto station = open(TopicCommand);
+    auto unsignedForger = open(TopicCommand, CentreKey());
+    auto otherKeyForger = open(TopicCommand, CentreKey::fromBytes(QByteArray(32, 'x')));
+    auto staleForger = open(TopicCommand);  // has the key, but replays an old state
+    ASSERT_TRUE(instructor && station && unsignedForger && otherKeyForger && staleForger);
+    Announce genuine;
+    genuine.node = real;
+    genuine.role = "station";
+    genuine.model = "liner";
+    ASSERT_TRUE(station->announce(genuine));
+    for (Bus* forger : {unsignedForger.get(), otherKeyForger.get()}) {
+        Announce a;
+        a.node = fake;
+        a.role = "station";
+        ASSERT_TRUE(forger->announce(a));
+    }
+    std::set<std::string> announced, stated, evented;
+    std::vector<Reply> replies;
+    bool realGone = false;
+    std::uint64_t seq = 0;
+    auto pump = [&] {
+        // one writer's state per pass: a reader keeps the last state per station, so
+        // states written together would hide each other
+        ++seq;
+        State s;
+        s.seq = seq;
+        s.sentUs = wallUs();
+        s.station = real;
+        s.status = "running";  // the forgers' lie: it runs
+        if (seq % 8 == 2) unsignedForger->publish(s);
+        else if (seq % 8 == 4) otherKeyForger->publish(s);
+        else if (seq % 8 == 6) {
+            s.sentUs = wallUs() - 60'000'000;  // signed, but a minute old: replayed
+            staleForger->publish(s);
+        } else {
+            s.status = "idle";
+            station->publish(s);
+        }
+        for (Bus* forger : {unsignedForger.get(), otherKeyForger.get()}) {
+            State f;
+            f.station = fake;
+            f.sentUs = wallUs();
+            forger->publish(f);
+            Event e;
+            e.station = real;
+            e.kind = "goal";
+            forger->publish(e);
+            forger->reply(centre_test::doneReply(real, "desk", 42));
+        }
+        for (auto& x : instructor->takeAnnounces()) {
+            if (x.gone) realGone = realGone || x.announce.node == real;
+            else announced.insert(x.announce.node);
+        }
+        for (auto& x : instructor->takeStates()) {
+            stated.insert(x.station);
+            EXPECT_EQ(x.status, "idle") << "only the station's own states";
+        }
+        for (auto& x : instructor->takeEvents()) evented.insert(x.station);
+        for (auto& x : instructor->takeReplies()) replies.push_back(x);
+    };
+    ASSERT_TRUE(waitFor([&] { return announced.count(real) && stated.count(real); }, 10000, pump));
+    // and the forgers' messages had time to arrive (they are written as often)
+    ASSERT_TRUE(waitFor([&] { return instructor->dropped().badSignature >= 20 && instructor->dropped().stale >= 3; },
+                        10000, pump))
+        << instructor->dropped().badSignature << " " << instructor->dropped().stale;
+    // a forger's "the station left": an unsigned leaving announcement and a bare dispose
+    ASSERT_TRUE(unsignedForger->withdraw(real));
+    QElapsedTimer t;
+    t.start();
+    waitFor([&] { return t.elapsed() > 500; }, 1000, pump);
+    EXPECT_EQ(announced, std::set<std::string>{real}) << "no fake station";
+    EXPECT_EQ(stated, std::set<std::string>{real});
+    EXPECT_TRUE(evented.empty());
+    EXPECT_TRUE(replies.empty()) << "no forged 'done'";
+    EXPECT_FALSE(realGone) << "a forger cannot say the station left";
+    // the station itself can
+    ASSERT_TRUE(station->withdraw(real));
+    ASSERT_TRUE(waitFor([&] { return realGone; }, 10000, pump));
+}
+
+// Issue 23: every string field has a bound. Over it, a message is refused when written,
+// saying which field, and dropped when read (a hostile node that writes it anyway).
+TEST(CentreBus, OverLongStringsAreRefusedWhenWrittenAndDroppedWhenRead)
+{
+    const std::string name = centre_test::unique("bounded");
+    auto instructor = open(TopicAnnounce | TopicState | TopicReply);
+    auto station = open(TopicCommand);
+    auto hostile = open(TopicCommand, kKey, false);
+    ASSERT_TRUE(instructor && station && hostile);
+    Command c;
+    c.target = name;
+    c.sender = "desk";
+    c.nonce = 1;
+    c.issuedMs = 1;
+    c.kind = "start";
+    c.arg = "T0";
+    c.arg2 = std::string(40, 'X');  // the operator's code
+    kKey.sign(c);
+    EXPECT_FALSE(instructor->send(c));
+    EXPECT_TRUE(instructor->lastError().contains("operatorCode: 40 bytes, at most 32")) << instructor->lastError().toStdString();
+    Announce a;
+    a.node = std::string(65, 'n');
+    EXPECT_FALSE(station->announce(a));
+    EXPECT_TRUE(station->lastError().contains("node: 65 bytes, at most 64")) << station->lastError().toStdString();
+    State big;
+    big.station = name;
+    big.faults = std::string(10000, 'f');
+    EXPECT_FALSE(station->publish(big));
+    EXPECT_TRUE(station->lastError().contains("faults")) << station->lastError().toStdString();
+    Reply r;
+    r.station = name;
+    r.sender = std::string(1000, 's');
+    EXPECT_FALSE(station->reply(r));
+
+    // written anyway, signed with the right key: dropped on reading (under its own name:
+    // a reader keeps the last state per station)
+    big.station = name + "-big";
+    State ok;
+    ok.station = name;
+    std::vector<State> states;
+    std::vector<Command> commands;
+    auto pump = [&] {
+        ok.seq++;
+        ok.sentUs = wallUs();
+        big.sentUs = wallUs();
+        station->publish(ok);
+        hostile->publish(big);
+        hostile->send(c);
+        for (auto& x : instructor->takeStates()) states.push_back(x);
+        for (auto& x : station->takeCommands()) commands.push_back(x);
+    };
+    ASSERT_TRUE(waitFor([&] { return instructor->dropped().tooLong >= 3 && station->dropped().tooLong >= 3 && !states.empty(); },
+                        10000, pump));
+    EXPECT_FALSE(states.empty()) << "the station's own states arrive";
+    for (const State& s : states) EXPECT_TRUE(s.faults.empty());
+    EXPECT_TRUE(commands.empty()) << "the over-long command never reaches the station";
 }
 
 TEST(CentreBus, ABadDomainIsRefusedWithAMessage)

@@ -21,6 +21,8 @@
 
 #include <cmath>
 #include <csignal>
+#include <limits>
+#include <optional>
 
 using namespace trainer::centre;
 using centre_test::waitFor;
@@ -41,6 +43,7 @@ protected:
         ASSERT_TRUE(key.load(keyFile, &error));
         BusOptions o = BusOptions::loopback(domain);
         o.reads = TopicAnnounce | TopicState | TopicEvent | TopicReply;
+        o.key = key;
         bus = Bus::open(o, &error);
         ASSERT_TRUE(bus) << error.toStdString();
         instructor = std::make_unique<InstructorNode>(*bus, "test-instructor", key, 1.0);
@@ -188,16 +191,31 @@ TEST_F(Centre, TwoStationsStreamStateAndObeyOnlyTheirOwnSignedCommands)
     ASSERT_TRUE(intruder.reply(n));
     EXPECT_FALSE(intruder.reply(n)->accepted);
     EXPECT_EQ(intruder.reply(n)->message, "bad-signature");
-    Command replay;
-    replay.target = s1;
-    replay.sender = "test-instructor";
-    replay.nonce = 1;  // lower than every nonce this instructor used
-    replay.issuedMs = QDateTime::currentMSecsSinceEpoch();
-    replay.kind = "stop";
-    key.sign(replay);
-    ASSERT_TRUE(bus->send(replay));
-    ASSERT_TRUE(waitFor([&] { return instructor->reply(1).has_value(); }, 10000, [&] { poll(); }));
-    EXPECT_EQ(instructor->reply(1)->message, "replay");
+    // a replay: a command the station took (a pause, resumed since), sent again as it was
+    Command pause;
+    pause.target = s1;
+    pause.sender = "replayer";
+    pause.nonce = 1;
+    pause.issuedMs = QDateTime::currentMSecsSinceEpoch();
+    pause.kind = "pause";
+    key.sign(pause);
+    auto replyTo = [&](std::uint64_t nonce) {
+        std::optional<Reply> got;
+        waitFor([&] { return got.has_value(); }, 10000, [&] {
+            for (Reply& x : bus->takeReplies())
+                if (x.sender == "replayer" && x.nonce == nonce && x.station == s1) got = x;
+        });
+        return got;
+    };
+    ASSERT_TRUE(bus->send(pause));
+    auto first = replyTo(1);
+    ASSERT_TRUE(first && first->accepted) << (first ? first->message : "no reply");
+    r = command(s1, "resume");
+    ASSERT_TRUE(r && r->accepted);
+    ASSERT_TRUE(bus->send(pause));
+    auto again = replyTo(1);
+    ASSERT_TRUE(again);
+    EXPECT_EQ(again->message, "replay");
     EXPECT_EQ(stateAfter(s1, 200).status, "running") << "refused commands did nothing";
 
     // another instructor, as a separate process, starts T1 on S2
@@ -236,8 +254,125 @@ TEST_F(Centre, TwoStationsStreamStateAndObeyOnlyTheirOwnSignedCommands)
     }
     EXPECT_EQ(kinds.join(" "), QString("instructor/start:test-instructor instructor/pause:test-instructor "
                                        "instructor/resume:test-instructor fault/power-cut "
-                                       "fault-cleared/power-cut instructor/stop:test-instructor"))
+                                       "fault-cleared/power-cut instructor/pause:replayer "
+                                       "instructor/resume:test-instructor instructor/stop:test-instructor"))
         << kinds.join(" ").toStdString();
+}
+
+// Issue 23: a node without the key announced a fake station and answered "done" to a
+// command that never reached a station, and `padrob instructor send` printed "done". Now
+// the fake station is not heard and the forged reply is dropped: the command is not
+// answered (exit 1). A forged "done" after a station's refusal does not replace it either.
+TEST_F(Centre, AForgedReplyOrAFakeStationNeverMakesTheInstructorSayDone)
+{
+    const std::string ghost = centre_test::unique("ghost");
+    for (const CentreKey& forgerKey : {CentreKey(), CentreKey::fromBytes(QByteArray(32, 'x'))}) {
+        BusOptions o = BusOptions::loopback(domain);
+        o.reads = TopicCommand;
+        o.key = forgerKey;
+        QString error;
+        auto forger = Bus::open(o, &error);
+        ASSERT_TRUE(forger) << error.toStdString();
+        Announce fake;
+        fake.node = ghost;
+        fake.role = "station";
+        fake.model = "liner_manipulator_fluid";
+        ASSERT_TRUE(forger->announce(fake));
+        QProcess cli;
+        cli.start(PADROB_CLI, QStringList{"instructor", "send", QString::fromStdString(ghost), "stop", "--name", "desk-3",
+                                          "--timeout", "4"} + net());
+        ASSERT_TRUE(cli.waitForStarted(5000));
+        int forged = 0;
+        waitFor([&] { return cli.state() == QProcess::NotRunning; }, 20000, [&] {
+            State s;
+            s.station = ghost;
+            s.sentUs = wallUs();
+            forger->publish(s);
+            for (const Command& c : forger->takeCommands()) {
+                forger->reply(centre_test::doneReply(c.target, c.sender, c.nonce));
+                ++forged;
+            }
+        });
+        ASSERT_EQ(cli.state(), QProcess::NotRunning);
+        const QString out = QString::fromUtf8(cli.readAllStandardOutput());
+        const QString err = QString::fromUtf8(cli.readAllStandardError());
+        EXPECT_EQ(cli.exitCode(), 1) << out.toStdString() << err.toStdString();
+        EXPECT_FALSE(out.contains("done")) << out.toStdString();
+        EXPECT_TRUE(err.contains("did not answer")) << err.toStdString();
+        EXPECT_EQ(forged, 0) << "the fake station was not heard, so no command went to it";
+        poll();
+        EXPECT_EQ(view(ghost), nullptr) << "the instructor does not list the fake station";
+    }
+
+    // a real station refuses; a forger then answers the same command "done"
+    const std::string s6 = centre_test::unique("S6");
+    startStation(s6);
+    ASSERT_TRUE(waitFor([&] { return seenRunning(s6); }, 20000, [&] { poll(); }));
+    BusOptions o = BusOptions::loopback(domain);
+    o.reads = TopicCommand;
+    QString error;
+    auto forger = Bus::open(o, &error);
+    ASSERT_TRUE(forger) << error.toStdString();
+    const std::uint64_t nonce = instructor->send(s6, "resume");
+    ASSERT_NE(nonce, 0u);
+    ASSERT_TRUE(waitFor([&] { return instructor->reply(nonce).has_value(); }, 10000, [&] { poll(); }));
+    EXPECT_EQ(instructor->reply(nonce)->message, "not-paused");
+    ASSERT_TRUE(forger->reply(centre_test::doneReply(s6, "test-instructor", nonce)));
+    stateAfter(s6, 500);
+    EXPECT_FALSE(instructor->reply(nonce)->accepted) << "the forged 'done' replaced the station's refusal";
+    EXPECT_EQ(instructor->reply(nonce)->message, "not-paused");
+    EXPECT_GE(bus->dropped().badSignature, 1u);
+}
+
+// Issue 23: a signed command with the nonce 2^64-1 locked out every later command under
+// that sender's name ("replay"); two instructors on one computer share the default name.
+// Now the other instructor's commands (its own process, the same name) are taken.
+TEST_F(Centre, AHugeNonceLocksOutNoOtherInstructor)
+{
+    const std::string s7 = centre_test::unique("S7");
+    startStation(s7);
+    ASSERT_TRUE(waitFor([&] { return seenRunning(s7); }, 20000, [&] { poll(); }));
+    Command huge;
+    huge.target = s7;
+    huge.sender = "desk";
+    huge.nonce = std::numeric_limits<std::uint64_t>::max();
+    huge.issuedMs = QDateTime::currentMSecsSinceEpoch();
+    huge.kind = "start";
+    huge.arg = "T0";
+    huge.arg2 = "OP-1";
+    key.sign(huge);
+    ASSERT_TRUE(bus->send(huge));
+    std::optional<Reply> got;
+    ASSERT_TRUE(waitFor([&] { return got.has_value(); }, 10000, [&] {
+        for (Reply& x : bus->takeReplies())
+            if (x.sender == "desk" && x.nonce == huge.nonce && x.station == s7) got = x;
+    }));
+    ASSERT_TRUE(got->accepted) << got->message;
+    for (const char* kind : {"pause", "resume"}) {
+        QProcess cli;
+        cli.start(PADROB_CLI, QStringList{"instructor", "send", QString::fromStdString(s7), kind, "--name", "desk"} + net());
+        ASSERT_TRUE(cli.waitForFinished(20000));
+        const QByteArray out = cli.readAllStandardOutput();
+        EXPECT_EQ(cli.exitCode(), 0) << out.toStdString() << cli.readAllStandardError().toStdString();
+        EXPECT_TRUE(out.contains(QByteArray(kind) + " done")) << out.toStdString();
+    }
+    EXPECT_EQ(stateAfter(s7, 300).status, "running");
+}
+
+// Issue 23: an operator's code over 32 bytes is refused by the instructor, saying so.
+TEST_F(Centre, AnOverLongOperatorCodeIsRefusedWithAClearError)
+{
+    const std::string s8 = centre_test::unique("S8");
+    startStation(s8);
+    ASSERT_TRUE(waitFor([&] { return seenRunning(s8); }, 20000, [&] { poll(); }));
+    QProcess cli;
+    cli.start(PADROB_CLI, QStringList{"instructor", "send", QString::fromStdString(s8), "start", "T0",
+                                      QString(40, 'X')} + net());
+    ASSERT_TRUE(cli.waitForFinished(20000));
+    EXPECT_EQ(cli.exitCode(), 2);
+    const QString err = QString::fromUtf8(cli.readAllStandardError());
+    EXPECT_TRUE(err.contains("operatorCode: 40 bytes, at most 32")) << err.toStdString();
+    EXPECT_EQ(stateAfter(s8, 300).status, "idle") << "nothing started";
 }
 
 TEST_F(Centre, AKilledStationIsSeenGoneAndComesBack)

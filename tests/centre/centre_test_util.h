@@ -1,6 +1,8 @@
 #pragma once
 // Shared by the centre's tests: a DDS domain per test process, and waiting for things.
 
+#include "trainer/centre/messages.h"
+
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QThread>
@@ -15,6 +17,18 @@ namespace centre_test {
 /// (names carry the pid too, so a chance collision cannot mix them up).
 inline int domain() { return 1 + static_cast<int>(::getpid() % 230); }
 inline std::string unique(const std::string& name) { return name + "-" + std::to_string(::getpid()); }
+
+/// A reply that says a command was done (a station's, or a forger's).
+inline trainer::centre::Reply doneReply(const std::string& station, const std::string& sender, std::uint64_t nonce)
+{
+    trainer::centre::Reply r;
+    r.station = station;
+    r.sender = sender;
+    r.nonce = nonce;
+    r.accepted = true;
+    r.message = "done";
+    return r;
+}
 
 /// Polls `done` (calling `poll` first) every 10 ms for up to `ms`.
 inline bool waitFor(const std::function<bool()>& done, int ms, const std::function<void()>& poll = {})

@@ -47,6 +47,7 @@ protected:
         o.securityDir = pkiDir;
         o.node = QString::fromStdString(node);
         o.reads = reads;
+        o.key = key;
         return o;
     }
     /// This test binary as an intruder (IntruderHelper below) for `seconds`: its counts on stdout.
@@ -143,6 +144,7 @@ TEST_F(Security, SecuredNodesInOneProcessExchangeStatesAndCommands)
     c.sender = in;
     c.kind = "pause";
     ASSERT_TRUE(waitFor([&] { return !states.empty() && !commands.empty(); }, 8000, [&] {
+        s.sentUs = wallUs();
         station->publish(s);
         instructor->send(c);
         for (State& x : instructor->takeStates()) states.push_back(x);
@@ -226,6 +228,7 @@ TEST(IntruderHelper, Intrude)
     QString error;
     CentreKey key;
     ASSERT_TRUE(key.load(qEnvironmentVariable("PADROB_INTRUDER_KEY"), &error));
+    o.key = key;  // it even holds the centre's key: DDS Security still keeps it out
     auto bus = Bus::open(o, &error);
     ASSERT_TRUE(bus) << error.toStdString();
     InstructorNode intruder(*bus, "intruder", key, 1.0);

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 using namespace trainer::centre;
 
@@ -78,10 +79,12 @@ TEST(CentreSigning, TheGuardRefusesForgedStaleAndReplayedCommands)
     EXPECT_TRUE(guard.accept(c, now, why)) << why;
     EXPECT_FALSE(guard.accept(c, now, why));
     EXPECT_EQ(why, "replay");
+    // a lower nonce never accepted is no replay: nothing but the very command is refused
     Command older = c;
     older.nonce = 999;
     key.sign(older);
-    EXPECT_FALSE(guard.accept(older, now, why));
+    EXPECT_TRUE(guard.accept(older, now, why)) << why;
+    EXPECT_FALSE(guard.accept(older, now + 1000, why));
     EXPECT_EQ(why, "replay");
     Command next = c;
     next.nonce = 1001;
@@ -114,6 +117,198 @@ TEST(CentreSigning, TheGuardRefusesForgedStaleAndReplayedCommands)
     CommandGuard keyless{CentreKey()};
     EXPECT_FALSE(keyless.accept(c, now, why));
     EXPECT_EQ(why, "no-key");
+    // over the limits: refused before anything else
+    Command longCode = c;
+    longCode.nonce = 4000;
+    longCode.kind = "start";
+    longCode.arg = "T0";
+    longCode.arg2 = std::string(limits::kOperatorCode + 1, 'X');
+    key.sign(longCode);
+    EXPECT_FALSE(guard.accept(longCode, now, why));
+    EXPECT_EQ(why, "too-long");
+}
+
+// Issue 23: a signed nonce of 2^64-1 shut out every later command under that sender's name
+// (two instructors on one computer share the default name instructor@HOST), for as long as
+// the station ran. Now only the very command is remembered, and only while it is fresh.
+TEST(CentreSigning, AHugeNonceLocksOutNoInstructor)
+{
+    const CentreKey key = keyOf('k');
+    CommandGuard guard(key, 30000);
+    const std::int64_t now = QDateTime::currentMSecsSinceEpoch();
+    std::string why;
+    Command huge = command();
+    huge.sender = "instructor@desk";
+    huge.nonce = std::numeric_limits<std::uint64_t>::max();
+    huge.issuedMs = now;
+    key.sign(huge);
+    ASSERT_TRUE(guard.accept(huge, now, why)) << why;
+    // another instructor under the same name, with its clock's nonce
+    Command other = command();
+    other.sender = "instructor@desk";
+    other.nonce = std::uint64_t(now) * 1000u;
+    other.issuedMs = now + 10;
+    key.sign(other);
+    EXPECT_TRUE(guard.accept(other, now + 10, why)) << why;
+    Command next = other;
+    next.nonce += 1;
+    key.sign(next);
+    EXPECT_TRUE(guard.accept(next, now + 20, why)) << why;
+    // the huge one replayed: refused while fresh, stale after; forgotten either way
+    EXPECT_FALSE(guard.accept(huge, now + 1000, why));
+    EXPECT_EQ(why, "replay");
+    EXPECT_FALSE(guard.accept(huge, now + 31000, why));
+    EXPECT_EQ(why, "stale");
+    Command later = other;
+    later.nonce = 7;
+    later.issuedMs = now + 31000;
+    key.sign(later);
+    EXPECT_TRUE(guard.accept(later, now + 31000, why)) << why;
+    EXPECT_EQ(guard.remembered(), 1u) << "only the commands of the last 30 s are kept";
+}
+
+TEST(CentreSigning, TheGuardsMemoryIsBoundedAndDrains)
+{
+    const CentreKey key = keyOf('k');
+    CommandGuard guard(key, 30000, 3);
+    const std::int64_t now = QDateTime::currentMSecsSinceEpoch();
+    std::string why;
+    Command c = command();
+    c.issuedMs = now;
+    for (std::uint64_t n = 1; n <= 3; ++n) {
+        c.nonce = n;
+        key.sign(c);
+        ASSERT_TRUE(guard.accept(c, now, why)) << why;
+    }
+    c.nonce = 4;
+    key.sign(c);
+    EXPECT_FALSE(guard.accept(c, now, why));
+    EXPECT_EQ(why, "busy");
+    c.issuedMs = now + 31000;
+    key.sign(c);
+    EXPECT_TRUE(guard.accept(c, now + 31000, why)) << "the full memory drains as its commands go stale: " << why;
+}
+
+// Every topic's messages are signed, and a message altered in any field, signed with
+// another key, or as another topic's, does not verify.
+TEST(CentreSigning, AnnouncementsStatesEventsAndRepliesAreSigned)
+{
+    const CentreKey key = keyOf('k'), other = keyOf('x');
+    Announce a;
+    a.node = "station-1";
+    a.role = "station";
+    a.model = "liner";
+    a.tutorials = {"T0", "T1"};
+    a.startedMs = 5;
+    a.sentMs = 6;
+    State s;
+    s.station = "station-1";
+    s.seq = 3;
+    s.q = {0.1, 0.2};
+    s.commands = {0.5f};
+    s.status = "running";
+    s.operatorCode = "OP-1";
+    Event e;
+    e.station = "station-1";
+    e.kind = "goal";
+    e.text = "Goal reached";
+    e.sentMs = 9;
+    Reply r;
+    r.station = "station-1";
+    r.sender = "desk";
+    r.nonce = 77;
+    r.accepted = false;
+    r.message = "not-paused";
+    key.sign(a);
+    key.sign(s);
+    key.sign(e);
+    key.sign(r);
+    EXPECT_TRUE(key.verify(a) && key.verify(s) && key.verify(e) && key.verify(r));
+    EXPECT_FALSE(other.verify(a) || other.verify(s) || other.verify(e) || other.verify(r)) << "another key";
+    EXPECT_FALSE(CentreKey().verify(s)) << "no key verifies nothing";
+    Announce a2 = a;
+    a2.tutorials.push_back("T2");
+    EXPECT_FALSE(key.verify(a2));
+    a2 = a;
+    a2.tutorials = {"T0,T1"};
+    EXPECT_FALSE(key.verify(a2)) << "the list is signed entry by entry";
+    a2 = a;
+    a2.role = kRoleGone;
+    EXPECT_FALSE(key.verify(a2)) << "no one else can say a node left";
+    State s2 = s;
+    s2.q[1] = 0.3;
+    EXPECT_FALSE(key.verify(s2));
+    s2 = s;
+    s2.status = "paused";
+    EXPECT_FALSE(key.verify(s2));
+    s2 = s;
+    s2.operatorCode = "OP-2";
+    EXPECT_FALSE(key.verify(s2));
+    Event e2 = e;
+    e2.sentMs = 10;
+    EXPECT_FALSE(key.verify(e2));
+    Reply r2 = r;
+    r2.accepted = true;
+    EXPECT_FALSE(key.verify(r2)) << "a refusal cannot be turned into 'done'";
+    r2 = r;
+    r2.message = "done";
+    EXPECT_FALSE(key.verify(r2));
+    r2 = r;
+    r2.nonce = 78;
+    EXPECT_FALSE(key.verify(r2));
+    // one topic's signature is no other's: a command's mac on a reply of the same bytes
+    Reply unsigned_ = r;
+    unsigned_.mac.clear();
+    EXPECT_FALSE(key.verify(unsigned_));
+    Command c;
+    key.sign(c);
+    Reply fromCommand = r;
+    fromCommand.mac = c.mac;
+    EXPECT_FALSE(key.verify(fromCommand));
+}
+
+TEST(CentreSigning, EveryStringAndSequenceHasABound)
+{
+    Announce a;
+    a.node = std::string(limits::kName, 'n');
+    EXPECT_EQ(limitProblem(a), "");
+    a.node += 'n';
+    EXPECT_EQ(limitProblem(a), "node: 65 bytes, at most 64");
+    a.node = "station\n1";
+    a.node[7] = '\n';
+    EXPECT_EQ(limitProblem(a), "node: a control character");
+    a.node = "s";
+    a.tutorials.assign(limits::kTutorials + 1, "T");
+    EXPECT_EQ(limitProblem(a), "tutorials: 65 entries, at most 64");
+    State s;
+    s.operatorCode = std::string(33, 'X');
+    EXPECT_EQ(limitProblem(s), "operatorCode: 33 bytes, at most 32");
+    s.operatorCode = "OP\x07";
+    EXPECT_EQ(limitProblem(s), "operatorCode: a control character");
+    s.operatorCode.clear();
+    s.faults = std::string(limits::kText + 1, 'f');
+    EXPECT_NE(limitProblem(s).find("faults"), std::string::npos);
+    s.faults.clear();
+    s.q.assign(limits::kJoints + 1, 0.0);
+    EXPECT_EQ(limitProblem(s), "q: 257 entries, at most 256");
+    Event e;
+    e.text = std::string(limits::kText + 1, 't');
+    EXPECT_NE(limitProblem(e).find("text"), std::string::npos);
+    Command c;
+    c.kind = "start";
+    c.arg2 = std::string(33, 'X');
+    EXPECT_EQ(limitProblem(c), "operatorCode: 33 bytes, at most 32");
+    c.kind = "inject";
+    EXPECT_EQ(limitProblem(c), "") << "an inject's second argument is a drive, up to 256 bytes";
+    c.sender = std::string(100000, 's');
+    EXPECT_EQ(limitProblem(c), "sender: 100000 bytes, at most 64");
+    Reply r;
+    r.message = std::string(limits::kText + 1, 'm');
+    EXPECT_NE(limitProblem(r).find("message"), std::string::npos);
+    // what a node says of its own is cut to fit, never inside a character
+    EXPECT_EQ(clip("abc", 5), "abc");
+    EXPECT_EQ(clip("a\xc3\xb1" "b", 2), "a");
+    EXPECT_EQ(clip("a\xc3\xb1" "b", 3), "a\xc3\xb1");
 }
 
 TEST(CentreSigning, SealedSecretsOpenOnlyWithTheirKeyAndUnaltered)

@@ -2,6 +2,8 @@
 // attempts kept aside in pending files, with the operator's code, said by problem(), and
 // brought into the journal at the next start and after the next attempt it takes whole;
 // `padrob station` says on stdout what it brought in.
+#include "centre_test_util.h"
+#include "trainer/centre/signing.h"
 #include "trainer/centre/station_records.h"
 #include "trainer/records/records_db.h"
 #include "trainer/training/attempt_log.h"
@@ -135,9 +137,12 @@ TEST(StationRecords, PadrobStationSaysWhatItBroughtIn)
     QTemporaryDir dir;
     const QString journal = dir.filePath("journal.sqlite");
     keptAside(dir.filePath("pending-attempts"), "OP-4", 47);
+    const QString key = dir.filePath("centre.key");
+    QString error;
+    ASSERT_TRUE(CentreKey::create(key, &error)) << str(error);
     QProcess station;
     station.start(PADROB_CLI, {"station", QString::fromStdString(kTut0), "--name", "bay-3", "--for", "1.5", "--records",
-                               journal, "--loopback", "--domain", "229"});
+                               journal, "--loopback", "--domain", QString::number(centre_test::domain()), "--key", key});
     ASSERT_TRUE(station.waitForFinished(60000));
     const QString out = QString::fromLocal8Bit(station.readAllStandardOutput());
     const QString err = QString::fromLocal8Bit(station.readAllStandardError());

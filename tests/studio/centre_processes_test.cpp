@@ -114,7 +114,10 @@ private slots:
         m_keyFile = m_dir.filePath("centre.key");
         QString error;
         QVERIFY2(centre::CentreKey::create(m_keyFile, &error), qPrintable(error));
-        m_bus = centre::Bus::open(centre::BusOptions::loopback(m_domain), &error);
+        // the observer checks what the stations say with the centre's key (it sends nothing)
+        centre::BusOptions o = centre::BusOptions::loopback(m_domain);
+        QVERIFY2(o.key.load(m_keyFile, &error), qPrintable(error));
+        m_bus = centre::Bus::open(o, &error);
         QVERIFY2(m_bus, qPrintable(error));
         m_observer = std::make_unique<centre::InstructorNode>(*m_bus, "observer-" + std::to_string(::getpid()),
                                                               centre::CentreKey());
@@ -147,7 +150,8 @@ private slots:
                                                   .arg(kDisplayRect.width())
                                                   .arg(kDisplayRect.height())
                                                   .arg(kDisplayRect.x())
-                                                  .arg(kDisplayRect.y())} +
+                                                  .arg(kDisplayRect.y()),
+                                              "--centre-key", m_keyFile} +
                                       net());
         QVERIFY(display->waitForStarted(5000));
         QVERIFY2(waitFor([&] { return status(m_s1) == "idle" && status(m_s2) == "idle"; }, 30000),

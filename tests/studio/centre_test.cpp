@@ -84,6 +84,7 @@ class CentreTest : public QObject {
 
     QTemporaryDir m_dir;
     QString m_keyFile;
+    centre::CentreKey m_key;
     const int m_domain = 1 + static_cast<int>(::getpid() % 230);
     const QString m_station = QStringLiteral("S-studio-%1").arg(::getpid());
     std::unique_ptr<QProcess> m_process;
@@ -123,6 +124,15 @@ private slots:
         m_keyFile = m_dir.filePath("centre.key");
         QString error;
         QVERIFY2(centre::CentreKey::create(m_keyFile, &error), qPrintable(error));
+        QVERIFY2(m_key.load(m_keyFile, &error), qPrintable(error));
+    }
+
+    /// The centre's network on loopback, with the centre's key (as --centre-key FILE).
+    centre::BusOptions keyed(int domain) const
+    {
+        centre::BusOptions o = centre::BusOptions::loopback(domain);
+        o.key = m_key;
+        return o;
     }
 
     void cleanupTestCase()
@@ -399,7 +409,7 @@ private slots:
         QVERIFY(DisplayWindow::parseScreen("centre", &side));
         QCOMPARE(side, DisplayView::Centre);
         QVERIFY(!DisplayWindow::parseScreen("middle", &side));
-        DisplayWindow d(m_station, DisplayView::Centre, centre::BusOptions::loopback(m_domain));
+        DisplayWindow d(m_station, DisplayView::Centre, keyed(m_domain));
         QVERIFY(d.busError().isEmpty());
         d.resize(1280, 720);
         d.show();
@@ -448,6 +458,12 @@ private slots:
     void withoutAKeyTheInstructorOnlyWatches()
     {
         InstructorWindow none(centre::BusOptions::loopback(m_domain), QString());
+        QVERIFY2(none.findChild<QLabel*>("KeyLabel")->text().contains("none of it is shown"),
+                 qPrintable(none.findChild<QLabel*>("KeyLabel")->text()));
+        // a display without the key cannot check what it would draw: it says so, draws nothing
+        DisplayWindow keyless(m_station, DisplayView::Left, centre::BusOptions::loopback(m_domain));
+        QVERIFY(keyless.busError().contains("--centre-key"));
+        QCOMPARE(keyless.view()->overlayText(), keyless.busError());
         QVERIFY(!none.canCommand());
         QVERIFY(!none.button("StartButton")->isEnabled());
         QVERIFY(none.button("StartButton")->toolTip().contains("--centre-key"));
@@ -463,7 +479,7 @@ private slots:
         QVERIFY2(badKey.findChild<QLabel*>("KeyLabel")->text().contains("cannot be used"),
                  qPrintable(badKey.findChild<QLabel*>("KeyLabel")->text()));
         // a network DDS refuses: said on the screen, no crash
-        centre::BusOptions wrong = centre::BusOptions::loopback(m_domain);
+        centre::BusOptions wrong = keyed(m_domain);
         wrong.domain = 300;
         DisplayWindow display("X", DisplayView::Right, wrong);
         QVERIFY(!display.busError().isEmpty());
@@ -532,6 +548,7 @@ private slots:
         plain.setProcessChannelMode(QProcess::ForwardedChannels);
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert("PADROB_PLAIN_DISPLAY", station + QLatin1Char(' ') + QString::number(domain));
+        env.insert("PADROB_PLAIN_DISPLAY_KEY", m_keyFile);
         plain.setProcessEnvironment(env);
         plain.start(QCoreApplication::applicationFilePath(), {});
         QVERIFY(plain.waitForStarted(5000));
@@ -541,7 +558,7 @@ private slots:
         QCOMPARE(status(), QStringLiteral("running"));  // meanwhile the secured instructor saw it all along
 
         // a secured display without its identity: said in the window, no crash
-        centre::BusOptions secureDisplay = centre::BusOptions::loopback(domain);
+        centre::BusOptions secureDisplay = keyed(domain);
         secureDisplay.securityDir = pki;
         DisplayWindow missing(station, DisplayView::Left, secureDisplay);
         QVERIFY(!missing.busError().isEmpty());
@@ -572,13 +589,19 @@ private slots:
 };
 
 /// PADROB_PLAIN_DISPLAY="STATION DOMAIN [PKI]": a display window (with DDS Security when
-/// PKI is given) that watches STATION for 5 s (aSecuredStationIsSeenOnlyWithAnIdentity).
+/// PKI is given, with the centre's key of PADROB_PLAIN_DISPLAY_KEY) that watches STATION
+/// for 5 s (aSecuredStationIsSeenOnlyWithAnIdentity).
 /// Exit 0: it saw nothing of it; 3: it saw an announcement or a state; 4: its bus did not open.
 int plainDisplay(const QString& spec)
 {
     const QStringList parts = spec.split(QLatin1Char(' '));
     centre::BusOptions o = centre::BusOptions::loopback(parts.value(1).toInt());
     o.securityDir = parts.value(2);
+    QString error;
+    if (!o.key.load(qEnvironmentVariable("PADROB_PLAIN_DISPLAY_KEY"), &error)) {
+        std::fprintf(stderr, "plain display: %s\n", qPrintable(error));
+        return 4;
+    }
     DisplayWindow d(parts.value(0), DisplayView::Centre, o);
     if (!d.busError().isEmpty()) {
         std::fprintf(stderr, "plain display: %s\n", qPrintable(d.busError()));

@@ -127,7 +127,9 @@ private slots:
         QVERIFY2(m_station->online(), qPrintable(m_station->problem()));
         QVERIFY(m_station->hasKey());
 
-        m_bus = centre::Bus::open(centre::BusOptions::loopback(m_domain), &error);
+        centre::BusOptions net = centre::BusOptions::loopback(m_domain);
+        net.key = key;
+        m_bus = centre::Bus::open(net, &error);
         QVERIFY2(m_bus, qPrintable(error));
         m_instructor = std::make_unique<centre::InstructorNode>(*m_bus, m_desk, key);
         m_instructor->announce();

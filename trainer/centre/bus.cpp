@@ -147,14 +147,64 @@ struct Bus::Impl {
     dds_entity_t topics[5] = {};
     dds_entity_t writers[5] = {};
     dds_entity_t readers[5] = {};
+    CentreKey key;
+    bool checkWrites = true;
     mutable std::mutex errorMutex;
     QString error;
+    Dropped dropped;  // under errorMutex
 
     bool check(dds_return_t rc)
     {
         if (rc >= 0) return true;
         std::lock_guard lock(errorMutex);
         error = ddsError(rc);
+        return false;
+    }
+
+    /// False with the error when a message to write is over the limits.
+    template <typename M>
+    bool fits(const M& m, const char* topic)
+    {
+        if (!checkWrites) return true;
+        const std::string why = limitProblem(m);
+        if (why.empty()) return true;
+        std::lock_guard lock(errorMutex);
+        error = QCoreApplication::translate("CentreBus", "A %1 message was not sent: its field %2.")
+                    .arg(QString::fromLatin1(topic), QString::fromStdString(why));
+        return false;
+    }
+
+    /// Whether a message read may be believed: within the limits, signed with the key,
+    /// and (sentMs > 0) sent within kMaxAgeMs of this clock. Else counted and, now and
+    /// then, said on stderr.
+    template <typename M>
+    bool believe(const M& m, const char* topic, const std::string& from, std::int64_t sentMs = -1)
+    {
+        std::uint64_t Dropped::*counter = nullptr;
+        std::string why = limitProblem(m);
+        if (!why.empty()) {
+            counter = &Dropped::tooLong;
+        } else if (!key.verify(m)) {
+            counter = &Dropped::badSignature;
+            why = m.mac.empty() ? "unsigned" : "not signed with the centre's key";
+        } else if (sentMs >= 0) {
+            const std::int64_t now = static_cast<std::int64_t>(wallUs() / 1000);
+            if (sentMs < now - kMaxAgeMs || sentMs > now + kMaxAgeMs) {
+                counter = &Dropped::stale;
+                why = "sent " + std::to_string((now - sentMs) / 1000) + " s ago";
+            }
+        }
+        if (!counter) return true;
+        std::uint64_t n = 0;
+        {
+            std::lock_guard lock(errorMutex);
+            n = ++(dropped.*counter);
+        }
+        // the first of each kind, then at 2, 4, 8… so a flood does not flood the log
+        if ((n & (n - 1)) == 0) {
+            qWarning("padrob centre: dropped a %s message from '%s': %s (%llu dropped so far for this reason)", topic,
+                     from.substr(0, limits::kName).c_str(), why.c_str(), static_cast<unsigned long long>(n));
+        }
         return false;
     }
 
@@ -224,6 +274,8 @@ std::unique_ptr<Bus> Bus::open(const BusOptions& options, QString* error)
     std::unique_ptr<Bus> bus(new Bus());
     Impl& d = *bus->d;
     d.domain = options.domain;
+    d.key = options.key;
+    d.checkWrites = options.checkWrites;
     {
         std::lock_guard lock(g_domainsMutex);
         bool found = false;
@@ -316,8 +368,12 @@ std::unique_ptr<Bus> Bus::open(const BusOptions& options, QString* error)
     return bus;
 }
 
-bool Bus::announce(const Announce& a)
+bool Bus::announce(const Announce& in)
 {
+    Announce a = in;
+    a.sentMs = wallUs() / 1000;
+    if (!d->fits(a, "padrob_Announce")) return false;
+    if (d->key.isSet()) d->key.sign(a);
     const std::string tutorials = joinTutorials(a.tutorials);
     padrob_centre_Announce s{};
     s.node = cstr(a.node);
@@ -329,20 +385,30 @@ bool Bus::announce(const Announce& a)
     s.tutorials = cstr(tutorials);
     s.language = cstr(a.language);
     s.startedMs = a.startedMs;
+    s.sentMs = a.sentMs;
+    s.mac = cstr(a.mac);
     return d->check(dds_write(d->writers[0], &s));
 }
 
 bool Bus::withdraw(const std::string& node)
 {
+    // signed, so that no one but the node can say it left; then the instance is disposed
+    Announce gone;
+    gone.node = node;
+    gone.role = kRoleGone;
+    const bool said = announce(gone);
     const std::string empty;
     padrob_centre_Announce s{};
     s.node = cstr(node);
-    s.role = s.host = s.model = s.modelHash = s.tutorials = s.language = cstr(empty);
-    return d->check(dds_dispose(d->writers[0], &s));
+    s.role = s.host = s.model = s.modelHash = s.tutorials = s.language = s.mac = cstr(empty);
+    return d->check(dds_dispose(d->writers[0], &s)) && said;
 }
 
-bool Bus::publish(const State& st)
+bool Bus::publish(const State& in)
 {
+    if (!d->fits(in, "padrob_State")) return false;
+    State st = in;
+    if (d->key.isSet()) d->key.sign(st);
     padrob_centre_State s{};
     s.station = cstr(st.station);
     s.seq = st.seq;
@@ -366,11 +432,16 @@ bool Bus::publish(const State& st)
     s.warnings = st.warnings;
     s.faults = cstr(st.faults);
     s.endReason = cstr(st.endReason);
+    s.mac = cstr(st.mac);
     return d->check(dds_write(d->writers[1], &s));
 }
 
-bool Bus::publish(const Event& e)
+bool Bus::publish(const Event& in)
 {
+    Event e = in;
+    e.sentMs = wallUs() / 1000;
+    if (!d->fits(e, "padrob_Event")) return false;
+    if (d->key.isSet()) d->key.sign(e);
     padrob_centre_Event s{};
     s.station = cstr(e.station);
     s.seq = e.seq;
@@ -381,6 +452,8 @@ bool Bus::publish(const Event& e)
     s.detail = cstr(e.detail);
     s.value = e.value;
     s.penalty = e.penalty;
+    s.sentMs = e.sentMs;
+    s.mac = cstr(e.mac);
     return d->check(dds_write(d->writers[2], &s));
 }
 
@@ -393,6 +466,7 @@ int Bus::commandReaders() const
 
 bool Bus::send(const Command& c)
 {
+    if (!d->fits(c, "padrob_Command")) return false;
     padrob_centre_Command s{};
     s.target = cstr(c.target);
     s.sender = cstr(c.sender);
@@ -406,48 +480,68 @@ bool Bus::send(const Command& c)
     return d->check(dds_write(d->writers[3], &s));
 }
 
-bool Bus::reply(const Reply& r)
+bool Bus::reply(const Reply& in)
 {
+    if (!d->fits(in, "padrob_Reply")) return false;
+    Reply r = in;
+    if (d->key.isSet()) d->key.sign(r);
     padrob_centre_Reply s{};
     s.station = cstr(r.station);
     s.sender = cstr(r.sender);
     s.nonce = r.nonce;
     s.accepted = r.accepted;
     s.message = cstr(r.message);
+    s.mac = cstr(r.mac);
     return d->check(dds_write(d->writers[4], &s));
 }
 
 std::vector<Bus::Seen> Bus::takeAnnounces()
 {
-    return d->take<padrob_centre_Announce, Seen>(0, [](const padrob_centre_Announce& s, const dds_sample_info_t& info,
-                                                       std::vector<Seen>& out) {
-        Seen seen;
-        seen.announce.node = str(s.node);
-        if (info.instance_state != DDS_IST_ALIVE) {
-            // disposed (the node withdrew) or no writer left (its process is gone)
-            seen.gone = true;
-            seen.withdrew = info.instance_state == DDS_IST_NOT_ALIVE_DISPOSED;
-            out.push_back(std::move(seen));
-            return;
+    Impl* impl = d.get();
+    return d->take<padrob_centre_Announce, Seen>(0, [impl](const padrob_centre_Announce& s, const dds_sample_info_t& info,
+                                                           std::vector<Seen>& out) {
+        if (info.valid_data) {
+            Seen seen;
+            Announce& a = seen.announce;
+            a.node = str(s.node);
+            a.role = str(s.role);
+            a.host = str(s.host);
+            a.pid = s.pid;
+            a.model = str(s.model);
+            a.modelHash = str(s.modelHash);
+            a.tutorials = splitTutorials(str(s.tutorials));
+            a.language = str(s.language);
+            a.startedMs = s.startedMs;
+            a.sentMs = s.sentMs;
+            a.mac = str(s.mac);
+            // an announcement may be old (a late joiner gets the last one); a leaving one must be fresh
+            const bool leaving = a.role == kRoleGone;
+            if (impl->believe(a, "padrob_Announce", a.node, leaving ? static_cast<std::int64_t>(a.sentMs) : -1)) {
+                if (leaving) {
+                    std::string node = std::move(a.node);
+                    seen.announce = Announce{};
+                    seen.announce.node = std::move(node);
+                    seen.gone = seen.withdrew = true;
+                }
+                out.push_back(std::move(seen));
+            }
         }
-        if (!info.valid_data) return;
-        Announce& a = seen.announce;
-        a.role = str(s.role);
-        a.host = str(s.host);
-        a.pid = s.pid;
-        a.model = str(s.model);
-        a.modelHash = str(s.modelHash);
-        a.tutorials = splitTutorials(str(s.tutorials));
-        a.language = str(s.language);
-        a.startedMs = s.startedMs;
-        out.push_back(std::move(seen));
+        // no writer left (its process died and DDS's lease ran out): DDS's own knowledge;
+        // a bare dispose is anyone's to send, so it says nothing
+        if (info.instance_state == DDS_IST_NOT_ALIVE_NO_WRITERS) {
+            Seen seen;
+            seen.announce.node = str(s.node);
+            seen.gone = true;
+            out.push_back(std::move(seen));
+        }
     });
 }
 
 std::vector<State> Bus::takeStates()
 {
-    return d->take<padrob_centre_State, State>(1, [](const padrob_centre_State& s, const dds_sample_info_t& info,
-                                                     std::vector<State>& out) {
+    Impl* impl = d.get();
+    return d->take<padrob_centre_State, State>(1, [impl](const padrob_centre_State& s, const dds_sample_info_t& info,
+                                                         std::vector<State>& out) {
         if (!info.valid_data) return;
         State st;
         st.station = str(s.station);
@@ -468,36 +562,45 @@ std::vector<State> Bus::takeStates()
         st.warnings = s.warnings;
         st.faults = str(s.faults);
         st.endReason = str(s.endReason);
-        out.push_back(std::move(st));
+        st.mac = str(s.mac);
+        if (impl->believe(st, "padrob_State", st.station, static_cast<std::int64_t>(st.sentUs / 1000))) out.push_back(std::move(st));
     });
 }
 
 std::vector<Event> Bus::takeEvents()
 {
-    return d->take<padrob_centre_Event, Event>(2, [](const padrob_centre_Event& s, const dds_sample_info_t& info,
-                                                     std::vector<Event>& out) {
+    Impl* impl = d.get();
+    return d->take<padrob_centre_Event, Event>(2, [impl](const padrob_centre_Event& s, const dds_sample_info_t& info,
+                                                         std::vector<Event>& out) {
         if (!info.valid_data) return;
-        out.push_back({str(s.station), s.seq, s.t, str(s.tutorial), str(s.kind), str(s.text), str(s.detail), s.value,
-                       s.penalty});
+        Event e{str(s.station), s.seq, s.t, str(s.tutorial), str(s.kind), str(s.text), str(s.detail), s.value,
+                s.penalty, s.sentMs, str(s.mac)};
+        if (impl->believe(e, "padrob_Event", e.station, static_cast<std::int64_t>(e.sentMs))) out.push_back(std::move(e));
     });
 }
 
 std::vector<Command> Bus::takeCommands()
 {
-    return d->take<padrob_centre_Command, Command>(3, [](const padrob_centre_Command& s, const dds_sample_info_t& info,
-                                                         std::vector<Command>& out) {
+    Impl* impl = d.get();
+    return d->take<padrob_centre_Command, Command>(3, [impl](const padrob_centre_Command& s, const dds_sample_info_t& info,
+                                                             std::vector<Command>& out) {
         if (!info.valid_data) return;
-        out.push_back({str(s.target), str(s.sender), s.nonce, s.issuedMs, str(s.kind), str(s.arg), str(s.arg2), s.value,
-                       str(s.mac)});
+        Command c{str(s.target), str(s.sender), s.nonce, s.issuedMs, str(s.kind), str(s.arg), str(s.arg2), s.value,
+                  str(s.mac)};
+        // the signature is the station's to check (CommandGuard): it replies why it refuses
+        if (limitProblem(c).empty()) out.push_back(std::move(c));
+        else impl->believe(c, "padrob_Command", c.sender);
     });
 }
 
 std::vector<Reply> Bus::takeReplies()
 {
-    return d->take<padrob_centre_Reply, Reply>(4, [](const padrob_centre_Reply& s, const dds_sample_info_t& info,
-                                                     std::vector<Reply>& out) {
+    Impl* impl = d.get();
+    return d->take<padrob_centre_Reply, Reply>(4, [impl](const padrob_centre_Reply& s, const dds_sample_info_t& info,
+                                                         std::vector<Reply>& out) {
         if (!info.valid_data) return;
-        out.push_back({str(s.station), str(s.sender), s.nonce, s.accepted, str(s.message)});
+        Reply r{str(s.station), str(s.sender), s.nonce, s.accepted, str(s.message), str(s.mac)};
+        if (impl->believe(r, "padrob_Reply", r.station)) out.push_back(std::move(r));
     });
 }
 
@@ -511,6 +614,12 @@ QString Bus::lastError() const
 {
     std::lock_guard lock(d->errorMutex);
     return d->error;
+}
+
+Bus::Dropped Bus::dropped() const
+{
+    std::lock_guard lock(d->errorMutex);
+    return d->dropped;
 }
 
 }  // namespace trainer::centre

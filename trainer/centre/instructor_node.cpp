@@ -59,7 +59,11 @@ void InstructorNode::poll(double nowS)
         m_new.push_back(std::move(e));
     }
     for (Reply& r : m_bus.takeReplies()) {
-        if (r.sender == m_name) m_replies[r.nonce] = std::move(r);
+        // the answer to one of our commands, from the station it went to (the Bus has
+        // checked the signature)
+        const auto sent = m_sent.find(r.nonce);
+        if (r.sender == m_name && sent != m_sent.end() && sent->second == r.station && !m_replies.count(r.nonce))
+            m_replies[r.nonce] = std::move(r);
     }
     for (auto& [name, v] : m_stations) {
         if (v.presence == "up" && v.lastSeenS >= 0 && nowS - v.lastSeenS > m_goneAfter) v.presence = "silent";
@@ -79,7 +83,10 @@ std::uint64_t InstructorNode::send(const std::string& station, const std::string
     c.arg2 = arg2;
     c.value = value;
     m_key.sign(c);
-    return m_bus.send(c) ? c.nonce : 0;
+    if (!m_bus.send(c)) return 0;
+    m_sent[c.nonce] = station;
+    if (m_sent.size() > 4096) m_sent.erase(m_sent.begin());  // the oldest: long answered or lost
+    return c.nonce;
 }
 
 std::optional<Reply> InstructorNode::reply(std::uint64_t nonce) const

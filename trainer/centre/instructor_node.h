@@ -36,10 +36,12 @@ public:
     void poll(double nowS);
     const std::map<std::string, StationView>& stations() const { return m_stations; }
 
-    /// Sends a signed command; returns its nonce (0 when it could not be sent).
+    /// Sends a signed command; returns its nonce (0 when it could not be sent: the Bus's
+    /// lastError() says why, e.g. a field over the limits).
     std::uint64_t send(const std::string& station, const std::string& kind, const std::string& arg = {},
                        const std::string& arg2 = {}, double value = std::numeric_limits<double>::quiet_NaN());
-    /// The reply to the command with `nonce`, once it has come.
+    /// The reply to the command with `nonce`, once it has come: signed with the centre's
+    /// key (the Bus checks it), from the station the command went to.
     std::optional<Reply> reply(std::uint64_t nonce) const;
 
     /// Called with each event as it arrives (after poll() stored it).
@@ -52,6 +54,7 @@ private:
     double m_goneAfter;
     std::uint64_t m_nonce = 0;
     std::map<std::string, StationView> m_stations;
+    std::map<std::uint64_t, std::string> m_sent;  // nonce → the station it went to
     std::map<std::uint64_t, Reply> m_replies;
     std::vector<Event> m_new;
 };

@@ -9,6 +9,9 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <type_traits>
+#include <vector>
 
 namespace trainer::centre {
 
@@ -59,6 +62,33 @@ QByteArray keystream(const QByteArray& encKey, const QByteArray& nonce, qsizetyp
     return out;
 }
 
+/// A double as signed: NaN has many bit patterns, so one is signed for all.
+void putDouble(QByteArray& out, double v) { putValue(out, std::isnan(v) ? std::numeric_limits<double>::quiet_NaN() : v); }
+
+template <typename T>
+void putSequence(QByteArray& out, const std::vector<T>& v)
+{
+    putValue(out, static_cast<quint32>(v.size()));
+    for (const T& x : v) {
+        if constexpr (std::is_same_v<T, std::string>) put(out, x);
+        else if constexpr (std::is_floating_point_v<T>) putDouble(out, static_cast<double>(x));
+        else putValue(out, x);
+    }
+}
+
+// the key of each topic's signatures, derived from the centre's key
+const char* purposeOf(const Command&) { return "command"; }
+const char* purposeOf(const Announce&) { return "announce"; }
+const char* purposeOf(const State&) { return "state"; }
+const char* purposeOf(const Event&) { return "event"; }
+const char* purposeOf(const Reply&) { return "reply"; }
+
+template <typename M>
+QByteArray macOf(const QByteArray& key, const M& m)
+{
+    return hmac(derive(key, purposeOf(m)), signedBytes(m)).toHex();
+}
+
 }  // namespace
 
 QByteArray signedBytes(const Command& c)
@@ -71,9 +101,74 @@ QByteArray signedBytes(const Command& c)
     put(out, c.kind);
     put(out, c.arg);
     put(out, c.arg2);
-    // NaN has many bit patterns: sign one
-    const double v = std::isnan(c.value) ? std::numeric_limits<double>::quiet_NaN() : c.value;
-    putValue(out, v);
+    putDouble(out, c.value);
+    return out;
+}
+
+QByteArray signedBytes(const Announce& a)
+{
+    QByteArray out("padrob-announce-v1");
+    put(out, a.node);
+    put(out, a.role);
+    put(out, a.host);
+    putValue(out, static_cast<qint32>(a.pid));
+    put(out, a.model);
+    put(out, a.modelHash);
+    putSequence(out, a.tutorials);
+    put(out, a.language);
+    putValue(out, a.startedMs);
+    putValue(out, a.sentMs);
+    return out;
+}
+
+QByteArray signedBytes(const State& s)
+{
+    QByteArray out("padrob-state-v1");
+    put(out, s.station);
+    putValue(out, s.seq);
+    putValue(out, s.sentUs);
+    putDouble(out, s.simTime);
+    putSequence(out, s.q);
+    putSequence(out, s.commands);
+    put(out, s.tutorial);
+    put(out, s.status);
+    put(out, s.operatorCode);
+    putDouble(out, s.attemptTime);
+    putDouble(out, s.score);
+    putValue(out, static_cast<qint32>(s.goal));
+    putValue(out, static_cast<qint32>(s.goals));
+    putDouble(out, s.clearance);
+    putDouble(out, s.workerDistance);
+    putValue(out, s.warnings);
+    put(out, s.faults);
+    put(out, s.endReason);
+    return out;
+}
+
+QByteArray signedBytes(const Event& e)
+{
+    QByteArray out("padrob-event-v1");
+    put(out, e.station);
+    putValue(out, e.seq);
+    putDouble(out, e.t);
+    put(out, e.tutorial);
+    put(out, e.kind);
+    put(out, e.text);
+    put(out, e.detail);
+    putDouble(out, e.value);
+    putDouble(out, e.penalty);
+    putValue(out, e.sentMs);
+    return out;
+}
+
+QByteArray signedBytes(const Reply& r)
+{
+    QByteArray out("padrob-reply-v1");
+    put(out, r.station);
+    put(out, r.sender);
+    putValue(out, r.nonce);
+    putValue(out, static_cast<quint8>(r.accepted ? 1 : 0));
+    put(out, r.message);
     return out;
 }
 
@@ -138,17 +233,17 @@ QString CentreKey::fingerprint() const
     return QString::fromLatin1(QCryptographicHash::hash(m_key, QCryptographicHash::Sha256).toHex().left(8));
 }
 
-void CentreKey::sign(Command& c) const
-{
-    c.mac = hmac(derive(m_key, "command"), signedBytes(c)).toHex().toStdString();
-}
+void CentreKey::sign(Command& c) const { c.mac = macOf(m_key, c).toStdString(); }
+void CentreKey::sign(Announce& a) const { a.mac = macOf(m_key, a).toStdString(); }
+void CentreKey::sign(State& s) const { s.mac = macOf(m_key, s).toStdString(); }
+void CentreKey::sign(Event& e) const { e.mac = macOf(m_key, e).toStdString(); }
+void CentreKey::sign(Reply& r) const { r.mac = macOf(m_key, r).toStdString(); }
 
-bool CentreKey::verify(const Command& c) const
-{
-    if (!isSet()) return false;
-    const QByteArray expected = hmac(derive(m_key, "command"), signedBytes(c)).toHex();
-    return sameBytes(expected, QByteArray::fromStdString(c.mac));
-}
+bool CentreKey::verify(const Command& c) const { return isSet() && sameBytes(macOf(m_key, c), QByteArray::fromStdString(c.mac)); }
+bool CentreKey::verify(const Announce& a) const { return isSet() && sameBytes(macOf(m_key, a), QByteArray::fromStdString(a.mac)); }
+bool CentreKey::verify(const State& s) const { return isSet() && sameBytes(macOf(m_key, s), QByteArray::fromStdString(s.mac)); }
+bool CentreKey::verify(const Event& e) const { return isSet() && sameBytes(macOf(m_key, e), QByteArray::fromStdString(e.mac)); }
+bool CentreKey::verify(const Reply& r) const { return isSet() && sameBytes(macOf(m_key, r), QByteArray::fromStdString(r.mac)); }
 
 QString CentreKey::seal(const QString& secret) const
 {
@@ -181,6 +276,10 @@ bool CommandGuard::accept(const Command& c, std::int64_t nowMs, std::string& why
         why = "no-key";
         return false;
     }
+    if (!limitProblem(c).empty()) {
+        why = "too-long";
+        return false;
+    }
     if (!m_key.verify(c)) {
         why = "bad-signature";
         return false;
@@ -189,13 +288,18 @@ bool CommandGuard::accept(const Command& c, std::int64_t nowMs, std::string& why
         why = "stale";
         return false;
     }
-    const QString sender = QString::fromStdString(c.sender);
-    const auto it = m_lastNonce.constFind(sender);
-    if (it != m_lastNonce.constEnd() && c.nonce <= it.value()) {
+    // forget what would be refused as stale anyway
+    std::erase_if(m_seen, [&](const auto& seen) { return seen.second < nowMs - m_maxAgeMs; });
+    const auto id = std::make_pair(c.sender, c.nonce);
+    if (m_seen.count(id)) {
         why = "replay";
         return false;
     }
-    m_lastNonce.insert(sender, c.nonce);
+    if (m_seen.size() >= m_maxRemembered) {
+        why = "busy";
+        return false;
+    }
+    m_seen.emplace(id, c.issuedMs);
     return true;
 }
 

@@ -195,6 +195,8 @@ void StationNode::publishState(double /*nowS*/)
     }
     if (m_records && m_records->offline()) s.warnings |= WarnRecordsOffline;
     if (!m_recordsProblem.isEmpty()) s.warnings |= WarnRecordsRefused;
+    s.faults = clip(s.faults, limits::kText);
+    s.endReason = clip(s.endReason, limits::kField);
     s.commands.assign(sim.state().u.data(), sim.state().u.data() + sim.state().u.size());
     m_bus.publish(s);
 }
@@ -211,8 +213,8 @@ void StationNode::publishEvents()
         out.t = e.t;
         out.tutorial = m_tutorial->spec.id;
         out.kind = TutorialEvent::key(e.kind);
-        out.text = e.text(m_tutorial.get(), lang).toStdString();
-        out.detail = e.detail;
+        out.text = clip(e.text(m_tutorial.get(), lang).toStdString(), limits::kText);
+        out.detail = clip(e.detail, limits::kField);
         out.value = e.value;
         out.penalty = e.penalty;
         m_bus.publish(out);
@@ -353,7 +355,7 @@ void StationNode::handle(const Command& c)
         why = "unknown-command";
     }
     r.accepted = done;
-    r.message = done ? std::string("done") : why;
+    r.message = done ? std::string("done") : clip(why, limits::kText);
     publishEvents();
     m_bus.reply(r);
 }

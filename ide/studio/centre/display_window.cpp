@@ -24,6 +24,13 @@ DisplayWindow::DisplayWindow(const QString& station, DisplayView::Screen screen,
     centre::BusOptions o = bus;
     o.reads = centre::TopicAnnounce | centre::TopicState;
     if (o.node.isEmpty()) o.node = defaultNodeName(station, screen);
+    if (!o.key.isSet()) {
+        // nothing a station sends can be checked without the key: nothing is drawn
+        m_busError = tr("This display has no centre key (--centre-key FILE): it cannot check what the stations send, "
+                        "so it shows nothing.");
+        m_view->setProblem(m_busError);
+        return;
+    }
     QString error;
     m_bus = centre::Bus::open(o, &error);
     if (!m_bus) {
@@ -38,6 +45,7 @@ DisplayWindow::DisplayWindow(const QString& station, DisplayView::Screen screen,
     centre::Announce a;
     a.node = "display:" + station.toStdString() + ":" + kSides[int(screen)] + "@" +
              QSysInfo::machineHostName().toStdString() + ":" + std::to_string(QCoreApplication::applicationPid());
+    if (a.node.size() > centre::limits::kName) a.node = a.node.substr(a.node.size() - centre::limits::kName);
     a.role = "display";
     a.host = QSysInfo::machineHostName().toStdString();
     a.pid = static_cast<int>(QCoreApplication::applicationPid());

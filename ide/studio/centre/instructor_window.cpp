@@ -126,9 +126,10 @@ InstructorWindow::InstructorWindow(const centre::BusOptions& bus, const QString&
     // the network
     centre::BusOptions o = bus;
     o.reads = centre::TopicAnnounce | centre::TopicState | centre::TopicEvent | centre::TopicReply;
+    o.key = m_key;  // checks what the stations say: without it, nothing is shown
     // its name: the one given; with DDS Security instructor@HOST, like `padrob instructor`
-    // (its identity in the PKI); else one name per window, as a station refuses a command
-    // whose nonce is not above the last one it took from that name
+    // (its identity in the PKI); else one name per window, so that the stations' logs tell
+    // two windows apart
     if (o.node.isEmpty()) {
         o.node = QStringLiteral("instructor@") + QSysInfo::machineHostName();
         if (o.securityDir.isEmpty()) o.node += QLatin1Char(':') + QString::number(QCoreApplication::applicationPid());
@@ -372,11 +373,15 @@ void InstructorWindow::retranslate()
         keyText = tr("Cannot join the training centre's network: %1").arg(m_busError);
         m_view->setProblem(keyText);
     } else if (m_key.isSet()) {
-        keyText = tr("Centre key %1: commands to the stations are signed with it.").arg(m_key.fingerprint());
+        keyText = tr("Centre key %1: commands are signed with it, and what the stations say is checked against it.")
+                      .arg(m_key.fingerprint());
     } else if (!m_keyProblem.isEmpty()) {
-        keyText = tr("Watching only: the centre's key cannot be used (%1).").arg(m_keyProblem);
+        keyText = tr("The centre's key cannot be used (%1): what the stations say cannot be checked, so none of it "
+                     "is shown, and no command can be sent.")
+                      .arg(m_keyProblem);
     } else {
-        keyText = tr("Watching only: without the centre's key (--centre-key FILE) no commands can be sent.");
+        keyText = tr("Without the centre's key (--centre-key FILE) what the stations say cannot be checked, so none "
+                     "of it is shown, and no command can be sent.");
     }
     m_keyLabel->setText(keyText);
     m_keyLabel->setStyleSheet(m_key.isSet() && m_busError.isEmpty() ? QString() : QStringLiteral("color: #b3261e;"));
@@ -418,7 +423,9 @@ QString InstructorWindow::refusalText(const std::string& code)
     if (code == "bad-signature") return tr("the command was not signed with the key this station has.");
     if (code == "stale")
         return tr("the command was too old when it arrived: check that the computers' clocks agree.");
-    if (code == "replay") return tr("the station has already taken a newer command from this instructor.");
+    if (code == "replay") return tr("the station has already taken this very command (a replay).");
+    if (code == "too-long") return tr("a field of the command is longer than the centre allows.");
+    if (code == "busy") return tr("the station has taken too many commands in the last 30 seconds; try again shortly.");
     if (code == "no-key") return tr("the station has no centre key and takes no commands.");
     if (code == "not-running") return tr("no attempt is running on the station.");
     if (code == "not-paused") return tr("the attempt is not paused.");
@@ -434,7 +441,7 @@ void InstructorWindow::sendCommand(const QString& kind, const QString& arg, cons
     const std::uint64_t nonce =
         m_node->send(m_selected, kind.toStdString(), arg.toStdString(), arg2.toStdString(), value);
     if (nonce == 0) {
-        showOutcome({Outcome::What::Unsent, m_selected, kind.toStdString(), {}});
+        showOutcome({Outcome::What::Unsent, m_selected, kind.toStdString(), m_bus->lastError().toStdString()});
         return;
     }
     m_pending.push_back(Pending{nonce, m_selected, kind.toStdString(), centreClock()});
@@ -452,7 +459,8 @@ void InstructorWindow::showOutcome(Outcome outcome)
     case Outcome::What::None: break;
     case Outcome::What::Sent: text = tr("%1: sent, waiting for the station…").arg(what); break;
     case Outcome::What::Unsent:
-        text = tr("%1: could not be sent.").arg(what);
+        text = o.code.empty() ? tr("%1: could not be sent.").arg(what)
+                              : tr("%1: could not be sent (%2).").arg(what, QString::fromStdString(o.code));
         bad = true;
         break;
     case Outcome::What::Done: text = tr("%1: done.").arg(what); break;

@@ -101,6 +101,7 @@ TrainStation::TrainStation(Host* host, TrainStationOptions options, QObject* par
     BusOptions net = m_o.network;
     net.reads = TopicCommand;
     net.node = m_o.name;  // with DDS Security, its identity in the PKI (DIR/nodes/NAME)
+    if (m_hasKey) net.key = key;  // signs what the station says (without it, no one believes it)
     QString busError;
     m_bus = Bus::open(net, &busError);
     if (!m_bus) {
@@ -254,7 +255,7 @@ State TrainStation::buildState()
     s.commands.reserve(std::size_t(snap.u.size()));
     for (Eigen::Index i = 0; i < snap.u.size(); ++i) s.commands.push_back(float(snap.u[i]));
     s.tutorial = t.spec.id;
-    s.operatorCode = p.attempt->operatorCode;
+    s.operatorCode = clip(p.attempt->operatorCode, limits::kOperatorCode);  // as typed at the station
     const trainer::SessionProgress& progress = f.progress;
     s.attemptTime = progress.t;
     s.goal = progress.goal;
@@ -273,6 +274,8 @@ State TrainStation::buildState()
         s.faults += (s.faults.empty() ? "" : ",") + std::string(trainer::Fault::key(fault.kind)) +
                     (fault.drive.empty() ? "" : ":" + fault.drive);
     }
+    s.faults = clip(s.faults, limits::kText);
+    s.endReason = clip(s.endReason, limits::kField);
     return s;
 }
 
@@ -293,8 +296,8 @@ void TrainStation::publishEvents()
         out.t = e.t;
         out.tutorial = m_attempt->tutorial->spec.id;
         out.kind = trainer::TutorialEvent::key(e.kind);
-        out.text = e.text(m_attempt->tutorial.get(), lang).toStdString();
-        out.detail = e.detail;
+        out.text = clip(e.text(m_attempt->tutorial.get(), lang).toStdString(), limits::kText);
+        out.detail = clip(e.detail, limits::kField);
         out.value = e.value;
         out.penalty = e.penalty;
         m_bus->publish(out);
@@ -309,7 +312,7 @@ void TrainStation::reply(const Command& c, bool accepted, const std::string& mes
     r.sender = c.sender;
     r.nonce = c.nonce;
     r.accepted = accepted;
-    r.message = message;
+    r.message = clip(message, limits::kText);
     m_bus->reply(r);
 }
 
