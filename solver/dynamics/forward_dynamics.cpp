@@ -68,23 +68,19 @@ void forwardDynamics(const Model& model, const State& state, Data& data)
 
 namespace {
 
-/// Body i's centre of mass in the world at the pose data.X_wb[i].
-Vector3d worldCom(const Model& model, const Data& data, int i)
-{
-    const Eigen::Isometry3d& X = data.X_wb[i];
-    return multiply3(X.linear(), model.com[i]) + X.translation();
-}
-
 /// Body i's spatial inertia about the world origin at the pose data.X_wb[i] (into
-/// data.Ib[i]).
+/// data.Ib[i]) and its centre of mass in the world (into data.com[i], which the bias
+/// forces read: found once per pose, not again there).
 void bodyInertia(const Model& model, Data& data, int i)
 {
     const Eigen::Isometry3d& X = data.X_wb[i];
+    Vector3d& com = data.com[i];
+    com = multiply3(X.linear(), model.com[i]) + X.translation();
     Matrix3d ri;
     multiply3(X.linear(), model.inertia[i], ri);
     RigidInertia& I = data.Ib[i];
     multiply3(ri, X.linear().transpose(), I.Ibar);  // about the centre of mass, world axes
-    rigidInertiaAt(model.mass[i], worldCom(model, data, i), I.Ibar, I);
+    rigidInertiaAt(model.mass[i], com, I.Ibar, I);
 }
 
 /// Pass 1: body inertias and bias forces about the world origin; per joint its drive
@@ -101,7 +97,7 @@ int bodyTerms(const Model& model, const State& state, Data& data, bool keepInert
     // bias forces about the world origin; known θ̈ or τ per joint
     for (int i = 0; i < nb; ++i) {
         const Vector3d o = data.X_wb[i].translation();
-        const Vector3d com = worldCom(model, data, i);
+        const Vector3d& com = data.com[i];  // (bodyInertia's, at these positions)
 
         // p = v ×* I v − fext − gravity (fext is about the body origin o)
         Vector6d& p = data.pb[i];
@@ -113,7 +109,7 @@ int bodyTerms(const Model& model, const State& state, Data& data, bool keepInert
         p.tail<3>() -= fo + fg;
 
         // the drive's force along θ; known acceleration or known force
-        const CoordinateMap map = model.coordinateMap(i, state.q[i]);
+        const CoordinateMap map = coordinateMapAt(model, data, i, state.q[i]);
         data.dq[i] = map.dq;
         data.driveForce[i] = driveForceLaw(model, state, i, map);
         data.tauDrive[i] = data.driveForce[i] * map.dq;
