@@ -31,8 +31,9 @@ double flooredInertia(const Data& data, int i, double D)
 }
 
 /// parent += IA − U Uᵀ/D: the articulated inertia a free joint passes to its parent
-/// (RBDA table 7.1), column by column (Eigen's outer product is a call at -O2).
-void passArticulatedInertia(Matrix6d& parent, const Matrix6d& IA, const Vector6d& U, double D)
+/// (RBDA table 7.1), column by column (Eigen's outer product is a call at -O2; and
+/// always inlined: GCC left this as a call at -O3 too).
+PADROB_SPATIAL_INLINE void passArticulatedInertia(Matrix6d& parent, const Matrix6d& IA, const Vector6d& U, double D)
 {
     const Vector6d Ud = U / D;
     for (int k = 0; k < 6; ++k) {
