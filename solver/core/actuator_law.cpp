@@ -78,7 +78,12 @@ double ActuatorLengthLaw::lengthSecondDerivative(double angle) const
 void ActuatorLengthLaw::lengthDerivatives(double angle, double& len, double& rate,
                                           double& secondRate) const
 {
-    const double c = std::cos(angle), s = std::sin(angle);
+    lengthDerivativesAt(std::cos(angle), std::sin(angle), len, rate, secondRate);
+}
+
+void ActuatorLengthLaw::lengthDerivativesAt(double c, double s, double& len, double& rate,
+                                            double& secondRate) const
+{
     const double l2 = c0 + c1 * c + c2 * s;
     if (!(l2 > 0)) {
         len = rate = secondRate = 0;

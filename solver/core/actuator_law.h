@@ -36,6 +36,9 @@ struct ActuatorLengthLaw {
     /// L [m], dL/dθ [m/rad] and d²L/dθ² [m/rad^2] at once (one sine and cosine, one
     /// square root), for the step loop; the same values as the three functions above.
     void lengthDerivatives(double angle, double& length, double& rate, double& secondRate) const;
+    /// The same from cos θ and sin θ already found (the kinematics turn the joint by θ).
+    void lengthDerivativesAt(double cosAngle, double sinAngle, double& length, double& rate,
+                             double& secondRate) const;
     /// dθ/dL = 1 / (dL/dθ) [rad/m]; infinite at a dead point.
     double angleRate(double angle) const;
     /// Angle whose length is `length` [m], on the branch whose angle (wrapped to

@@ -46,6 +46,7 @@ Data::Data(const Model& model)
     // scratch
     c.assign(nb, zero6);
     Ib.assign(nb, RigidInertia{});
+    com.assign(nb, Eigen::Vector3d::Zero());
     pb.assign(nb, zero6);
     IA.assign(nb, Matrix6d::Zero());
     pA.assign(nb, zero6);
@@ -57,6 +58,7 @@ Data::Data(const Model& model)
     tauDrive = Eigen::VectorXd::Zero(n);
     dq = Eigen::VectorXd::Ones(n);
     prescribed.assign(nb, 0);
+    coordinates.assign(nb, CoordinateCache{});
 }
 
 }  // namespace solver

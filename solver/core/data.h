@@ -13,6 +13,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <cmath>
+#include <limits>
 #include <vector>
 
 namespace solver {
@@ -111,6 +113,7 @@ struct Data {
     // all about the world origin in world axes
     std::vector<Vector6d> c;        ///< velocity-product acceleration c_i = v_i ×m S_i θ̇_i
     std::vector<RigidInertia> Ib;   ///< body spatial inertia
+    std::vector<Eigen::Vector3d> com;  ///< body centre of mass in the world, at the pose Ib was found at
     std::vector<Vector6d> pb;       ///< body bias force v ×* I v − fext − gravity
     std::vector<Matrix6d> IA;       ///< articulated-body inertia
     std::vector<Vector6d> pA;       ///< articulated-body bias force
@@ -122,6 +125,17 @@ struct Data {
     Eigen::VectorXd tauDrive;       ///< the drive's generalized force along θ (force-driven joints)
     Eigen::VectorXd dq;             ///< dq/dθ: the modeler's coordinate's rate per unit θ̇ (T 1: dL/dθ)
     std::vector<char> prescribed;   ///< per joint: acceleration known in this evaluation
+    /// Per T 1 joint: its angle's cosine and sine and Model::coordinateMap at the angle
+    /// `theta` (NaN: none yet) for the length law `law`, so that the kinematics, the
+    /// circuits and the dynamics of one evaluation find them once: one sine and cosine
+    /// and one root (actuatorCoordinateAt).
+    struct CoordinateCache {
+        double theta = std::numeric_limits<double>::quiet_NaN();
+        ActuatorLengthLaw law;
+        double cos = 1, sin = 0;
+        CoordinateMap map;
+    };
+    std::vector<CoordinateCache> coordinates;
     // constrained dynamics (forward_dynamics.cpp, constraints.cpp); sized on first use
     Eigen::MatrixXd M;              ///< joint-space mass matrix (nb × nb)
     Eigen::VectorXd bias;           ///< C: generalized force for θ̈ = 0 (gravity, fext, velocity terms)
@@ -133,5 +147,29 @@ struct Data {
     std::vector<Vector6d> W1, W2;   ///< per row: its load on body 1 and body 2 per unit λ
     std::vector<int> rowConstraint; ///< per row: its constraint's index in `constraints`
 };
+
+/// T 1 joint j's cos θ, sin θ and model.coordinateMap(j, θ), kept in `data` for the
+/// next call at the same angle with the same length law (a Data outlives no model's
+/// geometry by mistake: the law's coefficients are compared too).
+inline const Data::CoordinateCache& actuatorCoordinateAt(const Model& model, Data& data, int j, double theta)
+{
+    Data::CoordinateCache& k = data.coordinates[static_cast<std::size_t>(j)];
+    const ActuatorLengthLaw& law = model.lengthLaw[j];
+    if (!(k.theta == theta && k.law.c0 == law.c0 && k.law.c1 == law.c1 && k.law.c2 == law.c2)) {
+        k.law = law;
+        k.cos = std::cos(theta);
+        k.sin = std::sin(theta);
+        law.lengthDerivativesAt(k.cos, k.sin, k.map.q, k.map.dq, k.map.ddq);
+        k.theta = theta;
+    }
+    return k;
+}
+
+/// model.coordinateMap(j, theta), for a T 1 joint kept in `data` (actuatorCoordinateAt).
+inline CoordinateMap coordinateMapAt(const Model& model, Data& data, int j, double theta)
+{
+    if (model.jointType[j] != JointType::Actuator) return model.coordinateMap(j, theta);
+    return actuatorCoordinateAt(model, data, j, theta).map;
+}
 
 }  // namespace solver

@@ -6,6 +6,7 @@
 
 #include "solver/core/kinds.h"
 
+#include <algorithm>
 #include <string>
 
 namespace solver {
@@ -68,8 +69,17 @@ struct CompiledCircuit {
     double p0A = 0, p0B = 0;      ///< P0 [Pa]; without it the Simulation finds the holding pressures
 
     /// Chamber volumes at the modeler's coordinate q [m^3] (a cylinder's never below its dead volume).
-    double volumeA(double q) const;
-    double volumeB(double q) const;
+    /// (Inline, as the other laws the circuits evaluate at every stage: hydraulics/*.h.)
+    double volumeA(double q) const
+    {
+        if (kind == ActuatorKind::Motor) return deadA;
+        return deadA + areaA * std::max(0.0, q - lower);
+    }
+    double volumeB(double q) const
+    {
+        if (kind == ActuatorKind::Motor) return deadB;
+        return deadB + areaB * std::max(0.0, upper - q);
+    }
 };
 
 }  // namespace solver

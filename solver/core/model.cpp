@@ -43,19 +43,3 @@ CoordinateMap Model::coordinateMap(int i, double theta) const
 }
 
 }  // namespace solver
-
-namespace solver {
-
-double CompiledCircuit::volumeA(double q) const
-{
-    if (kind == ActuatorKind::Motor) return deadA;
-    return deadA + areaA * std::max(0.0, q - lower);
-}
-
-double CompiledCircuit::volumeB(double q) const
-{
-    if (kind == ActuatorKind::Motor) return deadB;
-    return deadB + areaB * std::max(0.0, upper - q);
-}
-
-}  // namespace solver

@@ -41,11 +41,20 @@ PADROB_SPATIAL_INLINE Eigen::Vector3d multiply3(const A& a, const Eigen::Vector3
     return a.col(0) * v(0) + a.col(1) * v(1) + a.col(2) * v(2);
 }
 
-/// a v for a 6×6 matrix, likewise.
+/// a v for a 6×6 matrix, likewise: column by column on the stored doubles (Eigen's
+/// assignment of the six-term sum stayed a call at -O2), each entry summed in the
+/// same order, a(r,0) v(0) + a(r,1) v(1) + … + a(r,5) v(5).
 PADROB_SPATIAL_INLINE Vector6d multiply6(const Matrix6d& a, const Vector6d& v)
 {
-    return a.col(0) * v(0) + a.col(1) * v(1) + a.col(2) * v(2) + a.col(3) * v(3) + a.col(4) * v(4) +
-           a.col(5) * v(5);
+    const double* m = a.data();  // column-major
+    Vector6d out;
+    double* o = out.data();
+    for (int r = 0; r < 6; ++r) o[r] = m[r] * v(0);
+    for (int k = 1; k < 6; ++k) {
+        const double vk = v(k);
+        for (int r = 0; r < 6; ++r) o[r] += m[6 * k + r] * vk;
+    }
+    return out;
 }
 
 /// Writes [v]× (the matrix with [v]× w = v × w) into the 3×3 block `s`, in place: a

@@ -31,8 +31,9 @@ double flooredInertia(const Data& data, int i, double D)
 }
 
 /// parent += IA − U Uᵀ/D: the articulated inertia a free joint passes to its parent
-/// (RBDA table 7.1), column by column (Eigen's outer product is a call at -O2).
-void passArticulatedInertia(Matrix6d& parent, const Matrix6d& IA, const Vector6d& U, double D)
+/// (RBDA table 7.1), column by column (Eigen's outer product is a call at -O2; and
+/// always inlined: GCC left this as a call at -O3 too).
+PADROB_SPATIAL_INLINE void passArticulatedInertia(Matrix6d& parent, const Matrix6d& IA, const Vector6d& U, double D)
 {
     const Vector6d Ud = U / D;
     for (int k = 0; k < 6; ++k) {
@@ -68,23 +69,19 @@ void forwardDynamics(const Model& model, const State& state, Data& data)
 
 namespace {
 
-/// Body i's centre of mass in the world at the pose data.X_wb[i].
-Vector3d worldCom(const Model& model, const Data& data, int i)
-{
-    const Eigen::Isometry3d& X = data.X_wb[i];
-    return multiply3(X.linear(), model.com[i]) + X.translation();
-}
-
 /// Body i's spatial inertia about the world origin at the pose data.X_wb[i] (into
-/// data.Ib[i]).
+/// data.Ib[i]) and its centre of mass in the world (into data.com[i], which the bias
+/// forces read: found once per pose, not again there).
 void bodyInertia(const Model& model, Data& data, int i)
 {
     const Eigen::Isometry3d& X = data.X_wb[i];
+    Vector3d& com = data.com[i];
+    com = multiply3(X.linear(), model.com[i]) + X.translation();
     Matrix3d ri;
     multiply3(X.linear(), model.inertia[i], ri);
     RigidInertia& I = data.Ib[i];
     multiply3(ri, X.linear().transpose(), I.Ibar);  // about the centre of mass, world axes
-    rigidInertiaAt(model.mass[i], worldCom(model, data, i), I.Ibar, I);
+    rigidInertiaAt(model.mass[i], com, I.Ibar, I);
 }
 
 /// Pass 1: body inertias and bias forces about the world origin; per joint its drive
@@ -101,7 +98,7 @@ int bodyTerms(const Model& model, const State& state, Data& data, bool keepInert
     // bias forces about the world origin; known θ̈ or τ per joint
     for (int i = 0; i < nb; ++i) {
         const Vector3d o = data.X_wb[i].translation();
-        const Vector3d com = worldCom(model, data, i);
+        const Vector3d& com = data.com[i];  // (bodyInertia's, at these positions)
 
         // p = v ×* I v − fext − gravity (fext is about the body origin o)
         Vector6d& p = data.pb[i];
@@ -113,7 +110,7 @@ int bodyTerms(const Model& model, const State& state, Data& data, bool keepInert
         p.tail<3>() -= fo + fg;
 
         // the drive's force along θ; known acceleration or known force
-        const CoordinateMap map = model.coordinateMap(i, state.q[i]);
+        const CoordinateMap map = coordinateMapAt(model, data, i, state.q[i]);
         data.dq[i] = map.dq;
         data.driveForce[i] = driveForceLaw(model, state, i, map);
         data.tauDrive[i] = data.driveForce[i] * map.dq;

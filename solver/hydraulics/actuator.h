@@ -9,10 +9,15 @@
 
 #include "solver/core/fluid_power.h"
 
+#include <algorithm>
+
 namespace solver::hydraulics {
 
 /// The force (or torque) along +q [N or N m] at pressures pA, pB (taken ≥ 0) and rate qd.
-double actuatorForce(const CompiledCircuit& c, double pA, double pB, double qd);
+inline double actuatorForce(const CompiledCircuit& c, double pA, double pB, double qd)
+{
+    return std::max(0.0, pA) * c.areaA - std::max(0.0, pB) * c.areaB - c.friction * qd;
+}
 
 /// A chamber at 0 Pa is said to cavitate while the oil would leave it faster than this
 /// fraction of its valve's nominal flow (and than kCavitationFlow): at 0 the chamber is
@@ -28,7 +33,25 @@ struct ChamberRates {
 /// The chambers' pressure rates for the net flows into them (valve minus relief)
 /// qA, qB [m^3/s] at the modeler's rate qd, with stiffA = β/V_A and stiffB = β/V_B
 /// [Pa/m^3] the oil's stiffness in each chamber at the current volumes.
-ChamberRates chamberRates(const CompiledCircuit& c, double stiffA, double stiffB, double qd, double pA, double pB,
-                          double qA, double qB);
+inline ChamberRates chamberRates(const CompiledCircuit& c, double stiffA, double stiffB, double qd, double pA,
+                                 double pB, double qA, double qB)
+{
+    ChamberRates r;
+    r.dpA = stiffA * (qA - c.areaA * qd);
+    r.dpB = stiffB * (qB + c.areaB * qd);
+    // (reported as cavitation only when the oil would leave faster than 5 % of the
+    // valve's nominal flow: a chamber at tank pressure at rest, or crept on by a
+    // neighbour's motion, is not cavitating)
+    const double outflow = std::max(kCavitationFlow, kCavitationFraction * c.qn);
+    if (pA <= 0 && r.dpA < 0) {
+        if (qA - c.areaA * qd < -outflow) r.cavitation |= 1;
+        r.dpA = 0;
+    }
+    if (pB <= 0 && r.dpB < 0) {
+        if (qB + c.areaB * qd < -outflow) r.cavitation |= 2;
+        r.dpB = 0;
+    }
+    return r;
+}
 
 }  // namespace solver::hydraulics

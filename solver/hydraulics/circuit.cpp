@@ -32,7 +32,7 @@ void evaluateHydraulics(const Model& model, const State& state, Data& data)
         const double pS = data.supplyPressure[k.pump];
         const SectionFlows f = sectionFlows(k, x, pS, pA, pB, pLam, data.pumpShare[k.pump]);
         const double rA = reliefFlow(k, pA, pump.pmax), rB = reliefFlow(k, pB, pump.pmax);
-        const CoordinateMap map = model.coordinateMap(j, state.q[j]);
+        const CoordinateMap map = coordinateMapAt(model, data, j, state.q[j]);
         const double q = map.q;
         const double qd = map.dq * state.qd[j];
         const double vA = k.volumeA(q), vB = k.volumeB(q);

@@ -59,8 +59,18 @@ void forwardKinematics(const Model& model, const Eigen::VectorXd& q, const Eigen
             s.head<3>().setZero();
             s.tail<3>() = sigma * r;
         } else {
-            // turn about the frame's x axis (A): R ← R · Rx(σθ)
-            const double cs = std::cos(th), sn = std::sin(th);
+            // turn about the frame's x axis (A): R ← R · Rx(σθ). A T 1 joint's cos θ and
+            // sin θ are its length law's too (found once: actuatorCoordinateAt); σ = ±1,
+            // and cos(−θ) = cos θ, sin(−θ) = −sin θ exactly
+            double cs, sn;
+            if (model.jointType[i] == JointType::Actuator) {
+                const Data::CoordinateCache& k = actuatorCoordinateAt(model, data, i, q[i]);
+                cs = k.cos;
+                sn = sigma * k.sin;
+            } else {
+                cs = std::cos(th);
+                sn = std::sin(th);
+            }
             const Vector3d r = R.col(1), t = R.col(2);
             R.col(1) = cs * r + sn * t;
             R.col(2) = cs * t - sn * r;

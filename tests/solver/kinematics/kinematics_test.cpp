@@ -9,6 +9,7 @@
 #include <cmath>
 #include <functional>
 #include <random>
+#include <string>
 
 namespace solver {
 namespace {
@@ -220,6 +221,36 @@ TEST(Kinematics, DoublePendulumEnergyAtItsInitialState)
     Data d(*model);
     forwardKinematics(*model, makeState(*model), d);
     EXPECT_NEAR(mechanicalEnergy(*model, d) + 3 * 9.81, 0.0490347, 1e-7);
+}
+
+// ------------------------------------------------------------------ T 1 coordinates kept per evaluation
+
+TEST(Kinematics, AKeptT1CoordinateIsNeverAnotherModelsLengthLaw)
+{
+    // Data::coordinates keeps a T 1 joint's sine, cosine and length-law values for the
+    // angle last asked for (the kinematics, the circuits and the dynamics share them):
+    // the same angle asked with a model whose cylinder is mounted 1 mm elsewhere (another
+    // length law) is answered from that model's law, not from what was kept
+    const auto a = test::compileText(test::kCylinderArmModel);
+    std::string movedText = test::kCylinderArmModel;
+    const std::string mount = "CL1 -0.4 0 0 CL2 -0.2 0 0.14\n";
+    ASSERT_NE(movedText.find(mount), std::string::npos);
+    movedText.replace(movedText.find(mount), mount.size(), "CL1 -0.4 0 0 CL2 -0.2 0 0.141\n");
+    const auto b = test::compileText(movedText);
+    ASSERT_TRUE(a && b);
+    const int j = a->jointIndex(2);
+    ASSERT_EQ(a->jointType[j], JointType::Actuator);
+    const double theta = 0.1;
+    ASSERT_NE(a->coordinateMap(j, theta).q, b->coordinateMap(j, theta).q);
+
+    Data data(*a);
+    for (const Model* m : {a.get(), b.get(), a.get()}) {
+        const CoordinateMap kept = coordinateMapAt(*m, data, j, theta);
+        const CoordinateMap fresh = m->coordinateMap(j, theta);
+        EXPECT_EQ(kept.q, fresh.q);
+        EXPECT_EQ(kept.dq, fresh.dq);
+        EXPECT_EQ(kept.ddq, fresh.ddq);
+    }
 }
 
 }  // namespace
