@@ -47,8 +47,11 @@ packages=(
   libssl-dev
   # tests
   libgtest-dev libgmock-dev libbenchmark-dev locales
-  # Qt's own texts in Spanish (the buttons of standard dialogs, context menus)
+  # Qt's own texts in Spanish (the buttons of standard dialogs, context menus, --help)
   qt6-translations-l10n
+  # the Debian package (scripts/test-package.sh): cpack's DEB generator reads the
+  # binaries' library dependencies with dpkg-shlibdeps (dpkg-dev) and file
+  dpkg-dev file
 )
 
 missing=()

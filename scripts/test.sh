@@ -9,6 +9,8 @@
 #      The `tsan` presets build only that test and what it links (solver, studio_model,
 #      studio_sim), run it on Qt's offscreen platform, and suppress only Qt's own
 #      reports (Qt is not instrumented; tests/studio/tsan.supp).
+# After the default tests, scripts/test-package.sh builds the .deb and runs the installed
+# programs from a temporary root.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -19,19 +21,10 @@ cmake --build --preset default -j "$jobs"
 
 # the GUI tests need an X server (the 3D view's OpenGL window does not work with Qt's `offscreen`
 # platform): without a display, start a virtual one for the run
-xvfb_pid=""
-if [ -z "${DISPLAY:-}" ]; then
-  for n in $(seq 90 120); do
-    [ -e "/tmp/.X11-unix/X$n" ] || [ -e "/tmp/.X$n-lock" ] && continue
-    Xvfb ":$n" -screen 0 1920x1080x24 -nolisten tcp >/dev/null 2>&1 &
-    xvfb_pid=$!
-    export DISPLAY=":$n"
-    break
-  done
-  trap '[ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null || true' EXIT
-  for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X${DISPLAY#:}" ] && break; sleep 0.1; done
-fi
+. scripts/start-xvfb.sh
 ctest --preset default -j "$jobs"
+# the Debian package, installed into a temporary root and run from there (docs/packaging.md)
+scripts/test-package.sh build/default
 
 cmake --preset asan >/dev/null
 cmake --build --preset asan -j "$jobs"

@@ -7,6 +7,7 @@
 #include "ide/cli/cli_io.h"
 #include "ide/cli/json_writer.h"
 #include "ide/i18n/language.h"
+#include "ide/paths/paths.h"
 #include "trainer/centre/bus.h"
 #include "trainer/centre/instructor_node.h"
 #include "trainer/centre/pki.h"
@@ -717,7 +718,7 @@ int runCentreBench(std::vector<std::string> args)
     int stations = 16;
     double seconds = 10, warmup = 3;
     bool json = false;
-    std::string tutorial = "resources/tutorials/t0_reach.tut";
+    std::string tutorial = (paths::tutorialsDir() + "/t0_reach.tut").toStdString();  // the bundled T0
     for (std::size_t i = 1; i < args.size(); ++i) {
         const std::string& a = args[i];
         const double v = i + 1 < args.size() ? toNumber(args[i + 1]).value_or(std::nan("")) : std::nan("");
@@ -738,7 +739,7 @@ int runCentreBench(std::vector<std::string> args)
         }
     }
     if (!QFileInfo::exists(QString::fromStdString(tutorial))) {
-        printErr("padrob centre: " + fill(trStd("padrob", "no tutorial file %1 (run from Padrob's folder, or give --tutorial FILE)"), {tutorial}) + "\n");
+        printErr("padrob centre: " + fill(trStd("padrob", "no tutorial file %1 (give --tutorial FILE)"), {tutorial}) + "\n");
         return kExitUsage;
     }
     tutorial = QFileInfo(QString::fromStdString(tutorial)).absoluteFilePath().toStdString();

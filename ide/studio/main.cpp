@@ -1,5 +1,8 @@
 // padrob-studio [--scene FILE] [--lang es|en] [--lighting auto|pixel|vertex] [MODEL]: the
 // application (see app/main_window.h).
+// padrob-studio --screenshot FILE [MODEL]: the normal start, the window saved to FILE once
+// the model is drawn, then quit (app/frame_bench.h).
+// padrob-studio --help | --version: the text only, without a display (no QApplication).
 // padrob-studio --trainer [--operator ID] [--lang es|en]: kiosk mode, only the Train
 // workspace, full screen (Ctrl+Shift+F12 and the trainer's PIN leave it).
 // padrob-studio --bench-frames N [--scene FILE] [--views 1|3] [--json] [MODEL]: how
@@ -31,13 +34,33 @@
 
 #include <clocale>
 #include <cstdio>
+#include <memory>
+#include <string_view>
+
+namespace {
+
+/// True when the command line asks for a text only (--help, --version): then the
+/// application is a QCoreApplication, which needs no display.
+bool asksForTextOnly(int argc, char** argv)
+{
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view a = argv[i];
+        // (--help-all is no option here: its error needs no display either)
+        if (a == "-h" || a == "-?" || a == "--help" || a == "--help-all" || a == "-v" || a == "--version") return true;
+    }
+    return false;
+}
+
+}  // namespace
 
 int main(int argc, char** argv)
 {
     QElapsedTimer sinceMain;  // the bench's start-up time is measured from here too
     sinceMain.start();
     QSurfaceFormat::setDefaultFormat(studio::Viewport::surfaceFormat());  // OpenGL 3.3 core, before the app
-    QApplication app(argc, argv);
+    std::unique_ptr<QCoreApplication> app;
+    if (asksForTextOnly(argc, argv)) app = std::make_unique<QCoreApplication>(argc, argv);
+    else app = std::make_unique<QApplication>(argc, argv);
     // Qt set the C library's locale from the system's (setlocale(LC_ALL, "")): keep its
     // numbers in C, so that whatever formats or reads a number with the C library (the
     // solver's messages, libraries reading files) uses '.' under es_CL too. What a person
@@ -62,12 +85,17 @@ int main(int argc, char** argv)
     parser.setApplicationDescription(QCoreApplication::translate(
         "studio::main", "Padrob Studio: write a machine's model, simulate it in real time and drive it from the "
                         "operator's devices."));
-    parser.addHelpOption();
-    parser.addVersionOption();
+    // --help and --version of our own: Qt's descriptions of them are not all in its
+    // Spanish catalogue (Debian 12's qtbase_es), and --help must read entirely in Spanish
+    const QCommandLineOption help(QStringList{QStringLiteral("h"), QStringLiteral("help"), QStringLiteral("?")},
+                                  QCoreApplication::translate("studio::main", "Show this help and quit."));
+    const QCommandLineOption version(QStringList{QStringLiteral("v"), QStringLiteral("version")},
+                                     QCoreApplication::translate("studio::main", "Show the version and quit."));
+    parser.addOptions({help, version});
     parser.addPositionalArgument(
-        QStringLiteral("model"),
+        QCoreApplication::translate("studio::main", "model"),
         QCoreApplication::translate("studio::main", "The model file to open (default: the liner manipulator)."),
-        QStringLiteral("[MODEL]"));
+        QCoreApplication::translate("studio::main", "[MODEL]"));
     const QCommandLineOption scene(
         QStringLiteral("scene"),
         QCoreApplication::translate("studio::main",
@@ -110,7 +138,12 @@ int main(int argc, char** argv)
                                     "at every pixel on a GPU. Without it, the choice made in Settings > Lighting "
                                     "(auto at first; --bench-frames: auto)."),
         QStringLiteral("auto|pixel|vertex"));
-    parser.addOptions({scene, bench, views, json, trainerMode, operatorId, lang, lighting});
+    const QCommandLineOption screenshot(
+        QStringLiteral("screenshot"),
+        QCoreApplication::translate("studio::main", "Start as usual, save the window to FILE (PNG) once the model is "
+                                                    "drawn, print the model's file, and quit."),
+        QCoreApplication::translate("studio::main", "FILE"));
+    parser.addOptions({scene, bench, views, json, trainerMode, operatorId, lang, lighting, screenshot});
 #ifdef PADROB_HAVE_DDS
     // the training centre (docs/training-centre.md)
     const QCommandLineOption displayOf(
@@ -173,7 +206,16 @@ int main(int argc, char** argv)
     parser.addOptions({displayOf, viewSide, instructor, centreKey, domain, loopback, netInterface, peer, stationName,
                        security, nodeName});
 #endif
-    parser.process(app);
+    parser.process(*app);  // a wrong option ends here
+    if (parser.isSet(help)) parser.showHelp(0);
+    if (parser.isSet(version)) parser.showVersion();
+    if (!qobject_cast<QApplication*>(app.get())) {
+        // "--help" was an option's value (--scene --help): the windows after all
+        app.reset();
+        app = std::make_unique<QApplication>(argc, argv);
+        std::setlocale(LC_NUMERIC, "C");
+        i18n::install(i18n::current());
+    }
     if (parser.isSet(lang) && parser.value(lang) != "es" && parser.value(lang) != "en") {
         std::fputs(qPrintable(QCoreApplication::translate("studio::main", "--lang must be es or en.") +
                               QLatin1Char('\n')),
@@ -274,6 +316,7 @@ int main(int argc, char** argv)
     if (parser.isSet(operatorId)) window.trainPage()->setOperator(parser.value(operatorId));
     if (parser.isSet(trainerMode)) window.setKioskMode(true);  // shows it full screen
     else window.show();
+    if (parser.isSet(screenshot)) return studio::saveScreenshot(window, parser.value(screenshot));
 #ifdef PADROB_HAVE_DDS
     // the Train workspace as a station of the centre (destroyed before the window: it withdraws)
     std::unique_ptr<studio::TrainStation> trainStation;

@@ -31,16 +31,16 @@ inline std::string slurp(const std::string& path)
 /// locale does not change the output the tests compare.
 inline const char* const kCLocale = "LC_ALL=C.UTF-8 LANG=C.UTF-8";
 
-/// Runs `padrob ARGS` in the source tree with the environment variables `env` ("NAME=VALUE
-/// …", LANGUAGE removed); captures stdout, stderr and the exit status.
-inline CliRun padrobWith(const std::string& env, const std::string& args)
+/// Runs `PROGRAM ARGS` in the source tree with the environment `env` (env(1)'s arguments:
+/// "NAME=VALUE …", "-u NAME"; LANGUAGE removed); captures stdout, stderr and the exit status.
+inline CliRun runWith(const std::string& program, const std::string& env, const std::string& args)
 {
     static int counter = 0;
     const auto dir = std::filesystem::temp_directory_path() / ("padrob_cli_test_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     const std::string errFile = (dir / ("err" + std::to_string(counter++))).string();
     const std::string cmd = std::string("cd '") + PADROB_SOURCE_DIR + "' && env -u LANGUAGE -u LC_MESSAGES " + env + " '" +
-                            PADROB_CLI + "' " + args + " 2>'" + errFile + "'";
+                            program + "' " + args + " 2>'" + errFile + "'";
     CliRun r;
     FILE* p = popen(cmd.c_str(), "r");
     if (!p) return r;
@@ -53,6 +53,9 @@ inline CliRun padrobWith(const std::string& env, const std::string& args)
     std::filesystem::remove(errFile);
     return r;
 }
+
+/// Runs `padrob ARGS` with the environment variables `env` (runWith).
+inline CliRun padrobWith(const std::string& env, const std::string& args) { return runWith(PADROB_CLI, env, args); }
 
 /// Runs `padrob ARGS` in the C locale (kCLocale): English messages.
 inline CliRun padrob(const std::string& args) { return padrobWith(kCLocale, args); }

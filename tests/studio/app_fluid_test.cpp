@@ -8,6 +8,7 @@
 // fluid_model_<size>_<lang>.png and fluid_train_<size>_<lang>.png.
 
 #include "tests/studio/gui_test.h"
+#include "ide/paths/paths.h"
 #include "ide/i18n/language.h"
 #include "ide/studio/app/main_window.h"
 #include "ide/studio/plots/plot_panel.h"
@@ -325,7 +326,7 @@ private slots:
         QVERIFY(panel->isVisible());
         page->stopAttempt();
         QTRY_VERIFY(page->screen() == TrainPage::Screen::Result);
-        page->setTutorialsDir(TrainPage::defaultTutorialsDir());
+        page->setTutorialsDir(paths::tutorialsDir());
         QVERIFY(w.close());
     }
 };

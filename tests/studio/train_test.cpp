@@ -16,6 +16,7 @@
 // tutorial's start, HUD and result: train_shots_test).
 
 #include "tests/studio/gui_test.h"
+#include "ide/paths/paths.h"
 #include "ide/i18n/language.h"
 #include "ide/studio/app/main_window.h"
 #include "ide/studio/train/records_view.h"
@@ -177,7 +178,7 @@ private slots:
         QVERIFY(list->item(0)->flags() & Qt::ItemIsEnabled);
         QVERIFY(!(list->item(1)->flags() & Qt::ItemIsEnabled));
         QVERIFY(!list->item(1)->toolTip().isEmpty());
-        page()->setTutorialsDir(TrainPage::defaultTutorialsDir());
+        page()->setTutorialsDir(paths::tutorialsDir());
     }
 
     void startScreenPlaysTheDemonstration()

@@ -1,5 +1,7 @@
 #include "ide/studio/app/frame_bench.h"
 
+#include "ide/paths/paths.h"
+
 #include "ide/studio/app/main_window.h"
 #include "ide/studio/sim/simulation_runner.h"
 #include "ide/studio/view/scene_file.h"
@@ -46,13 +48,6 @@ using Clock = std::chrono::steady_clock;
 constexpr int kPresses = 60;             // key presses timed for the latency
 constexpr double kSinePeriod = 8.0;      // [s] of the drives' commands
 constexpr double kSineAmplitude = 0.6;   // of the commands (u in −1 … 1)
-
-QString defaultModel()
-{
-    const QString installed = QCoreApplication::applicationDirPath() + "/../share/padrob/models";
-    const QString dir = QDir(installed).exists() ? installed : QStringLiteral(PADROB_MODELS_DIR);
-    return QDir(dir).absoluteFilePath(QStringLiteral("liner_manipulator_fluid.pad"));
-}
 
 /// Seconds since this process started (its start time in /proc/self/stat, clock ticks
 /// since boot, against CLOCK_BOOTTIME; 10 ms resolution), or −1 when unknown.
@@ -196,7 +191,7 @@ int runFrameBench(const FrameBenchOptions& o)
     // settings of its own: the user's layout, recent files and last scene stay as they are
     QCoreApplication::setApplicationName(QStringLiteral("padrob-studio-bench"));
 
-    const QString model = QFileInfo(o.modelPath.isEmpty() ? defaultModel() : o.modelPath).absoluteFilePath();
+    const QString model = QFileInfo(o.modelPath.isEmpty() ? paths::defaultModel() : o.modelPath).absoluteFilePath();
     if (!QFileInfo(model).isFile()) {
         err << QCoreApplication::translate("studio::FrameBench", "Cannot read the model %1.")
                    .arg(QDir::toNativeSeparators(model))
@@ -451,6 +446,35 @@ int runFrameBench(const FrameBenchOptions& o)
         err << QString::fromStdString(last->error) << Qt::endl;
         return 1;
     }
+    return 0;
+}
+
+int saveScreenshot(MainWindow& window, const QString& file)
+{
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+    // the first frame of the 3D view that shows the window's model
+    bool drawn = false;
+    Viewport* view = window.viewports()->viewport(0);
+    const QMetaObject::Connection first = QObject::connect(view, &Viewport::frameTimed, &window, [&](double) {
+        drawn = drawn || (window.bundle() && view->bundle() == window.bundle());
+    });
+    const bool shown = waitFor([&] { return drawn; }, 60000);
+    QObject::disconnect(first);
+    if (!shown) {
+        err << QCoreApplication::translate("studio::FrameBench", "No model was drawn (does it have errors?).")
+            << Qt::endl;
+        return 1;
+    }
+    const std::shared_ptr<const ModelBundle> bundle = window.bundle();
+    if (!window.grab().save(file)) {
+        err << QCoreApplication::translate("studio::FrameBench", "Cannot write %1.").arg(QDir::toNativeSeparators(file))
+            << Qt::endl;
+        return 1;
+    }
+    out << QCoreApplication::translate("studio::FrameBench", "%1 drawn; the window saved to %2.")
+               .arg(QDir::toNativeSeparators(bundle->filePath), QDir::toNativeSeparators(file))
+        << Qt::endl;
     return 0;
 }
 

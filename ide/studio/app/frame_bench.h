@@ -21,6 +21,8 @@
 //     60 Hz (a profile mapping the first key pair, Q / A, to the first drive);
 //  4. prints the results (text, or one JSON object: docs/performance.md lists the
 //     keys) and returns the exit code.
+// Also padrob-studio --screenshot FILE (saveScreenshot): the normal start, the window
+// saved as an image once the model is drawn, then quit (the package's test uses it).
 
 #include <QElapsedTimer>
 #include <QString>
@@ -41,5 +43,12 @@ struct FrameBenchOptions {
 /// opened or drawn or the simulation fails (said on stderr). A scene that cannot be
 /// used is reported (JSON "scene_error") and the bench goes on without it.
 int runFrameBench(const FrameBenchOptions& options);
+
+class MainWindow;
+/// padrob-studio --screenshot FILE: waits (at most 60 s) for the first frame of the 3D
+/// view that shows `window`'s model, saves the window as an image to FILE (PNG, JPEG…:
+/// by its extension), prints the model's file on stdout and returns 0;
+/// 1 when no model was drawn or FILE cannot be written (said on stderr).
+int saveScreenshot(MainWindow& window, const QString& file);
 
 }  // namespace studio

@@ -18,6 +18,7 @@
 #include "ide/studio/view/viewport.h"
 #include "ide/studio/view/viewport_layout.h"
 #include "ide/i18n/language.h"
+#include "ide/paths/paths.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -52,28 +53,6 @@ namespace studio {
 namespace {
 
 constexpr int kMaxRecent = 8;
-
-QString modelsDir()
-{
-    // next to the executable in an install, else the source tree's
-    const QString installed = QCoreApplication::applicationDirPath() + "/../share/padrob/models";
-    if (QDir(installed).exists()) return QDir(installed).canonicalPath();
-    return QStringLiteral(PADROB_MODELS_DIR);
-}
-
-QString scenesDir()
-{
-    const QString installed = QCoreApplication::applicationDirPath() + "/../share/padrob/scenes";
-    if (QDir(installed).exists()) return QDir(installed).canonicalPath();
-    return QDir(QStringLiteral(PADROB_MODELS_DIR "/../resources/scenes")).canonicalPath();
-}
-
-QString docsDir()
-{
-    const QString installed = QCoreApplication::applicationDirPath() + "/../share/padrob/docs";
-    if (QDir(installed).exists()) return QDir(installed).canonicalPath();
-    return QStringLiteral(PADROB_DOCS_DIR);
-}
 
 }  // namespace
 
@@ -377,7 +356,7 @@ void MainWindow::buildMenus()
     m_recentMenu = m.file->addMenu(QString());
     m_recentMenu->setObjectName("RecentFilesMenu");
     m.examples = m.file->addMenu(QString());
-    const QFileInfoList models = QDir(modelsDir()).entryInfoList({"*.pad"}, QDir::Files, QDir::Name);
+    const QFileInfoList models = QDir(paths::modelsDir()).entryInfoList({"*.pad"}, QDir::Files, QDir::Name);
     for (const QFileInfo& f : models) {
         m.examples->addAction(f.completeBaseName(), this, [this, path = f.absoluteFilePath()] {
             if (maybeSave()) openFile(path);
@@ -415,7 +394,7 @@ void MainWindow::buildMenus()
     m.scene = m.view->addMenu(QString());
     m.scene->setObjectName("SceneMenu");
     m.loadScene = m.scene->addAction(QString(), this, [this] {
-        const QString start = m_scenePath.isEmpty() ? scenesDir() : QFileInfo(m_scenePath).absolutePath();
+        const QString start = m_scenePath.isEmpty() ? paths::scenesDir() : QFileInfo(m_scenePath).absolutePath();
         const QString path = QFileDialog::getOpenFileName(this, tr("Load Scene"), start,
                                                           tr("Padrob models (*.pad);;All files (*)"));
         if (!path.isEmpty()) loadScene(path);
@@ -640,7 +619,7 @@ void MainWindow::openInitial(const QString& path)
 {
     offerRecovery();
     if (!m_editor->filePath().isEmpty() || m_editor->isModified()) return;  // a recovered model
-    const QString initial = path.isEmpty() ? modelsDir() + "/liner_manipulator_fluid.pad" : path;
+    const QString initial = path.isEmpty() ? paths::defaultModel() : path;
     if (!openFile(initial)) m_editor->newModel();
 }
 
@@ -715,7 +694,7 @@ void MainWindow::newModel()
 void MainWindow::openDialog()
 {
     if (!maybeSave()) return;
-    const QString start = m_editor->filePath().isEmpty() ? modelsDir() : QFileInfo(m_editor->filePath()).absolutePath();
+    const QString start = m_editor->filePath().isEmpty() ? paths::modelsDir() : QFileInfo(m_editor->filePath()).absolutePath();
     const QString path = QFileDialog::getOpenFileName(this, tr("Open Model"), start, tr("Padrob models (*.pad);;All files (*)"));
     if (!path.isEmpty()) openFile(path);
 }
@@ -971,11 +950,11 @@ void MainWindow::showLanguageReference()
     dialog->setWindowTitle(tr("Model Language Reference"));
     auto* layout = new QVBoxLayout(dialog);
     auto* browser = new QTextBrowser;
-    QFile f(docsDir() + "/model-language.md");
+    QFile f(paths::docsDir() + "/model-language.md");
     if (f.open(QIODevice::ReadOnly)) {
         browser->setMarkdown(QString::fromUtf8(f.readAll()));
     } else {
-        browser->setPlainText(tr("The reference (docs/model-language.md) was not found at %1.").arg(docsDir()));
+        browser->setPlainText(tr("The reference (docs/model-language.md) was not found at %1.").arg(paths::docsDir()));
     }
     layout->addWidget(browser);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close);

@@ -1,6 +1,7 @@
 #include "ide/studio/centre/display_feed.h"
 
-#include "ide/studio/train/train_page.h"
+#include "ide/paths/paths.h"
+
 #include "ide/studio/train/tutorial_runner.h"
 #include "trainer/training/tutorial.h"
 
@@ -158,17 +159,6 @@ bool DisplayFeed::pose(double nowS, std::vector<double>& q) const
     return !m_bundle || static_cast<int>(q.size()) == m_bundle->model->nb;
 }
 
-QString DisplayFeed::modelsDir()
-{
-    // as padrob-studio finds its bundled model: next to the executable in an install,
-    // else the source tree's
-    const QString installed = QCoreApplication::applicationDirPath() + "/../share/padrob/models";
-    if (QDir(installed).exists()) return QDir(installed).canonicalPath();
-    return QStringLiteral(PADROB_MODELS_DIR);
-}
-
-QString DisplayFeed::tutorialsDir() { return TrainPage::defaultTutorialsDir(); }
-
 QString DisplayFeed::fileHash(const QString& path)
 {
     QFile f(path);
@@ -184,7 +174,7 @@ QString DisplayFeed::findModel(const std::string& model, const std::string& hash
         if (error) *error = tr("The station announced no usable model name (“%1”).").arg(name);
         return {};
     }
-    const QString path = modelsDir() + "/" + name + ".pad";
+    const QString path = paths::modelsDir() + "/" + name + ".pad";
     if (!QFileInfo::exists(path)) {
         if (error)
             *error = tr("The station's model “%1” is not installed on this computer (%2).")
@@ -243,7 +233,7 @@ void DisplayFeed::loadScene(const std::string& tutorialId)
     if (!m_tutorialsRead) {
         // which file holds which tutorial (their headers only; the one used is loaded in full)
         m_tutorialsRead = true;
-        for (const QFileInfo& fi : QDir(tutorialsDir()).entryInfoList({"*.tut"}, QDir::Files, QDir::Name)) {
+        for (const QFileInfo& fi : QDir(paths::tutorialsDir()).entryInfoList({"*.tut"}, QDir::Files, QDir::Name)) {
             QFile f(fi.absoluteFilePath());
             if (!f.open(QIODevice::ReadOnly)) continue;
             solver::Diagnostics ignored(fi.absoluteFilePath().toStdString());

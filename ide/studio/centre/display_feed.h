@@ -129,10 +129,6 @@ public:
     const trainer::centre::State& latest() const { return m_latest; }
     const StateBuffer& buffer() const { return m_buffer; }
 
-    /// Where the bundled models are: next to the executable when installed, else the source tree's.
-    static QString modelsDir();
-    /// Where the tutorials are (TrainPage::defaultTutorialsDir).
-    static QString tutorialsDir();
     /// The bundled model file named `model` whose bytes' SHA-256 (hex) is `hash` (any
     /// hash when it is ""). "" with `error` (translated) when there is no such file here,
     /// the name is not a plain model name, or the file differs.

@@ -1,6 +1,7 @@
 #include "ide/studio/train/train_page.h"
 
 #include "ide/i18n/language.h"
+#include "ide/paths/paths.h"
 #include "ide/studio/sim/hydraulic_panel.h"
 #include "ide/studio/train/records_view.h"
 #include "ide/studio/train/tutorial_runner.h"
@@ -169,7 +170,7 @@ TrainPage::TrainPage(TutorialRunner* runner, trainer::Station* station, QWidget*
     m_timer->setInterval(16);
     connect(m_timer, &QTimer::timeout, this, &TrainPage::poll);
     m_timer->start();
-    setTutorialsDir(defaultTutorialsDir());
+    setTutorialsDir(paths::tutorialsDir());
     setOperator(m_operator);
 }
 
@@ -301,13 +302,6 @@ TrainPage::~TrainPage()
 QString TrainPage::language()
 {
     return i18n::current();
-}
-
-QString TrainPage::defaultTutorialsDir()
-{
-    const QString installed = QCoreApplication::applicationDirPath() + "/../share/padrob/tutorials";
-    if (QDir(installed).exists()) return QDir(installed).canonicalPath();
-    return QDir(QStringLiteral(PADROB_MODELS_DIR "/../resources/tutorials")).canonicalPath();
 }
 
 void TrainPage::setTutorialsDir(const QString& dir)

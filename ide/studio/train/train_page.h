@@ -110,9 +110,7 @@ public:
 
     /// The language of tutorial texts: the UI's (i18n::current(): "es" or "en").
     static QString language();
-    /// resources/tutorials (installed: share/padrob/tutorials).
-    static QString defaultTutorialsDir();
-    /// Reads the course from `dir` again.
+    /// Reads the course from `dir` again (at first the bundled tutorials, paths::tutorialsDir()).
     void setTutorialsDir(const QString& dir);
 
     /// The operator in training, by code (badge number…); a new code is added to the
