@@ -92,7 +92,12 @@
 <context>
     <name>CentreBus</name>
     <message>
-        <location filename="../trainer/centre/bus.cpp" line="+207" />
+        <location filename="../trainer/centre/bus.cpp" line="+172" />
+        <source>A %1 message was not sent: its field %2.</source>
+        <translation>A %1 message was not sent: its field %2.</translation>
+    </message>
+    <message>
+        <location line="+85" />
         <source>The centre's DDS domain must be a number from 0 to 232 (it is %1).</source>
         <translation>The centre's DDS domain must be a number from 0 to 232 (it is %1).</translation>
     </message>
@@ -107,7 +112,7 @@
         <translation>DDS Security covers the domains 0 to 230: choose one of them for the centre (it is %1).</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+25" />
         <source>Could not join the centre's network (DDS domain %1): %2. Check the centre's network interfaces and peers.</source>
         <translation>Could not join the centre's network (DDS domain %1): %2. Check the centre's network interfaces and peers.</translation>
     </message>
@@ -131,7 +136,7 @@
 <context>
     <name>CentreKey</name>
     <message>
-        <location filename="../trainer/centre/signing.cpp" line="+84" />
+        <location filename="../trainer/centre/signing.cpp" line="+179" />
         <source>Cannot read the centre's key file %1: %2.</source>
         <translation>Cannot read the centre's key file %1: %2.</translation>
     </message>
@@ -2678,7 +2683,10 @@
     <message numerus="yes">
         <location line="+3" />
         <source>%n pending attempt(s) recorded in the journal</source>
-        <translation><numerusform>%n pending attempt recorded in the journal</numerusform><numerusform>%n pending attempts recorded in the journal</numerusform></translation>
+        <translation>
+            <numerusform>%n pending attempt recorded in the journal</numerusform>
+            <numerusform>%n pending attempts recorded in the journal</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4611,12 +4619,12 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
     </message>
     <message>
         <location line="+45" />
-        <location filename="../ide/cli/centre.cpp" line="+88" />
+        <location filename="../ide/cli/centre.cpp" line="+90" />
         <location line="+6" />
         <location line="+2" />
         <location line="+3" />
         <location line="+3" />
-        <location line="+565" />
+        <location line="+580" />
         <location filename="../ide/cli/export.cpp" line="+85" />
         <location filename="../ide/cli/simulate.cpp" line="+240" />
         <location filename="../ide/cli/tutorial.cpp" line="-58" />
@@ -4641,9 +4649,9 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
     </message>
     <message>
         <location line="+4" />
-        <location filename="../ide/cli/centre.cpp" line="-437" />
-        <location line="+265" />
-        <location line="+175" />
+        <location filename="../ide/cli/centre.cpp" line="-452" />
+        <location line="+271" />
+        <location line="+184" />
         <location line="+51" />
         <location filename="../ide/cli/export.cpp" line="+12" />
         <location filename="../ide/cli/inertia.cpp" line="+196" />
@@ -5721,34 +5729,7 @@ Exit status: 0 the tutorial is fine (checked) or the run passed; 1 the run faile
         <translation>the tutorial has no usable demonstration (DEMO)</translation>
     </message>
     <message>
-        <location filename="../ide/cli/centre.cpp" line="-659" />
-        <source>Network options (every node of a centre uses the same):
-  --domain N            the centre's DDS domain, 0-232 (default 0)
-  --key FILE            the centre's key (make one with 'padrob centre key FILE');
-                        commands are signed with it, and stations refuse the rest
-  --interface NAME      the network interface to use (name or address; repeatable)
-  --peer ADDRESS        discover the other computers by unicast at ADDRESS
-                        (repeatable; without it, multicast)
-  --loopback            this computer only (--interface 127.0.0.1 --peer 127.0.0.1)
-  --security DIR        DDS Security: authenticated, access-controlled, encrypted
-                        traffic, with the centre's PKI in DIR and this node's
-                        identity in DIR/nodes/NAME (see 'padrob centre pki')
-</source>
-        <translation>Network options (every node of a centre uses the same):
-  --domain N            the centre's DDS domain, 0-232 (default 0)
-  --key FILE            the centre's key (make one with 'padrob centre key FILE');
-                        commands are signed with it, and stations refuse the rest
-  --interface NAME      the network interface to use (name or address; repeatable)
-  --peer ADDRESS        discover the other computers by unicast at ADDRESS
-                        (repeatable; without it, multicast)
-  --loopback            this computer only (--interface 127.0.0.1 --peer 127.0.0.1)
-  --security DIR        DDS Security: authenticated, access-controlled, encrypted
-                        traffic, with the centre's PKI in DIR and this node's
-                        identity in DIR/nodes/NAME (see 'padrob centre pki')
-</translation>
-    </message>
-    <message>
-        <location line="+29" />
+        <location filename="../ide/cli/centre.cpp" line="-645" />
         <source>--domain must be a whole number from 0 to 232, not '%1'</source>
         <translation>--domain must be a whole number from 0 to 232, not '%1'</translation>
     </message>
@@ -5827,12 +5808,41 @@ Runs until interrupted (Ctrl+C or SIGTERM), then says it is leaving.
         <translation>give at least one tutorial file (.tut)</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>without --key the station takes no commands from the instructor</source>
-        <translation>without --key the station takes no commands from the instructor</translation>
+        <location line="-175" />
+        <source>Network options (every node of a centre uses the same):
+  --domain N            the centre's DDS domain, 0-232 (default 0)
+  --key FILE            the centre's key (make one with 'padrob centre key FILE'):
+                        every node signs what it says with it and ignores what is
+                        not signed with it; stations refuse commands without it
+  --interface NAME      the network interface to use (name or address; repeatable)
+  --peer ADDRESS        discover the other computers by unicast at ADDRESS
+                        (repeatable; without it, multicast)
+  --loopback            this computer only (--interface 127.0.0.1 --peer 127.0.0.1)
+  --security DIR        DDS Security: authenticated, access-controlled, encrypted
+                        traffic, with the centre's PKI in DIR and this node's
+                        identity in DIR/nodes/NAME (see 'padrob centre pki')
+</source>
+        <translation>Network options (every node of a centre uses the same):
+  --domain N            the centre's DDS domain, 0-232 (default 0)
+  --key FILE            the centre's key (make one with 'padrob centre key FILE'):
+                        every node signs what it says with it and ignores what is
+                        not signed with it; stations refuse commands without it
+  --interface NAME      the network interface to use (name or address; repeatable)
+  --peer ADDRESS        discover the other computers by unicast at ADDRESS
+                        (repeatable; without it, multicast)
+  --loopback            this computer only (--interface 127.0.0.1 --peer 127.0.0.1)
+  --security DIR        DDS Security: authenticated, access-controlled, encrypted
+                        traffic, with the centre's PKI in DIR and this node's
+                        identity in DIR/nodes/NAME (see 'padrob centre pki')
+</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+177" />
+        <source>--key FILE is required: the centre's key signs what the station says (no instructor or display believes it otherwise) and checks the instructor's commands</source>
+        <translation>--key FILE is required: the centre's key signs what the station says (no instructor or display believes it otherwise) and checks the instructor's commands</translation>
+    </message>
+    <message>
+        <location line="+34" />
         <source>cannot open the sealed password in %1: it must be made by 'padrob centre seal' with this centre's key</source>
         <translation>cannot open the sealed password in %1: it must be made by 'padrob centre seal' with this centre's key</translation>
     </message>
@@ -5960,6 +5970,16 @@ Exit status: 0 done or accepted, 1 the station refused or did not answer,
     </message>
     <message>
         <location line="+1" />
+        <source>a field of the command is longer than the centre allows</source>
+        <translation>a field of the command is longer than the centre allows</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the station took too many commands in the last 30 s; try again shortly</source>
+        <translation>the station took too many commands in the last 30 s; try again shortly</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>the station has no such tutorial</source>
         <translation>the station has no such tutorial</translation>
     </message>
@@ -5985,12 +6005,12 @@ Exit status: 0 done or accepted, 1 the station refused or did not answer,
     </message>
     <message>
         <location line="+36" />
-        <location line="+223" />
+        <location line="+232" />
         <source>%1 needs a number</source>
         <translation>%1 needs a number</translation>
     </message>
     <message>
-        <location line="-215" />
+        <location line="-224" />
         <source>say what to do: list, watch or send</source>
         <translation>say what to do: list, watch or send</translation>
     </message>
@@ -6005,12 +6025,70 @@ Exit status: 0 done or accepted, 1 the station refused or did not answer,
         <translation>send needs a station and a command</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>send needs the centre's key (--key FILE)</source>
-        <translation>send needs the centre's key (--key FILE)</translation>
+        <location line="+4" />
+        <source>the centre's key is required (--key FILE): what the stations say is signed with it, and so are the commands</source>
+        <translation>the centre's key is required (--key FILE): what the stations say is signed with it, and so are the commands</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+226" />
+        <source>no tutorial file %1 (give --tutorial FILE)</source>
+        <translation>no tutorial file %1 (give --tutorial FILE)</translation>
+    </message>
+    <message>
+        <location line="+164" />
+        <source>Usage: padrob centre key FILE
+       padrob centre seal --key FILE &lt; SECRET
+       padrob centre bench [--stations N] [--seconds S] [--tutorial FILE] [--json]
+       padrob centre pki DIR [--node NAME]...
+
+key: makes a new centre key (32 random bytes) in FILE, readable by its owner only.
+Copy it to every station, instructor and display of the centre (padrob station
+--key, padrob instructor --key, padrob-studio --centre-key): every message is
+signed with it, and what is not is ignored (commands: refused). An existing file
+is never replaced.
+
+seal: prints the line read from standard input (the records server's password)
+sealed with the centre's key, for padrob station --records-password FILE.
+
+bench: starts N headless stations (default 16) on this computer, each running the
+tutorial's demonstration in real time and streaming its state at 60 Hz, and measures
+at one instructor the state rate, the latency from station to instructor and the CPU
+used (docs/performance.md).
+
+pki: makes the centre's PKI for DDS Security in DIR (an identity CA, a permissions
+CA and the signed governance document); with --node NAME, issues node NAME's
+identity and permissions (valid 10 years) in DIR/nodes/NAME. Copy to each node
+identity_ca.pem, permissions_ca.pem, governance.p7s and its nodes/NAME folder,
+never the .key files of the CAs; then run it with --security DIR.
+</source>
+        <translation>Usage: padrob centre key FILE
+       padrob centre seal --key FILE &lt; SECRET
+       padrob centre bench [--stations N] [--seconds S] [--tutorial FILE] [--json]
+       padrob centre pki DIR [--node NAME]...
+
+key: makes a new centre key (32 random bytes) in FILE, readable by its owner only.
+Copy it to every station, instructor and display of the centre (padrob station
+--key, padrob instructor --key, padrob-studio --centre-key): every message is
+signed with it, and what is not is ignored (commands: refused). An existing file
+is never replaced.
+
+seal: prints the line read from standard input (the records server's password)
+sealed with the centre's key, for padrob station --records-password FILE.
+
+bench: starts N headless stations (default 16) on this computer, each running the
+tutorial's demonstration in real time and streaming its state at 60 Hz, and measures
+at one instructor the state rate, the latency from station to instructor and the CPU
+used (docs/performance.md).
+
+pki: makes the centre's PKI for DDS Security in DIR (an identity CA, a permissions
+CA and the signed governance document); with --node NAME, issues node NAME's
+identity and permissions (valid 10 years) in DIR/nodes/NAME. Copy to each node
+identity_ca.pem, permissions_ca.pem, governance.p7s and its nodes/NAME folder,
+never the .key files of the CAs; then run it with --security DIR.
+</translation>
+    </message>
+    <message>
+        <location line="-356" />
         <source>no station answered
 </source>
         <translation>no station answered
@@ -6029,7 +6107,7 @@ Exit status: 0 done or accepted, 1 the station refused or did not answer,
         <translation>station %1 did not answer</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+30" />
         <source>station %1 did not answer the command</source>
         <translation>station %1 did not answer the command</translation>
     </message>
@@ -6082,12 +6160,7 @@ Exit status: 0 done or accepted, 1 the station refused or did not answer,
         <translation>--stations needs a whole number from 1 to 64</translation>
     </message>
     <message>
-        <location line="+14" />
-        <source>no tutorial file %1 (run from Padrob's folder, or give --tutorial FILE)</source>
-        <translation>no tutorial file %1 (run from Padrob's folder, or give --tutorial FILE)</translation>
-    </message>
-    <message>
-        <location line="+81" />
+        <location line="+96" />
         <source>only %1 of %2 stations were heard</source>
         <translation>only %1 of %2 stations were heard</translation>
     </message>
@@ -6120,58 +6193,7 @@ Exit status: 0 done or accepted, 1 the station refused or did not answer,
 </translation>
     </message>
     <message>
-        <location line="+15" />
-        <source>Usage: padrob centre key FILE
-       padrob centre seal --key FILE &lt; SECRET
-       padrob centre bench [--stations N] [--seconds S] [--tutorial FILE] [--json]
-       padrob centre pki DIR [--node NAME]...
-
-key: makes a new centre key (32 random bytes) in FILE, readable by its owner only.
-Copy it to every station and instructor of the centre (padrob station --key,
-padrob instructor --key, padrob-studio --centre-key): commands signed with another
-key are refused. An existing file is never replaced.
-
-seal: prints the line read from standard input (the records server's password)
-sealed with the centre's key, for padrob station --records-password FILE.
-
-bench: starts N headless stations (default 16) on this computer, each running the
-tutorial's demonstration in real time and streaming its state at 60 Hz, and measures
-at one instructor the state rate, the latency from station to instructor and the CPU
-used (docs/performance.md).
-
-pki: makes the centre's PKI for DDS Security in DIR (an identity CA, a permissions
-CA and the signed governance document); with --node NAME, issues node NAME's
-identity and permissions (valid 10 years) in DIR/nodes/NAME. Copy to each node
-identity_ca.pem, permissions_ca.pem, governance.p7s and its nodes/NAME folder,
-never the .key files of the CAs; then run it with --security DIR.
-</source>
-        <translation>Usage: padrob centre key FILE
-       padrob centre seal --key FILE &lt; SECRET
-       padrob centre bench [--stations N] [--seconds S] [--tutorial FILE] [--json]
-       padrob centre pki DIR [--node NAME]...
-
-key: makes a new centre key (32 random bytes) in FILE, readable by its owner only.
-Copy it to every station and instructor of the centre (padrob station --key,
-padrob instructor --key, padrob-studio --centre-key): commands signed with another
-key are refused. An existing file is never replaced.
-
-seal: prints the line read from standard input (the records server's password)
-sealed with the centre's key, for padrob station --records-password FILE.
-
-bench: starts N headless stations (default 16) on this computer, each running the
-tutorial's demonstration in real time and streaming its state at 60 Hz, and measures
-at one instructor the state rate, the latency from station to instructor and the CPU
-used (docs/performance.md).
-
-pki: makes the centre's PKI for DDS Security in DIR (an identity CA, a permissions
-CA and the signed governance document); with --node NAME, issues node NAME's
-identity and permissions (valid 10 years) in DIR/nodes/NAME. Copy to each node
-identity_ca.pem, permissions_ca.pem, governance.p7s and its nodes/NAME folder,
-never the .key files of the CAs; then run it with --security DIR.
-</translation>
-    </message>
-    <message>
-        <location line="+25" />
+        <location line="+41" />
         <source>expected: padrob centre key FILE</source>
         <translation>expected: padrob centre key FILE</translation>
     </message>
@@ -6530,7 +6552,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::DisplayFeed</name>
     <message>
-        <location filename="../ide/studio/centre/display_feed.cpp" line="+184" />
+        <location filename="../ide/studio/centre/display_feed.cpp" line="+174" />
         <source>The station announced no usable model name (“%1”).</source>
         <translation>The station announced no usable model name (“%1”).</translation>
     </message>
@@ -6581,12 +6603,17 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::DisplayWindow</name>
     <message>
-        <location filename="../ide/studio/centre/display_window.cpp" line="+30" />
+        <location filename="../ide/studio/centre/display_window.cpp" line="+29" />
+        <source>This display has no centre key (--centre-key FILE): it cannot check what the stations send, so it shows nothing.</source>
+        <translation>This display has no centre key (--centre-key FILE): it cannot check what the stations send, so it shows nothing.</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>This display cannot join the training centre's network (DDS domain %1): %2</source>
         <translation>This display cannot join the training centre's network (DDS domain %1): %2</translation>
     </message>
     <message>
-        <location line="+64" />
+        <location line="+65" />
         <source>left screen</source>
         <translation>left screen</translation>
     </message>
@@ -6672,7 +6699,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::FrameBench</name>
     <message>
-        <location filename="../ide/studio/app/frame_bench.cpp" line="+201" />
+        <location filename="../ide/studio/app/frame_bench.cpp" line="+196" />
         <source>Cannot read the model %1.</source>
         <translation>Cannot read the model %1.</translation>
     </message>
@@ -6693,6 +6720,21 @@ never the .key files of the CAs; then run it with --security DIR.
             <numerusform>The view does not draw.</numerusform>
             <numerusform>The %n views do not draw.</numerusform>
         </translation>
+    </message>
+    <message>
+        <location line="+175" />
+        <source>No model was drawn (does it have errors?).</source>
+        <translation>No model was drawn (does it have errors?).</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Cannot write %1.</source>
+        <translation>Cannot write %1.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 drawn; the window saved to %2.</source>
+        <translation>%1 drawn; the window saved to %2.</translation>
     </message>
 </context>
 <context>
@@ -7128,7 +7170,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::InstructorWindow</name>
     <message>
-        <location filename="../ide/studio/centre/instructor_window.cpp" line="+268" />
+        <location filename="../ide/studio/centre/instructor_window.cpp" line="+269" />
         <source>up</source>
         <translation>up</translation>
     </message>
@@ -7189,12 +7231,12 @@ never the .key files of the CAs; then run it with --security DIR.
     </message>
     <message>
         <location line="+5" />
-        <location line="+299" />
+        <location line="+306" />
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location line="-287" />
+        <location line="-294" />
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
@@ -7275,41 +7317,41 @@ never the .key files of the CAs; then run it with --security DIR.
     </message>
     <message>
         <location line="+1" />
-        <location line="+44" />
+        <location line="+48" />
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location line="-43" />
-        <location line="+44" />
+        <location line="-47" />
+        <location line="+48" />
         <source>Resume</source>
         <translation>Resume</translation>
     </message>
     <message>
-        <location line="-43" />
-        <location line="+44" />
+        <location line="-47" />
+        <location line="+48" />
         <source>Reset</source>
         <translation>Reset</translation>
     </message>
     <message>
-        <location line="-43" />
-        <location line="+44" />
+        <location line="-47" />
+        <location line="+48" />
         <source>Stop</source>
         <translation>Stop</translation>
     </message>
     <message>
-        <location line="-43" />
+        <location line="-47" />
         <source>Inject fault…</source>
         <translation>Inject fault…</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+44" />
+        <location line="+48" />
         <source>Clear fault</source>
         <translation>Clear fault</translation>
     </message>
     <message>
-        <location line="-43" />
+        <location line="-47" />
         <source>Events</source>
         <translation>Events</translation>
     </message>
@@ -7325,21 +7367,36 @@ never the .key files of the CAs; then run it with --security DIR.
     </message>
     <message>
         <location line="+3" />
-        <source>Centre key %1: commands to the stations are signed with it.</source>
-        <translation>Centre key %1: commands to the stations are signed with it.</translation>
+        <source>Centre key %1: commands are signed with it, and what the stations say is checked against it.</source>
+        <translation>Centre key %1: commands are signed with it, and what the stations say is checked against it.</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>Watching only: the centre's key cannot be used (%1).</source>
-        <translation>Watching only: the centre's key cannot be used (%1).</translation>
+        <location line="+3" />
+        <source>The centre's key cannot be used (%1): what the stations say cannot be checked, so none of it is shown, and no command can be sent.</source>
+        <translation>The centre's key cannot be used (%1): what the stations say cannot be checked, so none of it is shown, and no command can be sent.</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>Watching only: without the centre's key (--centre-key FILE) no commands can be sent.</source>
-        <translation>Watching only: without the centre's key (--centre-key FILE) no commands can be sent.</translation>
+        <location line="+4" />
+        <source>Without the centre's key (--centre-key FILE) what the stations say cannot be checked, so none of it is shown, and no command can be sent.</source>
+        <translation>Without the centre's key (--centre-key FILE) what the stations say cannot be checked, so none of it is shown, and no command can be sent.</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+43" />
+        <source>the station has already taken this very command (a replay).</source>
+        <translation>the station has already taken this very command (a replay).</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a field of the command is longer than the centre allows.</source>
+        <translation>a field of the command is longer than the centre allows.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the station has taken too many commands in the last 30 seconds; try again shortly.</source>
+        <translation>the station has taken too many commands in the last 30 seconds; try again shortly.</translation>
+    </message>
+    <message>
+        <location line="-37" />
         <source>Not connected to the training centre's network.</source>
         <translation>Not connected to the training centre's network.</translation>
     </message>
@@ -7350,12 +7407,12 @@ never the .key files of the CAs; then run it with --security DIR.
     </message>
     <message>
         <location line="+19" />
-        <location line="+86" />
+        <location line="+89" />
         <source>Start</source>
         <translation>Start</translation>
     </message>
     <message>
-        <location line="-81" />
+        <location line="-84" />
         <source>Inject fault</source>
         <translation>Inject fault</translation>
     </message>
@@ -7370,12 +7427,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>the command was too old when it arrived: check that the computers' clocks agree.</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>the station has already taken a newer command from this instructor.</source>
-        <translation>the station has already taken a newer command from this instructor.</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location line="+4" />
         <source>the station has no centre key and takes no commands.</source>
         <translation>the station has no centre key and takes no commands.</translation>
     </message>
@@ -7418,6 +7470,11 @@ never the .key files of the CAs; then run it with --security DIR.
         <location line="+2" />
         <source>%1: could not be sent.</source>
         <translation>%1: could not be sent.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1: could not be sent (%2).</source>
+        <translation>%1: could not be sent (%2).</translation>
     </message>
     <message>
         <location line="+3" />
@@ -7720,7 +7777,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::MainWindow</name>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+183" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+162" />
         <source>Export</source>
         <translation>Export</translation>
     </message>
@@ -9767,7 +9824,7 @@ Id: %3</translation>
 <context>
     <name>studio::TrainPage</name>
     <message>
-        <location filename="../ide/studio/train/train_page.cpp" line="+224" />
+        <location filename="../ide/studio/train/train_page.cpp" line="+225" />
         <source>Trainee records</source>
         <translation>Trainee records</translation>
     </message>
@@ -9777,7 +9834,7 @@ Id: %3</translation>
         <translation>The trainer's PIN:</translation>
     </message>
     <message>
-        <location line="+347" />
+        <location line="+340" />
         <source>This tutorial cannot be loaded.</source>
         <translation>This tutorial cannot be loaded.</translation>
     </message>
@@ -9919,7 +9976,7 @@ Id: %3</translation>
         <translation>Play</translation>
     </message>
     <message>
-        <location line="-1526" />
+        <location line="-1519" />
         <source>OK</source>
         <translation>OK</translation>
     </message>
@@ -9929,7 +9986,7 @@ Id: %3</translation>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location line="+830" />
+        <location line="+823" />
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc or Stop ends the attempt.</translation>
     </message>
@@ -10327,7 +10384,7 @@ Id: %3</translation>
         <translation>no key file was given (--centre-key)</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+14" />
         <source>DDS refused to join the domain</source>
         <translation>DDS refused to join the domain</translation>
     </message>
@@ -10413,12 +10470,12 @@ Id: %3</translation>
 <context>
     <name>studio::main</name>
     <message>
-        <location filename="../ide/studio/main.cpp" line="+62" />
+        <location filename="../ide/studio/main.cpp" line="+85" />
         <source>Padrob Studio: write a machine's model, simulate it in real time and drive it from the operator's devices.</source>
         <translation>Padrob Studio: write a machine's model, simulate it in real time and drive it from the operator's devices.</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+12" />
         <source>The model file to open (default: the liner manipulator).</source>
         <translation>The model file to open (default: the liner manipulator).</translation>
     </message>
@@ -10429,12 +10486,13 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+3" />
-        <location line="+59" />
+        <location line="+41" />
+        <location line="+25" />
         <source>FILE</source>
         <translation>FILE</translation>
     </message>
     <message>
-        <location line="-56" />
+        <location line="-63" />
         <source>Measure instead of working, then quit: the start-up time, N frames of a 1920x1080 window paced at 60 Hz and N back to back, with one view and with three, the solver's step periods meanwhile, and the latency of 60 key presses to the solver.</source>
         <translation>Measure instead of working, then quit: the start-up time, N frames of a 1920x1080 window paced at 60 Hz and N back to back, with one view and with three, the solver's step periods meanwhile, and the latency of 60 key presses to the solver.</translation>
     </message>
@@ -10469,12 +10527,7 @@ Id: %3</translation>
         <translation>Where the 3D view computes its light: at every pixel (finer), at the vertices (faster on a software OpenGL), or auto: at the vertices on a software OpenGL, at every pixel on a GPU. Without it, the choice made in Settings &gt; Lighting (auto at first; --bench-frames: auto).</translation>
     </message>
     <message>
-        <location line="+25" />
-        <source>With --instructor or --station-name: the centre's key, which signs the commands (without it the instructor only watches and the station refuses every command).</source>
-        <translation>With --instructor or --station-name: the centre's key, which signs the commands (without it the instructor only watches and the station refuses every command).</translation>
-    </message>
-    <message>
-        <location line="+23" />
+        <location line="+55" />
         <source>Make the Train workspace a station of the training centre named NAME (unique in the centre): it publishes its attempt and obeys the instructor's signed commands.</source>
         <translation>Make the Train workspace a station of the training centre named NAME (unique in the centre): it publishes its attempt and obeys the instructor's signed commands.</translation>
     </message>
@@ -10500,7 +10553,7 @@ Id: %3</translation>
         <translation>With --instructor or --display-of: this node's name in the centre (its identity in the PKI with --security). Default: instructor@HOST, display-STATION-VIEW.</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+18" />
         <source>--lang must be es or en.</source>
         <translation>--lang must be es or en.</translation>
     </message>
@@ -10515,12 +10568,37 @@ Id: %3</translation>
         <translation>--bench-frames needs a number of frames (1 or more) and --views 1 or 3.</translation>
     </message>
     <message>
-        <location line="-87" />
+        <location line="-98" />
         <source>Be a display node of the training centre: show STATION's machine from its operator's seat, driven by its state stream.</source>
         <translation>Be a display node of the training centre: show STATION's machine from its operator's seat, driven by its state stream.</translation>
     </message>
     <message>
+        <location line="-60" />
+        <source>Show this help and quit.</source>
+        <translation>Show this help and quit.</translation>
+    </message>
+    <message>
         <location line="+2" />
+        <source>Show the version and quit.</source>
+        <translation>Show the version and quit.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>model</source>
+        <translation>model</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>[MODEL]</source>
+        <translation>[MODEL]</translation>
+    </message>
+    <message>
+        <location line="+45" />
+        <source>Start as usual, save the window to FILE (PNG) once the model is drawn, print the model's file, and quit.</source>
+        <translation>Start as usual, save the window to FILE (PNG) once the model is drawn, print the model's file, and quit.</translation>
+    </message>
+    <message>
+        <location line="+10" />
         <source>STATION</source>
         <translation>STATION</translation>
     </message>
@@ -10535,7 +10613,12 @@ Id: %3</translation>
         <translation>Be the instructor's station of the training centre: watch the stations and command them.</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+4" />
+        <source>With --instructor, --display-of or --station-name: the centre's key, which signs everything a node of the centre says and checks everything it hears (without it the instructor and the display see nothing, and the station refuses every command and is heard by no one).</source>
+        <translation>With --instructor, --display-of or --station-name: the centre's key, which signs everything a node of the centre says and checks everything it hears (without it the instructor and the display see nothing, and the station refuses every command and is heard by no one).</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>The training centre's DDS domain, 0-232 (default 0).</source>
         <translation>The training centre's DDS domain, 0-232 (default 0).</translation>
     </message>
@@ -10565,7 +10648,7 @@ Id: %3</translation>
         <translation>ADDRESS</translation>
     </message>
     <message>
-        <location line="+80" />
+        <location line="+89" />
         <source>--domain must be a whole number from 0 to 232.</source>
         <translation>--domain must be a whole number from 0 to 232.</translation>
     </message>

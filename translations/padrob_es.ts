@@ -92,7 +92,12 @@
 <context>
     <name>CentreBus</name>
     <message>
-        <location filename="../trainer/centre/bus.cpp" line="+207" />
+        <location filename="../trainer/centre/bus.cpp" line="+172" />
+        <source>A %1 message was not sent: its field %2.</source>
+        <translation>No se envió un mensaje %1: su campo %2.</translation>
+    </message>
+    <message>
+        <location line="+85" />
         <source>The centre's DDS domain must be a number from 0 to 232 (it is %1).</source>
         <translation>El dominio DDS del centro debe ser un número de 0 a 232 (es %1).</translation>
     </message>
@@ -107,7 +112,7 @@
         <translation>DDS Security abarca los dominios 0 a 230: elija uno de ellos para el centro (es %1).</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+25" />
         <source>Could not join the centre's network (DDS domain %1): %2. Check the centre's network interfaces and peers.</source>
         <translation>No se pudo entrar a la red del centro (dominio DDS %1): %2. Revise las interfaces de red y los pares del centro.</translation>
     </message>
@@ -131,7 +136,7 @@
 <context>
     <name>CentreKey</name>
     <message>
-        <location filename="../trainer/centre/signing.cpp" line="+84" />
+        <location filename="../trainer/centre/signing.cpp" line="+179" />
         <source>Cannot read the centre's key file %1: %2.</source>
         <translation>No se puede leer el archivo de clave del centro %1: %2.</translation>
     </message>
@@ -2678,7 +2683,10 @@
     <message numerus="yes">
         <location line="+3" />
         <source>%n pending attempt(s) recorded in the journal</source>
-        <translation><numerusform>%n intento pendiente incorporado al registro local</numerusform><numerusform>%n intentos pendientes incorporados al registro local</numerusform></translation>
+        <translation>
+            <numerusform>%n intento pendiente incorporado al registro local</numerusform>
+            <numerusform>%n intentos pendientes incorporados al registro local</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4614,12 +4622,12 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
     </message>
     <message>
         <location line="+45" />
-        <location filename="../ide/cli/centre.cpp" line="+88" />
+        <location filename="../ide/cli/centre.cpp" line="+90" />
         <location line="+6" />
         <location line="+2" />
         <location line="+3" />
         <location line="+3" />
-        <location line="+565" />
+        <location line="+580" />
         <location filename="../ide/cli/export.cpp" line="+85" />
         <location filename="../ide/cli/simulate.cpp" line="+240" />
         <location filename="../ide/cli/tutorial.cpp" line="-58" />
@@ -4644,9 +4652,9 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
     </message>
     <message>
         <location line="+4" />
-        <location filename="../ide/cli/centre.cpp" line="-437" />
-        <location line="+265" />
-        <location line="+175" />
+        <location filename="../ide/cli/centre.cpp" line="-452" />
+        <location line="+271" />
+        <location line="+184" />
         <location line="+51" />
         <location filename="../ide/cli/export.cpp" line="+12" />
         <location filename="../ide/cli/inertia.cpp" line="+196" />
@@ -5742,34 +5750,7 @@ registro ilegible.
         <translation>el tutorial no tiene una demostración utilizable (DEMO)</translation>
     </message>
     <message>
-        <location filename="../ide/cli/centre.cpp" line="-659" />
-        <source>Network options (every node of a centre uses the same):
-  --domain N            the centre's DDS domain, 0-232 (default 0)
-  --key FILE            the centre's key (make one with 'padrob centre key FILE');
-                        commands are signed with it, and stations refuse the rest
-  --interface NAME      the network interface to use (name or address; repeatable)
-  --peer ADDRESS        discover the other computers by unicast at ADDRESS
-                        (repeatable; without it, multicast)
-  --loopback            this computer only (--interface 127.0.0.1 --peer 127.0.0.1)
-  --security DIR        DDS Security: authenticated, access-controlled, encrypted
-                        traffic, with the centre's PKI in DIR and this node's
-                        identity in DIR/nodes/NAME (see 'padrob centre pki')
-</source>
-        <translation>Opciones de red (todos los nodos de un centro usan las mismas):
-  --domain N            el dominio DDS del centro, 0-232 (por omisión 0)
-  --key ARCHIVO         la clave del centro (se crea con 'padrob centre key ARCHIVO');
-                        las órdenes se firman con ella y las estaciones rechazan las demás
-  --interface NOMBRE    la interfaz de red a usar (nombre o dirección; repetible)
-  --peer DIRECCIÓN      descubre los otros computadores por unicast en DIRECCIÓN
-                        (repetible; sin ella, multicast)
-  --loopback            solo este computador (--interface 127.0.0.1 --peer 127.0.0.1)
-  --security CARPETA    DDS Security: tráfico autenticado, con control de acceso y
-                        cifrado, con la PKI del centro en CARPETA y la identidad de
-                        este nodo en CARPETA/nodes/NOMBRE (vea 'padrob centre pki')
-</translation>
-    </message>
-    <message>
-        <location line="+29" />
+        <location filename="../ide/cli/centre.cpp" line="-645" />
         <source>--domain must be a whole number from 0 to 232, not '%1'</source>
         <translation>--domain debe ser un número entero de 0 a 232, no '%1'</translation>
     </message>
@@ -5851,12 +5832,41 @@ entonces avisa que se va.
         <translation>indique al menos un archivo de tutorial (.tut)</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>without --key the station takes no commands from the instructor</source>
-        <translation>sin --key la estación no acepta órdenes del instructor</translation>
+        <location line="-175" />
+        <source>Network options (every node of a centre uses the same):
+  --domain N            the centre's DDS domain, 0-232 (default 0)
+  --key FILE            the centre's key (make one with 'padrob centre key FILE'):
+                        every node signs what it says with it and ignores what is
+                        not signed with it; stations refuse commands without it
+  --interface NAME      the network interface to use (name or address; repeatable)
+  --peer ADDRESS        discover the other computers by unicast at ADDRESS
+                        (repeatable; without it, multicast)
+  --loopback            this computer only (--interface 127.0.0.1 --peer 127.0.0.1)
+  --security DIR        DDS Security: authenticated, access-controlled, encrypted
+                        traffic, with the centre's PKI in DIR and this node's
+                        identity in DIR/nodes/NAME (see 'padrob centre pki')
+</source>
+        <translation>Opciones de red (todos los nodos de un centro usan las mismas):
+  --domain N            el dominio DDS del centro, 0-232 (por omisión 0)
+  --key ARCHIVO         la clave del centro (se crea con 'padrob centre key ARCHIVO'):
+                        cada nodo firma con ella lo que dice e ignora lo que no esté
+                        firmado con ella; las estaciones rechazan las órdenes sin ella
+  --interface NOMBRE    la interfaz de red a usar (nombre o dirección; repetible)
+  --peer DIRECCIÓN      descubre los otros computadores por unicast en DIRECCIÓN
+                        (repetible; sin ella, multicast)
+  --loopback            solo este computador (--interface 127.0.0.1 --peer 127.0.0.1)
+  --security CARPETA    DDS Security: tráfico autenticado, con control de acceso y
+                        cifrado, con la PKI del centro en CARPETA y la identidad de
+                        este nodo en CARPETA/nodes/NOMBRE (vea 'padrob centre pki')
+</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+177" />
+        <source>--key FILE is required: the centre's key signs what the station says (no instructor or display believes it otherwise) and checks the instructor's commands</source>
+        <translation>se requiere --key ARCHIVO: la clave del centro firma lo que dice la estación (sin ella ningún instructor ni pantalla le cree) y verifica las órdenes del instructor</translation>
+    </message>
+    <message>
+        <location line="+34" />
         <source>cannot open the sealed password in %1: it must be made by 'padrob centre seal' with this centre's key</source>
         <translation>no se puede abrir la contraseña sellada de %1: debe crearse con 'padrob centre seal' y la clave de este centro</translation>
     </message>
@@ -5985,6 +5995,16 @@ Estado de salida: 0 hecho o aceptado, 1 la estación rechazó o no respondió,
     </message>
     <message>
         <location line="+1" />
+        <source>a field of the command is longer than the centre allows</source>
+        <translation>un campo de la orden es más largo de lo que el centro permite</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the station took too many commands in the last 30 s; try again shortly</source>
+        <translation>la estación recibió demasiadas órdenes en los últimos 30 s; intente de nuevo en un momento</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>the station has no such tutorial</source>
         <translation>la estación no tiene ese tutorial</translation>
     </message>
@@ -6010,12 +6030,12 @@ Estado de salida: 0 hecho o aceptado, 1 la estación rechazó o no respondió,
     </message>
     <message>
         <location line="+36" />
-        <location line="+223" />
+        <location line="+232" />
         <source>%1 needs a number</source>
         <translation>%1 necesita un número</translation>
     </message>
     <message>
-        <location line="-215" />
+        <location line="-224" />
         <source>say what to do: list, watch or send</source>
         <translation>indique qué hacer: list, watch o send</translation>
     </message>
@@ -6030,12 +6050,71 @@ Estado de salida: 0 hecho o aceptado, 1 la estación rechazó o no respondió,
         <translation>send necesita una estación y una orden</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>send needs the centre's key (--key FILE)</source>
-        <translation>send necesita la clave del centro (--key ARCHIVO)</translation>
+        <location line="+4" />
+        <source>the centre's key is required (--key FILE): what the stations say is signed with it, and so are the commands</source>
+        <translation>se requiere la clave del centro (--key ARCHIVO): lo que dicen las estaciones se firma con ella, y también las órdenes</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+226" />
+        <source>no tutorial file %1 (give --tutorial FILE)</source>
+        <translation>no existe el archivo de tutorial %1 (use --tutorial ARCHIVO)</translation>
+    </message>
+    <message>
+        <location line="+164" />
+        <source>Usage: padrob centre key FILE
+       padrob centre seal --key FILE &lt; SECRET
+       padrob centre bench [--stations N] [--seconds S] [--tutorial FILE] [--json]
+       padrob centre pki DIR [--node NAME]...
+
+key: makes a new centre key (32 random bytes) in FILE, readable by its owner only.
+Copy it to every station, instructor and display of the centre (padrob station
+--key, padrob instructor --key, padrob-studio --centre-key): every message is
+signed with it, and what is not is ignored (commands: refused). An existing file
+is never replaced.
+
+seal: prints the line read from standard input (the records server's password)
+sealed with the centre's key, for padrob station --records-password FILE.
+
+bench: starts N headless stations (default 16) on this computer, each running the
+tutorial's demonstration in real time and streaming its state at 60 Hz, and measures
+at one instructor the state rate, the latency from station to instructor and the CPU
+used (docs/performance.md).
+
+pki: makes the centre's PKI for DDS Security in DIR (an identity CA, a permissions
+CA and the signed governance document); with --node NAME, issues node NAME's
+identity and permissions (valid 10 years) in DIR/nodes/NAME. Copy to each node
+identity_ca.pem, permissions_ca.pem, governance.p7s and its nodes/NAME folder,
+never the .key files of the CAs; then run it with --security DIR.
+</source>
+        <translation>Uso: padrob centre key ARCHIVO
+       padrob centre seal --key ARCHIVO &lt; SECRETO
+       padrob centre bench [--stations N] [--seconds S] [--tutorial ARCHIVO] [--json]
+       padrob centre pki CARPETA [--node NOMBRE]...
+
+key: crea una nueva clave del centro (32 bytes al azar) en ARCHIVO, legible solo por
+su dueño. Cópiela a cada estación, instructor y pantalla del centro (padrob station
+--key, padrob instructor --key, padrob-studio --centre-key): cada mensaje se firma
+con ella, y lo que no lo esté se ignora (las órdenes: se rechazan). Un archivo
+existente nunca se reemplaza.
+
+seal: muestra la línea leída de la entrada estándar (la contraseña del servidor de
+registros) sellada con la clave del centro, para padrob station --records-password
+ARCHIVO.
+
+bench: inicia N estaciones sin ventana (por omisión 16) en este computador, cada una
+ejecutando la demostración del tutorial en tiempo real y transmitiendo su estado a
+60 Hz, y mide en un instructor la frecuencia de estados, la latencia de estación a
+instructor y la CPU usada (docs/performance.md).
+
+pki: crea la PKI del centro para DDS Security en CARPETA (una CA de identidad, una CA
+de permisos y el documento de gobernanza firmado); con --node NOMBRE, emite la
+identidad y los permisos del nodo NOMBRE (válidos 10 años) en CARPETA/nodes/NOMBRE.
+Copie a cada nodo identity_ca.pem, permissions_ca.pem, governance.p7s y su carpeta
+nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security CARPETA.
+</translation>
+    </message>
+    <message>
+        <location line="-356" />
         <source>no station answered
 </source>
         <translation>ninguna estación respondió
@@ -6054,7 +6133,7 @@ Estado de salida: 0 hecho o aceptado, 1 la estación rechazó o no respondió,
         <translation>la estación %1 no respondió</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+30" />
         <source>station %1 did not answer the command</source>
         <translation>la estación %1 no respondió la orden</translation>
     </message>
@@ -6107,12 +6186,7 @@ Estado de salida: 0 hecho o aceptado, 1 la estación rechazó o no respondió,
         <translation>--stations necesita un número entero de 1 a 64</translation>
     </message>
     <message>
-        <location line="+14" />
-        <source>no tutorial file %1 (run from Padrob's folder, or give --tutorial FILE)</source>
-        <translation>no existe el archivo de tutorial %1 (ejecute desde la carpeta de Padrob, o use --tutorial ARCHIVO)</translation>
-    </message>
-    <message>
-        <location line="+81" />
+        <location line="+96" />
         <source>only %1 of %2 stations were heard</source>
         <translation>solo se oyeron %1 de %2 estaciones</translation>
     </message>
@@ -6145,59 +6219,7 @@ Estado de salida: 0 hecho o aceptado, 1 la estación rechazó o no respondió,
 </translation>
     </message>
     <message>
-        <location line="+15" />
-        <source>Usage: padrob centre key FILE
-       padrob centre seal --key FILE &lt; SECRET
-       padrob centre bench [--stations N] [--seconds S] [--tutorial FILE] [--json]
-       padrob centre pki DIR [--node NAME]...
-
-key: makes a new centre key (32 random bytes) in FILE, readable by its owner only.
-Copy it to every station and instructor of the centre (padrob station --key,
-padrob instructor --key, padrob-studio --centre-key): commands signed with another
-key are refused. An existing file is never replaced.
-
-seal: prints the line read from standard input (the records server's password)
-sealed with the centre's key, for padrob station --records-password FILE.
-
-bench: starts N headless stations (default 16) on this computer, each running the
-tutorial's demonstration in real time and streaming its state at 60 Hz, and measures
-at one instructor the state rate, the latency from station to instructor and the CPU
-used (docs/performance.md).
-
-pki: makes the centre's PKI for DDS Security in DIR (an identity CA, a permissions
-CA and the signed governance document); with --node NAME, issues node NAME's
-identity and permissions (valid 10 years) in DIR/nodes/NAME. Copy to each node
-identity_ca.pem, permissions_ca.pem, governance.p7s and its nodes/NAME folder,
-never the .key files of the CAs; then run it with --security DIR.
-</source>
-        <translation>Uso: padrob centre key ARCHIVO
-       padrob centre seal --key ARCHIVO &lt; SECRETO
-       padrob centre bench [--stations N] [--seconds S] [--tutorial ARCHIVO] [--json]
-       padrob centre pki CARPETA [--node NOMBRE]...
-
-key: crea una nueva clave del centro (32 bytes al azar) en ARCHIVO, legible solo por
-su dueño. Cópiela a cada estación e instructor del centro (padrob station --key,
-padrob instructor --key, padrob-studio --centre-key): las órdenes firmadas con otra
-clave se rechazan. Un archivo existente nunca se reemplaza.
-
-seal: muestra la línea leída de la entrada estándar (la contraseña del servidor de
-registros) sellada con la clave del centro, para padrob station --records-password
-ARCHIVO.
-
-bench: inicia N estaciones sin ventana (por omisión 16) en este computador, cada una
-ejecutando la demostración del tutorial en tiempo real y transmitiendo su estado a
-60 Hz, y mide en un instructor la frecuencia de estados, la latencia de estación a
-instructor y la CPU usada (docs/performance.md).
-
-pki: crea la PKI del centro para DDS Security en CARPETA (una CA de identidad, una CA
-de permisos y el documento de gobernanza firmado); con --node NOMBRE, emite la
-identidad y los permisos del nodo NOMBRE (válidos 10 años) en CARPETA/nodes/NOMBRE.
-Copie a cada nodo identity_ca.pem, permissions_ca.pem, governance.p7s y su carpeta
-nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security CARPETA.
-</translation>
-    </message>
-    <message>
-        <location line="+25" />
+        <location line="+41" />
         <source>expected: padrob centre key FILE</source>
         <translation>se esperaba: padrob centre key ARCHIVO</translation>
     </message>
@@ -6556,7 +6578,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::DisplayFeed</name>
     <message>
-        <location filename="../ide/studio/centre/display_feed.cpp" line="+184" />
+        <location filename="../ide/studio/centre/display_feed.cpp" line="+174" />
         <source>The station announced no usable model name (“%1”).</source>
         <translation>El puesto no anunció un nombre de modelo utilizable («%1»).</translation>
     </message>
@@ -6607,12 +6629,17 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::DisplayWindow</name>
     <message>
-        <location filename="../ide/studio/centre/display_window.cpp" line="+30" />
+        <location filename="../ide/studio/centre/display_window.cpp" line="+29" />
+        <source>This display has no centre key (--centre-key FILE): it cannot check what the stations send, so it shows nothing.</source>
+        <translation>Esta pantalla no tiene la clave del centro (--centre-key ARCHIVO): no puede verificar lo que envían los puestos, así que no muestra nada.</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>This display cannot join the training centre's network (DDS domain %1): %2</source>
         <translation>Esta pantalla no puede unirse a la red del centro de entrenamiento (dominio DDS %1): %2</translation>
     </message>
     <message>
-        <location line="+64" />
+        <location line="+65" />
         <source>left screen</source>
         <translation>pantalla izquierda</translation>
     </message>
@@ -6698,7 +6725,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::FrameBench</name>
     <message>
-        <location filename="../ide/studio/app/frame_bench.cpp" line="+201" />
+        <location filename="../ide/studio/app/frame_bench.cpp" line="+196" />
         <source>Cannot read the model %1.</source>
         <translation>No se puede leer el modelo %1.</translation>
     </message>
@@ -6719,6 +6746,21 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
             <numerusform>La vista no dibuja.</numerusform>
             <numerusform>Las %n vistas no dibujan.</numerusform>
         </translation>
+    </message>
+    <message>
+        <location line="+175" />
+        <source>No model was drawn (does it have errors?).</source>
+        <translation>No se dibujó ningún modelo (¿tiene errores?).</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Cannot write %1.</source>
+        <translation>No se puede escribir %1.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 drawn; the window saved to %2.</source>
+        <translation>%1 dibujado; la ventana se guardó en %2.</translation>
     </message>
 </context>
 <context>
@@ -7154,7 +7196,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::InstructorWindow</name>
     <message>
-        <location filename="../ide/studio/centre/instructor_window.cpp" line="+268" />
+        <location filename="../ide/studio/centre/instructor_window.cpp" line="+269" />
         <source>up</source>
         <translation>en línea</translation>
     </message>
@@ -7215,12 +7257,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
     </message>
     <message>
         <location line="+5" />
-        <location line="+299" />
+        <location line="+306" />
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location line="-287" />
+        <location line="-294" />
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
@@ -7301,41 +7343,41 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
     </message>
     <message>
         <location line="+1" />
-        <location line="+44" />
+        <location line="+48" />
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
     <message>
-        <location line="-43" />
-        <location line="+44" />
+        <location line="-47" />
+        <location line="+48" />
         <source>Resume</source>
         <translation>Reanudar</translation>
     </message>
     <message>
-        <location line="-43" />
-        <location line="+44" />
+        <location line="-47" />
+        <location line="+48" />
         <source>Reset</source>
         <translation>Reiniciar</translation>
     </message>
     <message>
-        <location line="-43" />
-        <location line="+44" />
+        <location line="-47" />
+        <location line="+48" />
         <source>Stop</source>
         <translation>Detener</translation>
     </message>
     <message>
-        <location line="-43" />
+        <location line="-47" />
         <source>Inject fault…</source>
         <translation>Provocar falla…</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+44" />
+        <location line="+48" />
         <source>Clear fault</source>
         <translation>Quitar falla</translation>
     </message>
     <message>
-        <location line="-43" />
+        <location line="-47" />
         <source>Events</source>
         <translation>Eventos</translation>
     </message>
@@ -7351,21 +7393,36 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
     </message>
     <message>
         <location line="+3" />
-        <source>Centre key %1: commands to the stations are signed with it.</source>
-        <translation>Clave del centro %1: las órdenes a los puestos se firman con ella.</translation>
+        <source>Centre key %1: commands are signed with it, and what the stations say is checked against it.</source>
+        <translation>Clave del centro %1: las órdenes se firman con ella, y lo que dicen los puestos se verifica con ella.</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>Watching only: the centre's key cannot be used (%1).</source>
-        <translation>Solo observación: la clave del centro no se puede usar (%1).</translation>
+        <location line="+3" />
+        <source>The centre's key cannot be used (%1): what the stations say cannot be checked, so none of it is shown, and no command can be sent.</source>
+        <translation>La clave del centro no se puede usar (%1): lo que dicen los puestos no se puede verificar, así que no se muestra nada de ello, y no se pueden enviar órdenes.</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>Watching only: without the centre's key (--centre-key FILE) no commands can be sent.</source>
-        <translation>Solo observación: sin la clave del centro (--centre-key ARCHIVO) no se pueden enviar órdenes.</translation>
+        <location line="+4" />
+        <source>Without the centre's key (--centre-key FILE) what the stations say cannot be checked, so none of it is shown, and no command can be sent.</source>
+        <translation>Sin la clave del centro (--centre-key ARCHIVO) lo que dicen los puestos no se puede verificar, así que no se muestra nada de ello, y no se pueden enviar órdenes.</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+43" />
+        <source>the station has already taken this very command (a replay).</source>
+        <translation>el puesto ya recibió esta misma orden (una repetición).</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a field of the command is longer than the centre allows.</source>
+        <translation>un campo de la orden es más largo de lo que el centro permite.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the station has taken too many commands in the last 30 seconds; try again shortly.</source>
+        <translation>el puesto recibió demasiadas órdenes en los últimos 30 segundos; intente de nuevo en un momento.</translation>
+    </message>
+    <message>
+        <location line="-37" />
         <source>Not connected to the training centre's network.</source>
         <translation>Sin conexión a la red del centro de entrenamiento.</translation>
     </message>
@@ -7376,12 +7433,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
     </message>
     <message>
         <location line="+19" />
-        <location line="+86" />
+        <location line="+89" />
         <source>Start</source>
         <translation>Iniciar</translation>
     </message>
     <message>
-        <location line="-81" />
+        <location line="-84" />
         <source>Inject fault</source>
         <translation>Provocar falla</translation>
     </message>
@@ -7396,12 +7453,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>la orden llegó demasiado tarde: revise que los relojes de los computadores coincidan.</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>the station has already taken a newer command from this instructor.</source>
-        <translation>el puesto ya recibió una orden más reciente de este instructor.</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location line="+4" />
         <source>the station has no centre key and takes no commands.</source>
         <translation>el puesto no tiene clave del centro y no acepta órdenes.</translation>
     </message>
@@ -7444,6 +7496,11 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <location line="+2" />
         <source>%1: could not be sent.</source>
         <translation>%1: no se pudo enviar.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1: could not be sent (%2).</source>
+        <translation>%1: no se pudo enviar (%2).</translation>
     </message>
     <message>
         <location line="+3" />
@@ -7746,7 +7803,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::MainWindow</name>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+183" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+162" />
         <source>Export</source>
         <translation>Exportar</translation>
     </message>
@@ -9793,7 +9850,7 @@ Id: %3</translation>
 <context>
     <name>studio::TrainPage</name>
     <message>
-        <location filename="../ide/studio/train/train_page.cpp" line="+224" />
+        <location filename="../ide/studio/train/train_page.cpp" line="+225" />
         <source>Trainee records</source>
         <translation>Registros de aprendices</translation>
     </message>
@@ -9803,7 +9860,7 @@ Id: %3</translation>
         <translation>El PIN del instructor:</translation>
     </message>
     <message>
-        <location line="+347" />
+        <location line="+340" />
         <source>This tutorial cannot be loaded.</source>
         <translation>Este tutorial no se puede cargar.</translation>
     </message>
@@ -9945,7 +10002,7 @@ Id: %3</translation>
         <translation>Reproducir</translation>
     </message>
     <message>
-        <location line="-1526" />
+        <location line="-1519" />
         <source>OK</source>
         <translation>Aceptar</translation>
     </message>
@@ -9955,7 +10012,7 @@ Id: %3</translation>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location line="+830" />
+        <location line="+823" />
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc o Detener termina el intento.</translation>
     </message>
@@ -10353,7 +10410,7 @@ Id: %3</translation>
         <translation>no se indicó un archivo de clave (--centre-key)</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+14" />
         <source>DDS refused to join the domain</source>
         <translation>DDS no permitió entrar al dominio</translation>
     </message>
@@ -10439,12 +10496,12 @@ Id: %3</translation>
 <context>
     <name>studio::main</name>
     <message>
-        <location filename="../ide/studio/main.cpp" line="+62" />
+        <location filename="../ide/studio/main.cpp" line="+85" />
         <source>Padrob Studio: write a machine's model, simulate it in real time and drive it from the operator's devices.</source>
         <translation>Padrob Studio: escriba el modelo de una máquina, simúlelo en tiempo real y opérelo desde los dispositivos del operador.</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+12" />
         <source>The model file to open (default: the liner manipulator).</source>
         <translation>El archivo de modelo que se abre (por defecto: la lainera).</translation>
     </message>
@@ -10455,12 +10512,13 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+3" />
-        <location line="+59" />
+        <location line="+41" />
+        <location line="+25" />
         <source>FILE</source>
         <translation>ARCHIVO</translation>
     </message>
     <message>
-        <location line="-56" />
+        <location line="-63" />
         <source>Measure instead of working, then quit: the start-up time, N frames of a 1920x1080 window paced at 60 Hz and N back to back, with one view and with three, the solver's step periods meanwhile, and the latency of 60 key presses to the solver.</source>
         <translation>Medir en vez de trabajar, y luego salir: el tiempo de inicio, N cuadros de una ventana de 1920x1080 a 60 Hz y N seguidos, con una vista y con tres, los periodos de paso del solver mientras tanto, y la latencia de 60 pulsaciones de tecla hasta el solver.</translation>
     </message>
@@ -10495,12 +10553,7 @@ Id: %3</translation>
         <translation>Dónde calcula la luz la vista 3D: en cada píxel (pixel, más fina), en los vértices (vertex, más rápida con un OpenGL por software) o auto: en los vértices con un OpenGL por software y en cada píxel con una GPU. Sin ella, lo elegido en Configuración &gt; Iluminación (auto al principio; con --bench-frames: auto).</translation>
     </message>
     <message>
-        <location line="+25" />
-        <source>With --instructor or --station-name: the centre's key, which signs the commands (without it the instructor only watches and the station refuses every command).</source>
-        <translation>Con --instructor o --station-name: la clave del centro, que firma las órdenes (sin ella el instructor solo observa y el puesto rechaza toda orden).</translation>
-    </message>
-    <message>
-        <location line="+23" />
+        <location line="+55" />
         <source>Make the Train workspace a station of the training centre named NAME (unique in the centre): it publishes its attempt and obeys the instructor's signed commands.</source>
         <translation>Convierte el espacio Entrenar en un puesto del centro de entrenamiento llamado NOMBRE (único en el centro): publica su intento y obedece las órdenes firmadas del instructor.</translation>
     </message>
@@ -10526,7 +10579,7 @@ Id: %3</translation>
         <translation>Con --instructor o --display-of: el nombre de este nodo en el centro (su identidad en la PKI con --security). Por omisión: instructor@HOST, display-PUESTO-VISTA.</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+18" />
         <source>--lang must be es or en.</source>
         <translation>--lang debe ser es o en.</translation>
     </message>
@@ -10541,12 +10594,37 @@ Id: %3</translation>
         <translation>--bench-frames necesita un número de cuadros (1 o más) y --views 1 o 3.</translation>
     </message>
     <message>
-        <location line="-87" />
+        <location line="-98" />
         <source>Be a display node of the training centre: show STATION's machine from its operator's seat, driven by its state stream.</source>
         <translation>Ser una pantalla del centro de entrenamiento: mostrar la máquina de PUESTO desde el asiento de su operador, movida por su flujo de estado.</translation>
     </message>
     <message>
+        <location line="-60" />
+        <source>Show this help and quit.</source>
+        <translation>Mostrar esta ayuda y salir.</translation>
+    </message>
+    <message>
         <location line="+2" />
+        <source>Show the version and quit.</source>
+        <translation>Mostrar la versión y salir.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>model</source>
+        <translation>modelo</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>[MODEL]</source>
+        <translation>[MODELO]</translation>
+    </message>
+    <message>
+        <location line="+45" />
+        <source>Start as usual, save the window to FILE (PNG) once the model is drawn, print the model's file, and quit.</source>
+        <translation>Iniciar como de costumbre, guardar la ventana en ARCHIVO (PNG) cuando el modelo esté dibujado, mostrar el archivo del modelo y salir.</translation>
+    </message>
+    <message>
+        <location line="+10" />
         <source>STATION</source>
         <translation>PUESTO</translation>
     </message>
@@ -10561,7 +10639,12 @@ Id: %3</translation>
         <translation>Ser el puesto del instructor del centro de entrenamiento: observar los puestos y darles órdenes.</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+4" />
+        <source>With --instructor, --display-of or --station-name: the centre's key, which signs everything a node of the centre says and checks everything it hears (without it the instructor and the display see nothing, and the station refuses every command and is heard by no one).</source>
+        <translation>Con --instructor, --display-of o --station-name: la clave del centro, que firma todo lo que dice un nodo del centro y verifica todo lo que escucha (sin ella el instructor y la pantalla no ven nada, y el puesto rechaza toda orden y nadie lo escucha).</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>The training centre's DDS domain, 0-232 (default 0).</source>
         <translation>El dominio DDS del centro de entrenamiento, 0-232 (por defecto 0).</translation>
     </message>
@@ -10591,7 +10674,7 @@ Id: %3</translation>
         <translation>DIRECCIÓN</translation>
     </message>
     <message>
-        <location line="+80" />
+        <location line="+89" />
         <source>--domain must be a whole number from 0 to 232.</source>
         <translation>--domain debe ser un número entero de 0 a 232.</translation>
     </message>
