@@ -389,33 +389,34 @@ StationState StationEngine::state() const
         const bool active = l.bank < 0 || l.bank == m_activeBank;
         if (active && ms.connected && !l.armed && l.treeJoint >= 0) waiting.append(driveLabel(l.treeJoint));
     }
-    // devices gone: which drives they hold
-    for (std::size_t i = 0; i < m_devices.size(); ++i) {
-        const InputDevice& d = *m_devices[i];
-        if (isConnected(d) || ignored(d)) continue;
+    // the drives the active mappings of device i (of its channel `axis`; −1 any) hold
+    const auto heldBy = [&](std::size_t i, int axis) {
         QStringList held;
         for (const Live& l : m_live)
-            if (l.device == int(i) && l.treeJoint >= 0 && (l.bank < 0 || l.bank == m_activeBank))
+            if (l.device == int(i) && (axis < 0 || l.mapping.axis == axis) && l.treeJoint >= 0 &&
+                (l.bank < 0 || l.bank == m_activeBank))
                 held.append(driveLabel(l.treeJoint));
-        if (held.isEmpty()) continue;
         held.removeDuplicates();
-        const QString why = d.statusText().isEmpty() ? Tr::tr("not connected") : d.statusText();
-        (m_state[i].everConnected ? st.warnings : st.setupWarnings)
-            .append(Tr::tr("%1: %2 — valves closed, holding %3").arg(d.info().name, why, held.join(", ")));
-    }
-    // channels whose readings cannot be: a device fault, their valves closed
+        return held;
+    };
     for (std::size_t i = 0; i < m_devices.size(); ++i) {
         const InputDevice& d = *m_devices[i];
-        if (!isConnected(d) || ignored(d)) continue;
+        if (ignored(d)) continue;
+        if (!isConnected(d)) {
+            // a device gone: which drives it holds
+            const QStringList held = heldBy(i, -1);
+            if (held.isEmpty()) continue;
+            const QString why = d.statusText().isEmpty() ? Tr::tr("not connected") : d.statusText();
+            (m_state[i].everConnected ? st.warnings : st.setupWarnings)
+                .append(Tr::tr("%1: %2 — valves closed, holding %3").arg(d.info().name, why, held.join(", ")));
+            continue;
+        }
+        // channels whose readings cannot be: a device fault, their valves closed
         const Device& dev = m_state[i];
         for (std::size_t a = 0; a < dev.channels.size(); ++a) {
             const Channel& ch = dev.channels[a];
             if (!ch.state.fault) continue;
-            QStringList held;
-            for (const Live& l : m_live)
-                if (l.device == int(i) && l.mapping.axis == int(a) && l.treeJoint >= 0 && (l.bank < 0 || l.bank == m_activeBank))
-                    held.append(driveLabel(l.treeJoint));
-            held.removeDuplicates();
+            const QStringList held = heldBy(i, int(a));
             const QString axis = a < std::size_t(d.info().axes.size()) ? d.info().axes[int(a)].name : QString::number(a + 1);
             st.warnings.append(Tr::tr("%1, %2: device fault, it reads %3 where it can read only %4…%5 — valve closed%6")
                                    .arg(d.info().name, axis, QString::number(ch.state.raw, 'g', 10),
