@@ -8941,22 +8941,32 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>pump %1 %2</translation>
     </message>
     <message>
-        <location line="+250" />
+        <location line="+254" />
         <source>Mechanical energy [J]</source>
         <translation>Mechanical energy [J]</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+12" />
         <source>coordinate q [%1]</source>
         <translation>coordinate q [%1]</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>translation along %1 q_%2 [%3]</source>
+        <translation>translation along %1 q_%2 [%3]</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>rate dq/dt [%1]</source>
         <translation>rate dq/dt [%1]</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>velocity along %1 dq_%2/dt [%3]</source>
+        <translation>velocity along %1 dq_%2/dt [%3]</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>drive force [%1]</source>
         <translation>drive force [%1]</translation>
     </message>

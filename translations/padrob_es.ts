@@ -8967,22 +8967,32 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>bomba %1 %2</translation>
     </message>
     <message>
-        <location line="+250" />
+        <location line="+254" />
         <source>Mechanical energy [J]</source>
         <translation>Energía mecánica [J]</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+12" />
         <source>coordinate q [%1]</source>
         <translation>coordenada q [%1]</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>translation along %1 q_%2 [%3]</source>
+        <translation>traslación según %1 q_%2 [%3]</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>rate dq/dt [%1]</source>
         <translation>velocidad dq/dt [%1]</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>velocity along %1 dq_%2/dt [%3]</source>
+        <translation>velocidad según %1 dq_%2/dt [%3]</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>drive force [%1]</source>
         <translation>fuerza del accionamiento [%1]</translation>
     </message>

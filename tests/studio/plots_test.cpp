@@ -128,6 +128,17 @@ void PlotsTest::listsSignalsOfEveryJoint()
     panel.setBundle(m_pendulum);
     QCOMPARE(panel.signalKeys().size(), 8 + 1);  // no drive
     QVERIFY(!panel.signalKeys().contains(QStringLiteral("f:1")));
+
+    // a free body: its translation along B1's joint axes and its rate, as padrob
+    // simulate's q1x… columns; no reactions (a free joint transmits nothing)
+    const auto block = example(QStringLiteral("tumbling_block.pad"));
+    QVERIFY(block);
+    panel.setBundle(block);
+    QCOMPARE(panel.signalKeys(), (QStringList{QStringLiteral("qx:1"), QStringLiteral("qdx:1"), QStringLiteral("qy:1"),
+                                              QStringLiteral("qdy:1"), QStringLiteral("qz:1"), QStringLiteral("qdz:1"),
+                                              QStringLiteral("energy")}));
+    QCOMPARE(panel.signalLabel(QStringLiteral("qy:1")), QStringLiteral("C 1 free q_y [m]"));
+    QCOMPARE(panel.signalUnit(QStringLiteral("qdz:1")), QStringLiteral("m/s"));
 }
 
 void PlotsTest::plotsSelectedSignals()

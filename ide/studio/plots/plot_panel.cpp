@@ -187,12 +187,16 @@ void PlotPanel::setBundle(std::shared_ptr<const ModelBundle> bundle)
                 // a free joint: its translation along B1's joint axes, as padrob simulate's
                 // q<j>x… columns (slots 0–2); it transmits no load
                 if (m.freeSlot[k] > 2) continue;
-                const QString axis = QString(QChar(u"xyz"[m.freeSlot[k]]));
-                addSignal(Kind::Q, QStringLiteral("q") + axis, QStringLiteral("q_") + axis, QStringLiteral("m"), id, name)
-                    .tree = i;
-                addSignal(Kind::Qd, QStringLiteral("qd") + axis, QStringLiteral("dq_") + axis + QStringLiteral("/dt"),
-                          QStringLiteral("m/s"), id, name)
-                    .tree = i;
+                const int a = m.freeSlot[k];
+                const QString axis = QString(QChar(u"xyz"[a]));
+                Signal& q = addSignal(Kind::Q, QStringLiteral("q") + axis, QStringLiteral("q_") + axis, QStringLiteral("m"),
+                                      id, name);
+                q.tree = i;
+                q.axis = a;
+                Signal& qd = addSignal(Kind::Qd, QStringLiteral("qd") + axis, QStringLiteral("dq_") + axis + QStringLiteral("/dt"),
+                                       QStringLiteral("m/s"), id, name);
+                qd.tree = i;
+                qd.axis = a;
                 continue;
             }
             const bool turns = m.jointType[k] == solver::JointType::Revolute;
@@ -423,8 +427,16 @@ void PlotPanel::rebuildList()
             }
             QString text;
             switch (s.kind) {
-            case Kind::Q: text = tr("coordinate q [%1]"); break;
-            case Kind::Qd: text = tr("rate dq/dt [%1]"); break;
+            case Kind::Q:
+                text = s.axis < 0 ? tr("coordinate q [%1]")
+                                  : tr("translation along %1 q_%2 [%3]")
+                                        .arg(QStringLiteral("ART").at(s.axis), QStringLiteral("xyz").at(s.axis), QStringLiteral("%1"));
+                break;
+            case Kind::Qd:
+                text = s.axis < 0 ? tr("rate dq/dt [%1]")
+                                  : tr("velocity along %1 dq_%2/dt [%3]")
+                                        .arg(QStringLiteral("ART").at(s.axis), QStringLiteral("xyz").at(s.axis), QStringLiteral("%1"));
+                break;
             case Kind::Force: text = tr("drive force [%1]"); break;
             case Kind::PressureA: text = tr("chamber A pressure p_A [%1]"); break;
             case Kind::PressureB: text = tr("chamber B pressure p_B [%1]"); break;

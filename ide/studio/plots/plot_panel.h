@@ -119,6 +119,7 @@ private:
         QString symbol;  // "q", "dq/dt", "M_A"… (the same in every language)
         Kind kind = Kind::Q;
         int tree = -1;   // tree joint (joint signals)
+        int axis = -1;   // a free joint's translation: 0, 1, 2 along B1's joint axes A, R, T; −1 otherwise
         int index = -1;  // Model::circuits index (PressureA/B) or Model::pumps index (Supply, PumpFlow)
         int ownerId = 0;    // the joint's id (C J), or the pump's (PUMP P)
         QString ownerName;  // its NAME
