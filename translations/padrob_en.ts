@@ -312,8 +312,8 @@
     <message>
         <location filename="../solver/inertia/solid_inertia.cpp" line="+68" />
         <location line="+131" />
-        <location filename="../solver/parse/parser.cpp" line="+1362" />
-        <location filename="../solver/spec/validate.cpp" line="+468" />
+        <location filename="../solver/parse/parser.cpp" line="+1363" />
+        <location filename="../solver/spec/validate.cpp" line="+510" />
         <location line="+107" />
         <source>graphic %1</source>
         <translation>graphic %1</translation>
@@ -408,13 +408,14 @@
         <translation>G %1 is left out of the clearance checks: %2</translation>
     </message>
     <message>
-        <location filename="../solver/compile/compile.cpp" line="+199" />
+        <location filename="../solver/compile/compile.cpp" line="+227" />
         <location filename="../solver/compile/initial_configuration.cpp" line="+44" />
         <location line="+9" />
-        <location filename="../solver/parse/parser.cpp" line="-550" />
-        <location line="+134" />
-        <location filename="../solver/spec/validate.cpp" line="-516" />
-        <location line="+540" />
+        <location filename="../solver/compile/topology.cpp" line="+39" />
+        <location filename="../solver/parse/parser.cpp" line="-551" />
+        <location line="+135" />
+        <location filename="../solver/spec/validate.cpp" line="-558" />
+        <location line="+582" />
         <source>joint %1</source>
         <translation>joint %1</translation>
     </message>
@@ -449,11 +450,11 @@
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../solver/compile/topology.cpp" line="+24" />
+        <location filename="../solver/compile/topology.cpp" line="-14" />
         <location filename="../solver/integrate/simulation.cpp" line="+53" />
-        <location filename="../solver/parse/parser.cpp" line="-199" />
-        <location filename="../solver/spec/validate.cpp" line="-547" />
-        <location line="+546" />
+        <location filename="../solver/parse/parser.cpp" line="-200" />
+        <location filename="../solver/spec/validate.cpp" line="-589" />
+        <location line="+588" />
         <source>body %1</source>
         <translation>body %1</translation>
     </message>
@@ -466,6 +467,26 @@
         <location line="+2" />
         <source>add a joint (C) that connects it to ground or to a connected body</source>
         <translation>add a joint (C) that connects it to ground or to a connected body</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>%1 is a free joint (T 3), but its body B2 is also held by other joints (a closed loop)</source>
+        <translation>%1 is a free joint (T 3), but its body B2 is also held by other joints (a closed loop)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>a free body moves only through its free joint: remove the other joints between it and the rest, or use T 0, T 1 or T 2</source>
+        <translation>a free body moves only through its free joint: remove the other joints between it and the rest, or use T 0, T 1 or T 2</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 is a free joint (T 3) whose B2 is nearer the ground than its B1</source>
+        <translation>%1 is a free joint (T 3) whose B2 is nearer the ground than its B1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>write the free joint from the side nearer the ground (B1, usually body 0) to the free body (B2)</source>
+        <translation>write the free joint from the side nearer the ground (B1, usually body 0) to the free body (B2)</translation>
     </message>
     <message>
         <location filename="../solver/compile/initial_configuration.cpp" line="+17" />
@@ -569,29 +590,29 @@
     </message>
     <message>
         <location line="+21" />
-        <location line="+247" />
+        <location line="+249" />
         <source>give the bodies it moves a mass (B id m Ixx Iyy Izz), or remove the joint</source>
         <translation>give the bodies it moves a mass (B id m Ixx Iyy Izz), or remove the joint</translation>
     </message>
     <message>
-        <location line="-226" />
+        <location line="-228" />
         <source>the bodies it moves have no mass</source>
         <translation>the bodies it moves have no mass</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+223" />
+        <location line="+225" />
         <source>the bodies it moves have no mass, or only mass on its axis and no inertia about it</source>
         <translation>the bodies it moves have no mass, or only mass on its axis and no inertia about it</translation>
     </message>
     <message>
-        <location line="-220" />
-        <location line="+217" />
+        <location line="-222" />
+        <location line="+219" />
         <source>%1 moves no mass: %2, so the mass matrix is singular at the initial configuration</source>
         <translation>%1 moves no mass: %2, so the mass matrix is singular at the initial configuration</translation>
     </message>
     <message>
-        <location line="-213" />
+        <location line="-215" />
         <source>%1 and the loop it drives (%2) move no mass: %3, so the mass matrix is singular at the initial configuration</source>
         <translation>%1 and the loop it drives (%2) move no mass: %3, so the mass matrix is singular at the initial configuration</translation>
     </message>
@@ -961,7 +982,7 @@
         <translation>a model is a short text; put meshes in their own files (G … MESH "file")</translation>
     </message>
     <message>
-        <location filename="../solver/spec/validate.cpp" line="-545" />
+        <location filename="../solver/spec/validate.cpp" line="-587" />
         <source>body %1 (%2)</source>
         <translation>body %1 (%2)</translation>
     </message>
@@ -971,7 +992,7 @@
         <translation>joint %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../solver/parse/parser.cpp" line="+712" />
+        <location filename="../solver/parse/parser.cpp" line="+713" />
         <location filename="../solver/spec/validate.cpp" line="+5" />
         <source>drive on joint %1</source>
         <translation>drive on joint %1</translation>
@@ -1059,13 +1080,13 @@
     <message>
         <location line="+12" />
         <location line="+5" />
-        <location line="+295" />
+        <location line="+337" />
         <location line="+84" />
         <source>%1: %2 has zero length</source>
         <translation>%1: %2 has zero length</translation>
     </message>
     <message>
-        <location line="-383" />
+        <location line="-425" />
         <source>the axis is a direction, e.g. A%1 0 0 1</source>
         <translation>the axis is a direction, e.g. A%1 0 0 1</translation>
     </message>
@@ -1095,6 +1116,26 @@
         <translation>write R%1 at 90° to A%1</translation>
     </message>
     <message>
+        <location line="+12" />
+        <source>joint %1 is a free joint (T 3): %2 does not apply to it</source>
+        <translation>joint %1 is a free joint (T 3): %2 does not apply to it</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>remove %1; place the free body with the joint's P1, A1 and R1 (it starts where its two joint frames coincide, at rest)</source>
+        <translation>remove %1; place the free body with the joint's P1, A1 and R1 (it starts where its two joint frames coincide, at rest)</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>joint %1 is a free joint (T 3) whose B2 is the ground</source>
+        <translation>joint %1 is a free joint (T 3) whose B2 is the ground</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the free body is B2: write B1 0 … and B2 with the body that moves</source>
+        <translation>the free body is B2: write B1 0 … and B2 with the body that moves</translation>
+    </message>
+    <message>
         <location line="+11" />
         <source>%1 has no B%2 line</source>
         <translation>%1 has no B%2 line</translation>
@@ -1121,12 +1162,12 @@
     </message>
     <message>
         <location line="+1" />
-        <location line="+242" />
+        <location line="+262" />
         <source>B1 and B2 must name two different bodies</source>
         <translation>B1 and B2 must name two different bodies</translation>
     </message>
     <message>
-        <location line="-235" />
+        <location line="-255" />
         <source>%1 is a pivoted linear actuator (T 1) but has no CL1/CL2 line</source>
         <translation>%1 is a pivoted linear actuator (T 1) but has no CL1/CL2 line</translation>
     </message>
@@ -1151,7 +1192,7 @@
         <translation>CL1/CL2 belong to T 1 joints; add 'T 1' to the C line, or remove the CL line</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+14" />
         <source>%1: %2 = %3 is beyond any machine's (at most %4 in size)</source>
         <translation>%1: %2 = %3 is beyond any machine's (at most %4 in size)</translation>
     </message>
@@ -1279,18 +1320,18 @@
     </message>
     <message>
         <location line="+11" />
-        <location line="+62" />
+        <location line="+71" />
         <source>%1: joint %2 is not defined</source>
         <translation>%1: joint %2 is not defined</translation>
     </message>
     <message>
-        <location line="-61" />
-        <location line="+62" />
+        <location line="-70" />
+        <location line="+71" />
         <source>use the id of a joint (C id …)</source>
         <translation>use the id of a joint (C id …)</translation>
     </message>
     <message>
-        <location line="-56" />
+        <location line="-65" />
         <source>%1 already has a drive (line %2)</source>
         <translation>%1 already has a drive (line %2)</translation>
     </message>
@@ -1298,6 +1339,16 @@
         <location line="+3" />
         <source>one joint takes one drive; remove one of them</source>
         <translation>one joint takes one drive; remove one of them</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1: %2 is a free joint (T 3), which no drive can move</source>
+        <translation>%1: %2 is a free joint (T 3), which no drive can move</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>drive a T 0, T 1 or T 2 joint; push a free body with a force (F … POINT) instead</source>
+        <translation>drive a T 0, T 1 or T 2 joint; push a free body with a force (F … POINT) instead</translation>
     </message>
     <message>
         <location line="+10" />
@@ -1332,23 +1383,33 @@
     <message>
         <location filename="../solver/parse/parser.cpp" line="+274" />
         <location filename="../solver/spec/validate.cpp" line="+10" />
-        <location line="+171" />
+        <location line="+178" />
         <source>force %1</source>
         <translation>force %1</translation>
     </message>
     <message>
-        <location filename="../solver/spec/validate.cpp" line="-167" />
-        <location line="+64" />
+        <location filename="../solver/spec/validate.cpp" line="-174" />
+        <location line="+71" />
         <source>%1: body %2 is not defined</source>
         <translation>%1: body %2 is not defined</translation>
     </message>
     <message>
-        <location line="-63" />
+        <location line="-70" />
         <source>use the id of a body (B id …)</source>
         <translation>use the id of a body (B id …)</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+10" />
+        <source>%1: joint %2 is a free joint (T 3), which has no single coordinate</source>
+        <translation>%1: joint %2 is a free joint (T 3), which has no single coordinate</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>use a T 0, T 1 or T 2 joint here; load a free body with a force on the body (F … POINT or TORQUE)</source>
+        <translation>use a T 0, T 1 or T 2 joint here; load a free body with a force on the body (F … POINT or TORQUE)</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <location line="+125" />
         <source>%1: %2 is negative</source>
         <translation>%1: %2 is negative</translation>
@@ -1516,7 +1577,7 @@
         <translation>add '"' at the end of the text</translation>
     </message>
     <message>
-        <location filename="../solver/parse/parser.cpp" line="-1180" />
+        <location filename="../solver/parse/parser.cpp" line="-1181" />
         <source>write %1</source>
         <translation>write %1</translation>
     </message>
@@ -1594,13 +1655,13 @@
     </message>
     <message>
         <location line="+16" />
-        <location line="+761" />
+        <location line="+762" />
         <location line="+112" />
         <source>%1: %2 cannot be negative (%3)</source>
         <translation>%1: %2 cannot be negative (%3)</translation>
     </message>
     <message>
-        <location line="-872" />
+        <location line="-873" />
         <location line="+4" />
         <source>ids are whole numbers 0, 1, 2, …</source>
         <translation>ids are whole numbers 0, 1, 2, …</translation>
@@ -1734,18 +1795,18 @@
     </message>
     <message>
         <location line="+8" />
-        <location line="+382" />
+        <location line="+383" />
         <source>%1: %2 is given twice</source>
         <translation>%1: %2 is given twice</translation>
     </message>
     <message>
-        <location line="-381" />
-        <location line="+382" />
+        <location line="-382" />
+        <location line="+383" />
         <source>keep one %1</source>
         <translation>keep one %1</translation>
     </message>
     <message>
-        <location line="-340" />
+        <location line="-341" />
         <source>write GRAVITY gx gy gz (m/s², z is up)</source>
         <translation>write GRAVITY gx gy gz (m/s², z is up)</translation>
     </message>
@@ -1810,13 +1871,13 @@
     </message>
     <message>
         <location line="+0" />
-        <location line="+424" />
+        <location line="+425" />
         <location line="+14" />
         <source>the pump id</source>
         <translation>the pump id</translation>
     </message>
     <message>
-        <location line="-434" />
+        <location line="-435" />
         <source>pump %1</source>
         <translation>pump %1</translation>
     </message>
@@ -1852,19 +1913,19 @@
     </message>
     <message>
         <location line="+13" />
-        <location line="+518" />
+        <location line="+519" />
         <source>body</source>
         <translation>body</translation>
     </message>
     <message>
-        <location line="-518" />
-        <location line="+187" />
+        <location line="-519" />
+        <location line="+188" />
         <location line="+454" />
         <source>the body id</source>
         <translation>the body id</translation>
     </message>
     <message>
-        <location line="-617" />
+        <location line="-618" />
         <source>%1: a body takes 0, 4 or 7 numbers after its id (m Ixx Iyy Izz [Ixy Iyz Ixz]), found %2</source>
         <translation>%1: a body takes 0, 4 or 7 numbers after its id (m Ixx Iyy Izz [Ixy Iyz Ixz]), found %2</translation>
     </message>
@@ -1896,18 +1957,13 @@
     </message>
     <message>
         <location line="-5" />
-        <location line="+164" />
+        <location line="+165" />
         <location line="+327" />
         <source>the joint id</source>
         <translation>the joint id</translation>
     </message>
     <message>
         <location line="-484" />
-        <source>the joint type (0, 1 or 2)</source>
-        <translation>the joint type (0, 1 or 2)</translation>
-    </message>
-    <message>
-        <location line="+1" />
         <source>the lower limit</source>
         <translation>the lower limit</translation>
     </message>
@@ -1932,17 +1988,12 @@
         <translation>a joint statement (C)</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+13" />
         <source>%1: there is no joint type T %2</source>
         <translation>%1: there is no joint type T %2</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>use T 0 (revolute, the default), T 1 (pivoted linear actuator) or T 2 (prismatic)</source>
-        <translation>use T 0 (revolute, the default), T 1 (pivoted linear actuator) or T 2 (prismatic)</translation>
-    </message>
-    <message>
-        <location line="+12" />
+        <location line="+13" />
         <source>%1: DEG after %2, but the coordinate of %3 is a length</source>
         <translation>%1: DEG after %2, but the coordinate of %3 is a length</translation>
     </message>
@@ -2103,21 +2154,31 @@
         <translation>%1: a hydraulic drive needs VMAX or the pump data</translation>
     </message>
     <message>
-        <location line="-403" />
+        <location line="-404" />
         <location line="+34" />
-        <location line="+384" />
+        <location line="+385" />
         <location line="+106" />
         <location line="+12" />
         <source>%1: %2 must be positive, not %3</source>
         <translation>%1: %2 must be positive, not %3</translation>
     </message>
     <message>
-        <location line="-1037" />
+        <location line="-1038" />
         <source>statements are GRAVITY, RESTITUTION, FLUID, PUMP, B, C (with B1, B2, CL1), D, F and G; comments start with // or #</source>
         <translation>statements are GRAVITY, RESTITUTION, FLUID, PUMP, B, C (with B1, B2, CL1), D, F and G; comments start with // or #</translation>
     </message>
     <message>
-        <location line="+798" />
+        <location line="+634" />
+        <source>the joint type (0, 1, 2 or 3)</source>
+        <translation>the joint type (0, 1, 2 or 3)</translation>
+    </message>
+    <message>
+        <location line="+20" />
+        <source>use T 0 (revolute, the default), T 1 (pivoted linear actuator), T 2 (prismatic) or T 3 (free body)</source>
+        <translation>use T 0 (revolute, the default), T 1 (pivoted linear actuator), T 2 (prismatic) or T 3 (free body)</translation>
+    </message>
+    <message>
+        <location line="+145" />
         <source>write HYD, MOTOR, PNEU, SERVO, CYL or HMOTOR after the joint id</source>
         <translation>write HYD, MOTOR, PNEU, SERVO, CYL or HMOTOR after the joint id</translation>
     </message>
@@ -2512,7 +2573,7 @@
         <translation>t=%1 s: joint %2 relief valve closed retracting</translation>
     </message>
     <message>
-        <location line="+755" />
+        <location line="+757" />
         <source>the closed loops locked up at t = %1 s (a singular configuration: the loop-closure equations lost rank, so the mechanism cannot move on there); drive it another way or change the geometry</source>
         <translation>the closed loops locked up at t = %1 s (a singular configuration: the loop-closure equations lost rank, so the mechanism cannot move on there); drive it another way or change the geometry</translation>
     </message>
@@ -2532,7 +2593,7 @@
         <translation>the likely cause: a force or spring that grows without bound, or a body too light for the forces on it; check the masses and force magnitudes</translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+41" />
         <source>the closed loops cannot be closed at t = %1 s from the coordinates given: set coordinates the loops can reach</source>
         <translation>the closed loops cannot be closed at t = %1 s from the coordinates given: set coordinates the loops can reach</translation>
     </message>
@@ -4626,7 +4687,7 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
         <location line="+3" />
         <location line="+580" />
         <location filename="../ide/cli/export.cpp" line="+85" />
-        <location filename="../ide/cli/simulate.cpp" line="+240" />
+        <location filename="../ide/cli/simulate.cpp" line="+241" />
         <location filename="../ide/cli/tutorial.cpp" line="-58" />
         <source>%1 needs a value</source>
         <translation>%1 needs a value</translation>
@@ -4962,14 +5023,20 @@ Exit status 2 on a usage error or a file that cannot be read or written.
         <translation>prismatic</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>free</source>
+        <comment>joint type (T 3)</comment>
+        <translation>free</translation>
+    </message>
+    <message>
         <location line="+21" />
         <location line="+53" />
-        <location line="+38" />
+        <location line="+40" />
         <source>none</source>
         <translation>none</translation>
     </message>
     <message>
-        <location line="-66" />
+        <location line="-68" />
         <source>Model: %1</source>
         <translation>Model: %1</translation>
     </message>
@@ -5050,7 +5117,7 @@ Exit status 2 on a usage error or a file that cannot be read or written.
         <translation>Spanning tree (parent body &lt;- joint &lt;- body):</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+7" />
         <source>%1 &lt;- joint %2 &lt;- %3</source>
         <translation>%1 &lt;- joint %2 &lt;- %3</translation>
     </message>
@@ -5280,12 +5347,12 @@ A model with errors is not described: its problems are printed as by
         <translation>MuJoCo could not allocate its data</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+16" />
         <source>MuJoCo's model has no body '%1' or joint '%2'</source>
         <translation>MuJoCo's model has no body '%1' or joint '%2'</translation>
     </message>
     <message numerus="yes">
-        <location line="+47" />
+        <location line="+48" />
         <source>every joint passive in both: the model's %n drive(s) are not exported</source>
         <translation>
             <numerusform>every joint passive in both: the model's %n drive is not exported</numerusform>
@@ -5314,7 +5381,7 @@ A model with errors is not described: its problems are printed as by
         <translation>Padrob failed: %1</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+14" />
         <source>MuJoCo and Padrob disagree: the centre of mass of body %1 is %2 m apart at t = %3 s (tolerance %4 m; Padrob %5, MuJoCo %6)</source>
         <translation>MuJoCo and Padrob disagree: the centre of mass of body %1 is %2 m apart at t = %3 s (tolerance %4 m; Padrob %5, MuJoCo %6)</translation>
     </message>
@@ -5327,7 +5394,7 @@ A model with errors is not described: its problems are printed as by
         </translation>
     </message>
     <message>
-        <location filename="../ide/cli/simulate.cpp" line="-174" />
+        <location filename="../ide/cli/simulate.cpp" line="-175" />
         <source>warning: %1</source>
         <translation>warning: %1</translation>
     </message>
@@ -5397,9 +5464,10 @@ Simulates the model for T seconds and writes its trajectory as CSV.
   --release T:A:B       at time T [s] release the weld of body B to body A;
                         repeatable
 
-Columns: t; q&lt;j&gt; for every joint j in id order (loop-closing joints too);
-qd&lt;j&gt; likewise; ang&lt;j&gt; (the angle, rad) for every pivoted-actuator (T 1)
-joint, whose q&lt;j&gt; is the length;
+Columns: t; q&lt;j&gt; for every joint j in id order (loop-closing joints too;
+q&lt;j&gt;x q&lt;j&gt;y q&lt;j&gt;z for a free joint, T 3: its body's translation along B1's
+joint axes); qd&lt;j&gt; likewise; ang&lt;j&gt; (the angle, rad) for every
+pivoted-actuator (T 1) joint, whose q&lt;j&gt; is the length;
 x&lt;i&gt; y&lt;i&gt; z&lt;i&gt;, the world position of the centre of mass of every body i;
 F&lt;j&gt;, the force or torque of every drive; pA&lt;j&gt; pB&lt;j&gt;, the chamber pressures
 [Pa] of every fluid-power drive (CYL, HMOTOR) in joint id order, then pP&lt;id&gt;,
@@ -5447,9 +5515,10 @@ Simulates the model for T seconds and writes its trajectory as CSV.
   --release T:A:B       at time T [s] release the weld of body B to body A;
                         repeatable
 
-Columns: t; q&lt;j&gt; for every joint j in id order (loop-closing joints too);
-qd&lt;j&gt; likewise; ang&lt;j&gt; (the angle, rad) for every pivoted-actuator (T 1)
-joint, whose q&lt;j&gt; is the length;
+Columns: t; q&lt;j&gt; for every joint j in id order (loop-closing joints too;
+q&lt;j&gt;x q&lt;j&gt;y q&lt;j&gt;z for a free joint, T 3: its body's translation along B1's
+joint axes); qd&lt;j&gt; likewise; ang&lt;j&gt; (the angle, rad) for every
+pivoted-actuator (T 1) joint, whose q&lt;j&gt; is the length;
 x&lt;i&gt; y&lt;i&gt; z&lt;i&gt;, the world position of the centre of mass of every body i;
 F&lt;j&gt;, the force or torque of every drive; pA&lt;j&gt; pB&lt;j&gt;, the chamber pressures
 [Pa] of every fluid-power drive (CYL, HMOTOR) in joint id order, then pP&lt;id&gt;,
@@ -5470,7 +5539,7 @@ Exit status: 0 success; 1 the model has errors or the simulation failed;
 </translation>
     </message>
     <message>
-        <location line="+82" />
+        <location line="+83" />
         <source>--time must be a positive number of seconds, not '%1'</source>
         <translation>--time must be a positive number of seconds, not '%1'</translation>
     </message>
@@ -5536,7 +5605,7 @@ Exit status: 0 success; 1 the model has errors or the simulation failed;
         <translation>the model has no body %1; its bodies are %2</translation>
     </message>
     <message>
-        <location line="+160" />
+        <location line="+187" />
         <source>the adaptive integrator failed too: check the model's masses, springs and forces</source>
         <translation>the adaptive integrator failed too: check the model's masses, springs and forces</translation>
     </message>
@@ -7595,7 +7664,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>The model has no degrees of freedom to pose.</translation>
     </message>
     <message>
-        <location line="+230" />
+        <location line="+232" />
         <source>C %1 cannot reach the length %2: kept the last pose.</source>
         <translation>C %1 cannot reach the length %2: kept the last pose.</translation>
     </message>
@@ -7609,18 +7678,18 @@ never the .key files of the CAs; then run it with --security DIR.
     <name>studio::JointText</name>
     <message>
         <location filename="../ide/studio/tree/joint_text.cpp" line="+27" />
-        <location line="+30" />
+        <location line="+31" />
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
     <message>
-        <location line="-29" />
-        <location line="+30" />
+        <location line="-30" />
+        <location line="+31" />
         <source>%1°</source>
         <translation>%1°</translation>
     </message>
     <message>
-        <location line="-26" />
+        <location line="-27" />
         <source>m/s</source>
         <translation>m/s</translation>
     </message>
@@ -7643,6 +7712,11 @@ never the .key files of the CAs; then run it with --security DIR.
         <location line="+1" />
         <source>prismatic</source>
         <translation>prismatic</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>free body</source>
+        <translation>free body</translation>
     </message>
     <message>
         <location line="+5" />
@@ -8867,7 +8941,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>pump %1 %2</translation>
     </message>
     <message>
-        <location line="+238" />
+        <location line="+250" />
         <source>Mechanical energy [J]</source>
         <translation>Mechanical energy [J]</translation>
     </message>
@@ -11050,7 +11124,7 @@ Id: %3</translation>
 <context>
     <name>trainer::StationEngine</name>
     <message>
-        <location filename="../trainer/station/station_engine.cpp" line="+402" />
+        <location filename="../trainer/station/station_engine.cpp" line="+409" />
         <source>not connected</source>
         <translation>not connected</translation>
     </message>
@@ -11060,7 +11134,7 @@ Id: %3</translation>
         <translation>%1: %2 — valves closed, holding %3</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+10" />
         <source>%1, %2: device fault, it reads %3 where it can read only %4…%5 — valve closed%6</source>
         <translation>%1, %2: device fault, it reads %3 where it can read only %4…%5 — valve closed%6</translation>
     </message>

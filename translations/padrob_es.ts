@@ -312,8 +312,8 @@
     <message>
         <location filename="../solver/inertia/solid_inertia.cpp" line="+68" />
         <location line="+131" />
-        <location filename="../solver/parse/parser.cpp" line="+1362" />
-        <location filename="../solver/spec/validate.cpp" line="+468" />
+        <location filename="../solver/parse/parser.cpp" line="+1363" />
+        <location filename="../solver/spec/validate.cpp" line="+510" />
         <location line="+107" />
         <source>graphic %1</source>
         <translation>gráfico %1</translation>
@@ -408,13 +408,14 @@
         <translation>G %1 queda fuera de los controles de distancia libre: %2</translation>
     </message>
     <message>
-        <location filename="../solver/compile/compile.cpp" line="+199" />
+        <location filename="../solver/compile/compile.cpp" line="+227" />
         <location filename="../solver/compile/initial_configuration.cpp" line="+44" />
         <location line="+9" />
-        <location filename="../solver/parse/parser.cpp" line="-550" />
-        <location line="+134" />
-        <location filename="../solver/spec/validate.cpp" line="-516" />
-        <location line="+540" />
+        <location filename="../solver/compile/topology.cpp" line="+39" />
+        <location filename="../solver/parse/parser.cpp" line="-551" />
+        <location line="+135" />
+        <location filename="../solver/spec/validate.cpp" line="-558" />
+        <location line="+582" />
         <source>joint %1</source>
         <translation>articulación %1</translation>
     </message>
@@ -449,11 +450,11 @@
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../solver/compile/topology.cpp" line="+24" />
+        <location filename="../solver/compile/topology.cpp" line="-14" />
         <location filename="../solver/integrate/simulation.cpp" line="+53" />
-        <location filename="../solver/parse/parser.cpp" line="-199" />
-        <location filename="../solver/spec/validate.cpp" line="-547" />
-        <location line="+546" />
+        <location filename="../solver/parse/parser.cpp" line="-200" />
+        <location filename="../solver/spec/validate.cpp" line="-589" />
+        <location line="+588" />
         <source>body %1</source>
         <translation>cuerpo %1</translation>
     </message>
@@ -466,6 +467,26 @@
         <location line="+2" />
         <source>add a joint (C) that connects it to ground or to a connected body</source>
         <translation>agregue una articulación (C) que lo conecte a tierra o a un cuerpo conectado</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>%1 is a free joint (T 3), but its body B2 is also held by other joints (a closed loop)</source>
+        <translation>la %1 es una articulación libre (T 3), pero su cuerpo B2 también lo sujetan otras articulaciones (un lazo cerrado)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>a free body moves only through its free joint: remove the other joints between it and the rest, or use T 0, T 1 or T 2</source>
+        <translation>un cuerpo libre se mueve solo por su articulación libre: quite las otras articulaciones entre él y el resto, o use T 0, T 1 o T 2</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 is a free joint (T 3) whose B2 is nearer the ground than its B1</source>
+        <translation>la %1 es una articulación libre (T 3) cuyo B2 está más cerca de tierra que su B1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>write the free joint from the side nearer the ground (B1, usually body 0) to the free body (B2)</source>
+        <translation>escriba la articulación libre desde el lado más cercano a tierra (B1, normalmente el cuerpo 0) hacia el cuerpo libre (B2)</translation>
     </message>
     <message>
         <location filename="../solver/compile/initial_configuration.cpp" line="+17" />
@@ -569,29 +590,29 @@
     </message>
     <message>
         <location line="+21" />
-        <location line="+247" />
+        <location line="+249" />
         <source>give the bodies it moves a mass (B id m Ixx Iyy Izz), or remove the joint</source>
         <translation>dé masa a los cuerpos que mueve (B id m Ixx Iyy Izz), o elimine la articulación</translation>
     </message>
     <message>
-        <location line="-226" />
+        <location line="-228" />
         <source>the bodies it moves have no mass</source>
         <translation>los cuerpos que mueve no tienen masa</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+223" />
+        <location line="+225" />
         <source>the bodies it moves have no mass, or only mass on its axis and no inertia about it</source>
         <translation>los cuerpos que mueve no tienen masa, o solo tienen masa sobre su eje y ninguna inercia respecto de él</translation>
     </message>
     <message>
-        <location line="-220" />
-        <location line="+217" />
+        <location line="-222" />
+        <location line="+219" />
         <source>%1 moves no mass: %2, so the mass matrix is singular at the initial configuration</source>
         <translation>la %1 no mueve masa: %2, así que la matriz de masa es singular en la configuración inicial</translation>
     </message>
     <message>
-        <location line="-213" />
+        <location line="-215" />
         <source>%1 and the loop it drives (%2) move no mass: %3, so the mass matrix is singular at the initial configuration</source>
         <translation>la %1 y el lazo que acciona (%2) no mueven masa: %3, así que la matriz de masa es singular en la configuración inicial</translation>
     </message>
@@ -961,7 +982,7 @@
         <translation>un modelo es un texto corto; ponga las mallas en sus propios archivos (G … MESH "file")</translation>
     </message>
     <message>
-        <location filename="../solver/spec/validate.cpp" line="-545" />
+        <location filename="../solver/spec/validate.cpp" line="-587" />
         <source>body %1 (%2)</source>
         <translation>cuerpo %1 (%2)</translation>
     </message>
@@ -971,7 +992,7 @@
         <translation>articulación %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../solver/parse/parser.cpp" line="+712" />
+        <location filename="../solver/parse/parser.cpp" line="+713" />
         <location filename="../solver/spec/validate.cpp" line="+5" />
         <source>drive on joint %1</source>
         <translation>accionamiento de la articulación %1</translation>
@@ -1059,13 +1080,13 @@
     <message>
         <location line="+12" />
         <location line="+5" />
-        <location line="+295" />
+        <location line="+337" />
         <location line="+84" />
         <source>%1: %2 has zero length</source>
         <translation>%1: %2 tiene longitud cero</translation>
     </message>
     <message>
-        <location line="-383" />
+        <location line="-425" />
         <source>the axis is a direction, e.g. A%1 0 0 1</source>
         <translation>el eje es una dirección, p. ej. A%1 0 0 1</translation>
     </message>
@@ -1095,6 +1116,26 @@
         <translation>escriba R%1 a 90° de A%1</translation>
     </message>
     <message>
+        <location line="+12" />
+        <source>joint %1 is a free joint (T 3): %2 does not apply to it</source>
+        <translation>la articulación %1 es una articulación libre (T 3): %2 no se aplica a ella</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>remove %1; place the free body with the joint's P1, A1 and R1 (it starts where its two joint frames coincide, at rest)</source>
+        <translation>quite %1; ubique el cuerpo libre con P1, A1 y R1 de la articulación (parte donde coinciden sus dos sistemas de la articulación, en reposo)</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>joint %1 is a free joint (T 3) whose B2 is the ground</source>
+        <translation>la articulación %1 es una articulación libre (T 3) cuyo B2 es tierra</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the free body is B2: write B1 0 … and B2 with the body that moves</source>
+        <translation>el cuerpo libre es B2: escriba B1 0 … y B2 con el cuerpo que se mueve</translation>
+    </message>
+    <message>
         <location line="+11" />
         <source>%1 has no B%2 line</source>
         <translation>la %1 no tiene línea B%2</translation>
@@ -1121,12 +1162,12 @@
     </message>
     <message>
         <location line="+1" />
-        <location line="+242" />
+        <location line="+262" />
         <source>B1 and B2 must name two different bodies</source>
         <translation>B1 y B2 deben indicar dos cuerpos distintos</translation>
     </message>
     <message>
-        <location line="-235" />
+        <location line="-255" />
         <source>%1 is a pivoted linear actuator (T 1) but has no CL1/CL2 line</source>
         <translation>la %1 es un actuador lineal pivotado (T 1), pero no tiene línea CL1/CL2</translation>
     </message>
@@ -1151,7 +1192,7 @@
         <translation>CL1/CL2 son propios de las articulaciones T 1; agregue 'T 1' a la línea C, o quite la línea CL</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+14" />
         <source>%1: %2 = %3 is beyond any machine's (at most %4 in size)</source>
         <translation>%1: %2 = %3 excede lo de cualquier máquina (a lo más %4 en magnitud)</translation>
     </message>
@@ -1279,18 +1320,18 @@
     </message>
     <message>
         <location line="+11" />
-        <location line="+62" />
+        <location line="+71" />
         <source>%1: joint %2 is not defined</source>
         <translation>%1: la articulación %2 no está definida</translation>
     </message>
     <message>
-        <location line="-61" />
-        <location line="+62" />
+        <location line="-70" />
+        <location line="+71" />
         <source>use the id of a joint (C id …)</source>
         <translation>use el id de una articulación (C id …)</translation>
     </message>
     <message>
-        <location line="-56" />
+        <location line="-65" />
         <source>%1 already has a drive (line %2)</source>
         <translation>la %1 ya tiene un accionamiento (línea %2)</translation>
     </message>
@@ -1298,6 +1339,16 @@
         <location line="+3" />
         <source>one joint takes one drive; remove one of them</source>
         <translation>cada articulación lleva un solo accionamiento; quite uno de ellos</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1: %2 is a free joint (T 3), which no drive can move</source>
+        <translation>%1: la %2 es una articulación libre (T 3), que ningún accionamiento puede mover</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>drive a T 0, T 1 or T 2 joint; push a free body with a force (F … POINT) instead</source>
+        <translation>accione una articulación T 0, T 1 o T 2; para empujar un cuerpo libre use una fuerza (F … POINT)</translation>
     </message>
     <message>
         <location line="+10" />
@@ -1332,23 +1383,33 @@
     <message>
         <location filename="../solver/parse/parser.cpp" line="+274" />
         <location filename="../solver/spec/validate.cpp" line="+10" />
-        <location line="+171" />
+        <location line="+178" />
         <source>force %1</source>
         <translation>fuerza %1</translation>
     </message>
     <message>
-        <location filename="../solver/spec/validate.cpp" line="-167" />
-        <location line="+64" />
+        <location filename="../solver/spec/validate.cpp" line="-174" />
+        <location line="+71" />
         <source>%1: body %2 is not defined</source>
         <translation>%1: el cuerpo %2 no está definido</translation>
     </message>
     <message>
-        <location line="-63" />
+        <location line="-70" />
         <source>use the id of a body (B id …)</source>
         <translation>use el id de un cuerpo (B id …)</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+10" />
+        <source>%1: joint %2 is a free joint (T 3), which has no single coordinate</source>
+        <translation>%1: la articulación %2 es una articulación libre (T 3), que no tiene una coordenada única</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>use a T 0, T 1 or T 2 joint here; load a free body with a force on the body (F … POINT or TORQUE)</source>
+        <translation>use aquí una articulación T 0, T 1 o T 2; cargue un cuerpo libre con una fuerza sobre el cuerpo (F … POINT o TORQUE)</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <location line="+125" />
         <source>%1: %2 is negative</source>
         <translation>%1: %2 es negativo</translation>
@@ -1516,7 +1577,7 @@
         <translation>agregue '"' al final del texto</translation>
     </message>
     <message>
-        <location filename="../solver/parse/parser.cpp" line="-1180" />
+        <location filename="../solver/parse/parser.cpp" line="-1181" />
         <source>write %1</source>
         <translation>escriba %1</translation>
     </message>
@@ -1594,13 +1655,13 @@
     </message>
     <message>
         <location line="+16" />
-        <location line="+761" />
+        <location line="+762" />
         <location line="+112" />
         <source>%1: %2 cannot be negative (%3)</source>
         <translation>%1: %2 no puede ser negativo (%3)</translation>
     </message>
     <message>
-        <location line="-872" />
+        <location line="-873" />
         <location line="+4" />
         <source>ids are whole numbers 0, 1, 2, …</source>
         <translation>los id son números enteros 0, 1, 2, …</translation>
@@ -1734,18 +1795,18 @@
     </message>
     <message>
         <location line="+8" />
-        <location line="+382" />
+        <location line="+383" />
         <source>%1: %2 is given twice</source>
         <translation>%1: %2 aparece dos veces</translation>
     </message>
     <message>
-        <location line="-381" />
-        <location line="+382" />
+        <location line="-382" />
+        <location line="+383" />
         <source>keep one %1</source>
         <translation>deje un solo %1</translation>
     </message>
     <message>
-        <location line="-340" />
+        <location line="-341" />
         <source>write GRAVITY gx gy gz (m/s², z is up)</source>
         <translation>escriba GRAVITY gx gy gz (m/s², z hacia arriba)</translation>
     </message>
@@ -1810,13 +1871,13 @@
     </message>
     <message>
         <location line="+0" />
-        <location line="+424" />
+        <location line="+425" />
         <location line="+14" />
         <source>the pump id</source>
         <translation>el id de la bomba</translation>
     </message>
     <message>
-        <location line="-434" />
+        <location line="-435" />
         <source>pump %1</source>
         <translation>bomba %1</translation>
     </message>
@@ -1852,19 +1913,19 @@
     </message>
     <message>
         <location line="+13" />
-        <location line="+518" />
+        <location line="+519" />
         <source>body</source>
         <translation>cuerpo</translation>
     </message>
     <message>
-        <location line="-518" />
-        <location line="+187" />
+        <location line="-519" />
+        <location line="+188" />
         <location line="+454" />
         <source>the body id</source>
         <translation>el id del cuerpo</translation>
     </message>
     <message>
-        <location line="-617" />
+        <location line="-618" />
         <source>%1: a body takes 0, 4 or 7 numbers after its id (m Ixx Iyy Izz [Ixy Iyz Ixz]), found %2</source>
         <translation>%1: un cuerpo lleva 0, 4 o 7 números después de su id (m Ixx Iyy Izz [Ixy Iyz Ixz]); se encontraron %2</translation>
     </message>
@@ -1896,18 +1957,13 @@
     </message>
     <message>
         <location line="-5" />
-        <location line="+164" />
+        <location line="+165" />
         <location line="+327" />
         <source>the joint id</source>
         <translation>el id de la articulación</translation>
     </message>
     <message>
         <location line="-484" />
-        <source>the joint type (0, 1 or 2)</source>
-        <translation>el tipo de articulación (0, 1 o 2)</translation>
-    </message>
-    <message>
-        <location line="+1" />
         <source>the lower limit</source>
         <translation>el límite inferior</translation>
     </message>
@@ -1932,17 +1988,12 @@
         <translation>una instrucción de articulación (C)</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+13" />
         <source>%1: there is no joint type T %2</source>
         <translation>%1: no existe el tipo de articulación T %2</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>use T 0 (revolute, the default), T 1 (pivoted linear actuator) or T 2 (prismatic)</source>
-        <translation>use T 0 (de revolución, el tipo por defecto), T 1 (actuador lineal pivotado) o T 2 (prismática)</translation>
-    </message>
-    <message>
-        <location line="+12" />
+        <location line="+13" />
         <source>%1: DEG after %2, but the coordinate of %3 is a length</source>
         <translation>%1: DEG después de %2, pero la coordenada de %3 es una longitud</translation>
     </message>
@@ -2103,21 +2154,31 @@
         <translation>%1: un accionamiento hidráulico necesita VMAX o los datos de la bomba</translation>
     </message>
     <message>
-        <location line="-403" />
+        <location line="-404" />
         <location line="+34" />
-        <location line="+384" />
+        <location line="+385" />
         <location line="+106" />
         <location line="+12" />
         <source>%1: %2 must be positive, not %3</source>
         <translation>%1: %2 debe ser positivo, no %3</translation>
     </message>
     <message>
-        <location line="-1037" />
+        <location line="-1038" />
         <source>statements are GRAVITY, RESTITUTION, FLUID, PUMP, B, C (with B1, B2, CL1), D, F and G; comments start with // or #</source>
         <translation>las instrucciones son GRAVITY, RESTITUTION, FLUID, PUMP, B, C (con B1, B2, CL1), D, F y G; los comentarios empiezan con // o #</translation>
     </message>
     <message>
-        <location line="+798" />
+        <location line="+634" />
+        <source>the joint type (0, 1, 2 or 3)</source>
+        <translation>el tipo de articulación (0, 1, 2 o 3)</translation>
+    </message>
+    <message>
+        <location line="+20" />
+        <source>use T 0 (revolute, the default), T 1 (pivoted linear actuator), T 2 (prismatic) or T 3 (free body)</source>
+        <translation>use T 0 (de revolución, por omisión), T 1 (actuador lineal pivotado), T 2 (prismática) o T 3 (cuerpo libre)</translation>
+    </message>
+    <message>
+        <location line="+145" />
         <source>write HYD, MOTOR, PNEU, SERVO, CYL or HMOTOR after the joint id</source>
         <translation>escriba HYD, MOTOR, PNEU, SERVO, CYL o HMOTOR después del id de la articulación</translation>
     </message>
@@ -2512,7 +2573,7 @@
         <translation>t=%1 s: articulación %2: la válvula de alivio se cerró al retraer</translation>
     </message>
     <message>
-        <location line="+755" />
+        <location line="+757" />
         <source>the closed loops locked up at t = %1 s (a singular configuration: the loop-closure equations lost rank, so the mechanism cannot move on there); drive it another way or change the geometry</source>
         <translation>los lazos cerrados se trabaron en t = %1 s (una configuración singular: las ecuaciones de cierre de los lazos perdieron rango, así que el mecanismo no puede seguir moviéndose desde ahí); accione el mecanismo de otra forma o cambie la geometría</translation>
     </message>
@@ -2532,7 +2593,7 @@
         <translation>la causa probable: una fuerza o un resorte que crece sin límite, o un cuerpo demasiado liviano para las fuerzas que recibe; revise las masas y las magnitudes de las fuerzas</translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+41" />
         <source>the closed loops cannot be closed at t = %1 s from the coordinates given: set coordinates the loops can reach</source>
         <translation>los lazos cerrados no se pueden cerrar en t = %1 s con las coordenadas indicadas: indique coordenadas que los lazos puedan alcanzar</translation>
     </message>
@@ -4629,7 +4690,7 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
         <location line="+3" />
         <location line="+580" />
         <location filename="../ide/cli/export.cpp" line="+85" />
-        <location filename="../ide/cli/simulate.cpp" line="+240" />
+        <location filename="../ide/cli/simulate.cpp" line="+241" />
         <location filename="../ide/cli/tutorial.cpp" line="-58" />
         <source>%1 needs a value</source>
         <translation>%1 necesita un valor</translation>
@@ -4967,14 +5028,20 @@ escribir.
         <translation>prismática</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>free</source>
+        <comment>joint type (T 3)</comment>
+        <translation>libre</translation>
+    </message>
+    <message>
         <location line="+21" />
         <location line="+53" />
-        <location line="+38" />
+        <location line="+40" />
         <source>none</source>
         <translation>ninguna</translation>
     </message>
     <message>
-        <location line="-66" />
+        <location line="-68" />
         <source>Model: %1</source>
         <translation>Modelo: %1</translation>
     </message>
@@ -5055,7 +5122,7 @@ escribir.
         <translation>Árbol de expansión (cuerpo padre &lt;- articulación &lt;- cuerpo):</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+7" />
         <source>%1 &lt;- joint %2 &lt;- %3</source>
         <translation>%1 &lt;- articulación %2 &lt;- %3</translation>
     </message>
@@ -5294,12 +5361,12 @@ Un modelo con errores no se describe: sus problemas se informan como con
         <translation>MuJoCo no pudo reservar memoria para sus datos</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+16" />
         <source>MuJoCo's model has no body '%1' or joint '%2'</source>
         <translation>el modelo de MuJoCo no tiene el cuerpo '%1' o la articulación '%2'</translation>
     </message>
     <message numerus="yes">
-        <location line="+47" />
+        <location line="+48" />
         <source>every joint passive in both: the model's %n drive(s) are not exported</source>
         <translation>
             <numerusform>todas las articulaciones pasivas en ambos: %n accionamiento del modelo no se exporta</numerusform>
@@ -5328,7 +5395,7 @@ Un modelo con errores no se describe: sus problemas se informan como con
         <translation>Padrob falló: %1</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+14" />
         <source>MuJoCo and Padrob disagree: the centre of mass of body %1 is %2 m apart at t = %3 s (tolerance %4 m; Padrob %5, MuJoCo %6)</source>
         <translation>MuJoCo y Padrob no coinciden: el centro de masa del cuerpo %1 difiere en %2 m en t = %3 s (tolerancia %4 m; Padrob %5, MuJoCo %6)</translation>
     </message>
@@ -5341,7 +5408,7 @@ Un modelo con errores no se describe: sus problemas se informan como con
         </translation>
     </message>
     <message>
-        <location filename="../ide/cli/simulate.cpp" line="-174" />
+        <location filename="../ide/cli/simulate.cpp" line="-175" />
         <source>warning: %1</source>
         <translation>advertencia: %1</translation>
     </message>
@@ -5411,9 +5478,10 @@ Simulates the model for T seconds and writes its trajectory as CSV.
   --release T:A:B       at time T [s] release the weld of body B to body A;
                         repeatable
 
-Columns: t; q&lt;j&gt; for every joint j in id order (loop-closing joints too);
-qd&lt;j&gt; likewise; ang&lt;j&gt; (the angle, rad) for every pivoted-actuator (T 1)
-joint, whose q&lt;j&gt; is the length;
+Columns: t; q&lt;j&gt; for every joint j in id order (loop-closing joints too;
+q&lt;j&gt;x q&lt;j&gt;y q&lt;j&gt;z for a free joint, T 3: its body's translation along B1's
+joint axes); qd&lt;j&gt; likewise; ang&lt;j&gt; (the angle, rad) for every
+pivoted-actuator (T 1) joint, whose q&lt;j&gt; is the length;
 x&lt;i&gt; y&lt;i&gt; z&lt;i&gt;, the world position of the centre of mass of every body i;
 F&lt;j&gt;, the force or torque of every drive; pA&lt;j&gt; pB&lt;j&gt;, the chamber pressures
 [Pa] of every fluid-power drive (CYL, HMOTOR) in joint id order, then pP&lt;id&gt;,
@@ -5465,8 +5533,9 @@ Simula el modelo durante T segundos y escribe su trayectoria en CSV.
                         cuerpo A; repetible
 
 Columnas: t; q&lt;j&gt; de cada articulación j por orden de id (también las que cierran
-lazos); qd&lt;j&gt; igual; ang&lt;j&gt; (el ángulo, rad) de cada articulación de actuador
-pivotado (T 1), cuyo q&lt;j&gt; es el largo;
+lazos; q&lt;j&gt;x q&lt;j&gt;y q&lt;j&gt;z en una articulación libre, T 3: la traslación de su cuerpo
+según los ejes de la articulación en B1); qd&lt;j&gt; igual; ang&lt;j&gt; (el ángulo, rad) de
+cada articulación de actuador pivotado (T 1), cuyo q&lt;j&gt; es el largo;
 x&lt;i&gt; y&lt;i&gt; z&lt;i&gt;, la posición en el mundo del centro de masa de cada cuerpo i;
 F&lt;j&gt;, la fuerza o el torque de cada accionamiento; pA&lt;j&gt; pB&lt;j&gt;, las presiones de
 las cámaras [Pa] de cada accionamiento oleohidráulico (CYL, HMOTOR) por orden de
@@ -5488,7 +5557,7 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o la simulación falló;
 </translation>
     </message>
     <message>
-        <location line="+82" />
+        <location line="+83" />
         <source>--time must be a positive number of seconds, not '%1'</source>
         <translation>--time debe ser un número positivo de segundos, no '%1'</translation>
     </message>
@@ -5554,7 +5623,7 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o la simulación falló;
         <translation>el modelo no tiene el cuerpo %1; sus cuerpos son %2</translation>
     </message>
     <message>
-        <location line="+160" />
+        <location line="+187" />
         <source>the adaptive integrator failed too: check the model's masses, springs and forces</source>
         <translation>el integrador adaptativo también falló: revise las masas, resortes y fuerzas del modelo</translation>
     </message>
@@ -7621,7 +7690,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>El modelo no tiene grados de libertad que mover.</translation>
     </message>
     <message>
-        <location line="+230" />
+        <location line="+232" />
         <source>C %1 cannot reach the length %2: kept the last pose.</source>
         <translation>C %1 no puede alcanzar el largo %2: se mantiene la última postura.</translation>
     </message>
@@ -7635,18 +7704,18 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
     <name>studio::JointText</name>
     <message>
         <location filename="../ide/studio/tree/joint_text.cpp" line="+27" />
-        <location line="+30" />
+        <location line="+31" />
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
     <message>
-        <location line="-29" />
-        <location line="+30" />
+        <location line="-30" />
+        <location line="+31" />
         <source>%1°</source>
         <translation>%1°</translation>
     </message>
     <message>
-        <location line="-26" />
+        <location line="-27" />
         <source>m/s</source>
         <translation>m/s</translation>
     </message>
@@ -7669,6 +7738,11 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <location line="+1" />
         <source>prismatic</source>
         <translation>prismática</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>free body</source>
+        <translation>cuerpo libre</translation>
     </message>
     <message>
         <location line="+5" />
@@ -8893,7 +8967,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>bomba %1 %2</translation>
     </message>
     <message>
-        <location line="+238" />
+        <location line="+250" />
         <source>Mechanical energy [J]</source>
         <translation>Energía mecánica [J]</translation>
     </message>
@@ -11076,7 +11150,7 @@ Id: %3</translation>
 <context>
     <name>trainer::StationEngine</name>
     <message>
-        <location filename="../trainer/station/station_engine.cpp" line="+402" />
+        <location filename="../trainer/station/station_engine.cpp" line="+409" />
         <source>not connected</source>
         <translation>no conectado</translation>
     </message>
@@ -11086,7 +11160,7 @@ Id: %3</translation>
         <translation>%1: %2 — válvulas cerradas, se mantienen %3</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+10" />
         <source>%1, %2: device fault, it reads %3 where it can read only %4…%5 — valve closed%6</source>
         <translation>%1, %2: falla del dispositivo, lee %3 donde solo puede leer %4…%5 — válvula cerrada%6</translation>
     </message>

@@ -64,6 +64,7 @@ std::string typeText(JointType t)
     case JointType::Revolute: return trStd("padrob", "revolute", "joint type (T 0)");
     case JointType::Actuator: return trStd("padrob", "actuator", "joint type (T 1)");
     case JointType::Prismatic: return trStd("padrob", "prismatic", "joint type (T 2)");
+    case JointType::Free: return trStd("padrob", "free", "joint type (T 3)");
     }
     return solver::jointTypeName(t);
 }
@@ -146,7 +147,9 @@ std::string infoText(const CompiledModel& m)
     }
 
     out += "\n" + trStd("padrob", "Spanning tree (parent body <- joint <- body):") + "\n";
-    for (int ji : t.treeJoints) {
+    for (std::size_t k = 0; k < t.treeJoints.size(); ++k) {
+        const int ji = t.treeJoints[k];
+        if (k > 0 && t.treeJoints[k - 1] == ji) continue;  // a free joint's coordinates after its first
         const JointSpec& j = m.spec.joints[static_cast<std::size_t>(ji)];
         bool rev = t.reversed[static_cast<std::size_t>(ji)];
         int parent = rev ? j.side2.body : j.side1.body, child = rev ? j.side1.body : j.side2.body;
@@ -304,7 +307,9 @@ std::string infoJson(const CompiledModel& m)
     }
 
     w.key("tree").beginArray();
-    for (int ji : t.treeJoints) {
+    for (std::size_t k = 0; k < t.treeJoints.size(); ++k) {
+        const int ji = t.treeJoints[k];
+        if (k > 0 && t.treeJoints[k - 1] == ji) continue;  // a free joint's coordinates after its first
         const JointSpec& j = m.spec.joints[static_cast<std::size_t>(ji)];
         bool rev = t.reversed[static_cast<std::size_t>(ji)];
         w.beginObject();

@@ -119,10 +119,14 @@ bool runMujoco(const solver::Model& model, double dt, int steps, int runs, doubl
     const solver::MjcfNames names = solver::mjcfNames(model);
     std::vector<int> mjBody(static_cast<std::size_t>(model.nb));
     for (int i = 0; i < model.nb; ++i) {
+        mjBody[i] = -1;
+        if (model.bodyId[i] < 0) continue;  // a free joint's massless bodies: not exported
+        // (a free body's joint: the free joint's, named at its first coordinate)
+        const int jointAt = model.freeSlot[i] > 0 ? i - model.freeSlot[i] : i;
         mjBody[i] = mj_name2id(m, mjOBJ_BODY, names.body[i].c_str());
-        const int joint = mj_name2id(m, mjOBJ_JOINT, names.joint[i].c_str());
+        const int joint = mj_name2id(m, mjOBJ_JOINT, names.joint[jointAt].c_str());
         if (mjBody[i] < 0 || joint < 0) {
-            error = fill(trStd("padrob", "MuJoCo's model has no body '%1' or joint '%2'"), {names.body[i], names.joint[i]});
+            error = fill(trStd("padrob", "MuJoCo's model has no body '%1' or joint '%2'"), {names.body[i], names.joint[jointAt]});
             return false;
         }
     }
@@ -132,6 +136,7 @@ bool runMujoco(const solver::Model& model, double dt, int steps, int runs, doubl
     for (int i = 0; i < model.nb; ++i) byId[i] = i;
     std::sort(byId.begin(), byId.end(), [&](int a, int b) { return model.bodyId[a] < model.bodyId[b]; });
     for (int i : byId) {
+        if (mjBody[i] < 0) continue;
         const solver::MjcfInertial p = solver::mjcfInertial(model, i);
         if (!p.placeholder()) continue;
         const int b = mjBody[i];
@@ -209,6 +214,7 @@ bool runMujoco(const solver::Model& model, double dt, int steps, int runs, doubl
             mj_kinematics(m, d);  // mj_step leaves the positions of the step's start
         }
         for (int i = 0; i < model.nb; ++i) {
+            if (mjBody[i] < 0) continue;
             const Eigen::Vector3d p = solver::comPosition(*padrobModel, sim.data(), i);
             const Eigen::Map<const Eigen::Vector3d> q(d->xipos + 3 * mjBody[i]);
             const double distance = (p - q).norm();

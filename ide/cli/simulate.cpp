@@ -187,9 +187,10 @@ std::string simulateHelp()
               "  --release T:A:B       at time T [s] release the weld of body B to body A;\n"
               "                        repeatable\n"
               "\n"
-              "Columns: t; q<j> for every joint j in id order (loop-closing joints too);\n"
-              "qd<j> likewise; ang<j> (the angle, rad) for every pivoted-actuator (T 1)\n"
-              "joint, whose q<j> is the length;\n"
+              "Columns: t; q<j> for every joint j in id order (loop-closing joints too;\n"
+              "q<j>x q<j>y q<j>z for a free joint, T 3: its body's translation along B1's\n"
+              "joint axes); qd<j> likewise; ang<j> (the angle, rad) for every\n"
+              "pivoted-actuator (T 1) joint, whose q<j> is the length;\n"
               "x<i> y<i> z<i>, the world position of the centre of mass of every body i;\n"
               "F<j>, the force or torque of every drive; pA<j> pB<j>, the chamber pressures\n"
               "[Pa] of every fluid-power drive (CYL, HMOTOR) in joint id order, then pP<id>,\n"
@@ -378,8 +379,13 @@ int runSimulate(const std::vector<std::string>& args)
         printErr("padrob simulate: " + i18n::text(out.errorText()).toStdString() + "\n");
         return kUsage;
     }
-    std::vector<int> joints(static_cast<std::size_t>(m.nb)), bodies(static_cast<std::size_t>(m.nb));
-    for (int j = 0; j < m.nb; ++j) joints[j] = bodies[j] = j;
+    // (a free joint's coordinates: one column group, at its slot 0; the massless bodies
+    // between them: none)
+    std::vector<int> joints, bodies;
+    for (int j = 0; j < m.nb; ++j) {
+        if (m.freeSlot[j] <= 0) joints.push_back(j);
+        if (m.bodyId[j] >= 0) bodies.push_back(j);
+    }
     std::sort(joints.begin(), joints.end(), [&](int a, int b) { return m.jointId[a] < m.jointId[b]; });
     std::sort(bodies.begin(), bodies.end(), [&](int a, int b) { return m.bodyId[a] < m.bodyId[b]; });
     // every joint in id order: tree joints (their coordinates) and loop-closing joints
@@ -398,8 +404,17 @@ int runSimulate(const std::vector<std::string>& args)
     std::sort(jointColumns.begin(), jointColumns.end(),
               [](const JointColumn& a, const JointColumn& b) { return a.id < b.id; });
     std::vector<std::string> header{"t"};
-    for (const JointColumn& c : jointColumns) header.push_back("q" + std::to_string(c.id));
-    for (const JointColumn& c : jointColumns) header.push_back("qd" + std::to_string(c.id));
+    // a free joint (T 3): three columns each, q<j>x, q<j>y, q<j>z (along B1's joint axes)
+    for (const std::string prefix : {"q", "qd"}) {
+        for (const JointColumn& c : jointColumns) {
+            const std::string name = prefix + std::to_string(c.id);
+            if (c.tree >= 0 && m.freeSlot[c.tree] == 0) {
+                header.insert(header.end(), {name + "x", name + "y", name + "z"});
+            } else {
+                header.push_back(name);
+            }
+        }
+    }
     for (const JointColumn& c : jointColumns) {
         if (c.type == solver::JointType::Actuator) header.push_back("ang" + std::to_string(c.id));
     }
@@ -442,16 +457,29 @@ int runSimulate(const std::vector<std::string>& args)
 
     std::vector<solver::SimulationEvent> events;
     std::vector<solver::CutReading> cutReadings;
+    std::vector<solver::FreeJointMotion> freeMotion;
     auto writeRow = [&] {
         const solver::State& s = sim.state();
         const solver::Data& d = sim.data();
         out.add(s.t);
         cutReadings.clear();
         for (std::size_t k = 0; k < m.cuts.size(); ++k) cutReadings.push_back(solver::readCut(m, d, static_cast<int>(k)));
+        freeMotion.clear();
         for (const JointColumn& c : jointColumns) {
+            if (c.tree >= 0 && m.freeSlot[c.tree] == 0) {
+                freeMotion.push_back(solver::freeJointMotion(m, d, s.q, s.qd, c.tree));
+                for (int a = 0; a < 3; ++a) out.add(freeMotion.back().position[a]);
+                continue;
+            }
             out.add(c.tree >= 0 ? m.coordinate(c.tree, s.q[c.tree]) : cutReadings[static_cast<std::size_t>(c.cut)].q);
         }
+        std::size_t nextFree = 0;
         for (const JointColumn& c : jointColumns) {
+            if (c.tree >= 0 && m.freeSlot[c.tree] == 0) {
+                for (int a = 0; a < 3; ++a) out.add(freeMotion[nextFree].velocity[a]);
+                ++nextFree;
+                continue;
+            }
             out.add(c.tree >= 0 ? s.qd[c.tree] * m.coordinateRate(c.tree, s.q[c.tree])
                                 : cutReadings[static_cast<std::size_t>(c.cut)].qd);
         }

@@ -177,6 +177,34 @@ void compileFluidPower(const ModelSpec& spec, TreeJoint treeJoint, Model& m)
     }
 }
 
+/// The joint frames of a free joint's coordinate `slot` (0–5) in its parent and child
+/// bodies, from the free joint's frames F1 (in B1) and F2 (in B2). A prismatic joint
+/// shifts along its frame's y axis and a revolute one turns about its x axis, so each
+/// slot's frame carries the axis it moves along there; the massless bodies between the
+/// slots keep F1's axes (turned by the base orientation and the turns before them):
+///   slots 0, 1, 2: shifts along F1's x (A), y (R), z (T);
+///   slot 3: turn about x of the base (kinematics.cpp turns its parent frame by the
+///   base quaternion); slots 4, 5: turns about y, z; slot 5's child is B2, at F2.
+void freeSlotFrames(int slot, const Eigen::Isometry3d& f1, const Eigen::Isometry3d& f2, Eigen::Isometry3d& X_pj,
+                    Eigen::Isometry3d& X_cj)
+{
+    using Eigen::AngleAxisd;
+    using Eigen::Vector3d;
+    const double half = kPi / 2;
+    Eigen::Matrix3d r = Eigen::Matrix3d::Identity();  // the slot's axis onto y (shifts) or x (turns)
+    switch (slot) {
+    case 0: r = AngleAxisd(-half, Vector3d::UnitZ()).toRotationMatrix(); break;  // y → x
+    case 2: r = AngleAxisd(half, Vector3d::UnitX()).toRotationMatrix(); break;   // y → z
+    case 4: r = AngleAxisd(half, Vector3d::UnitZ()).toRotationMatrix(); break;   // x → y
+    case 5: r = AngleAxisd(-half, Vector3d::UnitY()).toRotationMatrix(); break;  // x → z
+    default: break;
+    }
+    r = r.array().round().matrix();  // exactly 0 and ±1: no 6e-17 leaking across axes
+    const Eigen::Isometry3d turn(r);
+    X_pj = slot == 0 ? Eigen::Isometry3d(f1 * turn) : turn;
+    X_cj = slot == kFreeJointCoordinates - 1 ? Eigen::Isometry3d(f2 * turn) : turn;
+}
+
 }  // namespace
 
 CompileResult compileModel(const ModelSpec& spec, Diagnostics& diags, const ModelSpec* scene)
@@ -227,11 +255,16 @@ CompileResult compileModel(const ModelSpec& spec, Diagnostics& diags, const Mode
     std::vector<int> treeOfBody(topo.bodyIds.size(), -1);
     std::vector<int> treeOfJoint(spec.joints.size(), -1);
     std::vector<int> childBody(nbs);
+    // (a free joint's six tree joints: its body is slot 5's child, the joint is slot 0)
+    std::vector<int> slot(nbs, -1);
     for (int i = 0; i < nb; ++i) {
         const int j = topo.treeJoints[static_cast<std::size_t>(i)];
         const int child = topo.reversed[j] ? topo.side1Body[j] : topo.side2Body[j];
-        treeOfBody[child] = i;
-        treeOfJoint[j] = i;
+        if (spec.joints[static_cast<std::size_t>(j)].type == JointType::Free) {
+            slot[i] = i > 0 && topo.treeJoints[static_cast<std::size_t>(i - 1)] == j ? slot[i - 1] + 1 : 0;
+        }
+        if (slot[i] < 0 || slot[i] == kFreeJointCoordinates - 1) treeOfBody[child] = i;
+        if (slot[i] <= 0) treeOfJoint[j] = i;
         childBody[i] = child;
     }
     std::unordered_map<int, const BodySpec*> bodyById;
@@ -271,6 +304,16 @@ CompileResult compileModel(const ModelSpec& spec, Diagnostics& diags, const Mode
     m.theta0.resize(nbs);
     m.thetaDot0.resize(nbs);
     m.dependent.assign(nbs, 0);
+    m.freeSlot = slot;
+    m.freeBase.assign(nbs, -1);
+    m.nq = nb;
+    for (int i = 0; i < nb; ++i) {
+        if (slot[i] == 0) m.freeJoints.push_back(i);
+        if (slot[i] == 3) {
+            m.freeBase[i] = m.nq;
+            m.nq += 4;
+        }
+    }
 
     for (int i = 0; i < nb; ++i) {
         const int j = topo.treeJoints[static_cast<std::size_t>(i)];
@@ -279,22 +322,25 @@ CompileResult compileModel(const ModelSpec& spec, Diagnostics& diags, const Mode
         const bool reversed = topo.reversed[j];
 
         // numbering
-        m.parent[i] = treeOfBody[topo.parentBody[child]];
+        const int s = slot[i];
+        m.parent[i] = s > 0 ? i - 1 : treeOfBody[topo.parentBody[child]];
         assert(m.parent[i] < i);
-        m.bodyId[i] = topo.bodyIds[child];
+        const bool massless = s >= 0 && s < kFreeJointCoordinates - 1;
+        m.bodyId[i] = massless ? -1 : topo.bodyIds[child];
         m.jointId[i] = joint.id;
         m.jointName[i] = joint.name;
-        m.jointType[i] = joint.type;
+        m.jointType[i] = s < 0 ? joint.type : s < 3 ? JointType::Prismatic : JointType::Revolute;
 
         // frames: parent side, child side
         const JointGeometry& g = geometry[static_cast<std::size_t>(j)];
         m.X_pj[i] = (reversed ? g.side2 : g.side1).pose();
         m.X_cj[i] = (reversed ? g.side1 : g.side2).pose();
+        if (s >= 0) freeSlotFrames(s, g.side1.pose(), g.side2.pose(), m.X_pj[i], m.X_cj[i]);
         m.X_jc[i] = m.X_cj[i].inverse(Eigen::Isometry);
         m.axisSign[i] = reversed ? -1.0 : 1.0;
 
         // body
-        if (auto it = bodyById.find(m.bodyId[i]); it != bodyById.end()) {
+        if (auto it = bodyById.find(m.bodyId[i]); !massless && it != bodyById.end()) {
             const BodySpec& body = *it->second;
             m.bodyName[i] = body.name;
             if (body.hasMass) {
@@ -407,6 +453,12 @@ CompileResult compileModel(const ModelSpec& spec, Diagnostics& diags, const Mode
             m.upper[i] = joint.ul.value_or(kInf);
             m.thetaDot0[i] = vi;
         }
+    }
+
+    // the free joints' base orientations: the start's
+    m.theta0.resize(static_cast<std::size_t>(m.nq), 0.0);
+    for (int i = 0; i < nb; ++i) {
+        if (m.freeBase[i] >= 0) m.theta0[static_cast<std::size_t>(m.freeBase[i])] = 1.0;
     }
 
     // 7. every joint moves mass; the total mass

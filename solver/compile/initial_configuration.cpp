@@ -521,6 +521,8 @@ LoopAssembly assembleInitialConfiguration(const ModelSpec& spec, Topology& topo,
     for (int c : out.dependent) topo.dependent.push_back(topo.treeJoints[static_cast<std::size_t>(c)]);
     std::sort(topo.independent.begin(), topo.independent.end());
     std::sort(topo.dependent.begin(), topo.dependent.end());
+    // (a free joint's six coordinates: one joint)
+    topo.independent.erase(std::unique(topo.independent.begin(), topo.independent.end()), topo.independent.end());
     topo.dof = nt - topo.closureRank;
 
     // the initial θ; cut joints' own coordinates, measured at the assembled configuration

@@ -73,6 +73,8 @@ std::vector<bool> buildSpanningTree(const ModelSpec& spec, Topology& topo)
                            [&](const DriveSpec& d) { return d.joint == spec.joints[j].id; });
     };
     std::stable_partition(order.begin(), order.end(), driven);
+    // free joints (T 3) before all: their body is reached through them, never a loop's
+    std::stable_partition(order.begin(), order.end(), [&](int j) { return spec.joints[j].type == JointType::Free; });
 
     // union-find: tree joints join groups, the others close loops
     DisjointSets sets(nb);

@@ -24,7 +24,9 @@ struct Topology {
     std::vector<int> parentBody;    ///< per body index; -1 for ground
     std::vector<int> parentJoint;   ///< per body index: index into spec.joints; -1 for ground
     std::vector<bool> reversed;     ///< per spec joint: the tree runs it from side 2 to side 1
-    std::vector<int> treeJoints;    ///< spec joint indices, every parent before its children
+    /// Spec joint indices, every parent before its children, one per compiled coordinate:
+    /// a free joint (T 3) appears six times in a row (its coordinates, Model::freeSlot).
+    std::vector<int> treeJoints;
     std::vector<int> loopJoints;    ///< spec joint indices that close loops (cut joints)
     /// Serial kinematic chains: runs of tree joints (spec indices) from ground or a
     /// branching body to a leaf or the next branching body.

@@ -9,7 +9,13 @@ enum class JointType {
     Revolute = 0,   ///< T 0 (default): angle about A
     Actuator = 1,   ///< T 1: pivoted linear actuator, revolute about A, coordinate = length CL1–CL2
     Prismatic = 2,  ///< T 2: displacement along R
+    /// T 3: a free body (six degrees of freedom). Only in the spec: the compiled Model
+    /// expands it into three prismatic and three revolute coordinates (Model::freeSlot).
+    Free = 3,
 };
+
+/// The coordinates of a free joint (T 3) in the compiled model: three translations, three turns.
+inline constexpr int kFreeJointCoordinates = 6;
 
 enum class ForceKind { Point, Torque, Joint, Spring, Aero };
 

@@ -15,6 +15,7 @@ int Model::jointIndex(int id) const
 
 int Model::bodyIndex(int id) const
 {
+    if (id < 0) return -1;  // (the massless bodies of free joints)
     for (int i = 0; i < nb; ++i) {
         if (bodyId[i] == id) return i;
     }

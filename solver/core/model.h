@@ -23,6 +23,16 @@
 // from the child to the parent (B1 is the child). Body frames have their origin
 // where the modeler put it (the centre of mass unless CG moves it).
 //
+// Free joints (T 3): a free body's six degrees of freedom are six consecutive tree
+// joints (Model::freeSlot 0…5) with five massless bodies between them: three
+// prismatic ones along the free joint's B1 frame axes A, R, T (the body frame's
+// translation from the start), then three revolute ones about the x, y and z axes of
+// a base orientation, a unit quaternion kept in State::q after the nb coordinates
+// (Model::freeBase). The turns stay small: the Simulation folds them into the
+// quaternion and sets them back to 0 (foldFreeRotations), so the three angles never
+// reach gimbal lock and the articulated-body algorithm stays the same O(n) for every
+// joint (docs/free-bodies.md).
+//
 // Closed loops: the joints the spanning tree leaves out (cut joints, Topology::
 // loopJoints) are kept in `cuts` with their two bodies' tree indices and frames;
 // the dynamics hold them closed as constraints (solver/dynamics/constraints.h).
@@ -109,7 +119,8 @@ struct CoordinateMap {
 };
 
 struct Model {
-    int nb = 0;  ///< moving bodies = tree joints
+    int nb = 0;  ///< moving bodies = tree joints = θ̇ coordinates
+    int nq = 0;  ///< dim State::q: the nb coordinates θ, then a quaternion (w, x, y, z) per free joint
     Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);  ///< [m/s^2]
     double restitution = 0;  ///< coefficient of restitution at joint limits (0 = inelastic)
 
@@ -118,7 +129,17 @@ struct Model {
     std::vector<int> bodyId;            ///< modeler's body id
     std::vector<int> jointId;           ///< modeler's id of the body's parent joint
     std::vector<std::string> bodyName, jointName;
-    std::vector<JointType> jointType;
+    std::vector<JointType> jointType;     ///< a free joint's coordinates: Prismatic (slots 0–2), Revolute (3–5)
+    /// −1, or which coordinate of a free joint (T 3) this tree joint is: 0–2 the
+    /// translations along the B1 frame's A, R, T axes, 3–5 the turns about the base
+    /// orientation's x, y, z axes. Only slot 5's child is the free body; the bodies of
+    /// slots 0–4 are massless and have bodyId −1.
+    std::vector<int> freeSlot;
+    /// Per tree joint: the index in State::q of the base orientation (w, x, y, z) that
+    /// slot 3's frame turns by; −1 for every other joint.
+    std::vector<int> freeBase;
+    /// The tree index of each free joint's slot 0, in tree order.
+    std::vector<int> freeJoints;
     std::vector<Eigen::Isometry3d> X_pj;  ///< joint frame in the parent body (ground: world)
     std::vector<Eigen::Isometry3d> X_cj;  ///< joint frame in the child body
     std::vector<Eigen::Isometry3d> X_jc;  ///< X_cj⁻¹: the child body's frame in its joint frame (derived)
@@ -130,7 +151,9 @@ struct Model {
     std::vector<Eigen::Vector3d> com;     ///< centre of mass in the body frame [m]
     std::vector<Eigen::Matrix3d> inertia; ///< about the centre of mass, body axes [kg m^2]
     std::vector<CompiledDrive> drive;
-    std::vector<double> theta0, thetaDot0;  ///< initial θ and θ̇ (QI/VI converted)
+    /// Initial θ (dim nq: the free joints' quaternions are (1, 0, 0, 0)) and θ̇ (dim nb)
+    /// (QI/VI converted).
+    std::vector<double> theta0, thetaDot0;
     /// Per joint: 1 when its coordinate follows from the loop closures (Topology::
     /// dependent): its initial rate is solved from the others', its VI is not used.
     std::vector<char> dependent;
@@ -151,9 +174,10 @@ struct Model {
     /// dimensionless (direction) rows: the size of the mechanism (≥ 1 mm).
     double lengthScale = 1.0;
 
-    /// Tree index of the joint with modeler id `id`, or −1.
+    /// Tree index of the joint with modeler id `id` (a free joint: its slot 0), or −1.
     int jointIndex(int id) const;
     /// Tree index of the body with modeler id `id`; −1 for ground or an unknown id.
+    /// (A free body: slot 5's; the massless bodies between a free joint's slots have id −1.)
     int bodyIndex(int id) const;
     /// The modeler's coordinate q of joint i at θ (T 1: the length L(θ); else θ).
     double coordinate(int i, double theta) const;

@@ -30,7 +30,9 @@ struct Weld {
 
 struct State {
     double t = 0;               ///< [s]
-    Eigen::VectorXd q;          ///< θ per joint (dim nb) [rad or m]
+    /// θ per joint [rad or m], then each free joint's base orientation as a unit
+    /// quaternion (w, x, y, z) (dim Model::nq; core/model.h "Free joints")
+    Eigen::VectorXd q;
     Eigen::VectorXd qd;         ///< θ̇ per joint (dim nb)
     Eigen::VectorXd u;          ///< operator command per joint in [−1, 1] (dim nb; ignored without a drive)
     Eigen::VectorXd servoIntegral;  ///< ∫ set-point error dt per joint (servo drives) (dim nb)
@@ -57,5 +59,13 @@ struct State {
 /// 1) and does not start moving away from it is AtLower/AtUpper, the others Free.
 /// (solver/core/state.cpp)
 State makeState(const Model& model);
+
+/// Folds the turns of every free joint whose largest turn exceeds `threshold` [rad]
+/// (0: every free joint) into its base orientation: the quaternion becomes the
+/// orientation reached, the three turns 0, and their rates the angular velocity
+/// relative to the B1 frame in the new base axes. The motion is unchanged; only its
+/// coordinates move away from the three angles' gimbal lock. Returns whether any joint
+/// was folded (an integrator must then restart). (solver/core/state.cpp)
+bool foldFreeRotations(const Model& model, State& state, double threshold);
 
 }  // namespace solver

@@ -90,7 +90,7 @@ void applyForces(const Model& model, const State& state, Data& data)
 {
     assert(static_cast<int>(data.fext.size()) == model.nb);
     assert(data.tauExt.size() == model.nb);
-    assert(state.q.size() == model.nb);
+    assert(state.q.size() == model.nb || state.q.size() == model.nq);
     for (Vector6d& w : data.fext) w.setZero();
     data.tauExt.setZero();
 

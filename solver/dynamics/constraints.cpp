@@ -281,6 +281,7 @@ CutReading readCut(const Model& model, const Data& data, int k)
         break;
     }
     case JointType::Revolute:
+    case JointType::Free:  // (never a cut joint: topology.cpp)
         out.q = out.angle;
         out.qd = angleRate;
         break;
@@ -383,7 +384,7 @@ bool projectOntoConstraints(const Model& model, State& state, Data& data, const 
         }
         const Eigen::MatrixXd G = constraintJacobianAt(model, state, data);
         const Eigen::MatrixXd M = massMatrixAt(model, state, data);
-        state.q -= constraintCorrection(M, free, G, phi);
+        state.q.head(model.nb) -= constraintCorrection(M, free, G, phi);
     }
     if (!closed) {
         forwardKinematics(model, state, data);

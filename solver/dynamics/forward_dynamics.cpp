@@ -46,7 +46,7 @@ PADROB_SPATIAL_INLINE void passArticulatedInertia(Matrix6d& parent, const Matrix
 {
     const auto n = static_cast<Eigen::Index>(model.nb);
     const auto nb = static_cast<std::size_t>(model.nb);
-    return state.q.size() == n && state.qd.size() == n && state.u.size() == n &&
+    return (state.q.size() == n || state.q.size() == model.nq) && state.qd.size() == n && state.u.size() == n &&
            state.servoIntegral.size() == n && state.limit.size() == nb &&
            state.relief.size() == nb && data.X_wb.size() == nb && data.fext.size() == nb &&
            data.tauExt.size() == n && data.qdd.size() == n && data.IA.size() == nb &&

@@ -334,6 +334,8 @@ private:
             m_work.relief[j] = m_modes.relief[j];
         }
         for (Eigen::Index k = 0; k < m_work.fluid.size(); ++k) m_work.fluid[k] = y[3 * nb + k];
+        // the free joints' base orientations: not integrated (constant between folds)
+        for (Eigen::Index k = nb; k < m_work.q.size(); ++k) m_work.q[k] = m_modes.q[k];
         m_work.welds = m_modes.welds;
         m_work.constraintRank = m_modes.constraintRank;
         if (m_model->contact) m_work.contacts = m_modes.contacts;
@@ -377,7 +379,7 @@ Simulation::Simulation(std::shared_ptr<const Model> model, const SimulationOptio
     m_fired.assign(m_g.size(), 0);
     m_ydot.assign(m_y.size(), 0.0);
     for (Eigen::VectorXd* v : {&m_qdBefore, &m_jump, &m_impulse, &m_dqd}) v->setZero(m_model->nb);
-    m_positionsAt.setConstant(m_model->nb, std::numeric_limits<double>::quiet_NaN());  // none yet
+    m_positionsAt.setConstant(m_state.q.size(), std::numeric_limits<double>::quiet_NaN());  // none yet
     if (!m_options.limits) {
         for (LimitState& l : m_state.limit) l = LimitState::Free;
     }
@@ -942,6 +944,25 @@ Text divergenceCause(const Model& m, const IntegratorOptions& io, int joint)
 }  // namespace
 
 bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, std::string& error, Text* errorText)
+{
+    if (m_model->freeJoints.empty() || m_locked) return advanceSpan(tEnd, events, error, errorText);
+    // free bodies: their three turns are folded into the base orientation before they
+    // grow large (at most every kFreeFoldSpan, and only those above kFreeFoldAngle), so
+    // that they stay far from the angles' gimbal lock at π/2 (core/model.h)
+    constexpr double kFreeFoldSpan = 0.02;   // [s]
+    constexpr double kFreeFoldAngle = 0.25;  // [rad]
+    while (true) {
+        if (foldFreeRotations(*m_model, m_state, kFreeFoldAngle)) {
+            m_restart = true;
+            evaluate();
+        }
+        const double next = tEnd - m_state.t > kFreeFoldSpan ? m_state.t + kFreeFoldSpan : tEnd;
+        if (!advanceSpan(next, events, error, errorText)) return false;
+        if (!(tEnd > m_state.t)) return true;
+    }
+}
+
+bool Simulation::advanceSpan(double tEnd, std::vector<SimulationEvent>& events, std::string& error, Text* errorText)
 {
     if (m_model->nb == 0) {
         m_state.t = tEnd;

@@ -229,6 +229,8 @@ private:
     /// Restarts the integrator at the current state; `settled`: applyModeRules' last
     /// evaluation is of this state (f and g are then handed over, not evaluated again).
     void resetIntegrator(bool settled);
+    /// advanceTo() over a span in which no free joint's turns are folded.
+    bool advanceSpan(double t, std::vector<SimulationEvent>& events, std::string& error, Text* errorText);
     void hitLimit(int joint, int side);
     void prescribeRates();
     /// Projects the state onto the constraints (positions, then velocities), moving

@@ -143,6 +143,7 @@ const char* jointTypeText(JointType t)
     case JointType::Actuator:
         return "T 1, pivoted actuator: hinge, qpos = the joint angle [rad], not the cylinder length";
     case JointType::Prismatic: return "T 2, prismatic: slide along R, qpos = displacement [m]";
+    case JointType::Free: return "T 3, free body: freejoint, qpos = position and quaternion (w x y z)";
     }
     return "";
 }
@@ -275,8 +276,14 @@ private:
     void header()
     {
         int hinges = 0, slides = 0, placeholders = 0;
+        int frees = 0;
         for (int i = 0; i < m_model.nb; ++i) {
-            (m_model.jointType[i] == JointType::Prismatic ? slides : hinges) += 1;
+            if (m_model.freeSlot[i] >= 0) {
+                frees += m_model.freeSlot[i] == 0;
+                if (m_model.freeSlot[i] < kFreeJointCoordinates - 1) continue;  // (massless: not written)
+            } else {
+                (m_model.jointType[i] == JointType::Prismatic ? slides : hinges) += 1;
+            }
             if (mjcfInertial(m_model, i).placeholder()) ++placeholders;
         }
         int driven = 0;
@@ -284,7 +291,7 @@ private:
         const auto count = [](std::size_t n, const char* one, const char* many) {
             return std::to_string(n) + " " + (n == 1 ? one : many);
         };
-        const std::size_t nb = static_cast<std::size_t>(m_model.nb);
+        const std::size_t nb = static_cast<std::size_t>(m_model.nb - (kFreeJointCoordinates - 1) * frees);
         std::string h;
         h += "Padrob " PADROB_VERSION " model";
         if (!m_options.source.empty()) h += " " + m_options.source;
@@ -292,6 +299,7 @@ private:
         h += "Exported: " + count(nb, "body", "bodies") + " on " + count(nb, "joint", "joints") + " (" +
              count(static_cast<std::size_t>(hinges), "hinge", "hinges") + ", " +
              count(static_cast<std::size_t>(slides), "slide", "slides") +
+             (frees > 0 ? ", " + count(static_cast<std::size_t>(frees), "free joint", "free joints") : std::string()) +
              "), posed with every joint at\n"
              "theta = 0, so that each joint's qpos is Padrob's coordinate theta and qvel its\n"
              "rate: hinges in rad (T 1 pivoted-actuator joints too: their Padrob coordinate,\n"
@@ -317,8 +325,50 @@ private:
         m_out += "<!--\n" + commentSafe(h) + "-->\n";
     }
 
+    /// A free joint (T 3, slot 0 at i, on the world): one body with a freejoint, posed
+    /// where the body starts; its qpos is the position and quaternion (w x y z), its
+    /// qvel the linear velocity (world) and the angular velocity (body axes).
+    void freeBody(int i, int depth)
+    {
+        m_order.push_back(i);
+        const int b = i + kFreeJointCoordinates - 1;
+        const std::string in(static_cast<std::size_t>(2 * depth), ' ');
+        const Model& m = m_model;
+        m_out += in + "<!-- " +
+                 commentSafe("B " + std::to_string(m.bodyId[b]) + quoted(m.bodyName[b]) + ", joint C " +
+                             std::to_string(m.jointId[i]) + quoted(m.jointName[i]) + " (" +
+                             jointTypeText(JointType::Free) + ")") +
+                 " -->\n";
+        const Eigen::Isometry3d X = freeStartPose(i);
+        m_out += in + "<body name=\"" + attr(m_names.body[b]) + "\" pos=\"" + vec3(X.translation()) + "\"";
+        Eigen::Quaterniond q(X.linear());
+        q.normalize();
+        if (std::abs(q.w() - 1) > 1e-15) {
+            m_out += " quat=\"" + geo(q.w()) + " " + geo(q.x()) + " " + geo(q.y()) + " " + geo(q.z()) + "\"";
+        }
+        m_out += ">\n";
+        const std::string in2 = in + "  ";
+        m_out += in2 + "<freejoint name=\"" + attr(m_names.joint[i]) + "\"/>\n";
+        inertial(b, in2);
+        for (int c : m_children[static_cast<std::size_t>(b) + 1]) body(c, depth + 1);
+        m_out += in + "</body>\n";
+    }
+
+    /// The free body's frame in its parent's (the world's) at the start: the slots' frames
+    /// composed at θ = 0 with the base orientation the start's.
+    Eigen::Isometry3d freeStartPose(int first) const
+    {
+        Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
+        for (int k = 0; k < kFreeJointCoordinates; ++k) X = X * m_model.X_pj[first + k] * m_model.X_jc[first + k];
+        return X;
+    }
+
     void body(int i, int depth)
     {
+        if (m_model.freeSlot[i] == 0) {
+            freeBody(i, depth);
+            return;
+        }
         m_order.push_back(i);
         const std::string in(static_cast<std::size_t>(2 * depth), ' ');
         const Model& m = m_model;
@@ -422,6 +472,17 @@ private:
         if (m_order.empty()) return;
         std::string qpos, qvel;
         for (int i : m_order) {
+            if (m_model.freeSlot[i] == 0) {
+                const Eigen::Isometry3d X = freeStartPose(i);
+                Eigen::Quaterniond q(X.linear());
+                q.normalize();
+                const Eigen::Vector3d& p = X.translation();
+                for (double v : {p.x(), p.y(), p.z(), q.w(), q.x(), q.y(), q.z()}) {
+                    qpos += (qpos.empty() ? "" : " ") + num(v);
+                }
+                for (int k = 0; k < 6; ++k) qvel += (qvel.empty() ? "" : " ") + std::string("0");
+                continue;
+            }
             qpos += (qpos.empty() ? "" : " ") + num(m_model.theta0[i]);
             qvel += (qvel.empty() ? "" : " ") + num(m_model.thetaDot0[i]);
         }
@@ -445,6 +506,12 @@ std::string toMjcf(const Model& model, const MjcfOptions& options, std::string& 
         error = "MJCF export needs a tree: the model closes " + std::to_string(n) + (n == 1 ? " loop" : " loops") +
                 " through " + (n == 1 ? "joint " : "joints ") + joints +
                 " (MuJoCo would need an equality constraint for each, which the export does not write)";
+        return {};
+    }
+    for (int first : model.freeJoints) {
+        if (model.parent[first] < 0) continue;
+        error = "MJCF export: joint " + std::to_string(model.jointId[first]) + quoted(model.jointName[first]) +
+                " is a free joint (T 3) on a moving body, and MuJoCo allows a free joint only on a body of the world";
         return {};
     }
     if (!(options.timestep > 0) || !std::isfinite(options.timestep)) {

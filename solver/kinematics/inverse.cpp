@@ -191,7 +191,7 @@ void ikJointRange(const Model& model, int i, bool limits, double& lower, double&
 IkResult inverseKinematics(const Model& model, const IkFrame& frame, const IkTarget& target,
                            const Eigen::VectorXd& start, Data& data, const IkOptions& options)
 {
-    assert(start.size() == model.nb);
+    assert(start.size() == model.nb || start.size() == model.nq);
     assert(frame.body >= 0 && frame.body < model.nb);
 
     // the moving joints: those asked for (or all) that lie on the body's path from ground
@@ -201,7 +201,7 @@ IkResult inverseKinematics(const Model& model, const IkFrame& frame, const IkTar
     for (int i = 0; i < model.nb; ++i) {
         const bool asked = options.joints.empty() ||
                            std::find(options.joints.begin(), options.joints.end(), i) != options.joints.end();
-        if (!asked || !onPath[i]) continue;
+        if (!asked || !onPath[i] || model.freeSlot[i] >= 0) continue;  // (a free body is not steered)
         double lo = 0, hi = 0;
         ikJointRange(model, i, options.limits, lo, hi);
         pb.joints.push_back(i);

@@ -31,7 +31,8 @@ void forwardKinematics(const Model& model, const Eigen::VectorXd& q, const Eigen
                        Data& data)
 {
     const int nb = model.nb;
-    assert(q.size() == nb && qd.size() == nb);
+    assert((q.size() == nb || q.size() == model.nq) && qd.size() == nb);
+    const bool bases = q.size() == model.nq && model.nq > nb;
     assert(static_cast<int>(data.X_wb.size()) == nb && static_cast<int>(data.c.size()) == nb);
 
     for (int i = 0; i < nb; ++i) {
@@ -51,6 +52,12 @@ void forwardKinematics(const Model& model, const Eigen::VectorXd& q, const Eigen
         } else {
             R = X_pj.linear();
             x = X_pj.translation();
+        }
+        if (bases && model.freeBase[i] >= 0) {
+            // a free joint's turns start from its base orientation (Model::freeBase)
+            const Eigen::Index k = model.freeBase[i];
+            const Eigen::Quaterniond base(q[k], q[k + 1], q[k + 2], q[k + 3]);
+            R = R * base.normalized().toRotationMatrix();
         }
         Vector6d& s = data.S[i];
         if (model.jointType[i] == JointType::Prismatic) {
@@ -159,6 +166,21 @@ Eigen::Isometry3d jointFramePose(const Model& model, const Data& data, int joint
     if (!parentSide) return data.X_wj[joint];
     const int p = model.parent[joint];
     return p < 0 ? model.X_pj[joint] : Eigen::Isometry3d(data.X_wb[p] * model.X_pj[joint]);
+}
+
+FreeJointMotion freeJointMotion(const Model& model, const Data& data, const Eigen::VectorXd& q,
+                                const Eigen::VectorXd& qd, int first)
+{
+    // slots 0–2 shift B1's joint frame F1 (their bodies keep its axes); slots 3–5 turn
+    // about the shifted origin, the pivot; the body frame sits at F2⁻¹ from it at the start
+    const int pivot = first + 2, body = first + kFreeJointCoordinates - 1;
+    const Eigen::Matrix3d& R = data.X_wb[pivot].linear();
+    const Vector3d arm = data.X_wb[body].translation() - data.X_wb[pivot].translation();
+    const Vector3d start = model.X_pj[body].linear() * model.X_jc[body].translation();
+    FreeJointMotion out;
+    out.position = q.segment<3>(first) + R.transpose() * arm - start;
+    out.velocity = qd.segment<3>(first) + R.transpose() * (data.omega[body] - data.omega[pivot]).cross(arm);
+    return out;
 }
 
 double kineticEnergy(const Model& model, const Data& data)

@@ -26,7 +26,8 @@ namespace solver {
 
 /// Positions and velocities: fills data.X_wb, X_wj, S, v, omega, vel and the
 /// velocity-product accelerations of the dynamics (scratch c).
-/// q, qd: θ and θ̇ per joint (dim nb) [rad or m, per s].
+/// q: θ per joint [rad or m], then the free joints' base quaternions (dim nq; dim nb:
+/// every base orientation is the start's); qd: θ̇ per joint (dim nb).
 void forwardKinematics(const Model& model, const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
                        Data& data);
 /// forwardKinematics(model, state.q, state.qd, data).
@@ -58,6 +59,17 @@ Eigen::Vector3d comAcceleration(const Model& model, const Data& data, int body);
 /// by the joint's motion: a turn σθ about A (T 0, T 1) or a shift σθ along R (T 2).
 Eigen::Isometry3d jointFramePose(const Model& model, const Data& data, int joint,
                                  bool parentSide = false);
+
+/// A free joint's (T 3) motion as its output columns give it: the translation of the
+/// free body's frame from the start, along the axes A, R, T of the free joint's frame on
+/// B1 [m], and its rate in that frame [m/s] (needs forwardKinematics).
+struct FreeJointMotion {
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();
+    Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+};
+/// `first`: the free joint's slot 0 (Model::freeJoints); q, qd as the state's.
+FreeJointMotion freeJointMotion(const Model& model, const Data& data, const Eigen::VectorXd& q,
+                                const Eigen::VectorXd& qd, int first);
 
 /// Kinetic energy Σ ½ m |v_c|² + ½ ωᵀ I_c ω [J] (needs forwardKinematics).
 double kineticEnergy(const Model& model, const Data& data);

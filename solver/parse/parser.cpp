@@ -849,7 +849,7 @@ private:
 
     void parseJoint()
     {
-        static constexpr const char* syntax = "C id [T 0|1|2] [LL v] [UL v] [QI v] [VI v] [NAME \"text\"]";
+        static constexpr const char* syntax = "C id [T 0|1|2|3] [LL v] [UL v] [QI v] [VI v] [NAME \"text\"]";
         JointSpec j;
         j.src.pos = m_toks[0].pos;
         bool ok = true;
@@ -860,7 +860,7 @@ private:
         auto ctx = [&] {
             return hasId ? trText("Diagnostics", "joint %1").with(std::to_string(j.id)) : trText("Diagnostics", "joint");
         };
-        static const std::vector<OptionDef> defs = {{"T", Arg::Num, trText("Diagnostics", "the joint type (0, 1 or 2)")},
+        static const std::vector<OptionDef> defs = {{"T", Arg::Num, trText("Diagnostics", "the joint type (0, 1, 2 or 3)")},
                                                     {"LL", Arg::NumDeg, trText("Diagnostics", "the lower limit")},
                                                     {"UL", Arg::NumDeg, trText("Diagnostics", "the upper limit")},
                                                     {"QI", Arg::NumDeg, trText("Diagnostics", "the initial coordinate")},
@@ -875,12 +875,13 @@ private:
             if (t == 0) j.type = JointType::Revolute;
             else if (t == 1) j.type = JointType::Actuator;
             else if (t == 2) j.type = JointType::Prismatic;
+            else if (t == 3) j.type = JointType::Free;
             else {
                 ok = false;
                 m_d.error("bad-joint-type", it->second.valuePos,
                           trText("Diagnostics", "%1: there is no joint type T %2").with(ctx()).with(fmt(t)),
-                          trText("Diagnostics", "use T 0 (revolute, the default), T 1 (pivoted linear actuator) or T 2 "
-                                                "(prismatic)"));
+                          trText("Diagnostics", "use T 0 (revolute, the default), T 1 (pivoted linear actuator), T 2 "
+                                                "(prismatic) or T 3 (free body)"));
             }
         }
         auto take = [&](const char* key, std::optional<double>& out) {
@@ -888,7 +889,7 @@ private:
             if (it == opts.end()) return;
             double v = it->second.num;
             if (it->second.deg) {
-                if (j.type != JointType::Revolute) {
+                if (j.type != JointType::Revolute && j.type != JointType::Free) {
                     ok = false;
                     m_d.error("deg-on-length", it->second.valuePos,
                               trText("Diagnostics", "%1: DEG after %2, but the coordinate of %3 is a length")

@@ -112,7 +112,13 @@ void NewtonEulerSystem::assemble(const State& state, const std::vector<Vector6d>
         } else {
             J.linear() = Eigen::AngleAxisd(th, Vector3d::UnitX()).toRotationMatrix();
         }
-        const Eigen::Isometry3d X_wj = X_wp * model.X_pj[i] * J;
+        Eigen::Isometry3d X_wj = X_wp * model.X_pj[i];
+        if (model.freeBase[i] >= 0 && state.q.size() == model.nq) {
+            // a free joint's turns start from its base orientation (core/model.h)
+            const Eigen::Index k = model.freeBase[i];
+            X_wj = X_wj * Eigen::Quaterniond(state.q[k], state.q[k + 1], state.q[k + 2], state.q[k + 3]).normalized();
+        }
+        X_wj = X_wj * J;
         X[i] = X_wj * model.X_cj[i].inverse(Eigen::Isometry);
         x[i] = X_wj.translation();
         axis[i] = model.axisSign[i] * X_wj.linear().col(0);
@@ -384,14 +390,14 @@ void rk4Step(NewtonEulerSystem& system, State& state, const std::vector<Vector6d
         const double c = k == 4 ? 1.0 : 0.5;
         const double weight = k == 4 ? 1.0 : 2.0;
         s.t = state.t + c * h;
-        s.q = work.q0 + (c * h) * work.kq;
+        s.q.head(work.kq.size()) = work.q0.head(work.kq.size()) + (c * h) * work.kq;  // (free bases: held)
         s.qd = work.qd0 + (c * h) * work.kv;
         work.kq = s.qd;
         work.kv = system.solve(s, fext, tauExt, false).qdd;
         work.accQ += weight * work.kq;
         work.accV += weight * work.kv;
     }
-    state.q = work.q0 + (h / 6) * work.accQ;
+    state.q.head(work.accQ.size()) = work.q0.head(work.accQ.size()) + (h / 6) * work.accQ;
     state.qd = work.qd0 + (h / 6) * work.accV;
     state.t += h;
 }

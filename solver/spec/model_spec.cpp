@@ -84,6 +84,7 @@ const char* jointTypeName(JointType t)
     case JointType::Revolute: return "revolute";
     case JointType::Actuator: return "actuator";
     case JointType::Prismatic: return "prismatic";
+    case JointType::Free: return "free";
     }
     return "revolute";
 }

@@ -170,6 +170,28 @@ void checkAxes(const JointSpec& j, const JointSide& s, int digit, Diagnostics& d
     }
 }
 
+/// A free joint (T 3): no limits, no initial values (the body starts where its frames
+/// coincide, at rest), a moving B2.
+void checkFreeJoint(const JointSpec& j, Diagnostics& d)
+{
+    for (const auto& [key, v] : {std::pair{"LL", j.ll}, std::pair{"UL", j.ul}, std::pair{"QI", j.qi}, std::pair{"VI", j.vi}}) {
+        if (!v) continue;
+        // (a value given on the command line, --set/--rate, has no position of its own)
+        d.error("free-joint-option", j.src.at.count(key) ? j.src.where(key) : j.src.pos,
+                trText("Diagnostics", "joint %1 is a free joint (T 3): %2 does not apply to it")
+                    .with(std::to_string(j.id))
+                    .with(key),
+                trText("Diagnostics", "remove %1; place the free body with the joint's P1, A1 and R1 (it starts where "
+                                      "its two joint frames coincide, at rest)")
+                    .with(key));
+    }
+    if (j.side1.present && j.side2.present && j.side2.body == 0) {
+        d.error("free-joint-on-ground", j.side2.src.where("B"),
+                trText("Diagnostics", "joint %1 is a free joint (T 3) whose B2 is the ground").with(std::to_string(j.id)),
+                trText("Diagnostics", "the free body is B2: write B1 0 … and B2 with the body that moves"));
+    }
+}
+
 void checkJoint(const ModelSpec& spec, const JointSpec& j, Diagnostics& d)
 {
     auto who = [&] { return jointNamed(j.id, j.name); };
@@ -211,6 +233,10 @@ void checkJoint(const ModelSpec& spec, const JointSpec& j, Diagnostics& d)
                 trText("Diagnostics", "CL1/CL2 belong to T 1 joints; add 'T 1' to the C line, or remove the CL line"));
     }
     if (!j.src.complete) return;
+    if (j.type == JointType::Free) {
+        checkFreeJoint(j, d);
+        return;
+    }
     // limits and initial values, with their unit
     const char* unit = j.type == JointType::Revolute ? " rad" : " m";
     auto value = [&](double v) { return fmt(v) + unit; };
@@ -363,6 +389,15 @@ void checkDrives(const ModelSpec& spec, Diagnostics& d)
             continue;
         }
         if (!dr.src.complete) continue;
+        if (j->type == JointType::Free) {
+            d.error("drive-on-free-joint", dr.src.pos,
+                    trText("Diagnostics", "%1: %2 is a free joint (T 3), which no drive can move")
+                        .with(driveOn(dr.joint))
+                        .with(jointNamed(j->id, j->name)),
+                    trText("Diagnostics", "drive a T 0, T 1 or T 2 joint; push a free body with a force (F … POINT) "
+                                          "instead"));
+            continue;
+        }
         if (dr.isFluidPower()) {
             checkFluidDrive(spec, dr, *j, d);
             continue;
@@ -413,6 +448,13 @@ void checkForces(const ModelSpec& spec, Diagnostics& d)
                 d.error("undefined-joint", at,
                         trText("Diagnostics", "%1: joint %2 is not defined").with(who()).with(std::to_string(joint)),
                         trText("Diagnostics", "use the id of a joint (C id …)"));
+            } else if (joint >= 0 && spec.joint(joint)->type == JointType::Free) {
+                d.error("free-joint-coordinate", at,
+                        trText("Diagnostics", "%1: joint %2 is a free joint (T 3), which has no single coordinate")
+                            .with(who())
+                            .with(std::to_string(joint)),
+                        trText("Diagnostics", "use a T 0, T 1 or T 2 joint here; load a free body with a force on the "
+                                              "body (F … POINT or TORQUE)"));
             }
         };
         auto negative = [&](const char* key, Text hint) {

@@ -252,6 +252,44 @@ TEST(CliSimulate, SetAndRateOverrideTheInitialValues)
     EXPECT_EQ(rows[1].rfind("0,0.5,2,", 0), 0u) << rows[1];
 }
 
+// a free body (T 3): three columns per coordinate, its motion, its six degrees of
+// freedom; --set and --rate cannot name it
+TEST(CliSimulate, AFreeBodyHasThreeColumnsPerCoordinate)
+{
+    CliRun r = padrob("simulate models/tumbling_block.pad --time 3 --every 1000");
+    ASSERT_EQ(r.status, 0) << r.err;
+    auto rows = lines(r.out);
+    ASSERT_EQ(rows.size(), 5u);
+    EXPECT_EQ(rows[0], "t,q1x,q1y,q1z,qd1x,qd1y,qd1z,x1,y1,z1,E");
+    for (std::size_t k = 1; k < rows.size(); ++k) {
+        std::vector<double> v;
+        std::size_t start = 0;
+        while (start <= rows[k].size()) {
+            const std::size_t comma = std::min(rows[k].find(',', start), rows[k].size());
+            v.push_back(std::stod(rows[k].substr(start, comma - start)));
+            start = comma + 1;
+        }
+        ASSERT_EQ(v.size(), 11u) << rows[k];
+        for (int c = 1; c <= 6; ++c) EXPECT_NEAR(v[c], 0.0, 1e-9) << rows[k];  // the centre of mass stays
+        EXPECT_NEAR(v[7], 0.0, 1e-9);
+        EXPECT_NEAR(v[9], 1.0, 1e-9);
+        if (v[0] > 0.6) {
+            EXPECT_NEAR(v[10], 0.452673, 1e-6) << rows[k];  // L²/(2 I) (models/tumbling_block.pad)
+        }
+    }
+
+    CliRun info = padrob("info models/tumbling_block.pad");
+    EXPECT_EQ(info.status, 0) << info.err;
+    EXPECT_NE(info.out.find("Degrees of freedom: 6"), std::string::npos) << info.out;
+    EXPECT_NE(info.out.find(" free "), std::string::npos) << info.out;
+    EXPECT_NE(padrob("info --json models/tumbling_block.pad").out.find("\"dof\": 6"), std::string::npos);
+
+    CliRun set = padrob("simulate models/tumbling_block.pad --time 1 --set 1=0.5");
+    EXPECT_EQ(set.status, 2);
+    EXPECT_NE(set.err.find("free joint (T 3)"), std::string::npos) << set.err;
+    EXPECT_EQ(set.out, "");
+}
+
 TEST(CliSimulate, BadArgumentsExitTwoAndLeaveNoFile)
 {
     const std::string out = (std::filesystem::temp_directory_path() / "padrob_sim_never.csv").string();

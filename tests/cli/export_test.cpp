@@ -111,6 +111,34 @@ TEST(CliExport, PendulumToStandardOutput)
     EXPECT_NE(dt.out.find("timestep=\"5e-04\""), std::string::npos) << dt.out;
 }
 
+// a free joint (T 3) becomes a freejoint on a body of the world, posed where it starts;
+// the keyframe holds its position and quaternion; on a moving body it is refused
+TEST(CliExport, AFreeBodyIsAFreejointOnTheWorld)
+{
+    CliRun r = padrob("export --mjcf models/tumbling_block.pad");
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("<body name=\"block\" pos=\"0 0 1\">"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("<freejoint name=\"free\"/>"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("<key name=\"initial\" qpos=\"0 0 1 1 0 0 0\" qvel=\"0 0 0 0 0 0\"/>"), std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("1 free joint)"), std::string::npos) << r.out;
+
+    const std::string onArm = writeTemp("free_on_arm.pad", R"(B 1 1 1 1 1
+B 2 1 0.1 0.1 0.1
+C 1
+B1 0 P1 0 0 0 A1 0 0 1 R1 1 0 0
+B2 1 P2 0 0 0 A2 0 0 1 R2 1 0 0
+C 2 T 3
+B1 1 P1 1 0 0 A1 1 0 0 R1 0 1 0
+B2 2 P2 0 0 0 A2 1 0 0 R2 0 1 0
+)");
+    CliRun refused = padrob("export --mjcf '" + onArm + "'");
+    EXPECT_NE(refused.status, 0);
+    EXPECT_NE(refused.err.find("MuJoCo allows a free joint only on a body of the world"), std::string::npos)
+        << refused.err;
+    EXPECT_EQ(refused.out, "");
+}
+
 TEST(CliExport, OutWritesTheFileWhole)
 {
     const fs::path dir = outDir("out");
@@ -204,10 +232,26 @@ TEST(CliExport, CheckAgreesWithMujocoOnEveryTreeModel)
 {
     const bool mujoco = buildHasMujoco();
     const std::string zoo = writeTemp("export_zoo.pad", kTreeZoo);
+    // a free body carrying a pendulum that starts swinging, and a slider: the free body
+    // turns and drifts (MuJoCo integrates its quaternion, Padrob its turns and base)
+    const std::string freeZoo = writeTemp("export_free.pad", R"(GRAVITY 0.4 -0.3 -9.81
+B 1 3.0 0.1 0.2 0.25 0.01 -0.02 0.015 CG 0.02 0.01 -0.03 NAME "hull"
+B 2 0.8 0.02 0.03 0.01 NAME "bob"
+B 3 0.5 0.01 0.01 0.01 NAME "slider"
+C 1 T 3 NAME "free"
+B1 0 P1 0.5 -0.2 2.0 A1 0 1 0 R1 0 0 1
+B2 1 P2 0.1 0.2 -0.3 A2 1 0 0 R2 0 1 0
+C 2 VI 4 QI 0.3 NAME "swing"
+B1 1 P1 0 0 -0.2 A1 1 0 1 R1 0 1 0
+B2 2 P2 0 0 0.5 A2 1 0 0 R2 0 1 0
+C 3 T 2 VI -1.5 NAME "rail"
+B1 1 P1 0.1 0 0 A1 1 0 0 R1 0 0 1
+B2 3 P2 0 0 0 A2 1 0 0 R2 0 0 1
+)");
     const std::vector<std::string> models = {"models/pendulum.pad",        "models/double_pendulum.pad",
                                              "models/incline_slider.pad",  "models/knuckle_boom_crane.pad",
                                              "models/liner_manipulator.pad", "models/liner_station.pad",
-                                             "'" + zoo + "'"};
+                                             "'" + zoo + "'", "'" + freeZoo + "'", "models/tumbling_block.pad"};
     for (const std::string& model : models) {
         CliRun r = padrob("export --mjcf " + model + " --check");
         if (!mujoco) {

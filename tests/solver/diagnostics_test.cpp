@@ -240,7 +240,7 @@ B2 1 P2 0 0 0 A2 0 0 1 R2 0 1 0
          R"pad(C
 )pad",
          {{"missing-id",
-              "m.pad:1:2: error: joint: the joint id is missing [write C id [T 0|1|2] [LL v] [UL v] [QI v] [VI v] [NAME \"text\"]]"}}},
+              "m.pad:1:2: error: joint: the joint id is missing [write C id [T 0|1|2|3] [LL v] [UL v] [QI v] [VI v] [NAME \"text\"]]"}}},
         {"DuplicateBodyId",
          R"pad(B 1 1 1 1 1
 B 1 2 2 2 2
@@ -366,12 +366,12 @@ CL1 0 0 0 CL2 0 1 0
               "m.pad:5:5: error: joint 1 has CL1/CL2 but is not a pivoted linear actuator [CL1/CL2 belong to T 1 joints; add 'T 1' to the C line, or remove the CL line]"}}},
         {"BadJointType",
          R"pad(B 1 1 1 1 1
-C 1 T 3
+C 1 T 4
 B1 0 P1 0 0 0 A1 0 0 1 R1 0 1 0
 B2 1 P2 0 0 0 A2 0 0 1 R2 0 1 0
 )pad",
          {{"bad-joint-type",
-              "m.pad:2:7: error: joint 1: there is no joint type T 3 [use T 0 (revolute, the default), T 1 (pivoted linear actuator) or T 2 (prismatic)]"}}},
+              "m.pad:2:7: error: joint 1: there is no joint type T 4 [use T 0 (revolute, the default), T 1 (pivoted linear actuator), T 2 (prismatic) or T 3 (free body)]"}}},
         {"NegativeJointType",
          R"pad(B 1 1 1 1 1
 C 1 T -1
@@ -379,7 +379,7 @@ B1 0 P1 0 0 0 A1 0 0 1 R1 0 1 0
 B2 1 P2 0 0 0 A2 0 0 1 R2 0 1 0
 )pad",
          {{"bad-joint-type",
-              "m.pad:2:7: error: joint 1: there is no joint type T -1 [use T 0 (revolute, the default), T 1 (pivoted linear actuator) or T 2 (prismatic)]"}}},
+              "m.pad:2:7: error: joint 1: there is no joint type T -1 [use T 0 (revolute, the default), T 1 (pivoted linear actuator), T 2 (prismatic) or T 3 (free body)]"}}},
         {"DegOnPrismaticLength",
          R"pad(B 1 1 1 1 1
 C 1 T 2 LL 5 DEG

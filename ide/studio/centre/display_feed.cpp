@@ -156,7 +156,7 @@ DisplayFeed::Presence DisplayFeed::presence(double nowS) const
 bool DisplayFeed::pose(double nowS, std::vector<double>& q) const
 {
     if (!m_buffer.sample(nowS, q)) return false;
-    return !m_bundle || static_cast<int>(q.size()) == m_bundle->model->nb;
+    return !m_bundle || static_cast<int>(q.size()) == m_bundle->model->nq;
 }
 
 QString DisplayFeed::fileHash(const QString& path)

@@ -183,6 +183,18 @@ void PlotPanel::setBundle(std::shared_ptr<const ModelBundle> bundle)
             const std::size_t k = std::size_t(i);
             const int id = m.jointId[k];
             const QString name = QString::fromStdString(m.jointName[k]);
+            if (m.freeSlot[k] >= 0) {
+                // a free joint: its translation along B1's joint axes, as padrob simulate's
+                // q<j>x… columns (slots 0–2); it transmits no load
+                if (m.freeSlot[k] > 2) continue;
+                const QString axis = QString(QChar(u"xyz"[m.freeSlot[k]]));
+                addSignal(Kind::Q, QStringLiteral("q") + axis, QStringLiteral("q_") + axis, QStringLiteral("m"), id, name)
+                    .tree = i;
+                addSignal(Kind::Qd, QStringLiteral("qd") + axis, QStringLiteral("dq_") + axis + QStringLiteral("/dt"),
+                          QStringLiteral("m/s"), id, name)
+                    .tree = i;
+                continue;
+            }
             const bool turns = m.jointType[k] == solver::JointType::Revolute;
             const QString length = turns ? QStringLiteral("rad") : QStringLiteral("m");
             const QString rate = turns ? QStringLiteral("rad/s") : QStringLiteral("m/s");

@@ -22,6 +22,15 @@ std::shared_ptr<Snapshot> captureSnapshot(const solver::Simulation& sim,
         snap->q[i] = m.coordinate(i, s.q[i]);
         snap->qd[i] = s.qd[i] * m.coordinateRate(i, s.q[i]);
     }
+    // a free joint's slots 0–2: its body frame's translation from the start along B1's
+    // joint axes, as `padrob simulate` writes it
+    for (int first : m.freeJoints) {
+        const solver::FreeJointMotion f = solver::freeJointMotion(m, d, s.q, s.qd, first);
+        for (int a = 0; a < 3; ++a) {
+            snap->q[first + a] = f.position[a];
+            snap->qd[first + a] = f.velocity[a];
+        }
+    }
     snap->u = s.u;
     snap->driveForce = d.driveForce;
     snap->reactionJoint = d.reactionJoint;

@@ -223,6 +223,7 @@ void JointSliders::buildRows()
     const solver::State& s = m_sim->state();
     for (int specIndex : topo.independent) {
         const solver::JointSpec& js = spec.joints[static_cast<std::size_t>(specIndex)];
+        if (js.type == solver::JointType::Free) continue;  // six coordinates: moved by forces and contacts
         Row row;
         row.specIndex = specIndex;
         row.jointId = js.id;
@@ -245,7 +246,8 @@ void JointSliders::buildRows()
             hi = js.ul.value_or(law.maxLength());
             break;
         }
-        case solver::JointType::Prismatic: {
+        case solver::JointType::Prismatic:
+        case solver::JointType::Free: {  // (not reached: left out above)
             const double reach = model.lengthScale;
             lo = js.ll.value_or(std::min(q0, js.ul.value_or(q0)) - reach);
             hi = js.ul.value_or(std::max(q0, js.ll.value_or(q0)) + reach);

@@ -46,6 +46,7 @@ QString typeName(solver::JointType type)
     case solver::JointType::Revolute: return JointText::tr("revolute");
     case solver::JointType::Actuator: return JointText::tr("pivoted actuator");
     case solver::JointType::Prismatic: return JointText::tr("prismatic");
+    case solver::JointType::Free: return JointText::tr("free body");
     }
     return {};
 }

@@ -223,6 +223,13 @@ std::shared_ptr<SceneGeometry> buildSceneGeometry(const ModelBundle* bundle, con
     Eigen::AlignedBox3d pointBox;
     if (model) {
         for (int i = 0; i < nb; ++i) {
+            if (model->freeSlot[i] >= 0) {
+                // a free body hangs on nothing: only its own joint point, where its mark is
+                if (model->freeSlot[i] == solver::kFreeJointCoordinates - 1) {
+                    points[slotOf(i)].push_back(model->X_cj[i].translation());
+                }
+                continue;
+            }
             points[slotOf(model->parent[i])].push_back(
                 model->X_pj[i].translation());
             points[slotOf(i)].push_back(model->X_cj[i].translation());
@@ -385,6 +392,21 @@ std::shared_ptr<SceneGeometry> buildSceneGeometry(const ModelBundle* bundle, con
     if (model) {
         for (int i = 0; i < nb; ++i) {
             const auto k = static_cast<std::size_t>(i);
+            if (model->freeSlot[k] >= 0) {
+                // a free joint: no rail, no pin; a ball at the free body's joint point
+                // (highlighted as the joint: its first coordinate)
+                if (model->freeSlot[k] == solver::kFreeJointCoordinates - 1) {
+                    const int joint = i - model->freeSlot[k];
+                    MeshBuilder& m = marks[slotOf(i)];
+                    const std::uint32_t first = beginPiece(slotOf(i));
+                    m.setColor(kRevoluteGreen);
+                    m.setTransform(Affine3d(Eigen::Translation3d(model->X_cj[k].translation())));
+                    m.ellipsoid(2 * w, 2 * w, 2 * w, 24, 12);
+                    m.resetTransform();
+                    endPiece(joint, slotOf(i), first);
+                }
+                continue;
+            }
             const int ps = slotOf(model->parent[k]);
             if (model->jointType[k] == solver::JointType::Prismatic) {
                 double lo = 0, hi = 0;
