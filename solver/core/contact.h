@@ -34,7 +34,7 @@ struct CompiledContact {
     double restitution = 0;               ///< e in [0, 1]
     /// Normal law: per pair of solids k = m_eff·ω², c = 2ζ·m_eff·ω (shared out over the
     /// pair's contact points); ζ from e (docs/contact.md).
-    double omega = 400;         ///< [rad/s]
+    double omega = 300;         ///< [rad/s]
     double dampingRatio = 1;    ///< ζ
     double depthCap = 0.01;     ///< [m]: deeper overlaps push no harder than this depth
     std::shared_ptr<const ContactGeometry> geometry;
