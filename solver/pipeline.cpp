@@ -144,13 +144,13 @@ std::string baseDirOf(const std::string& file)
 }
 
 /// validate and compile `m.spec`, into m (whose diagnostics may hold the parser's)
-void checkAndCompile(CompiledModel& m, const std::string& baseDir)
+void checkAndCompile(CompiledModel& m, const std::string& baseDir, const ModelSpec* scene = nullptr)
 {
     validateModel(m.spec, m.diagnostics, baseDir);
     // the checks of the whole geometry need every statement right
     if (!m.diagnostics.hasErrors()) {
         // (set only when compiling added no error, and there were none before it)
-        CompileResult compiled = compileModel(m.spec, m.diagnostics);
+        CompileResult compiled = compileModel(m.spec, m.diagnostics, scene);
         m.topology = std::move(compiled.topology);
         m.model = std::move(compiled.model);
     }
@@ -198,12 +198,12 @@ CompiledModel compileFile(const std::string& path)
     return compileText(*text, path);
 }
 
-CompiledModel compileSpec(ModelSpec spec)
+CompiledModel compileSpec(ModelSpec spec, const ModelSpec* scene)
 {
     CompiledModel m;
     m.diagnostics.setFile(spec.file);
     m.spec = std::move(spec);
-    checkAndCompile(m, baseDirOf(m.spec.file));
+    checkAndCompile(m, baseDirOf(m.spec.file), scene);
     return m;
 }
 

@@ -44,8 +44,10 @@ CompiledModel compileText(std::string_view text, const std::string& file = "<tex
 CompiledModel compileFile(const std::string& path);
 
 /// Checks and compiles a spec built or changed in code (spec.file names it, and its
-/// folder is the base of mesh paths): validate, then compile, as for text.
-CompiledModel compileSpec(ModelSpec spec);
+/// folder is the base of mesh paths): validate, then compile, as for text. With
+/// CONTACT, the model's solids also touch `scene`'s ground graphics (may be null: a
+/// `--scene` file or a tutorial's scene, already parsed; its meshes relative to its file).
+CompiledModel compileSpec(ModelSpec spec, const ModelSpec* scene = nullptr);
 
 /// Largest model file read, in bytes.
 inline constexpr std::size_t kMaxModelFileBytes = 16u * 1024u * 1024u;

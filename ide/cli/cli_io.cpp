@@ -91,17 +91,18 @@ std::shared_ptr<const solver::Model> loadAndCompile(const std::string& path, int
 }
 
 std::shared_ptr<const solver::Model> loadAndCompile(const std::string& path, int& status,
-                                                    const std::function<std::string(solver::ModelSpec&)>& edit)
+                                                    const std::function<std::string(solver::ModelSpec&)>& edit,
+                                                    const solver::ModelSpec* scene)
 {
     solver::CompiledModel compiled = solver::compileFile(path);
-    if (edit && compiled.ok()) {
+    if ((edit || scene) && compiled.ok()) {
         solver::ModelSpec spec = compiled.spec;
-        if (const std::string why = edit(spec); !why.empty()) {
+        if (const std::string why = edit ? edit(spec) : std::string(); !why.empty()) {
             printErr(why + "\n");
             status = kExitUsage;
             return nullptr;
         }
-        compiled = solver::compileSpec(std::move(spec));
+        compiled = solver::compileSpec(std::move(spec), scene);
         if (!compiled.ok()) {
             // the file is fine: the command line's values are what does not fit
             printErr(i18n::trStd("padrob", "the values given on the command line do not fit the model:") + "\n");

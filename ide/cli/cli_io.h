@@ -56,7 +56,10 @@ std::shared_ptr<const solver::Model> loadAndCompile(const std::string& path, int
 /// The same, with the spec changed by `edit` before it is checked and compiled (command-line
 /// overrides such as --set and --rate: checked as if they were written in the file). `edit`
 /// returns "" or a usage error (e.g. a joint the model lacks), printed with status kExitUsage.
+/// With `scene`, the model's solids touch the scene's ground graphics under CONTACT
+/// (solver::compileSpec).
 std::shared_ptr<const solver::Model> loadAndCompile(const std::string& path, int& status,
-                                                    const std::function<std::string(solver::ModelSpec&)>& edit);
+                                                    const std::function<std::string(solver::ModelSpec&)>& edit,
+                                                    const solver::ModelSpec* scene = nullptr);
 
 }  // namespace ide::cli

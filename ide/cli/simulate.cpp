@@ -186,6 +186,8 @@ std::string simulateHelp()
               "                        their relative pose then; repeatable\n"
               "  --release T:A:B       at time T [s] release the weld of body B to body A;\n"
               "                        repeatable\n"
+              "  --scene FILE.pad      a scene (ground graphics only, e.g. a mill): under CONTACT\n"
+              "                        the model's solids touch its solids too\n"
               "\n"
               "Columns: t; q<j> for every joint j in id order (loop-closing joints too;\n"
               "q<j>x q<j>y q<j>z for a free joint, T 3: its body's translation along B1's\n"
@@ -212,7 +214,7 @@ std::string simulateHelp()
 
 int runSimulate(const std::vector<std::string>& args)
 {
-    std::string modelPath, inputPath, outPath, inputLogPath, profileArg;
+    std::string modelPath, inputPath, outPath, inputLogPath, profileArg, scenePath;
     std::optional<double> time;
     double dt = 1e-3, rtol = 1e-8;
     long every = 1;
@@ -235,7 +237,7 @@ int runSimulate(const std::vector<std::string>& args)
         const bool takesValue = a == "--time" || a == "--dt" || a == "--integrator" || a == "--rtol" || a == "--input" ||
                                 a == "--input-log" || a == "--profile" ||
                                 a == "--set" || a == "--rate" || a == "--every" || a == "--out" ||
-                                a == "--weld" || a == "--release";
+                                a == "--weld" || a == "--release" || a == "--scene";
         if (takesValue) {
             auto v = value();
             if (!v) return usage(fill(trStd("padrob", "%1 needs a value"), {a}));
@@ -266,6 +268,8 @@ int runSimulate(const std::vector<std::string>& args)
                 profileArg = *v;
             } else if (a == "--out") {
                 outPath = *v;
+            } else if (a == "--scene") {
+                scenePath = *v;
             } else if (a == "--weld" || a == "--release") {
                 std::string problem;
                 auto w = parseWeldSwitch(a == "--weld", *v, problem);
@@ -321,8 +325,19 @@ int runSimulate(const std::vector<std::string>& args)
         }
         return {};
     };
+    // --scene: its ground graphics are solids the model's touch (CONTACT, docs/contact.md)
+    std::optional<solver::CompiledModel> scene;
+    if (!scenePath.empty()) {
+        scene = solver::compileFile(scenePath);
+        if (!scene->ok()) {
+            for (const solver::Diagnostic& d : scene->diagnostics)
+                if (d.severity == solver::Severity::Error) printDiagnostic(stderr, d);
+            return scene->diagnostics.begin()->code == "io-error" ? kExitUsage : kExitModelErrors;
+        }
+    }
     std::shared_ptr<const solver::Model> model =
-        sets.empty() && rates.empty() ? loadAndCompile(modelPath, status) : loadAndCompile(modelPath, status, edit);
+        sets.empty() && rates.empty() && !scene ? loadAndCompile(modelPath, status)
+                                                : loadAndCompile(modelPath, status, edit, scene ? &scene->spec : nullptr);
     if (!model) return status;
     const solver::Model& m = *model;
 

@@ -1,6 +1,7 @@
 #include "solver/compile/compile.h"
 
 #include "solver/compile/initial_configuration.h"
+#include "solver/contact/contact_geometry.h"
 #include "solver/core/data.h"
 #include "solver/kinematics/joint_geometry.h"
 
@@ -206,7 +207,7 @@ void freeSlotFrames(int slot, const Eigen::Isometry3d& f1, const Eigen::Isometry
 
 }  // namespace
 
-CompileResult compileModel(const ModelSpec& spec, Diagnostics& diags)
+CompileResult compileModel(const ModelSpec& spec, Diagnostics& diags, const ModelSpec* scene)
 {
     const std::size_t errorsBefore = diags.errorCount();
 
@@ -465,6 +466,9 @@ CompileResult compileModel(const ModelSpec& spec, Diagnostics& diags)
     for (const BodySpec& b : spec.bodies) {
         if (b.id != 0 && b.hasMass) topo.totalMass += b.mass;
     }
+
+    // 8. CONTACT: the solids' shapes and the pairs that never touch (contact/contact_geometry.h)
+    if (spec.contact && diags.errorCount() == errorsBefore) m.contact = compileContact(spec, scene, m, diags);
 
     CompileResult result;
     if (driveOnCut || diags.errorCount() > errorsBefore) return result;

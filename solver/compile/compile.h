@@ -29,7 +29,9 @@
 //      angles on θ0's monotonic branch of L(θ) (MODEL_LANGUAGE.md: θ0 is the angle
 //      nearest to 0), ordered so that lower ≤ upper, since dL/dθ may be negative;
 //   7. every joint (or loop) moves mass: the mass matrix of the compiled model at θ0
-//      on the independent coordinates is not singular ("joint-moves-no-mass").
+//      on the independent coordinates is not singular ("joint-moves-no-mass");
+//   8. with CONTACT, the contact model (contact/contact_geometry.h): the shapes of the
+//      graphics and of `scene`'s ground graphics, the pairs that never touch.
 
 #include "solver/compile/topology.h"
 #include "solver/core/diagnostic.h"
@@ -50,7 +52,8 @@ struct CompileResult {
 
 /// Compiles a spec that passed the local checks (solver/spec/validate.h) without
 /// errors. Adds its diagnostics to `diags`; a model with any error (this stage's)
-/// gets neither topology nor model: nothing is half-compiled.
-CompileResult compileModel(const ModelSpec& spec, Diagnostics& diags);
+/// gets neither topology nor model: nothing is half-compiled. `scene` (may be null):
+/// a scene whose ground graphics the model's solids touch under CONTACT.
+CompileResult compileModel(const ModelSpec& spec, Diagnostics& diags, const ModelSpec* scene = nullptr);
 
 }  // namespace solver

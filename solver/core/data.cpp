@@ -24,6 +24,10 @@ Data::Data(const Model& model)
     // applied loads
     fext.assign(nb, zero6);
     tauExt = Eigen::VectorXd::Zero(n);
+    if (model.contact && model.contact->makeScratch) {
+        contacts.reserve(kMaxContacts);
+        contactScratch = model.contact->makeScratch(*model.contact->geometry);
+    }
 
     // fluid power
     const auto nc = static_cast<Eigen::Index>(model.circuits.size());

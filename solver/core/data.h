@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace solver {
@@ -41,6 +42,11 @@ struct Data {
     // ---- applied loads (solver/dynamics/applied_forces.h) --------------------
     std::vector<Vector6d> fext;           ///< applied load on each body, about its frame origin (dim nb)
     Eigen::VectorXd tauExt;               ///< generalized applied force on each θ (F JOINT, by θ) (dim nb)
+
+    // ---- contact (solver/contact/contact_forces.h): empty without CONTACT -------
+    /// The contacts of the last evaluation (capacity kMaxContacts; size: how many).
+    std::vector<ContactPoint> contacts;
+    std::unique_ptr<ContactScratch> contactScratch;  ///< FCL objects of this thread
 
     // ---- fluid power (solver/hydraulics/circuit.h): sized 0 without circuits --
     /// d/dt State::fluid (dim kFluidStates · circuits): spool rate, ṗ_A, ṗ_B.

@@ -39,6 +39,7 @@
 // Everything indexed by tree index stays as it is.
 
 #include "solver/core/actuator_law.h"
+#include "solver/core/contact.h"
 #include "solver/core/fluid_power.h"
 #include "solver/core/kinds.h"
 
@@ -46,6 +47,7 @@
 #include <Eigen/Geometry>
 
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -162,6 +164,10 @@ struct Model {
     CompiledFluid fluid;
     std::vector<CompiledPump> pumps;        ///< in file order
     std::vector<CompiledCircuit> circuits;  ///< one per CYL/HMOTOR drive, by joint id
+
+    /// CONTACT: the contact law and the solids' shapes (core/contact.h); null without
+    /// CONTACT (then nothing touches and the model behaves as before).
+    std::shared_ptr<const CompiledContact> contact;
 
     std::vector<CutJoint> cuts;  ///< loop-closure joints (empty for an open tree)
     /// Length [m] that makes the constraints' length rows comparable to their

@@ -34,6 +34,8 @@ State makeState(const Model& model)
         s.fluid[kFluidStates * static_cast<Eigen::Index>(c) + 2] = k.p0B;
     }
 
+    if (model.contact) s.contacts.reserve(kMaxContacts);
+
     // a joint that starts on a limit, and does not start moving away from it, rests on it
     for (int i = 0; i < model.nb; ++i) {
         if (onLimit(s.q[i], model.lower[i]) && s.qd[i] <= 0) {

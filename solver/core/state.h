@@ -48,6 +48,9 @@ struct State {
     /// values. −1: the dynamics find it from the singular values (above 1e-9 of the
     /// largest).
     int constraintRank = -1;
+    /// CONTACT: the tangential anchors of the sticking contacts (core/contact.h),
+    /// renewed at every step's end (capacity kMaxContacts; empty without CONTACT).
+    std::vector<ContactAnchor> contacts;
 };
 
 /// The initial state: θ = theta0, θ̇ = thetaDot0, t = 0, u = 0, servo integrals 0,

@@ -1,5 +1,7 @@
 #include "solver/dynamics/applied_forces.h"
 
+#include "solver/contact/contact_forces.h"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -153,6 +155,8 @@ void applyForces(const Model& model, const State& state, Data& data)
         }
         }
     }
+    // CONTACT: the solids' contact forces (contact/contact_forces.h)
+    if (model.contact) applyContacts(model, state, data);
 }
 
 }  // namespace solver

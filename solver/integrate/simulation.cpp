@@ -1,5 +1,6 @@
 #include "solver/integrate/simulation.h"
 
+#include "solver/contact/contact_forces.h"
 #include "solver/dynamics/applied_forces.h"
 #include "solver/dynamics/constraints.h"
 #include "solver/dynamics/drives.h"
@@ -145,9 +146,10 @@ static int stateSize(const Model& m) { return 3 * m.nb + kFluidStates * static_c
 /// current modes (kRootsPerJoint per joint, then the loop lock; each valid while positive).
 class Simulation::System : public OdeSystem {
 public:
-    System(const Model& model, const State& modes, bool limits, const std::vector<char>& faulted)
+    System(const Model& model, State& modes, bool limits, const std::vector<char>& faulted)
         : m_model(&model), m_modes(modes), m_work(modes), m_data(model), m_limits(limits), m_faulted(faulted)
     {
+        if (model.contact) m_work.contacts.reserve(kMaxContacts);
         for (int j = 0; j < model.nb; ++j) {
             if ((limits && (std::isfinite(model.lower[j]) || std::isfinite(model.upper[j]))) || isHydraulic(model, j))
                 m_needRoots = true;
@@ -190,6 +192,8 @@ public:
     bool rhsAndRoots(double t, const double* y, double* ydot, double* g) override
     {
         full(t, y);
+        // a step's end (or start): the contacts' anchors for the next step
+        if (m_model->contact) updateContactAnchors(*m_model, m_data, m_modes.contacts);
         derivative(*m_model, m_work, m_data, m_faulted, ydot);
         if (rootCount() > 0) eventFunctions(*m_model, m_work, m_data, m_limits, expectedRank, g);
         return true;
@@ -297,7 +301,7 @@ public:
 
 private:
     const Model* m_model;  // the simulation's (with its drive faults)
-    const State& m_modes;  // the simulation's state: modes and commands
+    State& m_modes;        // the simulation's state: modes, commands, contact anchors (set at step ends)
     State m_work;          // modes copied from m_modes, values from y
     Data m_data;
     bool m_limits;
@@ -334,6 +338,7 @@ private:
         for (Eigen::Index k = nb; k < m_work.q.size(); ++k) m_work.q[k] = m_modes.q[k];
         m_work.welds = m_modes.welds;
         m_work.constraintRank = m_modes.constraintRank;
+        if (m_model->contact) m_work.contacts = m_modes.contacts;
     }
 };
 

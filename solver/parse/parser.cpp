@@ -21,7 +21,7 @@ constexpr double kDegToRad = std::numbers::pi / 180.0;
 
 /// The statements a line may start with, for "did you mean" suggestions.
 constexpr std::array kStatementKeywords = {"GRAVITY", "RESTITUTION", "B", "C", "B1", "B2", "CL1", "CL2", "D", "F", "G",
-                                           "FLUID", "PUMP"};
+                                           "FLUID", "PUMP", "CONTACT"};
 
 std::string fmt(double v)
 {
@@ -169,6 +169,7 @@ public:
         else if (kw == "RESTITUTION"sv) parseRestitution();
         else if (kw == "FLUID"sv) parseFluid();
         else if (kw == "PUMP"sv) parsePump();
+        else if (kw == "CONTACT"sv) parseContact();
         else if (kw == "B"sv) parseBody();
         else if (kw == "C"sv) parseJoint();
         else if (kw == "D"sv) parseDrive();
@@ -655,25 +656,39 @@ private:
         m_spec.restitution = *e;
     }
 
+    /// A statement that may be given once, given again at `pos` (first at `first`).
+    void givenTwice(const char* code, const char* keyword, SourcePos pos, SourcePos first)
+    {
+        m_d.error(code, pos,
+                  trText("Diagnostics", "%1 is given twice (first at line %2)").with(keyword).with(std::to_string(first.line)),
+                  trText("Diagnostics", "keep one %1 statement").with(keyword));
+    }
+
+    /// The options of a statement `keyword` that may be given once, into `opts`, their
+    /// positions into out.src; false (reported as `code`) when `first` was given before.
+    template <class Spec>
+    bool onceOptions(const char* code, const char* keyword, const std::optional<Spec>& first,
+                     const std::vector<OptionDef>& defs, Spec& out, Options& opts, bool& ok)
+    {
+        out.src.pos = m_toks[0].pos;
+        const Text context = plainText(keyword);
+        opts = options(defs, context, context, ok);
+        recordPositions(out.src, opts);
+        if (!first) return true;
+        givenTwice(code, keyword, out.src.pos, first->src.pos);
+        return false;
+    }
+
     void parseFluid()
     {
-        FluidSpec f;
-        f.src.pos = m_toks[0].pos;
-        bool ok = true;
-        const Text context = plainText("FLUID");
         static const std::vector<OptionDef> defs = {
             {"BULK", Arg::Num, trText("Diagnostics", "the bulk modulus in Pa")},
             {"LAMINAR", Arg::Num, trText("Diagnostics", "the laminar pressure difference in Pa")}};
-        Options opts = options(defs, context, context, ok);
-        recordPositions(f.src, opts);
-        if (m_spec.fluid) {
-            m_d.error("duplicate-fluid", f.src.pos,
-                      trText("Diagnostics", "%1 is given twice (first at line %2)")
-                          .with("FLUID")
-                          .with(std::to_string(m_spec.fluid->src.pos.line)),
-                      trText("Diagnostics", "keep one %1 statement").with("FLUID"));
-            return;
-        }
+        FluidSpec f;
+        Options opts;
+        bool ok = true;
+        if (!onceOptions("duplicate-fluid", "FLUID", m_spec.fluid, defs, f, opts, ok)) return;
+        const Text context = plainText("FLUID");
         for (const auto& [k, v] : opts) {
             if (v.ok && !(v.num > 0)) {
                 ok = false;
@@ -687,6 +702,40 @@ private:
         if (auto it = opts.find("LAMINAR"); it != opts.end()) f.laminar = it->second.num;
         f.src.complete = ok;
         m_spec.fluid = std::move(f);
+    }
+
+    void parseContact()
+    {
+        ContactSpec c;
+        bool ok = true;
+        Options opts;  // MU and E, each checked on its own below
+        static const std::vector<OptionDef> defs = {
+            {"MU", Arg::Num, trText("Diagnostics", "the friction coefficient")},
+            {"E", Arg::Num, trText("Diagnostics", "the coefficient of restitution")}};
+        if (!onceOptions("duplicate-contact", "CONTACT", m_spec.contact, defs, c, opts, ok)) return;
+        if (auto it = opts.find("MU"); it != opts.end() && it->second.ok) {
+            if (it->second.num < 0) {
+                ok = false;
+                m_d.error("bad-friction", it->second.valuePos,
+                          trText("Diagnostics", "CONTACT MU %1 is negative").with(fmt(it->second.num)),
+                          trText("Diagnostics", "MU is the Coulomb friction coefficient, 0 (frictionless) or more: "
+                                                "steel on steel about 0.2 … 0.6"));
+            } else {
+                c.mu = it->second.num;
+            }
+        }
+        if (auto it = opts.find("E"); it != opts.end() && it->second.ok) {
+            if (it->second.num < 0 || it->second.num > 1) {
+                ok = false;
+                m_d.error("bad-contact-restitution", it->second.valuePos,
+                          trText("Diagnostics", "CONTACT E %1 is outside 0 … 1").with(fmt(it->second.num)),
+                          trText("Diagnostics", "0 stops a solid dead where it hits, 1 bounces it back at the same speed"));
+            } else {
+                c.e = it->second.num;
+            }
+        }
+        c.src.complete = ok;
+        m_spec.contact = std::move(c);
     }
 
     void parsePump()
@@ -1374,6 +1423,7 @@ private:
                                                         {"COLOR", Arg::Vec3, "r g b"},
                                                         {"MASS", Arg::Num, trText("Diagnostics", "mass")},
                                                         {"RHO", Arg::Num, trText("Diagnostics", "density")},
+                                                        {"NOCONTACT", Arg::Flag, ""},
                                                         {"SCALE", Arg::Num, trText("Diagnostics", "factor")}};
         static const std::vector<OptionDef> solidDefs(meshDefs.begin(), meshDefs.end() - 1);
         // a word in the body id's place is a malformed id unless it is a shape
@@ -1474,6 +1524,7 @@ private:
         if (auto v = get("MASS")) g.mass = v->num;
         if (auto v = get("RHO")) g.rho = v->num;
         if (auto v = get("SCALE")) { g.scale = v->num; g.hasScale = true; }
+        if (get("NOCONTACT")) g.noContact = true;
         if (g.mass && g.rho) {
             ok = false;
             m_d.error("mass-and-rho", g.src.where("RHO"), trText("Diagnostics", "%1: give MASS or RHO, not both").with(ctx()),

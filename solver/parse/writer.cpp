@@ -75,7 +75,13 @@ std::string writeModel(const ModelSpec& spec)
         if (!p.name.empty()) out += " NAME " + quote(p.name);
         out += '\n';
     }
-    if (spec.hasGravity || spec.hasRestitution || spec.fluid || !spec.pumps.empty()) out += "\n";
+    if (spec.contact) {
+        out += "CONTACT";
+        if (spec.contact->mu) out += " MU " + formatNumber(*spec.contact->mu);
+        if (spec.contact->e) out += " E " + formatNumber(*spec.contact->e);
+        out += '\n';
+    }
+    if (spec.hasGravity || spec.hasRestitution || spec.fluid || !spec.pumps.empty() || spec.contact) out += "\n";
     for (const BodySpec& b : spec.bodies) {
         out += "B " + std::to_string(b.id);
         if (b.hasMass) {
@@ -146,6 +152,7 @@ std::string writeModel(const ModelSpec& spec)
         if (g.hasColor) out += " COLOR " + vec(g.color);
         if (g.mass) out += " MASS " + formatNumber(*g.mass);
         if (g.rho) out += " RHO " + formatNumber(*g.rho);
+        if (g.noContact) out += " NOCONTACT";
         out += '\n';
     }
     return out;

@@ -170,7 +170,15 @@ struct GraphicSpec {
     bool hasColor = false;
     std::optional<double> mass;  ///< [kg]
     std::optional<double> rho;   ///< [kg/m^3]
+    bool noContact = false;      ///< NOCONTACT: drawn only, never touches (CONTACT)
     FieldPositions src;
+};
+
+/// `CONTACT [MU μ] [E e]`: solids touch (at most one statement; docs/contact.md).
+struct ContactSpec {
+    std::optional<double> mu;  ///< Coulomb friction coefficient (default kDefaultContactFriction)
+    std::optional<double> e;   ///< coefficient of restitution (default 0)
+    FieldPositions src;        ///< at: "MU", "E"
 };
 
 /// `FLUID [BULK β] [LAMINAR p_lam]`: the hydraulic oil (at most one statement).
@@ -206,6 +214,7 @@ struct ModelSpec {
     std::vector<DriveSpec> drives;
     std::optional<FluidSpec> fluid;
     std::vector<PumpSpec> pumps;     ///< in file order
+    std::optional<ContactSpec> contact;
     std::vector<ForceSpec> forces;
     std::vector<GraphicSpec> graphics;
 

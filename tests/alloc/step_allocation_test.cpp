@@ -190,3 +190,28 @@ TEST(StepAllocation, ABurstHoseAllocatesNothingInTheStepLoop)
         landed = landed || (e.kind == solver::SimulationEvent::Kind::LimitHit && e.joint == boom);
     EXPECT_TRUE(landed) << "the boom was to land on its stop";
 }
+
+TEST(StepAllocation, ContactsAllocateNothing)
+{
+    // CONTACT: a 4.5 t box dropped onto the floor (box-box contacts, anchors kept and
+    // renewed) and a pendulum's ball rubbing along it (sphere-box, slipping)
+    auto model = fromText("GRAVITY 0 0 -9.81\nCONTACT MU 0.4\nB 1 4500 750 750 750\nC 1 T 2 QI 0.52\n"
+                          "B1 0 P1 0 0 0 A1 1 0 0 R1 0 0 1\nB2 1 P2 0 0 0 A2 1 0 0 R2 0 0 1\n"
+                          "B 2 10 0.1 0.1 0.1\nC 2 QI 1.0\nB1 0 P1 3 0 1.12 A1 1 0 0 R1 0 0 -1\n"
+                          "B2 2 P2 0 0 1 A2 1 0 0 R2 0 0 -1\n"
+                          "G 1 B 1 BOX 1 1 1\nG 2 B 2 SPHERE 0.15\nG 3 B 0 BOX 8 4 1 POS 0 0 -0.5\n");
+    ASSERT_TRUE(model);
+    solver::Simulation sim(model, solver::SimulationOptions{});
+    std::vector<solver::SimulationEvent> events;
+    events.reserve(16);
+    std::string error;
+    ASSERT_TRUE(sim.advanceTo(0.05, events, error)) << error;
+    const long before = g_allocations;
+    std::size_t most = 0;
+    for (int k = 51; k <= 2000; ++k) {
+        ASSERT_TRUE(sim.advanceTo(k * 1e-3, events, error)) << error;
+        most = std::max(most, sim.data().contacts.size());
+    }
+    EXPECT_EQ(g_allocations - before, 0) << "allocations in 1,950 steps with contacts";
+    EXPECT_GE(most, 5u);  // the box's four corners and the ball
+}

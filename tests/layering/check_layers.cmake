@@ -1,14 +1,14 @@
 # The solver's layers (docs/architecture.md), checked on every file of solver/:
 #   - solver/ never includes Qt (a Qt header, <Q…> or <Qt…>);
 #   - each folder includes only from its own layer and those below it, in this order:
-#       core < spec < parse < kinematics < inertia < hydraulics < dynamics < compile < integrate
+#       core < spec < parse < kinematics < inertia < hydraulics < contact < dynamics < compile < integrate
 #            < collision < io < reference < solver/pipeline.h
 #     so core/ includes nothing from another solver folder.
 # Run: cmake -DROOT=<source dir> -P tests/layering/check_layers.cmake (ctest: solver.layering).
 if(NOT ROOT)
   message(FATAL_ERROR "give -DROOT=<the source directory>")
 endif()
-set(layers core spec parse kinematics inertia hydraulics dynamics compile integrate collision io reference pipeline)
+set(layers core spec parse kinematics inertia hydraulics contact dynamics compile integrate collision io reference pipeline)
 
 file(GLOB_RECURSE files RELATIVE ${ROOT} ${ROOT}/solver/*.h ${ROOT}/solver/*.cpp)
 set(problems "")

@@ -1,0 +1,264 @@
+#include "solver/contact/contact_forces.h"
+
+#include "solver/contact/contact_geometry.h"
+
+#include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
+#include <fcl/geometry/shape/box.h>
+#include <fcl/geometry/shape/cone.h>
+#include <fcl/geometry/shape/cylinder.h>
+#include <fcl/geometry/shape/ellipsoid.h>
+#include <fcl/geometry/shape/sphere.h>
+#include <fcl/narrowphase/detail/gjk_solver_libccd.h>
+#include <fcl/narrowphase/detail/primitive_shape_algorithm/box_box.h>
+#include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/collision_object.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace solver {
+
+namespace {
+
+/// Points of one pair within this distance of an anchor's point are the same contact [m].
+constexpr double kAnchorMatch = 0.02;
+/// Contact points asked of FCL per pair.
+constexpr int kPointsPerPair = 8;
+
+class Scratch final : public ContactScratch {
+public:
+    explicit Scratch(const ContactGeometry& g) : geometry(&g), request(kPointsPerPair, true)
+    {
+        for (std::size_t i = 0; i < g.shapes.size(); ++i) {
+            objects.push_back(std::make_unique<fcl::CollisionObjectd>(g.shapes[i].geometry, g.shapes[i].local));
+            objects.back()->setUserData(reinterpret_cast<void*>(static_cast<std::intptr_t>(i)));
+            objects.back()->computeAABB();
+        }
+        for (int i : g.still) still.registerObject(objects[i].get());
+        still.setup();
+        result.clear();
+        anchors.reserve(kMaxContacts);
+        points.reserve(64);
+    }
+
+    const ContactGeometry* geometry;
+    std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects;
+    fcl::DynamicAABBTreeCollisionManagerd still;
+    fcl::CollisionRequestd request;
+    fcl::CollisionResultd result;
+    fcl::detail::GJKSolver_libccd<double> solver;
+    std::vector<fcl::ContactPoint<double>> points;  // one pair's, the normal from a to b
+    std::vector<ContactAnchor> anchors;  // updateContactAnchors' new list
+    // the evaluation under way (the broad phase's callback)
+    const Model* model = nullptr;
+    const State* state = nullptr;
+    Data* data = nullptr;
+    int shape = -1;  // the moving shape being queried
+};
+
+Eigen::Vector3d pointVelocity(const Data& d, int body, const Eigen::Vector3d& p)
+{
+    if (body < 0) return Eigen::Vector3d::Zero();
+    return d.vel[body] + d.omega[body].cross(p - d.X_wb[body].translation());
+}
+
+Eigen::Vector3d toWorld(const Data& d, int body, const Eigen::Vector3d& local)
+{
+    return body < 0 ? local : Eigen::Vector3d(d.X_wb[body] * local);
+}
+
+Eigen::Vector3d toLocal(const Data& d, int body, const Eigen::Vector3d& world)
+{
+    return body < 0 ? world : Eigen::Vector3d(d.X_wb[body].inverse() * world);
+}
+
+void addLoad(Data& d, int body, const Eigen::Vector3d& p, const Eigen::Vector3d& f)
+{
+    if (body < 0) return;
+    d.fext[body].head<3>() += (p - d.X_wb[body].translation()).cross(f);
+    d.fext[body].tail<3>() += f;
+}
+
+/// Calls f with `g` as its FCL primitive type; false for a mesh.
+template <class F>
+bool asPrimitive(const fcl::CollisionGeometryd& g, F&& f)
+{
+    switch (g.getNodeType()) {
+    case fcl::GEOM_BOX: f(static_cast<const fcl::Boxd&>(g)); return true;
+    case fcl::GEOM_SPHERE: f(static_cast<const fcl::Sphered&>(g)); return true;
+    case fcl::GEOM_ELLIPSOID: f(static_cast<const fcl::Ellipsoidd&>(g)); return true;
+    case fcl::GEOM_CYLINDER: f(static_cast<const fcl::Cylinderd&>(g)); return true;
+    case fcl::GEOM_CONE: f(static_cast<const fcl::Coned&>(g)); return true;
+    default: return false;
+    }
+}
+
+/// The contact points of shapes a and b into s.points (normals from a to b). Two
+/// primitives go straight to FCL's narrow-phase solver with the preallocated list
+/// (fcl::collide would allocate its own each call); a mesh through fcl::collide.
+void contactPoints(Scratch& s, int a, int b)
+{
+    s.points.clear();
+    const fcl::CollisionObjectd& oa = *s.objects[a];
+    const fcl::CollisionObjectd& ob = *s.objects[b];
+    if (oa.collisionGeometry()->getNodeType() == fcl::GEOM_BOX && ob.collisionGeometry()->getNodeType() == fcl::GEOM_BOX) {
+        // what shapeIntersect does, into our list (boxBoxIntersect copies from a vector of its own)
+        Eigen::Vector3d normal;
+        double depth = 0;
+        int code = 0;
+        fcl::detail::boxBox2(static_cast<const fcl::Boxd&>(*oa.collisionGeometry()).side, oa.getTransform(),
+                             static_cast<const fcl::Boxd&>(*ob.collisionGeometry()).side, ob.getTransform(), normal,
+                             &depth, &code, 4, s.points);
+        return;
+    }
+    bool primitives = false;
+    asPrimitive(*oa.collisionGeometry(), [&](const auto& sa) {
+        primitives = asPrimitive(*ob.collisionGeometry(), [&](const auto& sb) {
+            s.solver.shapeIntersect(sa, oa.getTransform(), sb, ob.getTransform(), &s.points);
+        });
+    });
+    if (primitives) return;
+    s.points.clear();
+    s.result.clear();
+    fcl::collide(&oa, &ob, s.request, s.result);
+    for (std::size_t i = 0; i < s.result.numContacts(); ++i) {
+        const fcl::Contactd& c = s.result.getContact(i);
+        // fcl: the normal points from o1 to o2; o1 may be either of ours
+        const bool swapped = c.o1 != oa.collisionGeometry().get();
+        s.points.emplace_back(swapped ? Eigen::Vector3d(-c.normal) : Eigen::Vector3d(c.normal), c.pos,
+                              c.penetration_depth);
+    }
+}
+
+/// The narrow phase of shapes a and b (a on a moving body) and their contact forces.
+void touch(Scratch& s, int a, int b)
+{
+    const ContactGeometry& g = *s.geometry;
+    if (g.isExcluded(a, b)) return;
+    Data& d = *s.data;
+    const CompiledContact& law = *s.model->contact;
+    contactPoints(s, a, b);
+    const int n = std::min(static_cast<int>(s.points.size()), kPointsPerPair);
+    if (n == 0) return;
+    const int ba = g.shapes[a].body, bb = g.shapes[b].body;
+    const double ma = ba >= 0 ? g.mass[ba] : 0, mb = bb >= 0 ? g.mass[bb] : 0;
+    const double meff = ba < 0 ? mb : bb < 0 ? ma : ma * mb / (ma + mb);
+    const double k = meff * law.omega * law.omega / n;
+    const double c = 2 * law.dampingRatio * meff * law.omega / n;
+    const double ct = 2 * meff * law.omega / n;
+    for (int i = 0; i < n; ++i) {
+        if (static_cast<int>(d.contacts.size()) >= kMaxContacts) return;
+        const fcl::ContactPoint<double>& fc = s.points[static_cast<std::size_t>(i)];
+        Eigen::Vector3d normal = fc.normal;
+        const double norm = normal.norm();
+        if (!(norm > 0) || !std::isfinite(fc.penetration_depth)) continue;
+        normal /= norm;
+        const Eigen::Vector3d p = fc.pos;
+        const double depth = std::max(0.0, fc.penetration_depth);
+        const Eigen::Vector3d vrel = pointVelocity(d, bb, p) - pointVelocity(d, ba, p);  // B relative to A
+        const double vn = vrel.dot(normal);  // > 0: separating
+        const double spring = k * std::min(depth, law.depthCap);
+        const double N = std::max(0.0, spring + std::clamp(-c * vn, -kDamperCap * spring, kDamperCap * spring));
+        const Eigen::Vector3d vt = vrel - vn * normal;
+        // the anchor: the nearest of this pair's within kAnchorMatch
+        int anchor = -1;
+        double best = kAnchorMatch;
+        for (std::size_t j = 0; j < s.state->contacts.size(); ++j) {
+            const ContactAnchor& an = s.state->contacts[j];
+            if (an.shapeA != a || an.shapeB != b) continue;
+            const double dist = (toWorld(d, ba, an.onA) - p).norm();
+            if (dist < best) {
+                best = dist;
+                anchor = static_cast<int>(j);
+            }
+        }
+        Eigen::Vector3d ft = -ct * vt;
+        if (anchor >= 0) {
+            const ContactAnchor& an = s.state->contacts[static_cast<std::size_t>(anchor)];
+            Eigen::Vector3d sep = toWorld(d, bb, an.onB) - toWorld(d, ba, an.onA);
+            sep -= sep.dot(normal) * normal;
+            ft -= k * sep;
+        }
+        const double limit = law.mu * N;
+        const double ftNorm = ft.norm();
+        const bool sticking = ftNorm <= limit;
+        if (!sticking) ft *= limit / ftNorm;
+        const Eigen::Vector3d f = N * normal + ft;
+        addLoad(d, bb, p, f);
+        addLoad(d, ba, p, -f);
+        d.contacts.push_back({.shapeA = a, .shapeB = b, .point = p, .normal = normal, .depth = depth, .force = f,
+                              .stiffness = k, .normalSpeed = vn, .sticking = sticking && anchor >= 0, .anchor = anchor});
+    }
+}
+
+bool broadPhaseCallback(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* cdata)
+{
+    auto* s = static_cast<Scratch*>(cdata);
+    const auto i1 = static_cast<int>(reinterpret_cast<std::intptr_t>(o1->getUserData()));
+    const auto i2 = static_cast<int>(reinterpret_cast<std::intptr_t>(o2->getUserData()));
+    const int other = i1 == s->shape ? i2 : i1;
+    touch(*s, s->shape, other);
+    return false;  // all pairs
+}
+
+}  // namespace
+
+std::unique_ptr<ContactScratch> makeContactScratch(const ContactGeometry& geometry)
+{
+    return std::make_unique<Scratch>(geometry);
+}
+
+void applyContacts(const Model& model, const State& state, Data& data)
+{
+    if (!model.contact || !data.contactScratch) return;
+    auto& s = static_cast<Scratch&>(*data.contactScratch);
+    const ContactGeometry& g = *s.geometry;
+    s.model = &model;
+    s.state = &state;
+    s.data = &data;
+    data.contacts.clear();
+    for (int i : g.moving) {
+        const int body = g.shapes[i].body;
+        s.objects[i]->setTransform(data.X_wb[body] * g.shapes[i].local);
+        s.objects[i]->computeAABB();
+    }
+    for (std::size_t m = 0; m < g.moving.size(); ++m) {
+        const int a = g.moving[m];
+        s.shape = a;
+        s.still.collide(s.objects[a].get(), &s, broadPhaseCallback);
+        for (std::size_t n = m + 1; n < g.moving.size(); ++n) {
+            const int b = g.moving[n];
+            if (g.shapes[a].body == g.shapes[b].body) continue;
+            if (!s.objects[a]->getAABB().overlap(s.objects[b]->getAABB())) continue;
+            touch(s, a, b);
+        }
+    }
+}
+
+void updateContactAnchors(const Model& model, Data& data, std::vector<ContactAnchor>& anchors)
+{
+    if (!model.contact || !data.contactScratch) return;
+    auto& s = static_cast<Scratch&>(*data.contactScratch);
+    const ContactGeometry& g = *s.geometry;
+    s.anchors.clear();
+    for (const ContactPoint& c : data.contacts) {
+        const int ba = g.shapes[c.shapeA].body, bb = g.shapes[c.shapeB].body;
+        if (c.sticking) {
+            s.anchors.push_back(anchors[static_cast<std::size_t>(c.anchor)]);
+            continue;
+        }
+        // a new contact, or one that slipped: the spring left carrying the friction force
+        const Eigen::Vector3d ft = c.force - c.force.dot(c.normal) * c.normal;
+        ContactAnchor an;
+        an.shapeA = c.shapeA;
+        an.shapeB = c.shapeB;
+        an.onA = toLocal(data, ba, c.point);
+        an.onB = toLocal(data, bb, c.anchor >= 0 && c.stiffness > 0 ? Eigen::Vector3d(c.point - ft / c.stiffness)
+                                                                    : c.point);
+        s.anchors.push_back(an);
+    }
+    anchors.assign(s.anchors.begin(), s.anchors.end());
+}
+
+}  // namespace solver
