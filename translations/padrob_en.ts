@@ -312,7 +312,7 @@
     <message>
         <location filename="../solver/inertia/solid_inertia.cpp" line="+68" />
         <location line="+131" />
-        <location filename="../solver/parse/parser.cpp" line="+1363" />
+        <location filename="../solver/parse/parser.cpp" line="+1412" />
         <location filename="../solver/spec/validate.cpp" line="+510" />
         <location line="+107" />
         <source>graphic %1</source>
@@ -403,12 +403,12 @@
         <translation>a density in kg/m³ (steel: 7850)</translation>
     </message>
     <message>
-        <location filename="../solver/collision/collision_world.cpp" line="+258" />
+        <location filename="../solver/collision/collision_world.cpp" line="+114" />
         <source>G %1 is left out of the clearance checks: %2</source>
         <translation>G %1 is left out of the clearance checks: %2</translation>
     </message>
     <message>
-        <location filename="../solver/compile/compile.cpp" line="+227" />
+        <location filename="../solver/compile/compile.cpp" line="+228" />
         <location filename="../solver/compile/initial_configuration.cpp" line="+44" />
         <location line="+9" />
         <location filename="../solver/compile/topology.cpp" line="+39" />
@@ -451,7 +451,7 @@
     </message>
     <message>
         <location filename="../solver/compile/topology.cpp" line="-14" />
-        <location filename="../solver/integrate/simulation.cpp" line="+53" />
+        <location filename="../solver/integrate/simulation.cpp" line="+54" />
         <location filename="../solver/parse/parser.cpp" line="-200" />
         <location filename="../solver/spec/validate.cpp" line="-589" />
         <location line="+588" />
@@ -710,7 +710,7 @@
     <message>
         <location line="+6" />
         <location line="+16" />
-        <location filename="../solver/parse/parser.cpp" line="-488" />
+        <location filename="../solver/parse/parser.cpp" line="-536" />
         <location line="+9" />
         <source>%1: '%2' is not a number</source>
         <translation>%1: '%2' is not a number</translation>
@@ -992,7 +992,7 @@
         <translation>joint %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../solver/parse/parser.cpp" line="+713" />
+        <location filename="../solver/parse/parser.cpp" line="+761" />
         <location filename="../solver/spec/validate.cpp" line="+5" />
         <source>drive on joint %1</source>
         <translation>drive on joint %1</translation>
@@ -1577,7 +1577,7 @@
         <translation>add '"' at the end of the text</translation>
     </message>
     <message>
-        <location filename="../solver/parse/parser.cpp" line="-1181" />
+        <location filename="../solver/parse/parser.cpp" line="-1230" />
         <source>write %1</source>
         <translation>write %1</translation>
     </message>
@@ -1602,7 +1602,7 @@
         <translation>start the line with GRAVITY, B, C, D, F or G, or join it to the line above</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+21" />
         <source>unknown keyword '%1'</source>
         <translation>unknown keyword '%1'</translation>
     </message>
@@ -1655,13 +1655,13 @@
     </message>
     <message>
         <location line="+16" />
-        <location line="+762" />
+        <location line="+810" />
         <location line="+112" />
         <source>%1: %2 cannot be negative (%3)</source>
         <translation>%1: %2 cannot be negative (%3)</translation>
     </message>
     <message>
-        <location line="-873" />
+        <location line="-921" />
         <location line="+4" />
         <source>ids are whole numbers 0, 1, 2, …</source>
         <translation>ids are whole numbers 0, 1, 2, …</translation>
@@ -1795,42 +1795,43 @@
     </message>
     <message>
         <location line="+8" />
-        <location line="+383" />
+        <location line="+431" />
         <source>%1: %2 is given twice</source>
         <translation>%1: %2 is given twice</translation>
     </message>
     <message>
-        <location line="-382" />
-        <location line="+383" />
+        <location line="-430" />
+        <location line="+431" />
         <source>keep one %1</source>
         <translation>keep one %1</translation>
     </message>
     <message>
-        <location line="-341" />
+        <location line="-389" />
         <source>write GRAVITY gx gy gz (m/s², z is up)</source>
         <translation>write GRAVITY gx gy gz (m/s², z is up)</translation>
     </message>
     <message>
         <location line="+4" />
         <location line="+22" />
-        <location line="+30" />
+        <location line="+21" />
         <source>%1 is given twice (first at line %2)</source>
         <translation>%1 is given twice (first at line %2)</translation>
     </message>
     <message>
-        <location line="-49" />
+        <location line="-40" />
         <location line="+22" />
-        <location line="+30" />
+        <location line="+19" />
         <source>keep one %1 statement</source>
         <translation>keep one %1 statement</translation>
     </message>
     <message>
-        <location line="-38" />
+        <location line="-27" />
+        <location line="+77" />
         <source>the coefficient of restitution</source>
         <translation>the coefficient of restitution</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-76" />
         <source>write RESTITUTION e (0 inelastic … 1 elastic)</source>
         <translation>write RESTITUTION e (0 inelastic … 1 elastic)</translation>
     </message>
@@ -1845,7 +1846,7 @@
         <translation>0 stops a joint dead at its limit, 1 bounces it back at the same speed</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+32" />
         <source>the bulk modulus in Pa</source>
         <translation>the bulk modulus in Pa</translation>
     </message>
@@ -1855,7 +1856,7 @@
         <translation>the laminar pressure difference in Pa</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+11" />
         <source>the effective bulk modulus of oil in hoses is about 1e9 Pa</source>
         <translation>the effective bulk modulus of oil in hoses is about 1e9 Pa</translation>
     </message>
@@ -1863,6 +1864,31 @@
         <location line="+1" />
         <source>a few bar, e.g. LAMINAR 2e5</source>
         <translation>a few bar, e.g. LAMINAR 2e5</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>the friction coefficient</source>
+        <translation>the friction coefficient</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>CONTACT MU %1 is negative</source>
+        <translation>CONTACT MU %1 is negative</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>MU is the Coulomb friction coefficient, 0 (frictionless) or more: steel on steel about 0.2 … 0.6</source>
+        <translation>MU is the Coulomb friction coefficient, 0 (frictionless) or more: steel on steel about 0.2 … 0.6</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>CONTACT E %1 is outside 0 … 1</source>
+        <translation>CONTACT E %1 is outside 0 … 1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>0 stops a solid dead where it hits, 1 bounces it back at the same speed</source>
+        <translation>0 stops a solid dead where it hits, 1 bounces it back at the same speed</translation>
     </message>
     <message>
         <location line="+15" />
@@ -1920,12 +1946,12 @@
     <message>
         <location line="-519" />
         <location line="+188" />
-        <location line="+454" />
+        <location line="+455" />
         <source>the body id</source>
         <translation>the body id</translation>
     </message>
     <message>
-        <location line="-618" />
+        <location line="-619" />
         <source>%1: a body takes 0, 4 or 7 numbers after its id (m Ixx Iyy Izz [Ixy Iyz Ixz]), found %2</source>
         <translation>%1: a body takes 0, 4 or 7 numbers after its id (m Ixx Iyy Izz [Ixy Iyz Ixz]), found %2</translation>
     </message>
@@ -2154,8 +2180,8 @@
         <translation>%1: a hydraulic drive needs VMAX or the pump data</translation>
     </message>
     <message>
-        <location line="-404" />
-        <location line="+34" />
+        <location line="-438" />
+        <location line="+68" />
         <location line="+385" />
         <location line="+106" />
         <location line="+12" />
@@ -2163,12 +2189,12 @@
         <translation>%1: %2 must be positive, not %3</translation>
     </message>
     <message>
-        <location line="-1038" />
+        <location line="-1086" />
         <source>statements are GRAVITY, RESTITUTION, FLUID, PUMP, B, C (with B1, B2, CL1), D, F and G; comments start with // or #</source>
         <translation>statements are GRAVITY, RESTITUTION, FLUID, PUMP, B, C (with B1, B2, CL1), D, F and G; comments start with // or #</translation>
     </message>
     <message>
-        <location line="+634" />
+        <location line="+682" />
         <source>the joint type (0, 1, 2 or 3)</source>
         <translation>the joint type (0, 1, 2 or 3)</translation>
     </message>
@@ -2368,7 +2394,7 @@
         <translation>mass</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>factor</source>
         <translation>factor</translation>
     </message>
@@ -2428,7 +2454,7 @@
         <translation>a graphic (G)</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+16" />
         <source>%1: give MASS or RHO, not both</source>
         <translation>%1: give MASS or RHO, not both</translation>
     </message>
@@ -2573,7 +2599,7 @@
         <translation>t=%1 s: joint %2 relief valve closed retracting</translation>
     </message>
     <message>
-        <location line="+757" />
+        <location line="+761" />
         <source>the closed loops locked up at t = %1 s (a singular configuration: the loop-closure equations lost rank, so the mechanism cannot move on there); drive it another way or change the geometry</source>
         <translation>the closed loops locked up at t = %1 s (a singular configuration: the loop-closure equations lost rank, so the mechanism cannot move on there); drive it another way or change the geometry</translation>
     </message>
@@ -2712,6 +2738,36 @@
         <location filename="../solver/io/csv_writer.cpp" line="+4" />
         <source>the last row is not finished</source>
         <translation>the last row is not finished</translation>
+    </message>
+    <message>
+        <location filename="../solver/contact/contact_geometry.cpp" line="+78" />
+        <source>G %1 cannot serve as a contact shape: %2</source>
+        <translation>G %1 cannot serve as a contact shape: %2</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>fix the mesh file, or mark the graphic NOCONTACT (drawn only)</source>
+        <translation>fix the mesh file, or mark the graphic NOCONTACT (drawn only)</translation>
+    </message>
+    <message>
+        <location line="+48" />
+        <source>G %1 and %2 overlap by %3 mm at the initial pose: they never touch each other</source>
+        <translation>G %1 and %2 overlap by %3 mm at the initial pose: they never touch each other</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>scene G %1</source>
+        <translation>scene G %1</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>G %1</source>
+        <translation>G %1</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>a pin in its bore is meant to; solids placed inside each other by mistake: move one out</source>
+        <translation>a pin in its bore is meant to; solids placed inside each other by mistake: move one out</translation>
     </message>
 </context>
 <context>
@@ -3330,7 +3386,7 @@
         <translation>fix the model, or check the path: it is relative to the tutorial's folder</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+14" />
         <source>the scene '%1' cannot be used (errors above)</source>
         <translation>the scene '%1' cannot be used (errors above)</translation>
     </message>
@@ -3340,7 +3396,17 @@
         <translation>fix the scene, or check the path: it is relative to the tutorial's folder</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+11" />
+        <source>the scene '%1' cannot be used with the model's CONTACT (errors above)</source>
+        <translation>the scene '%1' cannot be used with the model's CONTACT (errors above)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>mark the scene's graphics that the model must not touch NOCONTACT</source>
+        <translation>mark the scene's graphics that the model must not touch NOCONTACT</translation>
+    </message>
+    <message>
+        <location line="+16" />
         <source>%1: the model has no moving body %2</source>
         <translation>%1: the model has no moving body %2</translation>
     </message>
@@ -4687,7 +4753,7 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
         <location line="+3" />
         <location line="+580" />
         <location filename="../ide/cli/export.cpp" line="+85" />
-        <location filename="../ide/cli/simulate.cpp" line="+241" />
+        <location filename="../ide/cli/simulate.cpp" line="+243" />
         <location filename="../ide/cli/tutorial.cpp" line="-58" />
         <source>%1 needs a value</source>
         <translation>%1 needs a value</translation>
@@ -4718,7 +4784,7 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
         <location filename="../ide/cli/inertia.cpp" line="+196" />
         <location filename="../ide/cli/main.cpp" line="+138" />
         <location line="+26" />
-        <location filename="../ide/cli/simulate.cpp" line="+23" />
+        <location filename="../ide/cli/simulate.cpp" line="+25" />
         <location filename="../ide/cli/tutorial.cpp" line="+8" />
         <source>unknown option '%1'</source>
         <translation>unknown option '%1'</translation>
@@ -4763,7 +4829,7 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
         <translation>Try 'padrob %1 --help'.</translation>
     </message>
     <message>
-        <location line="+81" />
+        <location line="+82" />
         <source>the values given on the command line do not fit the model:</source>
         <translation>the values given on the command line do not fit the model:</translation>
     </message>
@@ -4827,7 +4893,7 @@ built without MuJoCo. On failure nothing is written.
     </message>
     <message>
         <location line="+4" />
-        <location filename="../ide/cli/simulate.cpp" line="-40" />
+        <location filename="../ide/cli/simulate.cpp" line="-42" />
         <source>--dt must be a positive number of seconds, not '%1'</source>
         <translation>--dt must be a positive number of seconds, not '%1'</translation>
     </message>
@@ -5394,7 +5460,7 @@ A model with errors is not described: its problems are printed as by
         </translation>
     </message>
     <message>
-        <location filename="../ide/cli/simulate.cpp" line="-175" />
+        <location filename="../ide/cli/simulate.cpp" line="-177" />
         <source>warning: %1</source>
         <translation>warning: %1</translation>
     </message>
@@ -5463,6 +5529,8 @@ Simulates the model for T seconds and writes its trajectory as CSV.
                         their relative pose then; repeatable
   --release T:A:B       at time T [s] release the weld of body B to body A;
                         repeatable
+  --scene FILE.pad      a scene (ground graphics only, e.g. a mill): under CONTACT
+                        the model's solids touch its solids too
 
 Columns: t; q&lt;j&gt; for every joint j in id order (loop-closing joints too;
 q&lt;j&gt;x q&lt;j&gt;y q&lt;j&gt;z for a free joint, T 3: its body's translation along B1's
@@ -5514,6 +5582,8 @@ Simulates the model for T seconds and writes its trajectory as CSV.
                         their relative pose then; repeatable
   --release T:A:B       at time T [s] release the weld of body B to body A;
                         repeatable
+  --scene FILE.pad      a scene (ground graphics only, e.g. a mill): under CONTACT
+                        the model's solids touch its solids too
 
 Columns: t; q&lt;j&gt; for every joint j in id order (loop-closing joints too;
 q&lt;j&gt;x q&lt;j&gt;y q&lt;j&gt;z for a free joint, T 3: its body's translation along B1's
@@ -5539,7 +5609,7 @@ Exit status: 0 success; 1 the model has errors or the simulation failed;
 </translation>
     </message>
     <message>
-        <location line="+83" />
+        <location line="+85" />
         <source>--time must be a positive number of seconds, not '%1'</source>
         <translation>--time must be a positive number of seconds, not '%1'</translation>
     </message>
@@ -5554,7 +5624,7 @@ Exit status: 0 success; 1 the model has errors or the simulation failed;
         <translation>--every must be a whole number ≥ 1, not '%1'</translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+24" />
         <location line="+35" />
         <source>%1 takes J=VALUE (a joint id and a number), not '%2'</source>
         <translation>%1 takes J=VALUE (a joint id and a number), not '%2'</translation>
@@ -5595,7 +5665,7 @@ Exit status: 0 success; 1 the model has errors or the simulation failed;
         <translation>%1: the model has no joint %2</translation>
     </message>
     <message>
-        <location line="+17" />
+        <location line="+28" />
         <source>0 (the ground)</source>
         <translation>0 (the ground)</translation>
     </message>
@@ -7856,7 +7926,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Export</translation>
     </message>
     <message>
-        <location line="+343" />
+        <location line="+347" />
         <location line="+2" />
         <source>Model</source>
         <translation>Model</translation>
@@ -7892,7 +7962,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Station</translation>
     </message>
     <message>
-        <location line="-170" />
+        <location line="-174" />
         <source>Leave Trainer Mode</source>
         <translation>Leave Trainer Mode</translation>
     </message>
@@ -7902,7 +7972,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Trainer's PIN:</translation>
     </message>
     <message>
-        <location line="+179" />
+        <location line="+183" />
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -8007,13 +8077,13 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>&amp;Load…</translation>
     </message>
     <message>
-        <location line="-142" />
-        <location line="+248" />
+        <location line="-146" />
+        <location line="+255" />
         <source>Load Scene</source>
         <translation>Load Scene</translation>
     </message>
     <message>
-        <location line="-105" />
+        <location line="-108" />
         <source>&amp;None</source>
         <translation>&amp;None</translation>
     </message>
@@ -8023,7 +8093,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Body &amp;Frames</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+4" />
         <source>&amp;Screens</source>
         <translation>&amp;Screens</translation>
     </message>
@@ -8120,13 +8190,13 @@ never the .key files of the CAs; then run it with --security DIR.
 %2</translation>
     </message>
     <message>
-        <location line="-231" />
-        <location line="+299" />
+        <location line="-238" />
+        <location line="+306" />
         <source>Padrob models (*.pad);;All files (*)</source>
         <translation>Padrob models (*.pad);;All files (*)</translation>
     </message>
     <message numerus="yes">
-        <location line="-513" />
+        <location line="-520" />
         <source>%n attempt(s) kept while the trainee records could not be written were added to them.</source>
         <translation>
             <numerusform>%n attempt kept while the trainee records could not be written was added to them.</numerusform>
@@ -8139,12 +8209,22 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>The trainee records cannot be opened: %1</translation>
     </message>
     <message>
-        <location line="+324" />
+        <location line="+328" />
         <source>Hydraulics</source>
         <translation>Hydraulics</translation>
     </message>
     <message>
-        <location line="+43" />
+        <location line="+32" />
+        <source>&amp;Contacts</source>
+        <translation>&amp;Contacts</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Show where solids touch (models with CONTACT): a red disc at each contact point, its force as an orange arrow</source>
+        <translation>Show where solids touch (models with CONTACT): a red disc at each contact point, its force as an orange arrow</translation>
+    </message>
+    <message>
+        <location line="+13" />
         <source>Se&amp;ttings</source>
         <translation>Se&amp;ttings</translation>
     </message>
@@ -8905,7 +8985,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>Tick signals in the list to plot them against time.</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+16" />
         <source>C %1</source>
         <translation>C %1</translation>
     </message>
@@ -8920,9 +9000,14 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>F drive</translation>
     </message>
     <message>
-        <location line="-2" />
+        <location line="-3" />
         <source>mechanical energy [J]</source>
         <translation>mechanical energy [J]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>largest contact force [kN]</source>
+        <translation>largest contact force [kN]</translation>
     </message>
     <message>
         <location line="+3" />
@@ -8941,9 +9026,14 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>pump %1 %2</translation>
     </message>
     <message>
-        <location line="+254" />
+        <location line="+263" />
         <source>Mechanical energy [J]</source>
         <translation>Mechanical energy [J]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Largest contact force [kN]</source>
+        <translation>Largest contact force [kN]</translation>
     </message>
     <message>
         <location line="+12" />
@@ -9021,7 +9111,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>reaction force along T [%1]</translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+37" />
         <location line="+97" />
         <source>t [s]</source>
         <translation>t [s]</translation>
@@ -10501,7 +10591,7 @@ Id: %3</translation>
         <translation>Graphic %1 (body %2): mesh "%3" is drawn as a box: %4.</translation>
     </message>
     <message>
-        <location filename="../ide/studio/view/viewport.cpp" line="+335" />
+        <location filename="../ide/studio/view/viewport.cpp" line="+344" />
         <source>Iso</source>
         <translation>Iso</translation>
     </message>

@@ -312,7 +312,7 @@
     <message>
         <location filename="../solver/inertia/solid_inertia.cpp" line="+68" />
         <location line="+131" />
-        <location filename="../solver/parse/parser.cpp" line="+1363" />
+        <location filename="../solver/parse/parser.cpp" line="+1412" />
         <location filename="../solver/spec/validate.cpp" line="+510" />
         <location line="+107" />
         <source>graphic %1</source>
@@ -403,12 +403,12 @@
         <translation>una densidad en kg/m³ (acero: 7850)</translation>
     </message>
     <message>
-        <location filename="../solver/collision/collision_world.cpp" line="+258" />
+        <location filename="../solver/collision/collision_world.cpp" line="+114" />
         <source>G %1 is left out of the clearance checks: %2</source>
         <translation>G %1 queda fuera de los controles de distancia libre: %2</translation>
     </message>
     <message>
-        <location filename="../solver/compile/compile.cpp" line="+227" />
+        <location filename="../solver/compile/compile.cpp" line="+228" />
         <location filename="../solver/compile/initial_configuration.cpp" line="+44" />
         <location line="+9" />
         <location filename="../solver/compile/topology.cpp" line="+39" />
@@ -451,7 +451,7 @@
     </message>
     <message>
         <location filename="../solver/compile/topology.cpp" line="-14" />
-        <location filename="../solver/integrate/simulation.cpp" line="+53" />
+        <location filename="../solver/integrate/simulation.cpp" line="+54" />
         <location filename="../solver/parse/parser.cpp" line="-200" />
         <location filename="../solver/spec/validate.cpp" line="-589" />
         <location line="+588" />
@@ -710,7 +710,7 @@
     <message>
         <location line="+6" />
         <location line="+16" />
-        <location filename="../solver/parse/parser.cpp" line="-488" />
+        <location filename="../solver/parse/parser.cpp" line="-536" />
         <location line="+9" />
         <source>%1: '%2' is not a number</source>
         <translation>%1: '%2' no es un número</translation>
@@ -992,7 +992,7 @@
         <translation>articulación %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../solver/parse/parser.cpp" line="+713" />
+        <location filename="../solver/parse/parser.cpp" line="+761" />
         <location filename="../solver/spec/validate.cpp" line="+5" />
         <source>drive on joint %1</source>
         <translation>accionamiento de la articulación %1</translation>
@@ -1577,7 +1577,7 @@
         <translation>agregue '"' al final del texto</translation>
     </message>
     <message>
-        <location filename="../solver/parse/parser.cpp" line="-1181" />
+        <location filename="../solver/parse/parser.cpp" line="-1230" />
         <source>write %1</source>
         <translation>escriba %1</translation>
     </message>
@@ -1602,7 +1602,7 @@
         <translation>empiece la línea con GRAVITY, B, C, D, F o G, o únala a la línea anterior</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+21" />
         <source>unknown keyword '%1'</source>
         <translation>palabra clave desconocida '%1'</translation>
     </message>
@@ -1655,13 +1655,13 @@
     </message>
     <message>
         <location line="+16" />
-        <location line="+762" />
+        <location line="+810" />
         <location line="+112" />
         <source>%1: %2 cannot be negative (%3)</source>
         <translation>%1: %2 no puede ser negativo (%3)</translation>
     </message>
     <message>
-        <location line="-873" />
+        <location line="-921" />
         <location line="+4" />
         <source>ids are whole numbers 0, 1, 2, …</source>
         <translation>los id son números enteros 0, 1, 2, …</translation>
@@ -1795,42 +1795,43 @@
     </message>
     <message>
         <location line="+8" />
-        <location line="+383" />
+        <location line="+431" />
         <source>%1: %2 is given twice</source>
         <translation>%1: %2 aparece dos veces</translation>
     </message>
     <message>
-        <location line="-382" />
-        <location line="+383" />
+        <location line="-430" />
+        <location line="+431" />
         <source>keep one %1</source>
         <translation>deje un solo %1</translation>
     </message>
     <message>
-        <location line="-341" />
+        <location line="-389" />
         <source>write GRAVITY gx gy gz (m/s², z is up)</source>
         <translation>escriba GRAVITY gx gy gz (m/s², z hacia arriba)</translation>
     </message>
     <message>
         <location line="+4" />
         <location line="+22" />
-        <location line="+30" />
+        <location line="+21" />
         <source>%1 is given twice (first at line %2)</source>
         <translation>%1 aparece dos veces (la primera en la línea %2)</translation>
     </message>
     <message>
-        <location line="-49" />
+        <location line="-40" />
         <location line="+22" />
-        <location line="+30" />
+        <location line="+19" />
         <source>keep one %1 statement</source>
         <translation>deje una sola instrucción %1</translation>
     </message>
     <message>
-        <location line="-38" />
+        <location line="-27" />
+        <location line="+77" />
         <source>the coefficient of restitution</source>
         <translation>el coeficiente de restitución</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-76" />
         <source>write RESTITUTION e (0 inelastic … 1 elastic)</source>
         <translation>escriba RESTITUTION e (0 inelástico … 1 elástico)</translation>
     </message>
@@ -1845,7 +1846,7 @@
         <translation>0 detiene en seco la articulación en su límite; 1 la hace rebotar a la misma velocidad</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+32" />
         <source>the bulk modulus in Pa</source>
         <translation>el módulo de compresibilidad en Pa</translation>
     </message>
@@ -1855,7 +1856,7 @@
         <translation>la diferencia de presión laminar en Pa</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+11" />
         <source>the effective bulk modulus of oil in hoses is about 1e9 Pa</source>
         <translation>el módulo de compresibilidad efectivo del aceite en mangueras es de unos 1e9 Pa</translation>
     </message>
@@ -1863,6 +1864,31 @@
         <location line="+1" />
         <source>a few bar, e.g. LAMINAR 2e5</source>
         <translation>unos pocos bar, p. ej. LAMINAR 2e5</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>the friction coefficient</source>
+        <translation>el coeficiente de roce</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>CONTACT MU %1 is negative</source>
+        <translation>CONTACT MU %1 es negativo</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>MU is the Coulomb friction coefficient, 0 (frictionless) or more: steel on steel about 0.2 … 0.6</source>
+        <translation>MU es el coeficiente de roce de Coulomb, 0 (sin roce) o más: acero sobre acero, cerca de 0.2 … 0.6</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>CONTACT E %1 is outside 0 … 1</source>
+        <translation>CONTACT E %1 está fuera de 0 … 1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>0 stops a solid dead where it hits, 1 bounces it back at the same speed</source>
+        <translation>0 detiene en seco un sólido donde choca; 1 lo hace rebotar a la misma velocidad</translation>
     </message>
     <message>
         <location line="+15" />
@@ -1920,12 +1946,12 @@
     <message>
         <location line="-519" />
         <location line="+188" />
-        <location line="+454" />
+        <location line="+455" />
         <source>the body id</source>
         <translation>el id del cuerpo</translation>
     </message>
     <message>
-        <location line="-618" />
+        <location line="-619" />
         <source>%1: a body takes 0, 4 or 7 numbers after its id (m Ixx Iyy Izz [Ixy Iyz Ixz]), found %2</source>
         <translation>%1: un cuerpo lleva 0, 4 o 7 números después de su id (m Ixx Iyy Izz [Ixy Iyz Ixz]); se encontraron %2</translation>
     </message>
@@ -2154,8 +2180,8 @@
         <translation>%1: un accionamiento hidráulico necesita VMAX o los datos de la bomba</translation>
     </message>
     <message>
-        <location line="-404" />
-        <location line="+34" />
+        <location line="-438" />
+        <location line="+68" />
         <location line="+385" />
         <location line="+106" />
         <location line="+12" />
@@ -2163,12 +2189,12 @@
         <translation>%1: %2 debe ser positivo, no %3</translation>
     </message>
     <message>
-        <location line="-1038" />
+        <location line="-1086" />
         <source>statements are GRAVITY, RESTITUTION, FLUID, PUMP, B, C (with B1, B2, CL1), D, F and G; comments start with // or #</source>
         <translation>las instrucciones son GRAVITY, RESTITUTION, FLUID, PUMP, B, C (con B1, B2, CL1), D, F y G; los comentarios empiezan con // o #</translation>
     </message>
     <message>
-        <location line="+634" />
+        <location line="+682" />
         <source>the joint type (0, 1, 2 or 3)</source>
         <translation>el tipo de articulación (0, 1, 2 o 3)</translation>
     </message>
@@ -2368,7 +2394,7 @@
         <translation>masa</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>factor</source>
         <translation>factor</translation>
     </message>
@@ -2428,7 +2454,7 @@
         <translation>un gráfico (G)</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+16" />
         <source>%1: give MASS or RHO, not both</source>
         <translation>%1: indique MASS o RHO, no ambos</translation>
     </message>
@@ -2573,7 +2599,7 @@
         <translation>t=%1 s: articulación %2: la válvula de alivio se cerró al retraer</translation>
     </message>
     <message>
-        <location line="+757" />
+        <location line="+761" />
         <source>the closed loops locked up at t = %1 s (a singular configuration: the loop-closure equations lost rank, so the mechanism cannot move on there); drive it another way or change the geometry</source>
         <translation>los lazos cerrados se trabaron en t = %1 s (una configuración singular: las ecuaciones de cierre de los lazos perdieron rango, así que el mecanismo no puede seguir moviéndose desde ahí); accione el mecanismo de otra forma o cambie la geometría</translation>
     </message>
@@ -2712,6 +2738,36 @@
         <location filename="../solver/io/csv_writer.cpp" line="+4" />
         <source>the last row is not finished</source>
         <translation>la última fila no está terminada</translation>
+    </message>
+    <message>
+        <location filename="../solver/contact/contact_geometry.cpp" line="+78" />
+        <source>G %1 cannot serve as a contact shape: %2</source>
+        <translation>G %1 no puede servir como forma de contacto: %2</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>fix the mesh file, or mark the graphic NOCONTACT (drawn only)</source>
+        <translation>corrija el archivo de malla, o marque el gráfico NOCONTACT (solo se dibuja)</translation>
+    </message>
+    <message>
+        <location line="+48" />
+        <source>G %1 and %2 overlap by %3 mm at the initial pose: they never touch each other</source>
+        <translation>G %1 y %2 se traslapan %3 mm en la pose inicial: nunca se tocan entre sí</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>scene G %1</source>
+        <translation>G %1 de la escena</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>G %1</source>
+        <translation>G %1</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>a pin in its bore is meant to; solids placed inside each other by mistake: move one out</source>
+        <translation>un pasador en su alojamiento debe hacerlo; si los sólidos quedaron uno dentro del otro por error, saque uno</translation>
     </message>
 </context>
 <context>
@@ -3330,7 +3386,7 @@
         <translation>corrija el modelo, o revise la ruta: es relativa a la carpeta del tutorial</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+14" />
         <source>the scene '%1' cannot be used (errors above)</source>
         <translation>no se puede usar la escena '%1' (errores más arriba)</translation>
     </message>
@@ -3340,7 +3396,17 @@
         <translation>corrija la escena, o revise la ruta: es relativa a la carpeta del tutorial</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+11" />
+        <source>the scene '%1' cannot be used with the model's CONTACT (errors above)</source>
+        <translation>la escena '%1' no se puede usar con el CONTACT del modelo (errores arriba)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>mark the scene's graphics that the model must not touch NOCONTACT</source>
+        <translation>marque NOCONTACT los gráficos de la escena que el modelo no debe tocar</translation>
+    </message>
+    <message>
+        <location line="+16" />
         <source>%1: the model has no moving body %2</source>
         <translation>%1: el modelo no tiene un cuerpo móvil %2</translation>
     </message>
@@ -4690,7 +4756,7 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
         <location line="+3" />
         <location line="+580" />
         <location filename="../ide/cli/export.cpp" line="+85" />
-        <location filename="../ide/cli/simulate.cpp" line="+241" />
+        <location filename="../ide/cli/simulate.cpp" line="+243" />
         <location filename="../ide/cli/tutorial.cpp" line="-58" />
         <source>%1 needs a value</source>
         <translation>%1 necesita un valor</translation>
@@ -4721,7 +4787,7 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
         <location filename="../ide/cli/inertia.cpp" line="+196" />
         <location filename="../ide/cli/main.cpp" line="+138" />
         <location line="+26" />
-        <location filename="../ide/cli/simulate.cpp" line="+23" />
+        <location filename="../ide/cli/simulate.cpp" line="+25" />
         <location filename="../ide/cli/tutorial.cpp" line="+8" />
         <source>unknown option '%1'</source>
         <translation>opción desconocida '%1'</translation>
@@ -4766,7 +4832,7 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
         <translation>Pruebe 'padrob %1 --help'.</translation>
     </message>
     <message>
-        <location line="+81" />
+        <location line="+82" />
         <source>the values given on the command line do not fit the model:</source>
         <translation>los valores dados en la línea de comandos no calzan con el modelo:</translation>
     </message>
@@ -4831,7 +4897,7 @@ compilado sin MuJoCo. Si falla, no se escribe nada.
     </message>
     <message>
         <location line="+4" />
-        <location filename="../ide/cli/simulate.cpp" line="-40" />
+        <location filename="../ide/cli/simulate.cpp" line="-42" />
         <source>--dt must be a positive number of seconds, not '%1'</source>
         <translation>--dt debe ser un número positivo de segundos, no '%1'</translation>
     </message>
@@ -5408,7 +5474,7 @@ Un modelo con errores no se describe: sus problemas se informan como con
         </translation>
     </message>
     <message>
-        <location filename="../ide/cli/simulate.cpp" line="-175" />
+        <location filename="../ide/cli/simulate.cpp" line="-177" />
         <source>warning: %1</source>
         <translation>advertencia: %1</translation>
     </message>
@@ -5477,6 +5543,8 @@ Simulates the model for T seconds and writes its trajectory as CSV.
                         their relative pose then; repeatable
   --release T:A:B       at time T [s] release the weld of body B to body A;
                         repeatable
+  --scene FILE.pad      a scene (ground graphics only, e.g. a mill): under CONTACT
+                        the model's solids touch its solids too
 
 Columns: t; q&lt;j&gt; for every joint j in id order (loop-closing joints too;
 q&lt;j&gt;x q&lt;j&gt;y q&lt;j&gt;z for a free joint, T 3: its body's translation along B1's
@@ -5531,6 +5599,8 @@ Simula el modelo durante T segundos y escribe su trayectoria en CSV.
                         suelo) en su posición relativa de ese momento; repetible
   --release T:A:B       en el instante T [s] libera la soldadura del cuerpo B al
                         cuerpo A; repetible
+  --scene ARCHIVO.pad   una escena (solo gráficos del suelo, p. ej. un molino): con
+                        CONTACT los sólidos del modelo también tocan los suyos
 
 Columnas: t; q&lt;j&gt; de cada articulación j por orden de id (también las que cierran
 lazos; q&lt;j&gt;x q&lt;j&gt;y q&lt;j&gt;z en una articulación libre, T 3: la traslación de su cuerpo
@@ -5557,7 +5627,7 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o la simulación falló;
 </translation>
     </message>
     <message>
-        <location line="+83" />
+        <location line="+85" />
         <source>--time must be a positive number of seconds, not '%1'</source>
         <translation>--time debe ser un número positivo de segundos, no '%1'</translation>
     </message>
@@ -5572,7 +5642,7 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o la simulación falló;
         <translation>--every debe ser un número entero ≥ 1, no '%1'</translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+24" />
         <location line="+35" />
         <source>%1 takes J=VALUE (a joint id and a number), not '%2'</source>
         <translation>%1 recibe J=VALOR (un id de articulación y un número), no '%2'</translation>
@@ -5613,7 +5683,7 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o la simulación falló;
         <translation>%1: el modelo no tiene la articulación %2</translation>
     </message>
     <message>
-        <location line="+17" />
+        <location line="+28" />
         <source>0 (the ground)</source>
         <translation>0 (el suelo)</translation>
     </message>
@@ -7882,7 +7952,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Exportar</translation>
     </message>
     <message>
-        <location line="+343" />
+        <location line="+347" />
         <location line="+2" />
         <source>Model</source>
         <translation>Modelo</translation>
@@ -7918,7 +7988,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Puesto</translation>
     </message>
     <message>
-        <location line="-170" />
+        <location line="-174" />
         <source>Leave Trainer Mode</source>
         <translation>Salir del modo quiosco</translation>
     </message>
@@ -7928,7 +7998,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>PIN del instructor:</translation>
     </message>
     <message>
-        <location line="+179" />
+        <location line="+183" />
         <source>&amp;File</source>
         <translation>&amp;Archivo</translation>
     </message>
@@ -8033,13 +8103,13 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>&amp;Cargar…</translation>
     </message>
     <message>
-        <location line="-142" />
-        <location line="+248" />
+        <location line="-146" />
+        <location line="+255" />
         <source>Load Scene</source>
         <translation>Cargar escena</translation>
     </message>
     <message>
-        <location line="-105" />
+        <location line="-108" />
         <source>&amp;None</source>
         <translation>&amp;Ninguna</translation>
     </message>
@@ -8049,7 +8119,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>E&amp;jes de los cuerpos</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+4" />
         <source>&amp;Screens</source>
         <translation>&amp;Pantallas</translation>
     </message>
@@ -8146,13 +8216,13 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 %2</translation>
     </message>
     <message>
-        <location line="-231" />
-        <location line="+299" />
+        <location line="-238" />
+        <location line="+306" />
         <source>Padrob models (*.pad);;All files (*)</source>
         <translation>Modelos Padrob (*.pad);;Todos los archivos (*)</translation>
     </message>
     <message numerus="yes">
-        <location line="-513" />
+        <location line="-520" />
         <source>%n attempt(s) kept while the trainee records could not be written were added to them.</source>
         <translation>
             <numerusform>Se agregó a los registros de los aprendices %n intento guardado mientras no se podían escribir.</numerusform>
@@ -8165,12 +8235,22 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>No se pueden abrir los registros de los aprendices: %1</translation>
     </message>
     <message>
-        <location line="+324" />
+        <location line="+328" />
         <source>Hydraulics</source>
         <translation>Hidráulica</translation>
     </message>
     <message>
-        <location line="+43" />
+        <location line="+32" />
+        <source>&amp;Contacts</source>
+        <translation>&amp;Contactos</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Show where solids touch (models with CONTACT): a red disc at each contact point, its force as an orange arrow</source>
+        <translation>Muestra dónde se tocan los sólidos (modelos con CONTACT): un disco rojo en cada punto de contacto y su fuerza como una flecha naranja</translation>
+    </message>
+    <message>
+        <location line="+13" />
         <source>Se&amp;ttings</source>
         <translation>&amp;Configuración</translation>
     </message>
@@ -8931,7 +9011,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>Marque señales en la lista para graficarlas en función del tiempo.</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+16" />
         <source>C %1</source>
         <translation>C %1</translation>
     </message>
@@ -8946,9 +9026,14 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>F accionamiento</translation>
     </message>
     <message>
-        <location line="-2" />
+        <location line="-3" />
         <source>mechanical energy [J]</source>
         <translation>energía mecánica [J]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>largest contact force [kN]</source>
+        <translation>mayor fuerza de contacto [kN]</translation>
     </message>
     <message>
         <location line="+3" />
@@ -8967,9 +9052,14 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>bomba %1 %2</translation>
     </message>
     <message>
-        <location line="+254" />
+        <location line="+263" />
         <source>Mechanical energy [J]</source>
         <translation>Energía mecánica [J]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Largest contact force [kN]</source>
+        <translation>Mayor fuerza de contacto [kN]</translation>
     </message>
     <message>
         <location line="+12" />
@@ -9047,7 +9137,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>fuerza de reacción según T [%1]</translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+37" />
         <location line="+97" />
         <source>t [s]</source>
         <translation>t [s]</translation>
@@ -10527,7 +10617,7 @@ Id: %3</translation>
         <translation>Gráfico %1 (cuerpo %2): la malla "%3" se dibuja como una caja: %4.</translation>
     </message>
     <message>
-        <location filename="../ide/studio/view/viewport.cpp" line="+335" />
+        <location filename="../ide/studio/view/viewport.cpp" line="+344" />
         <source>Iso</source>
         <translation>Iso</translation>
     </message>

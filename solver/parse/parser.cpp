@@ -1,5 +1,6 @@
 #include "solver/parse/parser.h"
 
+#include "solver/parse/keywords.h"
 #include "solver/parse/lexer.h"
 
 #include <array>
@@ -20,8 +21,7 @@ using namespace std::string_view_literals;
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 
 /// The statements a line may start with, for "did you mean" suggestions.
-constexpr std::array kStatementKeywords = {"GRAVITY", "RESTITUTION", "B", "C", "B1", "B2", "CL1", "CL2", "D", "F", "G",
-                                           "FLUID", "PUMP", "CONTACT"};
+constexpr const auto& kStatementKeywords = keywords::kStatements;
 
 std::string fmt(double v)
 {

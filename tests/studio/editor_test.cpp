@@ -234,7 +234,7 @@ void EditorTest::completionOffersKeywordsForAPrefix()
     QVERIFY(!c->popup()->isVisible());
     QTest::keyClick(&editor, Qt::Key_Space, Qt::ControlModifier);
     QTRY_VERIFY(c->popup()->isVisible());
-    QCOMPARE(c->completionCount(), 3);  // VI VMAX VMIN
+    QCOMPARE(c->completionCount(), 5);  // VALVE VI VMAX VMIN VOLUME
     QTest::keyClick(c->popup(), Qt::Key_Escape);
     QTRY_VERIFY(!c->popup()->isVisible());
 
@@ -252,9 +252,15 @@ void EditorTest::completionOffersKeywordsForAPrefix()
     QCOMPARE(editor.completionPrefix(), QStringLiteral("QI"));
 
     // the keyword list is the language's
-    for (const char* kw : {"GRAVITY", "RESTITUTION", "CL1", "PRESSURE", "ELLIPSOID", "DEG", "TABLE", "LOCAL"}) {
+    // (fluid power and contact too: FLUID, PUMP … CYL, HMOTOR … CONTACT, MU, NOCONTACT)
+    for (const char* kw : {"GRAVITY", "RESTITUTION", "CL1", "PRESSURE", "ELLIPSOID", "DEG", "TABLE", "LOCAL", "FLUID",
+                           "BULK", "LAMINAR", "FLOW", "MARGIN", "HMOTOR", "VALVE", "COMP", "POST", "DEAD", "DISP",
+                           "CONTACT", "MU", "NOCONTACT"}) {
         QVERIFY2(modelKeywords().contains(QLatin1String(kw)), kw);
     }
+    QVERIFY(isStatementKeyword(u"CONTACT"));
+    QVERIFY(isStatementKeyword(u"FLUID"));
+    QVERIFY(!isStatementKeyword(u"MU"));
 }
 
 void EditorTest::goToLineCountsCharactersNotUtf16Units()

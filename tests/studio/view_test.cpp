@@ -11,6 +11,7 @@
 
 #include "solver/core/data.h"
 #include "solver/core/state.h"
+#include "solver/integrate/simulation.h"
 #include "solver/kinematics/kinematics.h"
 
 #include <QDir>
@@ -721,6 +722,56 @@ private slots:
         v.setShowFrames(false);
         v.setShowGrid(false);
         QVERIFY(difference(render(v), dressed) > 0.002);
+    }
+
+    // CONTACT: View ▸ Contacts draws a red disc at each contact point and its force as
+    // an orange arrow; a box resting on a slab shows its four corners pushed up
+    void contactsAreDrawnOnDemand()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString path = dir.filePath(QStringLiteral("resting_box.pad"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("GRAVITY 0 0 -9.81\nCONTACT MU 0.5\nB 1 100 4.2 4.2 4.2 NAME \"box\"\nC 1 T 3\n"
+                "B1 0 P1 0 0 0.25 A1 1 0 0 R1 0 1 0\nB2 1 P2 0 0 0 A2 1 0 0 R2 0 1 0\n"
+                "G 1 B 1 BOX 0.5 0.5 0.5 COLOR 0.3 0.5 0.8\nG 2 B 0 BOX 3 3 0.2 POS 0 0 -0.1 COLOR 0.55 0.55 0.55\n");
+        f.close();
+        auto bundle = bundleFromFile(path);
+        QVERIFY(bundle && bundle->model && bundle->model->contact);
+        solver::SimulationOptions o;
+        o.integrator.step = 1e-3;
+        solver::Simulation sim(bundle->model, o);
+        std::vector<solver::SimulationEvent> events;
+        std::string error;
+        QVERIFY2(sim.advanceTo(0.3, events, error), error.c_str());
+        const auto snapshot = studio::captureSnapshot(sim, bundle);
+        QVERIFY(snapshot->contacts.size() >= 4);
+        // the slab carries the box: the contacts' forces on the box add up to its weight
+        Eigen::Vector3d total = Eigen::Vector3d::Zero();
+        for (const studio::ContactSnapshot& c : snapshot->contacts) total += c.force;
+        QVERIFY2(std::abs(total.z() - 100 * 9.81) < 5.0, qPrintable(QString::number(total.z())));
+        QVERIFY(snapshot->largestContactForce > 100 * 9.81 / 8);
+
+        Shown shown;
+        Viewport& v = shown.view;
+        v.setBundle(bundle);
+        v.setSnapshot(snapshot);
+        QVERIFY(shown.exposed());
+        v.setCamera(QStringLiteral("Iso"));
+        v.fitAll();
+        auto red = [](int r, int g, int b) { return r > 170 && g < 90 && b < 80; };
+        auto orange = [](int r, int g, int b) { return r > 200 && g > 90 && g < 190 && b < 60; };
+        const QImage off = render(v);
+        QVERIFY(!v.showContacts());
+        v.setShowContacts(true);
+        const QImage on = render(v);
+        save(on, QStringLiteral("contacts"));
+        QVERIFY2(countPixels(on, red) > countPixels(off, red) + 100, qPrintable(QString::number(countPixels(on, red))));
+        QVERIFY2(countPixels(on, orange) > countPixels(off, orange) + 100,
+                 qPrintable(QString::number(countPixels(on, orange))));
+        v.setShowContacts(false);
+        QCOMPARE(difference(render(v), off), 0.0);
     }
 
     void emptySceneAndFrameTiming()

@@ -428,6 +428,41 @@ TEST(TutorialSession, TouchingTheSceneIsAHitAndTooFastItEndsTheAttempt)
     }
 }
 
+// CONTACT: the tutorial's model touches its scene's solids too (a box resting on the
+// scene's slab stays there; without the scene's solids it would fall through)
+TEST(TutorialSession, AModelWithContactTouchesItsScene)
+{
+    QTemporaryDir dir;
+    const QString model = dir.filePath("box.pad"), scene = dir.filePath("slab.pad");
+    QFile m(model), sc(scene);
+    ASSERT_TRUE(m.open(QIODevice::WriteOnly) && sc.open(QIODevice::WriteOnly));
+    // a driven slider (the tutorial's goal) and a free box beside it
+    m.write("GRAVITY 0 0 -9.81\nCONTACT\nB 1 50 2 2 2 NAME \"box\"\nB 2 10 1 1 1 NAME \"slider\"\nC 1 T 3\n"
+            "B1 0 P1 0 0 0.25 A1 1 0 0 R1 0 1 0\nB2 1 P2 0 0 0 A2 1 0 0 R2 0 1 0\n"
+            "G 1 B 1 BOX 0.5 0.5 0.5\n"
+            "C 2 T 2 LL 0 UL 1\nB1 0 P1 0 2 1 A1 0 0 1 R1 1 0 0\nB2 2 P2 0 0 0 A2 0 0 1 R2 1 0 0\n"
+            "D 2 HYD VMAX 0.5 VMIN 0.5\n");
+    sc.write("G 1 B 0 BOX 4 4 0.2 POS 0 0 -0.1 COLOR 0.5 0.5 0.5\n");
+    m.close();
+    sc.close();
+    const std::string goal = "GOAL g REACH BODY 2 POINT 0 0 0 AT 0.5 2 1 TOL 0.1\n  DWELL 5\n"
+                             "  NAME ES \"Objetivo\" EN \"Target\"\n";
+    for (const bool withScene : {true, false}) {
+        solver::Diagnostics d;
+        auto t = load(header(model.toStdString(), withScene ? "SCENE \"" + scene.toStdString() + "\"\n" : "") + goal, d);
+        ASSERT_TRUE(t) << dump(d);
+        ASSERT_TRUE(t->model->contact);
+        TutorialSession s(t);
+        drive(s, {}, 1.0);
+        const double z = s.simulation().data().X_wb[std::size_t(t->model->bodyIndex(1))].translation().z();
+        if (withScene) {
+            EXPECT_NEAR(z, 0.25, 1e-3);  // resting on the slab
+        } else {
+            EXPECT_LT(z, -4.0);  // nothing under it: free fall, ½ g t²
+        }
+    }
+}
+
 TEST(TutorialSession, ATakenLoadCountsAgainstTheSceneOnceItHasComeClearOfItsCart)
 {
     // the fluid machine lifts the liner only once its boom's oil has built the holding

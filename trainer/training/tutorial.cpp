@@ -137,7 +137,6 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
     tut->compiled = compiled;
     tut->model = compiled->model;
     tut->modelSpec = std::shared_ptr<const solver::ModelSpec>(compiled, &compiled->spec);
-    const solver::Model& m = *tut->model;
 
     // the scene
     if (!s.scenePath.empty()) {
@@ -151,8 +150,25 @@ std::shared_ptr<const Tutorial> loadTutorialText(const std::string& text, const 
         } else {
             tut->scene = scene;
             tut->sceneSpec = std::shared_ptr<const solver::ModelSpec>(scene, &scene->spec);
+            if (tut->model->contact) {
+                // CONTACT: the machine touches the scene's solids too (docs/contact.md): the
+                // model compiled again with them (the same bodies and joints)
+                auto touching = std::make_shared<const solver::CompiledModel>(solver::compileSpec(compiled->spec, &scene->spec));
+                if (!touching->ok()) {
+                    copyErrors(*touching, tut->modelFile, diags);
+                    diags.error("scene-errors", s.scenePos,
+                                trText("Tutorials", "the scene '%1' cannot be used with the model's CONTACT (errors above)")
+                                    .with(s.scenePath),
+                                trText("Tutorials", "mark the scene's graphics that the model must not touch NOCONTACT"));
+                    return nullptr;
+                }
+                tut->compiled = touching;
+                tut->model = touching->model;
+                tut->modelSpec = std::shared_ptr<const solver::ModelSpec>(touching, &touching->spec);
+            }
         }
     }
+    const solver::Model& m = *tut->model;
 
     // `keyword`: the statement that names the id (not translated)
     auto body = [&](int id, SourcePos pos, const std::string& keyword) {

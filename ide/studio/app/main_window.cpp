@@ -63,7 +63,7 @@ struct MainWindow::MenuItems {
           *lighting = nullptr, *help = nullptr;
     QAction *newModel = nullptr, *open = nullptr, *save = nullptr, *saveAs = nullptr, *quit = nullptr;
     QAction *undo = nullptr, *redo = nullptr, *apply = nullptr, *inertia = nullptr;
-    QAction *fitAll = nullptr, *loadScene = nullptr, *noScene = nullptr, *frames = nullptr, *separate = nullptr;
+    QAction *fitAll = nullptr, *loadScene = nullptr, *noScene = nullptr, *frames = nullptr, *contacts = nullptr, *separate = nullptr;
     QAction *keyboard = nullptr, *reference = nullptr, *about = nullptr;
     std::vector<std::pair<QAction*, DisplayMode>> displayModes;
     std::vector<std::pair<QAction*, QString>> cameras;  ///< with the camera's name (Viewport::cameraNames)
@@ -403,6 +403,10 @@ void MainWindow::buildMenus()
     m.frames = m.view->addAction(QString());
     m.frames->setCheckable(true);
     connect(m.frames, &QAction::toggled, this, [this](bool on) { m_viewports->setShowFrames(on); });
+    m.contacts = m.view->addAction(QString());
+    m.contacts->setCheckable(true);
+    m.contacts->setObjectName(QStringLiteral("showContacts"));
+    connect(m.contacts, &QAction::toggled, this, [this](bool on) { m_viewports->setShowContacts(on); });
     m.screens = m.view->addMenu(QString());
     auto* screenGroup = new QActionGroup(this);
     for (int n = 1; n <= 3; ++n) {
@@ -540,6 +544,9 @@ void MainWindow::retranslate()
     m.loadScene->setText(tr("&Load…"));
     m.noScene->setText(tr("&None"));
     m.frames->setText(tr("Body &Frames"));
+    m.contacts->setText(tr("&Contacts"));
+    m.contacts->setToolTip(tr("Show where solids touch (models with CONTACT): a red disc at each contact point, its "
+                              "force as an orange arrow"));
     m.screens->setTitle(tr("&Screens"));
     for (const auto& [action, n] : m.screenCounts) action->setText(tr("%n Screen(s)", nullptr, n));
     m.separate->setText(tr("Three &Windows (three monitors)"));

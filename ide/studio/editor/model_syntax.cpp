@@ -1,5 +1,6 @@
 #include "ide/studio/editor/model_syntax.h"
 
+#include "solver/parse/keywords.h"
 #include "solver/parse/lexer.h"
 
 #include <QSet>
@@ -85,27 +86,20 @@ int tokenIndexAt(const QList<SyntaxToken>& tokens, int offset)
 
 const QStringList& statementKeywords()
 {
-    static const QStringList list = {QStringLiteral("GRAVITY"), QStringLiteral("RESTITUTION"), QStringLiteral("B"),
-                                     QStringLiteral("C"),       QStringLiteral("B1"),          QStringLiteral("B2"),
-                                     QStringLiteral("CL1"),     QStringLiteral("CL2"),         QStringLiteral("D"),
-                                     QStringLiteral("F"),       QStringLiteral("G")};
+    static const QStringList list = [] {
+        QStringList words;
+        for (const char* k : solver::keywords::kStatements) words.append(QString::fromLatin1(k));
+        return words;
+    }();
     return list;
 }
 
 const QStringList& modelKeywords()
 {
+    // the language's own list (solver/parse/keywords.h): statements, then every option
     static const QStringList list = [] {
         QStringList words = statementKeywords();
-        // options of bodies and joints, drives, forces and magnitudes, graphics
-        const char* const options[] = {
-            "T",     "LL",    "UL",     "QI",     "VI",        "NAME",  "CG",    "P1",       "A1",   "R1",
-            "P2",    "A2",    "R2",     "DEG",    "HYD",       "VMAX",  "VMIN",  "FMAX",     "FMIN", "PUMP",
-            "RPM",   "BORE",  "ROD",    "PRESSURE", "MOTOR",   "T0",    "W0",    "PNEU",     "SERVO", "KP",
-            "KI",    "KD",    "POINT",  "TORQUE", "JOINT",     "SPRING", "AERO", "P",        "DIR",  "MAG",
-            "LOCAL", "SIN",   "TABLE",  "Q",      "K",         "L0",    "AREA",  "CD",       "CL",   "RHO",
-            "BOX",   "CYL",   "TUBE",   "SPHERE", "CONE",      "ELLIPSOID", "PRISM", "MESH", "SCALE", "POS",
-            "AXIS",  "ROT",   "COLOR",  "MASS"};
-        for (const char* o : options) words.append(QString::fromLatin1(o));
+        for (const char* o : solver::keywords::kOptions) words.append(QString::fromLatin1(o));
         words.removeDuplicates();
         std::sort(words.begin(), words.end());
         return words;

@@ -154,6 +154,7 @@ void PlotPanel::retranslate()
 QString PlotPanel::labelOf(const Signal& s) const
 {
     if (s.kind == Kind::Energy) return tr("mechanical energy [J]");
+    if (s.kind == Kind::ContactForce) return tr("largest contact force [kN]");
     // the symbols are the same in every language, but the drive's force
     const QString symbol = s.kind == Kind::Force ? tr("F drive") : s.symbol;
     return tr("%1 %2 [%3]", "a signal: the joint, the quantity's symbol, its unit").arg(ownerOf(s), symbol, s.unit);
@@ -230,6 +231,14 @@ void PlotPanel::setBundle(std::shared_ptr<const ModelBundle> bundle)
                 int(p);
             addSignal(Kind::PumpFlow, QStringLiteral("Qp"), QStringLiteral("Q"), QStringLiteral("L/min"), id, name).index =
                 int(p);
+        }
+        if (m.contact) {
+            // CONTACT: the largest contact force, in kN
+            Signal c;
+            c.kind = Kind::ContactForce;
+            c.key = QStringLiteral("contact");
+            c.unit = QStringLiteral("kN");
+            m_signals.push_back(c);
         }
         Signal e;
         e.kind = Kind::Energy;
@@ -340,6 +349,7 @@ void PlotPanel::addSnapshot(const Snapshot& snapshot)
             }
             break;
         case Kind::Energy: v = snapshot.energy; break;
+        case Kind::ContactForce: v = snapshot.largestContactForce * 1e-3; break;
         }
         sample.values[k] = v;
     }
@@ -417,6 +427,8 @@ void PlotPanel::rebuildList()
         QTreeWidgetItem* item = nullptr;
         if (s.kind == Kind::Energy) {
             item = new QTreeWidgetItem(m_list, {tr("Mechanical energy [J]")});
+        } else if (s.kind == Kind::ContactForce) {
+            item = new QTreeWidgetItem(m_list, {tr("Largest contact force [kN]")});
         } else {
             // a group per joint, and per pump
             const QString owner = ownerOf(s);
@@ -448,7 +460,8 @@ void PlotPanel::rebuildList()
             case Kind::Fa: text = tr("reaction force along A [%1]"); break;
             case Kind::Fr: text = tr("reaction force along R [%1]"); break;
             case Kind::Ft: text = tr("reaction force along T [%1]"); break;
-            case Kind::Energy: break;
+            case Kind::Energy:
+            case Kind::ContactForce: break;
             }
             item = new QTreeWidgetItem(group, {text.arg(s.unit)});
         }

@@ -113,7 +113,7 @@ protected:
     void changeEvent(QEvent* event) override;
 
 private:
-    enum class Kind { Q, Qd, Force, PressureA, PressureB, Ma, Mr, Mt, Fa, Fr, Ft, Supply, PumpFlow, Energy };
+    enum class Kind { Q, Qd, Force, PressureA, PressureB, Ma, Mr, Mt, Fa, Fr, Ft, Supply, PumpFlow, Energy, ContactForce };
     struct Signal {
         QString key, unit;
         QString symbol;  // "q", "dq/dt", "M_A"… (the same in every language)

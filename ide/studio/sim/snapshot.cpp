@@ -1,6 +1,9 @@
 #include "ide/studio/sim/snapshot.h"
 
+#include "solver/contact/contact_geometry.h"
 #include "solver/kinematics/kinematics.h"
+
+#include <algorithm>
 
 namespace studio {
 
@@ -35,6 +38,16 @@ std::shared_ptr<Snapshot> captureSnapshot(const solver::Simulation& sim,
     snap->driveForce = d.driveForce;
     snap->reactionJoint = d.reactionJoint;
     snap->energy = solver::mechanicalEnergy(m, d);
+    snap->contacts.reserve(d.contacts.size());
+    for (const solver::ContactPoint& c : d.contacts) {
+        // shown on the solid that moves: the force on B, or on A when B stands still
+        const auto& shapes = m.contact->geometry->shapes;
+        const bool bStill = c.shapeB >= 0 && static_cast<std::size_t>(c.shapeB) < shapes.size() &&
+                            shapes[static_cast<std::size_t>(c.shapeB)].body < 0;
+        snap->contacts.push_back({c.point, bStill ? Eigen::Vector3d(-c.normal) : c.normal,
+                                  bStill ? Eigen::Vector3d(-c.force) : c.force});
+        snap->largestContactForce = std::max(snap->largestContactForce, c.force.norm());
+    }
     // fluid power (nothing to allocate without pumps)
     snap->pumps.resize(m.pumps.size());
     for (std::size_t p = 0; p < m.pumps.size(); ++p) {

@@ -46,6 +46,14 @@ struct CircuitSnapshot {
     int cavitation = 0;      ///< 1 chamber A, 2 chamber B, 3 both (Data::cavitation), else 0
 };
 
+/// One contact of the snapshot's evaluation (CONTACT, Data::contacts), world axes, seen
+/// from the solid that moves (of a pair of moving solids, the second).
+struct ContactSnapshot {
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();   ///< [m]
+    Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); ///< unit, from the other solid into that one
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();   ///< on that solid [N]
+};
+
 struct Snapshot {
     std::shared_ptr<const ModelBundle> bundle;  ///< the model these values belong to
     double t = 0;                               ///< simulated time [s]
@@ -58,6 +66,8 @@ struct Snapshot {
     Eigen::VectorXd driveForce;                 ///< per tree joint [N or N m] (Data::driveForce)
     std::vector<solver::Vector6d> reactionJoint;  ///< per tree joint, joint axes (Data::reactionJoint)
     double energy = 0;                          ///< mechanical energy [J]
+    std::vector<ContactSnapshot> contacts;      ///< CONTACT: the contacts (empty without)
+    double largestContactForce = 0;             ///< |force| of the largest contact [N]
     /// Fluid power (docs/hydraulics.md): empty for a model without pumps.
     std::vector<PumpSnapshot> pumps;            ///< Model::pumps order
     std::vector<CircuitSnapshot> circuits;      ///< Model::circuits order

@@ -44,6 +44,8 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180;
 const Vector3f kHighlight(1.0f, 0.86f, 0.10f);
+const Vector3f kContactPoint(0.95f, 0.15f, 0.10f);  // contacts: red discs,
+const Vector3f kContactForce(1.0f, 0.55f, 0.05f);   // orange force arrows
 const Vector3f kRodSilver(0.82f, 0.83f, 0.86f);
 constexpr float kOverlayAlpha = 0.6f;
 const Eigen::Vector3f kGhostTint(0.55f, 0.8f, 1.0f);  // the ghost: a pale blue
@@ -276,6 +278,7 @@ void Viewport::setSnapshot(std::shared_ptr<const Snapshot> snapshot)
 {
     if (!snapshot) return;
     if (snapshot->bundle && snapshot->bundle != m_bundle) setBundle(snapshot->bundle);
+    m_contactsOf = snapshot->contacts.empty() && !m_contactsOf ? nullptr : snapshot;
     setPoses(snapshot->bodyPoses);
 }
 
@@ -297,6 +300,12 @@ void Viewport::setDisplayMode(DisplayMode mode)
 {
     if (m_mode == mode) return;
     m_mode = mode;
+    requestFrame();
+}
+
+void Viewport::setShowContacts(bool show)
+{
+    m_showContacts = show;
     requestFrame();
 }
 
@@ -896,6 +905,38 @@ void Viewport::drawActuators(int onlyJoint)
     if (onlyJoint < 0) setTint(Vector3f::Zero(), 0.0f);
 }
 
+void Viewport::drawContacts()
+{
+    if (!m_contactsOf || m_contactsOf->contacts.empty()) return;
+    const SceneGeometry& g = *m_geometry;
+    const double w = g.schematicWidth;
+    // an arrow half as long as the machine's size for a force of its whole weight
+    double weight = 0;
+    if (m_bundle && m_bundle->model) {
+        for (double m : m_bundle->model->mass) weight += m * m_bundle->model->gravity.norm();
+    }
+    const double size = w / 0.04;  // the machine's size (scene_geometry.cpp: w = 0.04 of it)
+    const double perNewton = weight > 0 ? 0.5 * size / weight : 0.0;
+    glClear(GL_DEPTH_BUFFER_BIT);
+    for (const ContactSnapshot& c : m_contactsOf->contacts) {
+        setTint(kContactPoint, 1.0f);
+        const Vector3d n = c.normal.normalized();
+        drawRange(g.unitCylinder,
+                  scaled(Isometry3d(frameAlong(c.point - 0.3 * w * n, c.point + 0.3 * w * n).matrix()),
+                         Vector3d(2.5 * w, 2.5 * w, 0.6 * w)));
+        const double len = std::min(c.force.norm() * perNewton, 2.0 * size);
+        if (!(len > 0.5 * w)) continue;
+        setTint(kContactForce, 1.0f);
+        const Vector3d end = c.point + len * c.force.normalized();
+        drawRange(g.unitCylinder, scaled(Isometry3d(frameAlong(c.point, end).matrix()), Vector3d(0.5 * w, 0.5 * w, len)));
+        // the head: a short fat cylinder at the tip
+        const Vector3d dir = c.force.normalized();
+        drawRange(g.unitCylinder, scaled(Isometry3d(frameAlong(end, end + 3 * w * dir).matrix()),
+                                         Vector3d(1.4 * w, 1.4 * w, 3 * w)));
+    }
+    setTint(Vector3f::Zero(), 0.0f);
+}
+
 void Viewport::paintGL()
 {
     QElapsedTimer timer;
@@ -1037,6 +1078,9 @@ void Viewport::paintGL()
             drawRange(g.unitTriad, scaled(bodyPose(b), Vector3d::Constant(5 * g.schematicWidth)));
         }
     }
+
+    // contacts on demand, over the model (they are where solids meet, inside both)
+    if (m_showContacts) drawContacts();
 
     // the highlighted joint, over everything
     if (m_highlightJoint >= 0) {

@@ -174,6 +174,10 @@ public:
 
     void setShowFrames(bool show);
     bool showFrames() const { return m_showFrames; }
+    /// CONTACT: the contact points of the snapshot shown (a disc on each point, across its
+    /// normal) with their forces as arrows (length in proportion to the machine's weight).
+    void setShowContacts(bool show);
+    bool showContacts() const { return m_showContacts; }
     void setShowGrid(bool show);
     bool showGrid() const { return m_showGrid; }
     /// Highlights a body and a joint (tree indices; −1 none), e.g. the model tree's selection.
@@ -282,6 +286,9 @@ private:
     QString m_cameraName = QStringLiteral("Iso");
     bool m_seatSet = false;  ///< setOperatorSeat was called (else the model's default)
     bool m_showFrames = false;
+    bool m_showContacts = false;
+    std::shared_ptr<const Snapshot> m_contactsOf;  // the snapshot whose contacts are drawn
+    void drawContacts();
     bool m_showGrid = true;
     int m_highlightBody = -1;
     int m_highlightJoint = -1;

@@ -72,6 +72,7 @@ Viewport* ViewportLayout::makeViewport(int index, int count)
     v->setYawOffset(yawOffset(index, count));
     v->setCamera(count == 1 ? m_camera : QStringLiteral("Operator seat"));
     v->setShowFrames(m_showFrames);
+    v->setShowContacts(m_showContacts);
     v->setHighlight(m_highlightBody, m_highlightJoint);
     if (index == 0) connect(v, &Viewport::problem, this, &ViewportLayout::problem);
     for (const QPointer<QWidget>& o : m_overlays) {
@@ -176,6 +177,12 @@ void ViewportLayout::setOperatorSeat(const Eigen::Vector3d& eye, double yawRad, 
 {
     m_seat = Seat{eye, yawRad, pitchRad};
     for (Viewport* v : m_views) v->setOperatorSeat(eye, yawRad, pitchRad);
+}
+
+void ViewportLayout::setShowContacts(bool show)
+{
+    m_showContacts = show;
+    for (Viewport* v : m_views) v->setShowContacts(show);
 }
 
 void ViewportLayout::setShowFrames(bool show)

@@ -57,6 +57,7 @@ public:
     void setDisplayMode(DisplayMode mode);
     void setOperatorSeat(const Eigen::Vector3d& eye, double yawRad, double pitchRad);
     void setShowFrames(bool show);
+    void setShowContacts(bool show);
     void setHighlight(int body, int joint);
     /// A named camera (Viewport::cameraNames()) on every screen; the yaw offsets turn
     /// only the seat camera. False for an unknown name.
@@ -101,6 +102,7 @@ private:
     };
     std::optional<Seat> m_seat;
     bool m_showFrames = false;
+    bool m_showContacts = false;
     QString m_camera = QStringLiteral("Iso");  ///< of a single screen
     int m_highlightBody = -1, m_highlightJoint = -1;
     QList<QPointer<QWidget>> m_overlays;
