@@ -952,10 +952,8 @@ bool Simulation::advanceTo(double tEnd, std::vector<SimulationEvent>& events, st
     constexpr double kFreeFoldSpan = 0.02;   // [s]
     constexpr double kFreeFoldAngle = 0.25;  // [rad]
     while (true) {
-        if (foldFreeRotations(*m_model, m_state, kFreeFoldAngle)) {
-            m_restart = true;
-            evaluate();
-        }
+        // (the restart's mode rules evaluate the folded state)
+        if (foldFreeRotations(*m_model, m_state, kFreeFoldAngle)) m_restart = true;
         const double next = tEnd - m_state.t > kFreeFoldSpan ? m_state.t + kFreeFoldSpan : tEnd;
         if (!advanceSpan(next, events, error, errorText)) return false;
         if (!(tEnd > m_state.t)) return true;

@@ -278,7 +278,7 @@ void Viewport::setSnapshot(std::shared_ptr<const Snapshot> snapshot)
 {
     if (!snapshot) return;
     if (snapshot->bundle && snapshot->bundle != m_bundle) setBundle(snapshot->bundle);
-    m_contactsOf = snapshot->contacts.empty() && !m_contactsOf ? nullptr : snapshot;
+    m_contactsOf = snapshot;
     setPoses(snapshot->bodyPoses);
 }
 
