@@ -28,6 +28,15 @@ struct Weld {
     Eigen::Isometry3d X_ab = Eigen::Isometry3d::Identity();
 };
 
+/// A push of the mouse (Simulation::setPush): body `body`'s point `point` is pulled
+/// toward the world point `target` by a spring–damper scaled by the mass it moves
+/// (dynamics/applied_forces.h "The push"). A command, as u: held, not integrated.
+struct Push {
+    int body = -1;  ///< tree index; −1: no push
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();   ///< in the body's frame [m]
+    Eigen::Vector3d target = Eigen::Vector3d::Zero();  ///< world [m]
+};
+
 struct State {
     double t = 0;               ///< [s]
     /// θ per joint [rad or m], then each free joint's base orientation as a unit
@@ -39,6 +48,7 @@ struct State {
     std::vector<LimitState> limit;  ///< per joint
     std::vector<ReliefState> relief;  ///< per joint (hydraulic drives)
     std::vector<Weld> welds;          ///< welds in force (none at the start)
+    Push push;                        ///< the mouse's push (none at the start)
     /// Fluid-power states, kFluidStates per Model::circuits entry: the spool x in
     /// [−1, 1], the pressures p_A and p_B [Pa] (gauge, ≥ 0).
     Eigen::VectorXd fluid;

@@ -65,7 +65,40 @@ Vector3d upDirection(const Model& model)
     return g > 0 ? Vector3d(-model.gravity / g) : Vector3d::UnitZ();
 }
 
+/// Adds the push (header: "The push") to data.fext.
+void applyPush(const Model& model, const Push& push, Data& data)
+{
+    const int b = push.body;
+    if (!isBody(model, b)) return;
+    const double m = subtreeMass(model, b);
+    if (!(m > 0.0)) return;
+    const Vector3d p = worldPoint(data, b, push.point);
+    const double k = kPushFrequency * kPushFrequency * m;
+    const double c = 2.0 * kPushFrequency * m;
+    Vector3d force = k * (push.target - p) - c * pointVelocity(data, b, p);
+    const double cap = kPushMaxAcceleration * m;
+    const double size = force.norm();
+    if (size > cap) force *= cap / size;
+    if (!force.allFinite()) return;
+    addForceAt(data, b, p, force);
+    const Eigen::Matrix3d& R = data.X_wb[b].linear();
+    data.fext[b].head<3>() -= 2.0 * kPushFrequency * (R * (model.inertia[b] * (R.transpose() * data.omega[b])));
+}
+
 }  // namespace
+
+double subtreeMass(const Model& model, int body)
+{
+    if (!isBody(model, body)) return 0.0;
+    double m = 0.0;
+    // parent[k] < k: the bodies outboard of `body` have larger indices
+    for (int k = body; k < model.nb; ++k) {
+        int j = k;
+        while (j > body) j = model.parent[j];
+        if (j == body) m += model.mass[k];
+    }
+    return m;
+}
 
 double evaluateMagnitude(const CompiledMagnitude& mag, double t, const Model& model,
                          const State& state)
@@ -157,6 +190,7 @@ void applyForces(const Model& model, const State& state, Data& data)
     }
     // CONTACT: the solids' contact forces (contact/contact_forces.h)
     if (model.contact) applyContacts(model, state, data);
+    applyPush(model, state.push, data);
 }
 
 }  // namespace solver

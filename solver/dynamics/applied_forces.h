@@ -27,12 +27,35 @@
 //   n = (u − (u·v̂)v̂)/|u − (u·v̂)v̂|, u = −gravity/|gravity| (world +z when the model
 //   has no gravity). No lift when v is zero or vertical (|u − (u·v̂)v̂| < 1e-9);
 //   a negative CL pushes down. Both act at P.
+//
+// The push (State::push, Simulation::setPush: the studio's Ctrl + drag, as MuJoCo's
+// `simulate` perturbs a body): body b's point P (body frame) is pulled toward the
+// world target T by a spring–damper scaled by the mass m that b carries (its own and
+// every body outboard of it: the subtree mass, as MuJoCo's), so that every body
+// answers alike, as a mass on a critically damped spring of natural frequency ω₀:
+//     F = k·(T − p) − c·v_p,   k = ω₀²·m,  c = 2·ω₀·m,
+// with p and v_p P's world position and velocity, |F| capped at a_max·m (a mouse far
+// away pulls hard, not without bound); and a moment −2·ω₀·I_w·ω that damps b's spin
+// (I_w: b's own inertia about its centre of mass, in world axes), so that a body held
+// off its centre of mass settles instead of swinging about P for ever. A push on the
+// ground, on a body out of range or on a body that carries no mass exerts nothing.
 
 #include "solver/core/data.h"
 #include "solver/core/model.h"
 #include "solver/core/state.h"
 
 namespace solver {
+
+/// The push's natural frequency ω₀ [rad/s]: k = 100 N/m per kg (MuJoCo's default
+/// perturbation stiffness), critically damped.
+inline constexpr double kPushFrequency = 10.0;
+/// The push's largest force per kilogram pushed [m/s²] (about 10 g; k·d reaches it
+/// when the target is 1 m from the point).
+inline constexpr double kPushMaxAcceleration = 100.0;
+
+/// The mass body `body` carries: its own and every body's outboard of it [kg] (0 for
+/// an index out of range). O(nb · depth), no allocation.
+double subtreeMass(const Model& model, int body);
 
 /// Value of a magnitude law at time t [s] and state `state`:
 /// - Constant: `value`;
@@ -48,7 +71,7 @@ double evaluateMagnitude(const CompiledMagnitude& mag, double t, const Model& mo
                          const State& state);
 
 /// Sets data.fext (dim nb) and data.tauExt (dim nb) to the sum of every load in
-/// model.forces at state `state` (time state.t). Reads data.X_wb, data.omega and
+/// model.forces at state `state` (time state.t), and the push state.push. Reads data.X_wb, data.omega and
 /// data.vel, which the kinematics must have computed for `state` (the velocities only
 /// for SPRING with damping and AERO). Forces naming a body or joint outside [0, nb)
 /// other than the ground (−1) are ignored. No allocation, no exceptions.

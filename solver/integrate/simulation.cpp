@@ -337,6 +337,7 @@ private:
         // the free joints' base orientations: not integrated (constant between folds)
         for (Eigen::Index k = nb; k < m_work.q.size(); ++k) m_work.q[k] = m_modes.q[k];
         m_work.welds = m_modes.welds;
+        m_work.push = m_modes.push;
         m_work.constraintRank = m_modes.constraintRank;
         if (m_model->contact) m_work.contacts = m_modes.contacts;
     }
@@ -553,6 +554,25 @@ bool Simulation::setDriveFault(int joint, const DriveFault& fault)
     m_state.servoIntegral[joint] = 0;
     applyFaults();
     return true;
+}
+
+bool Simulation::setPush(int body, const Eigen::Vector3d& localPoint, const Eigen::Vector3d& target)
+{
+    if (body < 0 || body >= m_model->nb || !localPoint.allFinite() || !target.allFinite()) return false;
+    Push& p = m_state.push;
+    if (p.body == body && p.point == localPoint && p.target == target) return true;
+    p.body = body;
+    p.point = localPoint;
+    p.target = target;
+    m_restart = true;  // a new load: the adaptive integrators restart, as for a command
+    return true;
+}
+
+void Simulation::clearPush()
+{
+    if (m_state.push.body < 0) return;
+    m_state.push = Push{};
+    m_restart = true;
 }
 
 bool Simulation::clearDriveFault(int joint)

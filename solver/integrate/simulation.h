@@ -135,6 +135,15 @@ public:
 
     /// Sets joint i's command u in [−1, 1] (clamped), read by the next advanceTo().
     void setCommand(int joint, double u);
+    /// Pushes body `body` (tree index) with the mouse from the next advanceTo(): its
+    /// point `localPoint` (body frame [m]) is pulled toward the world point `target` [m]
+    /// by the spring–damper of applied_forces.h ("The push"), at every integrator stage,
+    /// until clearPush(); a new call replaces the push (a new target each frame of a
+    /// drag). Returns false, changing nothing, when the body is out of range or a
+    /// coordinate is not finite. No allocation.
+    bool setPush(int body, const Eigen::Vector3d& localPoint, const Eigen::Vector3d& target);
+    /// Ends the push (the body moves freely again from the next advanceTo()).
+    void clearPush();
     /// Bursts the hose of joint i's hydraulic drive (DriveFault), from the next
     /// advanceTo() until clearDriveFault(i); setting it again replaces the fault. The
     /// joint's rate is kept (no jump: the load starts from where it was moving), its

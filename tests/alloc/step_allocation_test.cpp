@@ -215,3 +215,29 @@ TEST(StepAllocation, ContactsAllocateNothing)
     EXPECT_EQ(g_allocations - before, 0) << "allocations in 1,950 steps with contacts";
     EXPECT_GE(most, 5u);  // the box's four corners and the ball
 }
+
+TEST(StepAllocation, AMousePushAllocatesNothing)
+{
+    // the studio's Ctrl + drag: a new target every step, the push cleared and taken again
+    solver::CompiledModel loaded =
+        solver::compileFile(std::string(PADROB_SOURCE_DIR) + "/models/tumbling_block.pad");
+    ASSERT_TRUE(loaded.ok());
+    solver::Simulation sim(loaded.model, solver::SimulationOptions{});
+    std::vector<solver::SimulationEvent> events;
+    events.reserve(100);
+    std::string error;
+    const int block = loaded.model->bodyIndex(1);
+    ASSERT_TRUE(sim.setPush(block, Eigen::Vector3d(0.1, 0, 0), Eigen::Vector3d(0, 0, 1)));
+    ASSERT_TRUE(sim.advanceTo(0.001, events, error)) << error;
+    const long before = g_allocations;
+    for (int k = 2; k <= 2000; ++k) {
+        if (k % 500 == 0) sim.clearPush();
+        else sim.setPush(block, Eigen::Vector3d(0.1, 0, 0), Eigen::Vector3d(std::sin(0.01 * k), 0, 1));
+        if (!sim.advanceTo(0.001 * k, events, error)) {
+            ADD_FAILURE() << error;
+            break;
+        }
+    }
+    EXPECT_EQ(g_allocations - before, 0) << "allocations in 1999 steps with a new push each";
+    EXPECT_GT(std::abs(sim.state().q[0]), 1e-3) << "the block was to move";
+}

@@ -152,6 +152,9 @@ MainWindow::MainWindow(QWidget* parent)
     m_viewports->addOverlay(m_hud);  // the 3D views' native windows would hide it: drawn in their frames
     m_plots->setRunner(m_runner.get());
     m_hydraulics->setRunner(m_runner.get());
+    // Ctrl + drag in the 3D view pushes a body: the target goes to the solver thread
+    connect(m_viewports, &ViewportLayout::pushMoved, m_runner.get(), &SimulationRunner::setPush);
+    connect(m_viewports, &ViewportLayout::pushReleased, m_runner.get(), &SimulationRunner::clearPush);
     // the hydraulics dock comes with a model that has pumps and goes with one that has none
     connect(m_hydraulics, &HydraulicPanel::modelChanged, this, [this](bool fluid) {
         if (int(fluid) == m_fluidPower || !m_runner->bundle()) return;
@@ -616,8 +619,13 @@ void MainWindow::showKeyboardControls()
         }
     }
     text += "</table>";
-    QMessageBox::information(this, tr("Keyboard Controls"),
-                             QStringLiteral("<p>%1</p>%2").arg(tr("With the 3D view focused, hold a key to open a valve:"), text));
+    QMessageBox::information(
+        this, tr("Keyboard Controls"),
+        QStringLiteral("<p>%1</p>%2<p>%3</p>")
+            .arg(tr("With the 3D view focused, hold a key to open a valve:"), text,
+                 tr("Mouse in the 3D view: left drag orbits, middle drag or Shift + left drag pans, the wheel "
+                    "zooms, a double click frames the model. Ctrl + left drag on a body pushes it while the "
+                    "simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go.")));
 }
 
 // ---------------------------------------------------------------- files

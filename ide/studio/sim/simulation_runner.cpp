@@ -77,6 +77,7 @@ struct SimulationRunner::Shared {
     // commands: the newest input snapshot
     std::mutex commandMutex;
     std::vector<double> commands;
+    solver::Push push;  // the mouse's push (body −1: none)
     std::atomic<unsigned> commandVersion{0};
 
     // snapshots: `latest` is replaced only by the generation it belongs to, so that a
@@ -305,6 +306,8 @@ private:
         const int nb = m_sim->model().nb;
         const auto& u = m_shared.commands;
         for (int i = 0; i < nb; ++i) m_sim->setCommand(i, std::size_t(i) < u.size() ? u[std::size_t(i)] : 0.0);
+        const solver::Push& p = m_shared.push;
+        if (p.body < 0 || !m_sim->setPush(p.body, p.point, p.target)) m_sim->clearPush();
     }
 
     /// One step; false (and the failure handled) when the simulation failed.
@@ -523,6 +526,7 @@ bool SimulationRunner::install(bool keepCommands)
         std::lock_guard lock(m_shared->commandMutex);
         if (!keepCommands) m_shared->commands.assign(nb, 0.0);
         m_shared->commands.resize(nb, 0.0);
+        m_shared->push = solver::Push{};  // a new simulation: nothing pushed
         m_shared->commandVersion.fetch_add(1, std::memory_order_release);
     }
     // publish first, under the new generation: from here on nothing of the old
@@ -650,6 +654,31 @@ void SimulationRunner::setCommands(std::span<const double> u)
         c[i] = std::isfinite(v) ? std::clamp(v, -1.0, 1.0) : 0.0;
     }
     m_shared->commandVersion.fetch_add(1, std::memory_order_release);
+}
+
+void SimulationRunner::setPush(int treeBody, const Eigen::Vector3d& localPoint, const Eigen::Vector3d& target)
+{
+    std::lock_guard lock(m_shared->commandMutex);
+    solver::Push& p = m_shared->push;
+    if (p.body == treeBody && p.point == localPoint && p.target == target) return;
+    p.body = treeBody;
+    p.point = localPoint;
+    p.target = target;
+    m_shared->commandVersion.fetch_add(1, std::memory_order_release);
+}
+
+void SimulationRunner::clearPush()
+{
+    std::lock_guard lock(m_shared->commandMutex);
+    if (m_shared->push.body < 0) return;
+    m_shared->push = solver::Push{};
+    m_shared->commandVersion.fetch_add(1, std::memory_order_release);
+}
+
+solver::Push SimulationRunner::push() const
+{
+    std::lock_guard lock(m_shared->commandMutex);
+    return m_shared->push;
 }
 
 std::vector<double> SimulationRunner::commands() const

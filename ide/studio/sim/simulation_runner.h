@@ -140,6 +140,16 @@ public:
     /// The commands as last written (dim nb).
     std::vector<double> commands() const;
 
+    /// Pushes body `treeBody` (tree index) with the mouse from the next step: its point
+    /// `localPoint` (body frame [m]) pulled toward the world point `target` [m]
+    /// (solver::Simulation::setPush), sent to the solver thread as the commands are;
+    /// replaced by the next call, ended by clearPush(), a new model or reset(). A body
+    /// out of range or a coordinate that is not finite: no push.
+    void setPush(int treeBody, const Eigen::Vector3d& localPoint, const Eigen::Vector3d& target);
+    void clearPush();
+    /// The push as last written (body −1: none).
+    solver::Push push() const;
+
     /// The newest snapshot (never blocks on the solver); nullptr without a model.
     std::shared_ptr<const Snapshot> latest() const;
 

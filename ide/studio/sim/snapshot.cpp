@@ -35,6 +35,7 @@ std::shared_ptr<Snapshot> captureSnapshot(const solver::Simulation& sim,
         }
     }
     snap->u = s.u;
+    snap->push = s.push;
     snap->driveForce = d.driveForce;
     snap->reactionJoint = d.reactionJoint;
     snap->energy = solver::mechanicalEnergy(m, d);

@@ -63,6 +63,7 @@ struct Snapshot {
     Eigen::VectorXd theta;                      ///< θ per tree joint (the state)
     Eigen::VectorXd q, qd;                      ///< modeler's coordinate and rate per tree joint
     Eigen::VectorXd u;                          ///< commands per tree joint in [−1, 1]
+    solver::Push push;                          ///< the mouse's push in force (body −1: none)
     Eigen::VectorXd driveForce;                 ///< per tree joint [N or N m] (Data::driveForce)
     std::vector<solver::Vector6d> reactionJoint;  ///< per tree joint, joint axes (Data::reactionJoint)
     double energy = 0;                          ///< mechanical energy [J]

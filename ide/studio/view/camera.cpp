@@ -43,6 +43,15 @@ double Camera::verticalFieldOfView(double aspect) const
     return fieldOfViewY;
 }
 
+Vector3d Camera::rayThrough(double x, double y, double width, double height) const
+{
+    const double aspect = width / std::max(height, 1.0);
+    const double hh = std::tan(0.5 * verticalFieldOfView(aspect));  // half height at distance 1
+    const double nx = 2 * x / std::max(width, 1.0) - 1;
+    const double ny = 1 - 2 * y / std::max(height, 1.0);
+    return (forward() + right() * (nx * hh * aspect) + up() * (ny * hh)).normalized();
+}
+
 Eigen::Matrix4d Camera::viewMatrix() const
 {
     const Vector3d f = forward(), r = right(), u = up(), e = eye();

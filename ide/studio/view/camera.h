@@ -43,6 +43,9 @@ public:
     double verticalFieldOfView(double aspect) const;
 
     Eigen::Matrix4d viewMatrix() const;
+    /// The unit direction from eye() through pixel (x, y) of a width × height viewport
+    /// (the inverse of the view and projection matrices: the ray under the cursor).
+    Eigen::Vector3d rayThrough(double x, double y, double width, double height) const;
     /// Perspective projection, clip planes chosen so that a sphere (centre, radius)
     /// and the ground grid out to `farthest` metres are inside.
     Eigen::Matrix4d projectionMatrix(double aspect, const Eigen::Vector3d& centre, double radius,

@@ -603,6 +603,34 @@ int planeSide(const MeshBuilder& mesh, const CullPart& part, const Eigen::Vector
     return cut ? -1 : 1;
 }
 
+namespace {
+
+/// The position of the vertex that index i of the mesh's index array names.
+Vector3d indexedVertex(const MeshBuilder& mesh, std::uint32_t i)
+{
+    const float* p = mesh.vertices[mesh.indices[i]].position;
+    return Vector3d(p[0], p[1], p[2]);
+}
+
+/// Where the ray (o, d) meets the triangle (a, b, c), either face (Möller–Trumbore):
+/// the distance along it in units of |d|, or −1 when it misses it or runs along its plane.
+double rayTriangle(const Vector3d& o, const Vector3d& d, const Vector3d& a, const Vector3d& b, const Vector3d& c)
+{
+    const Vector3d e1 = b - a, e2 = c - a;
+    const Vector3d h = d.cross(e2);
+    const double det = e1.dot(h);
+    if (std::abs(det) < 1e-15) return -1;
+    const Vector3d s = o - a;
+    const double u = s.dot(h) / det;
+    if (u < 0 || u > 1) return -1;
+    const Vector3d q = s.cross(e1);
+    const double v = d.dot(q) / det;
+    if (v < 0 || u + v > 1) return -1;
+    return e2.dot(q) / det;
+}
+
+}  // namespace
+
 bool solidClearOf(const MeshBuilder& mesh, const CullPart& part, const std::array<Vector3d, 4>& quad,
                   double margin)
 {
@@ -613,10 +641,7 @@ bool solidClearOf(const MeshBuilder& mesh, const CullPart& part, const std::arra
     if (!near.intersects(part.box)) return true;
     const std::uint32_t end = std::min<std::uint32_t>(part.range.first + part.range.count,
                                                       static_cast<std::uint32_t>(mesh.indices.size()));
-    auto at = [&](std::uint32_t i) {
-        const float* p = mesh.vertices[mesh.indices[i]].position;
-        return Vector3d(p[0], p[1], p[2]);
-    };
+    auto at = [&](std::uint32_t i) { return indexedVertex(mesh, i); };
     for (std::uint32_t i = part.range.first; i + 2 < end; i += 3) {
         Eigen::AlignedBox3d t(at(i));
         t.extend(at(i + 1));
@@ -630,20 +655,71 @@ bool solidClearOf(const MeshBuilder& mesh, const CullPart& part, const std::arra
     const Vector3d dir = Vector3d(0.5771, 0.5774, 0.5779).normalized();
     int crossings = 0;
     for (std::uint32_t i = part.range.first; i + 2 < end; i += 3) {
-        // Möller–Trumbore
-        const Vector3d a = at(i), e1 = at(i + 1) - a, e2 = at(i + 2) - a;
-        const Vector3d h = dir.cross(e2);
-        const double det = e1.dot(h);
-        if (std::abs(det) < 1e-15) continue;
-        const Vector3d s = origin - a;
-        const double u = s.dot(h) / det;
-        if (u < 0 || u > 1) continue;
-        const Vector3d q = s.cross(e1);
-        const double v = dir.dot(q) / det;
-        if (v < 0 || u + v > 1) continue;
-        if (e2.dot(q) / det > 0) ++crossings;
+        if (rayTriangle(origin, dir, at(i), at(i + 1), at(i + 2)) > 0) ++crossings;
     }
     return crossings % 2 == 0;
+}
+
+namespace {
+
+/// Distance along the ray (o, d) to where it meets the box, or +∞ (slab test).
+double rayBox(const Eigen::AlignedBox3d& box, const Vector3d& o, const Vector3d& d)
+{
+    if (box.isEmpty()) return std::numeric_limits<double>::infinity();
+    double near = 0, far = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < 3; ++a) {
+        if (std::abs(d[a]) < 1e-300) {
+            if (o[a] < box.min()[a] || o[a] > box.max()[a]) return std::numeric_limits<double>::infinity();
+            continue;
+        }
+        double t0 = (box.min()[a] - o[a]) / d[a], t1 = (box.max()[a] - o[a]) / d[a];
+        if (t0 > t1) std::swap(t0, t1);
+        near = std::max(near, t0);
+        far = std::min(far, t1);
+        if (near > far) return std::numeric_limits<double>::infinity();
+    }
+    return near;
+}
+
+/// The nearest distance along the ray (o, d) at which it meets a triangle of `range`
+/// (either face), if below `best`.
+void rayRange(const MeshBuilder& mesh, const DrawRange& range, const Vector3d& o, const Vector3d& d, double& best)
+{
+    for (std::uint32_t k = range.first; k + 2 < range.first + range.count; k += 3) {
+        const double t = rayTriangle(o, d, indexedVertex(mesh, k), indexedVertex(mesh, k + 1), indexedVertex(mesh, k + 2));
+        if (t > 0 && t < best) best = t;
+    }
+}
+
+}  // namespace
+
+bool pickBody(const SceneGeometry& geometry, const std::vector<Isometry3d>& X_wb, const Vector3d& origin,
+              const Vector3d& direction, bool schematic, bool dressed, int& body, Vector3d& point)
+{
+    const SceneGeometry& g = geometry;
+    if (static_cast<int>(X_wb.size()) != g.nb || !(direction.norm() > 0)) return false;
+    const Vector3d d = direction.normalized();
+    double best = std::numeric_limits<double>::infinity();
+    int found = -1;
+    for (int b = 0; b < g.nb; ++b) {
+        const auto slot = static_cast<std::size_t>(b + 1);
+        // the ray in the body's frame (its meshes are there); distances are kept
+        const Isometry3d& X = X_wb[static_cast<std::size_t>(b)];
+        const Vector3d o = X.inverse() * origin;
+        const Vector3d db = X.linear().transpose() * d;
+        if (rayBox(g.bounds[slot], o, db) >= best) continue;
+        double t = best;
+        if (dressed) rayRange(g.mesh, g.dressed[slot].empty() ? g.bars[slot] : g.dressed[slot], o, db, t);
+        if (schematic) rayRange(g.mesh, g.schematic[slot], o, db, t);
+        if (t < best) {
+            best = t;
+            found = b;
+        }
+    }
+    if (found < 0) return false;
+    body = found;
+    point = origin + best * d;
+    return true;
 }
 
 Eigen::AlignedBox3d worldBounds(const SceneGeometry& geometry, const std::vector<Isometry3d>& X_wb,

@@ -143,6 +143,15 @@ std::shared_ptr<SceneGeometry> buildSceneGeometry(const ModelBundle* bundle,
 /// Body poses X_wb at the model's initial state (solver::makeState + forwardKinematics).
 std::vector<Eigen::Isometry3d> initialPoses(const solver::Model& model);
 
+/// The body a ray meets first (picking: the ray under the cursor, Camera::rayThrough):
+/// its triangles as drawn with the bodies at `X_wb` (by tree index) — the dressed
+/// shapes (a body without any: its bar) when `dressed`, the schematic when
+/// `schematic`. Sets `body` (tree index) and `point` (the hit, world [m]) and returns
+/// true; false when the ray meets no moving body (the ground is never picked).
+bool pickBody(const SceneGeometry& geometry, const std::vector<Eigen::Isometry3d>& X_wb,
+              const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, bool schematic, bool dressed,
+              int& body, Eigen::Vector3d& point);
+
 /// World bounds of everything drawn (dressed and schematic; or the schematic only) with
 /// the bodies at `X_wb` (poses by tree index; the actuators' ends included). Empty box
 /// when nothing is drawn.

@@ -6,6 +6,7 @@
 #include <QElapsedTimer>
 #include <QExposeEvent>
 #include <QFile>
+#include <QMetaMethod>
 #include <QMouseEvent>
 #include <QOffscreenSurface>
 #include <QOpenGLBuffer>
@@ -47,6 +48,7 @@ const Vector3f kHighlight(1.0f, 0.86f, 0.10f);
 const Vector3f kContactPoint(0.95f, 0.15f, 0.10f);  // contacts: red discs,
 const Vector3f kContactForce(1.0f, 0.55f, 0.05f);   // orange force arrows
 const Vector3f kRodSilver(0.82f, 0.83f, 0.86f);
+const Vector3f kPushRed(0.95f, 0.15f, 0.12f);  // the push's line (Ctrl + drag)
 constexpr float kOverlayAlpha = 0.6f;
 const Eigen::Vector3f kGhostTint(0.55f, 0.8f, 1.0f);  // the ghost: a pale blue
 
@@ -236,6 +238,7 @@ void Viewport::setBundle(std::shared_ptr<const ModelBundle> bundle)
     // an edited model (same file) keeps the view the modeler chose
     const bool sameModel = bundle && m_bundle && bundle->filePath == m_bundle->filePath;
     m_bundle = std::move(bundle);
+    endPush();  // the body pushed is another model's
     m_geometry = sceneGeometry(m_bundle);
     m_poses = m_bundle && m_bundle->model ? initialPoses(*m_bundle->model) : std::vector<Isometry3d>{};
     m_slotMatrices.assign(static_cast<std::size_t>(m_geometry->slotCount()), Matrix4f::Identity());
@@ -937,6 +940,26 @@ void Viewport::drawContacts()
     setTint(Vector3f::Zero(), 0.0f);
 }
 
+void Viewport::drawPush()
+{
+    if (m_pushBody < 0 || m_pushBody >= static_cast<int>(m_poses.size())) return;
+    // a red line from the grabbed point to the target, over everything, a dot at each end
+    const Vector3d p1 = bodyPose(m_pushBody) * m_pushPoint;
+    const double w = m_geometry->schematicWidth;
+    glClear(GL_DEPTH_BUFFER_BIT);
+    setTint(kPushRed, 1.0f);
+    const double len = (m_pushTarget - p1).norm();
+    if (len > 1e-9)
+        drawRange(m_geometry->unitCylinder,
+                  scaled(Isometry3d(frameAlong(p1, m_pushTarget).matrix()), Vector3d(0.2 * w, 0.2 * w, len)));
+    for (const Vector3d& end : {p1, m_pushTarget}) {
+        const Vector3d a = end - Vector3d(0, 0, 0.5 * w);
+        drawRange(m_geometry->unitCylinder,
+                  scaled(Isometry3d(frameAlong(a, a + Vector3d(0, 0, w)).matrix()), Vector3d(0.6 * w, 0.6 * w, w)));
+    }
+    setTint(Vector3f::Zero(), 0.0f);
+}
+
 void Viewport::paintGL()
 {
     QElapsedTimer timer;
@@ -1093,6 +1116,8 @@ void Viewport::paintGL()
         setTint(Vector3f::Zero(), 0.0f);
     }
 
+    drawPush();
+
     m_program->program->release();
     m_modelMesh.vao->release();
 
@@ -1219,15 +1244,51 @@ double Viewport::frameMillis() const
 
 // ---- mouse ---------------------------------------------------------------------------
 
+bool Viewport::pick(const QPointF& pixel, int& body, Vector3d& point) const
+{
+    if (!m_geometry) return false;
+    const Vector3d dir = m_camera.rayThrough(pixel.x(), pixel.y(), width(), height());
+    return pickBody(*m_geometry, m_poses, m_camera.eye(), dir, m_mode != DisplayMode::Dressed,
+                    m_mode != DisplayMode::Schematic, body, point);
+}
+
 void Viewport::mousePressEvent(QMouseEvent* event)
 {
     m_lastMouse = event->position().toPoint();
-    m_dragging = true;
     event->accept();
+    if (event->button() == Qt::LeftButton && (event->modifiers() & Qt::ControlModifier) &&
+        isSignalConnected(QMetaMethod::fromSignal(&Viewport::pushMoved))) {
+        // a push: the body under the cursor, or nothing (no orbit either)
+        m_dragging = false;
+        int body = -1;
+        Vector3d hit;
+        if (!pick(event->position(), body, hit)) return;
+        m_pushBody = body;
+        m_pushPoint = bodyPose(body).inverse() * hit;
+        m_pushTarget = m_pushPlane = hit;
+        emit pushMoved(m_pushBody, m_pushPoint, m_pushTarget);
+        requestFrame();
+        return;
+    }
+    m_dragging = m_pushBody < 0;
 }
 
 void Viewport::mouseMoveEvent(QMouseEvent* event)
 {
+    if (m_pushBody >= 0) {
+        // the target: the cursor's point in the plane through the grabbed point facing the camera
+        const Vector3d eye = m_camera.eye(), n = m_camera.forward();
+        const QPointF p = event->position();
+        const Vector3d dir = m_camera.rayThrough(p.x(), p.y(), width(), height());
+        const double along = dir.dot(n);
+        if (along > 1e-9) {
+            m_pushTarget = eye + ((m_pushPlane - eye).dot(n) / along) * dir;
+            emit pushMoved(m_pushBody, m_pushPoint, m_pushTarget);
+            requestFrame();
+        }
+        event->accept();
+        return;
+    }
     if (!m_dragging) return;
     const QPoint pos = event->position().toPoint();
     const QPoint d = pos - m_lastMouse;
@@ -1247,7 +1308,16 @@ void Viewport::mouseMoveEvent(QMouseEvent* event)
 void Viewport::mouseReleaseEvent(QMouseEvent* event)
 {
     m_dragging = false;
+    if (event->button() == Qt::LeftButton) endPush();
     event->accept();
+}
+
+void Viewport::endPush()
+{
+    if (m_pushBody < 0) return;
+    m_pushBody = -1;
+    emit pushReleased();
+    requestFrame();
 }
 
 void Viewport::mouseDoubleClickEvent(QMouseEvent* event)

@@ -34,7 +34,14 @@
 // draws a frame offscreen, and QWidget::grab()/render() of the window show it.
 //
 // Mouse: left drag orbits, middle drag or Shift + left drag pans, the wheel zooms
-// towards the cursor, a double click frames the whole model. Cameras: orbit views
+// towards the cursor, a double click frames the whole model. Ctrl + left drag on a body
+// pushes it (as MuJoCo's `simulate` perturbs one): the press picks the body and its
+// point under the cursor (pickBody), the drag moves the target — the cursor's point in
+// the plane through the grabbed point facing the camera — and pushMoved() says where,
+// the release ends it (pushReleased()); meanwhile a red line joins the grabbed point
+// (as the body moves) to the target. Ctrl + drag off the bodies does nothing. Only a
+// view whose pushMoved() is connected pushes (the Model workspace's screens, wired to
+// the simulation); in the others Ctrl + drag orbits as a plain drag. Cameras: orbit views
 // "Iso", "Front" (from −y), "Side" (from +x), "Top", and "Operator seat" (a fixed
 // eye, see setOperatorSeat); dragging in the seat view turns it into an orbit view.
 
@@ -51,6 +58,7 @@
 #include <QList>
 #include <QOpenGLFunctions_3_3_Core>
 #include <QPoint>
+#include <QPointF>
 #include <QPointer>
 #include <QSurfaceFormat>
 #include <QTimer>
@@ -208,7 +216,22 @@ public:
     void addOverlay(QWidget* widget);
     void removeOverlay(QWidget* widget);
 
+    /// The body and its point under pixel (x, y) of the view (Camera::rayThrough and
+    /// pickBody, the shapes as the display mode draws them): false when none is there.
+    bool pick(const QPointF& pixel, int& body, Eigen::Vector3d& point) const;
+    /// The body being pushed with Ctrl + drag (tree index), −1 when none.
+    int pushedBody() const { return m_pushBody; }
+    /// The grabbed point, in the pushed body's frame [m].
+    const Eigen::Vector3d& pushPoint() const { return m_pushPoint; }
+    /// Where the drag pulls it, world [m].
+    const Eigen::Vector3d& pushTarget() const { return m_pushTarget; }
+
 signals:
+    /// Ctrl + drag: body `body`'s point `localPoint` (its frame) is pulled toward the
+    /// world point `target` (on the press and at every move of the drag).
+    void pushMoved(int body, const Eigen::Vector3d& localPoint, const Eigen::Vector3d& target);
+    /// The Ctrl + drag ended (the button released, or a new model).
+    void pushReleased();
     /// Something in the model cannot be drawn as written (a mesh file missing or
     /// unreadable). Emitted once per bundle and message.
     void problem(const QString& message);
@@ -351,6 +374,14 @@ private:
     // interaction
     QPoint m_lastMouse;
     bool m_dragging = false;
+    // the push (Ctrl + drag): the body, its grabbed point (body frame), the target, and
+    // the plane the target moves in (through the grabbed point as picked, facing the camera)
+    int m_pushBody = -1;
+    Eigen::Vector3d m_pushPoint = Eigen::Vector3d::Zero();
+    Eigen::Vector3d m_pushTarget = Eigen::Vector3d::Zero();
+    Eigen::Vector3d m_pushPlane = Eigen::Vector3d::Zero();
+    void endPush();
+    void drawPush();
 
     // frames: drawn when asked for (requestFrame), at most one per kMinFramePeriodMs
     static constexpr qint64 kMinFramePeriodMs = 15;

@@ -75,6 +75,8 @@ Viewport* ViewportLayout::makeViewport(int index, int count)
     v->setShowContacts(m_showContacts);
     v->setHighlight(m_highlightBody, m_highlightJoint);
     if (index == 0) connect(v, &Viewport::problem, this, &ViewportLayout::problem);
+    connect(v, &Viewport::pushMoved, this, &ViewportLayout::pushMoved);
+    connect(v, &Viewport::pushReleased, this, &ViewportLayout::pushReleased);
     for (const QPointer<QWidget>& o : m_overlays) {
         if (o) v->addOverlay(o);
     }
@@ -85,6 +87,9 @@ void ViewportLayout::setScreens(int count)
 {
     count = std::clamp(count, 1, 3);
     if (count == screens()) return;
+    bool pushing = false;
+    for (Viewport* v : m_views) pushing = pushing || v->pushedBody() >= 0;
+    if (pushing) emit pushReleased();  // its view goes
     for (Viewport* v : m_views) delete v;
     m_views.clear();
     for (int i = 0; i < count; ++i) m_views.push_back(makeViewport(i, count));

@@ -75,6 +75,10 @@ public:
 signals:
     /// A problem drawing the model (reported once, by the first screen).
     void problem(const QString& message);
+    /// A screen's Ctrl + drag pushes a body (Viewport::pushMoved), or ended (also when
+    /// its screen goes).
+    void pushMoved(int body, const Eigen::Vector3d& localPoint, const Eigen::Vector3d& target);
+    void pushReleased();
 
 protected:
     /// A language change: the texts of this widget and of the separate windows again.
