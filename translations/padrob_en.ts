@@ -451,7 +451,7 @@
     </message>
     <message>
         <location filename="../solver/compile/topology.cpp" line="-14" />
-        <location filename="../solver/integrate/simulation.cpp" line="+54" />
+        <location filename="../solver/integrate/simulation.cpp" line="+55" />
         <location filename="../solver/parse/parser.cpp" line="-200" />
         <location filename="../solver/spec/validate.cpp" line="-589" />
         <location line="+588" />
@@ -2554,6 +2554,16 @@
         <translation>t=%1 s: joint %2 no longer cavitates</translation>
     </message>
     <message>
+        <location line="+13" />
+        <source>t=%1 s: %2 and %3 overlap by %4 mm, deeper than the contact pushes back for (a drive stronger than the contact, or a fast hit): they are pushed apart gently</source>
+        <translation>t=%1 s: %2 and %3 overlap by %4 mm, deeper than the contact pushes back for (a drive stronger than the contact, or a fast hit): they are pushed apart gently</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>t=%1 s: %2 and %3 no longer overlap deeply (%4 mm)</source>
+        <translation>t=%1 s: %2 and %3 no longer overlap deeply (%4 mm)</translation>
+    </message>
+    <message>
         <location line="+9" />
         <source>t=%1 s: the closed loops (closing joints %2) locked up: a singular configuration, the mechanism cannot move on</source>
         <translation>t=%1 s: the closed loops (closing joints %2) locked up: a singular configuration, the mechanism cannot move on</translation>
@@ -2599,7 +2609,7 @@
         <translation>t=%1 s: joint %2 relief valve closed retracting</translation>
     </message>
     <message>
-        <location line="+761" />
+        <location line="+823" />
         <source>the closed loops locked up at t = %1 s (a singular configuration: the loop-closure equations lost rank, so the mechanism cannot move on there); drive it another way or change the geometry</source>
         <translation>the closed loops locked up at t = %1 s (a singular configuration: the loop-closure equations lost rank, so the mechanism cannot move on there); drive it another way or change the geometry</translation>
     </message>
@@ -2619,7 +2629,7 @@
         <translation>the likely cause: a force or spring that grows without bound, or a body too light for the forces on it; check the masses and force magnitudes</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+39" />
         <source>the closed loops cannot be closed at t = %1 s from the coordinates given: set coordinates the loops can reach</source>
         <translation>the closed loops cannot be closed at t = %1 s from the coordinates given: set coordinates the loops can reach</translation>
     </message>
@@ -2649,7 +2659,7 @@
         <translation>more than %1 events before t = %2 s: the joints keep switching (chattering)</translation>
     </message>
     <message>
-        <location line="+48" />
+        <location line="+49" />
         <source>cannot weld: no such body</source>
         <translation>cannot weld: no such body</translation>
     </message>
@@ -2740,7 +2750,7 @@
         <translation>the last row is not finished</translation>
     </message>
     <message>
-        <location filename="../solver/contact/contact_geometry.cpp" line="+78" />
+        <location filename="../solver/contact/contact_geometry.cpp" line="+105" />
         <source>G %1 cannot serve as a contact shape: %2</source>
         <translation>G %1 cannot serve as a contact shape: %2</translation>
     </message>
@@ -2750,24 +2760,31 @@
         <translation>fix the mesh file, or mark the graphic NOCONTACT (drawn only)</translation>
     </message>
     <message>
-        <location line="+48" />
+        <location line="+49" />
         <source>G %1 and %2 overlap by %3 mm at the initial pose: they never touch each other</source>
         <translation>G %1 and %2 overlap by %3 mm at the initial pose: they never touch each other</translation>
     </message>
     <message>
         <location line="+3" />
+        <location filename="../solver/integrate/simulation.cpp" line="-1155" />
         <source>scene G %1</source>
         <translation>scene G %1</translation>
     </message>
     <message>
         <location line="+0" />
+        <location filename="../solver/integrate/simulation.cpp" line="+0" />
         <source>G %1</source>
         <translation>G %1</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+7" />
         <source>a pin in its bore is meant to; solids placed inside each other by mistake: move one out</source>
         <translation>a pin in its bore is meant to; solids placed inside each other by mistake: move one out</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>these solids are not joined to each other: they start inside each other and will pass through each other; move one out (or mark one NOCONTACT if it is only drawn)</source>
+        <translation>these solids are not joined to each other: they start inside each other and will pass through each other; move one out (or mark one NOCONTACT if it is only drawn)</translation>
     </message>
 </context>
 <context>
@@ -7921,7 +7938,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::MainWindow</name>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+162" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+165" />
         <source>Export</source>
         <translation>Export</translation>
     </message>
@@ -8078,12 +8095,12 @@ never the .key files of the CAs; then run it with --security DIR.
     </message>
     <message>
         <location line="-146" />
-        <location line="+255" />
+        <location line="+260" />
         <source>Load Scene</source>
         <translation>Load Scene</translation>
     </message>
     <message>
-        <location line="-108" />
+        <location line="-113" />
         <source>&amp;None</source>
         <translation>&amp;None</translation>
     </message>
@@ -8152,17 +8169,17 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>C %1</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+8" />
         <source>Keyboard Controls</source>
         <translation>Keyboard Controls</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>With the 3D view focused, hold a key to open a valve:</source>
         <translation>With the 3D view focused, hold a key to open a valve:</translation>
     </message>
     <message>
-        <location line="-45" />
+        <location line="-47" />
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
@@ -8177,7 +8194,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>&amp;About Padrob Studio</translation>
     </message>
     <message>
-        <location line="+60" />
+        <location line="+65" />
         <location line="+68" />
         <source>Open Model</source>
         <translation>Open Model</translation>
@@ -8190,13 +8207,13 @@ never the .key files of the CAs; then run it with --security DIR.
 %2</translation>
     </message>
     <message>
-        <location line="-238" />
-        <location line="+306" />
+        <location line="-243" />
+        <location line="+311" />
         <source>Padrob models (*.pad);;All files (*)</source>
         <translation>Padrob models (*.pad);;All files (*)</translation>
     </message>
     <message numerus="yes">
-        <location line="-520" />
+        <location line="-525" />
         <source>%n attempt(s) kept while the trainee records could not be written were added to them.</source>
         <translation>
             <numerusform>%n attempt kept while the trainee records could not be written was added to them.</numerusform>
@@ -8271,7 +8288,12 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>C %1 %2</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+10" />
+        <source>Mouse in the 3D view: left drag orbits, middle drag or Shift + left drag pans, the wheel zooms, a double click frames the model. Ctrl + left drag on a body pushes it while the simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go.</source>
+        <translation>Mouse in the 3D view: left drag orbits, middle drag or Shift + left drag pans, the wheel zooms, a double click frames the model. Ctrl + left drag on a body pushes it while the simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go.</translation>
+    </message>
+    <message>
+        <location line="+36" />
         <source>%1
 
 The 3D view goes on without this scene.</source>
@@ -9491,7 +9513,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
 <context>
     <name>studio::SimulationRunner</name>
     <message>
-        <location filename="../ide/studio/sim/simulation_runner.cpp" line="+453" />
+        <location filename="../ide/studio/sim/simulation_runner.cpp" line="+456" />
         <source>The simulation stopped: %1</source>
         <translation>The simulation stopped: %1</translation>
     </message>
@@ -10591,7 +10613,7 @@ Id: %3</translation>
         <translation>Graphic %1 (body %2): mesh "%3" is drawn as a box: %4.</translation>
     </message>
     <message>
-        <location filename="../ide/studio/view/viewport.cpp" line="+344" />
+        <location filename="../ide/studio/view/viewport.cpp" line="+347" />
         <source>Iso</source>
         <translation>Iso</translation>
     </message>

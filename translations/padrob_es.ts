@@ -451,7 +451,7 @@
     </message>
     <message>
         <location filename="../solver/compile/topology.cpp" line="-14" />
-        <location filename="../solver/integrate/simulation.cpp" line="+54" />
+        <location filename="../solver/integrate/simulation.cpp" line="+55" />
         <location filename="../solver/parse/parser.cpp" line="-200" />
         <location filename="../solver/spec/validate.cpp" line="-589" />
         <location line="+588" />
@@ -2554,6 +2554,16 @@
         <translation>t=%1 s: la articulación %2 ya no cavita</translation>
     </message>
     <message>
+        <location line="+13" />
+        <source>t=%1 s: %2 and %3 overlap by %4 mm, deeper than the contact pushes back for (a drive stronger than the contact, or a fast hit): they are pushed apart gently</source>
+        <translation>t=%1 s: %2 y %3 se traslapan %4 mm, más de lo que el contacto alcanza a rechazar (un accionamiento más fuerte que el contacto, o un golpe rápido): se separan suavemente</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>t=%1 s: %2 and %3 no longer overlap deeply (%4 mm)</source>
+        <translation>t=%1 s: %2 y %3 ya no se traslapan en profundidad (%4 mm)</translation>
+    </message>
+    <message>
         <location line="+9" />
         <source>t=%1 s: the closed loops (closing joints %2) locked up: a singular configuration, the mechanism cannot move on</source>
         <translation>t=%1 s: los lazos cerrados (articulaciones de cierre %2) se trabaron: una configuración singular, el mecanismo no puede seguir moviéndose</translation>
@@ -2599,7 +2609,7 @@
         <translation>t=%1 s: articulación %2: la válvula de alivio se cerró al retraer</translation>
     </message>
     <message>
-        <location line="+761" />
+        <location line="+823" />
         <source>the closed loops locked up at t = %1 s (a singular configuration: the loop-closure equations lost rank, so the mechanism cannot move on there); drive it another way or change the geometry</source>
         <translation>los lazos cerrados se trabaron en t = %1 s (una configuración singular: las ecuaciones de cierre de los lazos perdieron rango, así que el mecanismo no puede seguir moviéndose desde ahí); accione el mecanismo de otra forma o cambie la geometría</translation>
     </message>
@@ -2619,7 +2629,7 @@
         <translation>la causa probable: una fuerza o un resorte que crece sin límite, o un cuerpo demasiado liviano para las fuerzas que recibe; revise las masas y las magnitudes de las fuerzas</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+39" />
         <source>the closed loops cannot be closed at t = %1 s from the coordinates given: set coordinates the loops can reach</source>
         <translation>los lazos cerrados no se pueden cerrar en t = %1 s con las coordenadas indicadas: indique coordenadas que los lazos puedan alcanzar</translation>
     </message>
@@ -2649,7 +2659,7 @@
         <translation>más de %1 eventos antes de t = %2 s: las articulaciones no dejan de conmutar (chattering)</translation>
     </message>
     <message>
-        <location line="+48" />
+        <location line="+49" />
         <source>cannot weld: no such body</source>
         <translation>no se puede soldar: no existe ese cuerpo</translation>
     </message>
@@ -2740,7 +2750,7 @@
         <translation>la última fila no está terminada</translation>
     </message>
     <message>
-        <location filename="../solver/contact/contact_geometry.cpp" line="+78" />
+        <location filename="../solver/contact/contact_geometry.cpp" line="+105" />
         <source>G %1 cannot serve as a contact shape: %2</source>
         <translation>G %1 no puede servir como forma de contacto: %2</translation>
     </message>
@@ -2750,24 +2760,31 @@
         <translation>corrija el archivo de malla, o marque el gráfico NOCONTACT (solo se dibuja)</translation>
     </message>
     <message>
-        <location line="+48" />
+        <location line="+49" />
         <source>G %1 and %2 overlap by %3 mm at the initial pose: they never touch each other</source>
         <translation>G %1 y %2 se traslapan %3 mm en la pose inicial: nunca se tocan entre sí</translation>
     </message>
     <message>
         <location line="+3" />
+        <location filename="../solver/integrate/simulation.cpp" line="-1155" />
         <source>scene G %1</source>
         <translation>G %1 de la escena</translation>
     </message>
     <message>
         <location line="+0" />
+        <location filename="../solver/integrate/simulation.cpp" line="+0" />
         <source>G %1</source>
         <translation>G %1</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+7" />
         <source>a pin in its bore is meant to; solids placed inside each other by mistake: move one out</source>
         <translation>un pasador en su alojamiento debe hacerlo; si los sólidos quedaron uno dentro del otro por error, saque uno</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>these solids are not joined to each other: they start inside each other and will pass through each other; move one out (or mark one NOCONTACT if it is only drawn)</source>
+        <translation>estos sólidos no están unidos entre sí: parten uno dentro del otro y se atravesarán; saque uno (o márquelo NOCONTACT si solo se dibuja)</translation>
     </message>
 </context>
 <context>
@@ -7947,7 +7964,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::MainWindow</name>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+162" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+165" />
         <source>Export</source>
         <translation>Exportar</translation>
     </message>
@@ -8104,12 +8121,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
     </message>
     <message>
         <location line="-146" />
-        <location line="+255" />
+        <location line="+260" />
         <source>Load Scene</source>
         <translation>Cargar escena</translation>
     </message>
     <message>
-        <location line="-108" />
+        <location line="-113" />
         <source>&amp;None</source>
         <translation>&amp;Ninguna</translation>
     </message>
@@ -8178,17 +8195,17 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>C %1</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+8" />
         <source>Keyboard Controls</source>
         <translation>Controles de teclado</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>With the 3D view focused, hold a key to open a valve:</source>
         <translation>Con la vista 3D activa, mantenga presionada una tecla para abrir una válvula:</translation>
     </message>
     <message>
-        <location line="-45" />
+        <location line="-47" />
         <source>&amp;Help</source>
         <translation>Ay&amp;uda</translation>
     </message>
@@ -8203,7 +8220,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>&amp;Acerca de Padrob Studio</translation>
     </message>
     <message>
-        <location line="+60" />
+        <location line="+65" />
         <location line="+68" />
         <source>Open Model</source>
         <translation>Abrir modelo</translation>
@@ -8216,13 +8233,13 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 %2</translation>
     </message>
     <message>
-        <location line="-238" />
-        <location line="+306" />
+        <location line="-243" />
+        <location line="+311" />
         <source>Padrob models (*.pad);;All files (*)</source>
         <translation>Modelos Padrob (*.pad);;Todos los archivos (*)</translation>
     </message>
     <message numerus="yes">
-        <location line="-520" />
+        <location line="-525" />
         <source>%n attempt(s) kept while the trainee records could not be written were added to them.</source>
         <translation>
             <numerusform>Se agregó a los registros de los aprendices %n intento guardado mientras no se podían escribir.</numerusform>
@@ -8297,7 +8314,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>C %1 %2</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+10" />
+        <source>Mouse in the 3D view: left drag orbits, middle drag or Shift + left drag pans, the wheel zooms, a double click frames the model. Ctrl + left drag on a body pushes it while the simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go.</source>
+        <translation>Ratón en la vista 3D: arrastrar con el botón izquierdo hace girar la vista, arrastrar con el botón central o con Mayús + botón izquierdo la desplaza, la rueda acerca o aleja, un doble clic encuadra el modelo. Ctrl + arrastrar con el botón izquierdo sobre un cuerpo lo empuja mientras corre la simulación (un resorte tira del punto tomado hacia el cursor); suelte el botón para soltarlo.</translation>
+    </message>
+    <message>
+        <location line="+36" />
         <source>%1
 
 The 3D view goes on without this scene.</source>
@@ -9517,7 +9539,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
 <context>
     <name>studio::SimulationRunner</name>
     <message>
-        <location filename="../ide/studio/sim/simulation_runner.cpp" line="+453" />
+        <location filename="../ide/studio/sim/simulation_runner.cpp" line="+456" />
         <source>The simulation stopped: %1</source>
         <translation>La simulación se detuvo: %1</translation>
     </message>
@@ -10617,7 +10639,7 @@ Id: %3</translation>
         <translation>Gráfico %1 (cuerpo %2): la malla "%3" se dibuja como una caja: %4.</translation>
     </message>
     <message>
-        <location filename="../ide/studio/view/viewport.cpp" line="+344" />
+        <location filename="../ide/studio/view/viewport.cpp" line="+347" />
         <source>Iso</source>
         <translation>Iso</translation>
     </message>

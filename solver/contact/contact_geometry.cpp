@@ -11,6 +11,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 namespace solver {
 
@@ -43,6 +45,31 @@ double clampedRestitution(double zeta)
         if (x <= 0 || force(x, v) <= 0) return std::max(0.0, -v);
     }
     return 0;
+}
+
+/// A depth [m] in millimetres, to 0.1 mm.
+std::string millimetres(double d)
+{
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.1f", d * 1000);
+    return buf;
+}
+
+/// Whether two bodies (tree indices, −1: the ground and the scene) are joined to each
+/// other: one is the other's parent through a joint (a pin in its bore, a turret on its
+/// base plate), or a loop's closing joint joins them. A free joint (T 3) joins nothing:
+/// a free body placed inside what should carry it is a mistake.
+bool joined(const Model& model, int a, int b)
+{
+    auto jointParent = [&model](int body) {
+        if (body < 0 || model.freeSlot[body] == 5) return -2;  // the ground, a free body: no parent
+        return model.parent[body];
+    };
+    if (a == b) return true;
+    if (jointParent(a) == b || jointParent(b) == a) return true;
+    for (const CutJoint& c : model.cuts)
+        if ((c.body1 == a && c.body2 == b) || (c.body1 == b && c.body2 == a)) return true;
+    return false;
 }
 
 }  // namespace
@@ -124,16 +151,27 @@ std::shared_ptr<const CompiledContact> compileContact(const ModelSpec& spec, con
                     depth = std::max(depth, result.getContact(k).penetration_depth);
                 if (depth <= kInitialOverlap) continue;
                 geometry->excluded.emplace_back(std::min(a, ib), std::max(a, ib));
+                const ContactShape& sa = geometry->shapes[a];
                 const ContactShape& sb = geometry->shapes[b];
-                diags.add(Severity::Note, "contact-overlap", where[a],
-                          trText("Diagnostics", "G %1 and %2 overlap by %3 mm at the initial pose: they never touch "
-                                                "each other")
-                              .with(std::to_string(geometry->shapes[a].graphicId))
-                              .with((sb.scene ? trText("Diagnostics", "scene G %1") : trText("Diagnostics", "G %1"))
-                                        .with(std::to_string(sb.graphicId)))
-                              .with(std::to_string(static_cast<int>(std::lround(depth * 1000)))),
-                          trText("Diagnostics", "a pin in its bore is meant to; solids placed inside each other by "
-                                                "mistake: move one out"));
+                const Text what =
+                    trText("Diagnostics", "G %1 and %2 overlap by %3 mm at the initial pose: they never touch "
+                                          "each other")
+                        .with(std::to_string(sa.graphicId))
+                        .with((sb.scene ? trText("Diagnostics", "scene G %1") : trText("Diagnostics", "G %1"))
+                                  .with(std::to_string(sb.graphicId)))
+                        .with(millimetres(depth));
+                // two solids joined by a joint are meant to (a pin in its bore); others
+                // were placed inside each other by mistake
+                if (joined(model, sa.body, sb.body)) {
+                    diags.add(Severity::Note, "contact-overlap", where[a], what,
+                              trText("Diagnostics", "a pin in its bore is meant to; solids placed inside each other "
+                                                    "by mistake: move one out"));
+                } else {
+                    diags.add(Severity::Warning, "contact-deep-overlap", where[a], what,
+                              trText("Diagnostics", "these solids are not joined to each other: they start inside "
+                                                    "each other and will pass through each other; move one out (or "
+                                                    "mark one NOCONTACT if it is only drawn)"));
+                }
             }
         }
         std::sort(geometry->excluded.begin(), geometry->excluded.end());

@@ -1,6 +1,7 @@
 #include "solver/integrate/simulation.h"
 
 #include "solver/contact/contact_forces.h"
+#include "solver/contact/contact_geometry.h"
 #include "solver/dynamics/applied_forces.h"
 #include "solver/dynamics/constraints.h"
 #include "solver/dynamics/drives.h"
@@ -93,6 +94,22 @@ Text SimulationEvent::describeText(const Model& model) const
                                                  "ahead of the oil)")
                          : trText("Diagnostics", "t=%1 s: joint %2 no longer cavitates"))
             .with(t0).with(who);
+    }
+    case Kind::DeepContact: {
+        const ContactGeometry* g = model.contact ? model.contact->geometry.get() : nullptr;
+        auto solid = [g](int shape) {
+            if (!g || shape < 0 || shape >= static_cast<int>(g->shapes.size())) return plainText("?");
+            const ContactShape& s = g->shapes[static_cast<std::size_t>(shape)];
+            return (s.scene ? trText("Diagnostics", "scene G %1") : trText("Diagnostics", "G %1"))
+                .with(std::to_string(s.graphicId));
+        };
+        char mm[32];
+        std::snprintf(mm, sizeof mm, "%.1f", value * 1000);
+        return (side > 0 ? trText("Diagnostics", "t=%1 s: %2 and %3 overlap by %4 mm, deeper than the contact pushes "
+                                                 "back for (a drive stronger than the contact, or a fast hit): they are "
+                                                 "pushed apart gently")
+                         : trText("Diagnostics", "t=%1 s: %2 and %3 no longer overlap deeply (%4 mm)"))
+            .with(t0).with(solid(shapeA)).with(solid(shapeB)).with(mm);
     }
     case Kind::LoopLocked: {
         std::string joints;
@@ -409,6 +426,8 @@ Simulation::Simulation(std::shared_ptr<const Model> model, const SimulationOptio
     m_fluidRelief.assign(m_model->circuits.size(), 0);
     m_fluidCavitation.assign(m_model->circuits.size(), 0);
     m_pumpSaturated.assign(m_model->pumps.size(), 0);
+    m_deepContacts.clear();
+    if (m_model->contact) m_deepContacts.reserve(kMaxContacts);
 }
 
 void Simulation::initialPressures()
@@ -449,6 +468,46 @@ void Simulation::initialPressures()
         else m_state.fluid[i + 2] = -force / k.areaB;
     }
     m_positionsAt.setConstant(std::numeric_limits<double>::quiet_NaN());  // m_data was used as scratch
+}
+
+void Simulation::contactEvents(std::vector<SimulationEvent>& events)
+{
+    const double cap = m_model->contact->depthCap;
+    auto deepest = [this](int a, int b) {
+        double d = 0;
+        for (const ContactPoint& c : m_data.contacts)
+            if (c.shapeA == a && c.shapeB == b) d = std::max(d, c.depth);
+        return d;
+    };
+    auto event = [&](int a, int b, int side, double depth) {
+        SimulationEvent e;
+        e.kind = SimulationEvent::Kind::DeepContact;
+        e.t = m_state.t;
+        e.joint = -1;
+        e.side = side;
+        e.value = depth;
+        e.shapeA = a;
+        e.shapeB = b;
+        events.push_back(e);
+    };
+    // the pairs that came out of it (below half the cap: no chatter at the cap)
+    for (std::size_t i = 0; i < m_deepContacts.size();) {
+        const auto [a, b] = m_deepContacts[i];
+        const double d = deepest(a, b);
+        if (d < 0.5 * cap) {
+            event(a, b, -1, d);
+            m_deepContacts.erase(m_deepContacts.begin() + static_cast<std::ptrdiff_t>(i));
+        } else {
+            ++i;
+        }
+    }
+    for (const ContactPoint& c : m_data.contacts) {
+        if (c.depth <= cap) continue;
+        const std::pair<int, int> pair(c.shapeA, c.shapeB);
+        if (std::find(m_deepContacts.begin(), m_deepContacts.end(), pair) != m_deepContacts.end()) continue;
+        if (m_deepContacts.size() < kMaxContacts) m_deepContacts.push_back(pair);
+        event(c.shapeA, c.shapeB, +1, deepest(c.shapeA, c.shapeB));
+    }
 }
 
 void Simulation::fluidEvents(std::vector<SimulationEvent>& events)
@@ -1117,6 +1176,7 @@ bool Simulation::advanceSpan(double tEnd, std::vector<SimulationEvent>& events, 
         }
     }
     if (!m_model->circuits.empty()) fluidEvents(events);
+    if (m_model->contact) contactEvents(events);
     return true;
 }
 

@@ -78,7 +78,11 @@ struct SimulationEvent {
     /// again. PumpSaturation: a pump's sections draw more than its Qmax (side +1) or no
     /// longer do (side −1). Cavitation: a fluid-power chamber's pressure is held at 0 while
     /// the flow would take it lower (side +1), or no longer is (side −1).
-    enum class Kind { LimitHit, LimitLeave, ReliefOpen, ReliefClose, Weld, Release, LoopLocked, PumpSaturation, Cavitation };
+    /// DeepContact (CONTACT): two solids overlap deeper than the contact law pushes for
+    /// (CompiledContact::depthCap: a drive stronger than the contact, a fast hit), side +1,
+    /// or again less than half that, side −1; shapeA, shapeB name them, value is the depth.
+    enum class Kind { LimitHit, LimitLeave, ReliefOpen, ReliefClose, Weld, Release, LoopLocked, PumpSaturation, Cavitation,
+                      DeepContact };
     Kind kind = Kind::LimitHit;
     double t = 0;    ///< [s]
     int joint = 0;   ///< tree index
@@ -89,6 +93,7 @@ struct SimulationEvent {
     double value = 0;  ///< the limit (modeler coordinate) or the relief force [N or N m]
     int body = -1, body2 = -1;  ///< Weld, Release: bodies a and b (tree indices, −1 = ground)
     int pump = -1;              ///< PumpSaturation: the pump's index in Model::pumps
+    int shapeA = -1, shapeB = -1;  ///< DeepContact: the two solids (ContactGeometry::shapes)
 
     /// One line, e.g. "t=1.2345 s: joint 2 LEVANTE PLUMA hit its upper limit 1.617 m".
     std::string describe(const Model& model) const;
@@ -261,6 +266,9 @@ private:
     std::vector<int> m_fluidRelief;    // per circuit: +1 chamber A, −1 chamber B at the relief, 0
     std::vector<int> m_fluidCavitation;  // per circuit: Data::cavitation as last reported
     std::vector<char> m_pumpSaturated;   // per pump
+    /// Contact: the deep overlaps since the last call (DeepContact), from data().
+    void contactEvents(std::vector<SimulationEvent>& events);
+    std::vector<std::pair<int, int>> m_deepContacts;  // the pairs reported deep (shape a, shape b)
 };
 
 }  // namespace solver

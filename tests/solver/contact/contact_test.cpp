@@ -141,7 +141,7 @@ TEST(Contact, SolidsOverlappingAtTheStartAndNoContactGraphicsNeverTouch)
     const CompiledModel noted = solver::compileText(dropModel(100, 0.45), "o.pad");
     ASSERT_EQ(noted.diagnostics.size(), 1u);
     EXPECT_EQ(noted.diagnostics.begin()->code, "contact-overlap");
-    EXPECT_EQ(noted.diagnostics.begin()->message, "G 1 and G 2 overlap by 50 mm at the initial pose: they never touch each other");
+    EXPECT_EQ(noted.diagnostics.begin()->message, "G 1 and G 2 overlap by 50.0 mm at the initial pose: they never touch each other");
     Simulation a(overlapping, rk4(1e-3));
     run(a, 0.3);
     EXPECT_NEAR(a.state().q[0], 0.45 - 0.5 * 9.81 * 0.09, 1e-6);

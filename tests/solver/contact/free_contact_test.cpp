@@ -1,7 +1,9 @@
 // Contact dynamics with free bodies (C id T 3; issue 22): a 4.5 t box rests on the
 // floor for 10 s without drifting; a block on a 20° incline (MU 0.5) holds, on a 35°
 // one slides at g(sin θ − μ cos θ) within 3 %; a stack of three boxes stands still for
-// 10 s; a free ball with E 0.5 bounces to about e²·h; energy never grows with E 0.
+// 10 s; a free ball with E 0.5 bounces to about e²·h; energy never grows with E 0; a
+// free body placed inside the floor is a warning naming both solids and the depth; a
+// hit deeper than the contact law pushes for is an event, separated gently, no NaN.
 
 #include "solver/integrate/simulation.h"
 #include "tests/solver/test_models.h"
@@ -150,6 +152,70 @@ TEST(FreeContact, FreeBallBouncesToAboutRestitutionSquaredTimesHeight)
     EXPECT_NEAR(peak, e * e * h, 0.10 * e * e * h);  // 1 ms step: docs/contact.md
     EXPECT_LT(std::abs(sim.data().X_wb[b].translation().x()), 1e-9);  // straight up and down
     std::printf("free ball: bounce %.4f m (e^2 h = %.4f m)\n", peak, e * e * h);
+}
+
+TEST(FreeContact, AFreeBodyStartingInsideTheFloorIsAWarningNamingBothSolidsAndTheDepth)
+{
+    // 3 cm into the floor: the two never touch (CONTACT's rule), and since a free body
+    // is joined to nothing that is a mistake, said as a warning (a pin in its bore, two
+    // solids joined by a joint, is a note: contact_test.cpp)
+    const CompiledModel compiled =
+        solver::compileText("GRAVITY 0 0 -9.81\nCONTACT\n" + freeBox(1, 100, 1, 0, 0, 0.47) + kFloor, "inside.pad");
+    ASSERT_TRUE(compiled.model);
+    ASSERT_EQ(compiled.diagnostics.size(), 1u);
+    const Diagnostic& d = *compiled.diagnostics.begin();
+    EXPECT_EQ(d.severity, Severity::Warning);
+    EXPECT_EQ(d.code, "contact-deep-overlap");
+    EXPECT_EQ(d.message, "G 1 and G 100 overlap by 30.0 mm at the initial pose: they never touch each other");
+    EXPECT_NE(d.hint.find("move one out"), std::string::npos);
+    EXPECT_EQ(d.pos.line, 7);  // the free box's G statement
+    // 0.9 mm in: within the tolerance, a plain contact (it rests)
+    const CompiledModel resting =
+        solver::compileText("GRAVITY 0 0 -9.81\nCONTACT\n" + freeBox(1, 100, 1, 0, 0, 0.4991) + kFloor, "r.pad");
+    ASSERT_TRUE(resting.model);
+    EXPECT_EQ(resting.diagnostics.size(), 0u);
+}
+
+TEST(FreeContact, AHitDeeperThanTheContactHoldsIsAnEventAndIsSeparatedGentlyWithoutNaN)
+{
+    // a 1 t box falls 20 m: it hits the floor at 19.8 m/s, deeper than the 10 mm the
+    // spring pushes for
+    auto model = test::compileText("GRAVITY 0 0 -9.81\nCONTACT\n" + freeBox(1, 1000, 1, 0, 0, 20.5) + kFloor);
+    ASSERT_TRUE(model);
+    const int b = model->bodyIndex(1);
+    Simulation sim(model, rk4(1e-3));
+    std::vector<SimulationEvent> events, all;
+    std::string error;
+    double deepest = 0, rebound = 0;
+    bool landed = false;
+    while (sim.state().t < 6.0) {
+        events.clear();
+        ASSERT_TRUE(sim.advanceTo(sim.state().t + 1e-3, events, error)) << error;
+        all.insert(all.end(), events.begin(), events.end());
+        for (int i = 0; i < model->nq; ++i) ASSERT_TRUE(std::isfinite(sim.state().q[i])) << "t " << sim.state().t;
+        const double z = sim.data().X_wb[b].translation().z() - 0.5;
+        deepest = std::min(deepest, z);
+        if (z < 0) landed = true;
+        if (landed) rebound = std::max(rebound, z);
+    }
+    ASSERT_TRUE(landed);
+    EXPECT_LT(deepest, -0.01);  // it went deeper than the spring's cap …
+    EXPECT_LT(rebound, 0.05);   // … and was not thrown back (e = 0)
+    EXPECT_NEAR(sim.data().X_wb[b].translation().z(), 0.5, 2e-3);  // it rests on the floor
+    EXPECT_LT(sim.data().vel[b].norm(), 1e-4);
+    // one event into the deep overlap, one out of it, naming both solids
+    std::vector<SimulationEvent> deep;
+    for (const SimulationEvent& e : all)
+        if (e.kind == SimulationEvent::Kind::DeepContact) deep.push_back(e);
+    ASSERT_EQ(deep.size(), 2u);
+    EXPECT_EQ(deep[0].side, +1);
+    EXPECT_GT(deep[0].value, 0.01);
+    EXPECT_EQ(deep[1].side, -1);
+    EXPECT_GT(deep[1].t, deep[0].t);
+    const std::string said = deep[0].describe(*model);
+    EXPECT_NE(said.find("G 1 and G 100 overlap by"), std::string::npos) << said;
+    EXPECT_NE(deep[1].describe(*model).find("no longer overlap deeply"), std::string::npos);
+    std::printf("20 m drop: %.1f mm deep, rebound %.2f mm; %s\n", -deepest * 1e3, rebound * 1e3, said.c_str());
 }
 
 }  // namespace
