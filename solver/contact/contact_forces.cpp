@@ -115,7 +115,9 @@ void contactPoints(Scratch& s, int a, int b)
     bool primitives = false;
     asPrimitive(*oa.collisionGeometry(), [&](const auto& sa) {
         primitives = asPrimitive(*ob.collisionGeometry(), [&](const auto& sb) {
-            s.solver.shapeIntersect(sa, oa.getTransform(), sb, ob.getTransform(), &s.points);
+            // FCL's libccd pairs (cylinders, cones, ellipsoids) add a point even when the
+            // shapes do not touch, its fields unset: only a hit's points count
+            if (!s.solver.shapeIntersect(sa, oa.getTransform(), sb, ob.getTransform(), &s.points)) s.points.clear();
         });
     });
     if (primitives) return;
