@@ -115,7 +115,9 @@ void contactPoints(Scratch& s, int a, int b)
     bool primitives = false;
     asPrimitive(*oa.collisionGeometry(), [&](const auto& sa) {
         primitives = asPrimitive(*ob.collisionGeometry(), [&](const auto& sb) {
-            s.solver.shapeIntersect(sa, oa.getTransform(), sb, ob.getTransform(), &s.points);
+            // FCL's GJK pairs (a cylinder, a cone, an ellipsoid) append a point even when the
+            // shapes are apart, its normal, position and depth never written: only a hit counts
+            if (!s.solver.shapeIntersect(sa, oa.getTransform(), sb, ob.getTransform(), &s.points)) s.points.clear();
         });
     });
     if (primitives) return;
