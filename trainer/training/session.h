@@ -239,6 +239,10 @@ private:
     // grip
     bool m_grasped = false, m_wasClosed = false, m_wasOpen = true, m_fixed = false;
     bool m_loadResting = false;  // grasped, not yet lifted clear of what it lay on
+    // released during a PLACE goal under CONTACT: the load settles by contact, and the goal
+    // is decided once it has rested (kSettleStill) or after kSettleLimit (placed or dropped)
+    bool m_settling = false;
+    double m_settleStart = 0.0, m_stillSince = -1.0;
     // goal
     double m_goalStart = 0.0;
     bool m_enteredGoal = false;
