@@ -2,10 +2,12 @@
 
 #include "trainer/io/read_file.h"
 
+#include "solver/contact/contact_geometry.h"
 #include "solver/kinematics/kinematics.h"
 
 #include <QCoreApplication>
 #include <QLocale>
+#include <QScopeGuard>
 
 #include <algorithm>
 #include <cmath>
@@ -319,6 +321,7 @@ bool TutorialSession::step()
         return false;
     }
     handleSolverEvents(m_simEvents, m_qdBefore);
+    recordImpacts();
     m_progress.t = time();
     checkGrip();
     if (!ended()) checkGoal();
@@ -544,6 +547,22 @@ void TutorialSession::goalDone()
     if (m_progress.goal >= int(goals.size())) end("completed", true);
 }
 
+void TutorialSession::recordImpacts()
+{
+    const solver::Model& m = *m_tutorial->model;
+    if (!m.contact || !m.contact->geometry) return;
+    m_impact.resize(std::size_t(m.nb), 0.0);
+    const std::vector<solver::ContactShape>& shapes = m.contact->geometry->shapes;
+    for (const solver::ContactPoint& c : m_sim->data().contacts) {
+        const double approach = -c.normalSpeed;
+        if (!(approach > 0)) continue;
+        for (const int shape : {c.shapeA, c.shapeB}) {
+            const int body = shapes[std::size_t(shape)].body;
+            if (body >= 0) m_impact[std::size_t(body)] = std::max(m_impact[std::size_t(body)], approach);
+        }
+    }
+}
+
 void TutorialSession::checkClearances()
 {
     const Tutorial& t = *m_tutorial;
@@ -552,6 +571,8 @@ void TutorialSession::checkClearances()
     const Scoring& sc = t.scoring();
     m_lastCheck = time();
     m_world->update(d);
+    // the impacts recorded since the last check count for this one only
+    const auto forgetImpacts = qScopeGuard([this] { std::fill(m_impact.begin(), m_impact.end(), 0.0); });
     // the load counts while carried, except near the place it is being set down on (its
     // SEAT zone: a liner slid into its slot touches its neighbours): there only a hard
     // hit counts
@@ -574,7 +595,9 @@ void TutorialSession::checkClearances()
     }
     auto pointSpeed = [&](int body, const Eigen::Vector3d& world) {
         const std::size_t b = std::size_t(body);
-        return (d.vel[b] + d.omega[b].cross(world - d.X_wb[b].translation())).norm();
+        const double now = (d.vel[b] + d.omega[b].cross(world - d.X_wb[b].translation())).norm();
+        // under CONTACT the touch has already stopped it: the speed it came in at
+        return b < m_impact.size() ? std::max(now, m_impact[b]) : now;
     };
     if (sc.avoidScene && seating) {
         const solver::Clearance c = m_world->bodyToScene(t.loadBody);

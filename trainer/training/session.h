@@ -250,6 +250,10 @@ private:
     bool m_touching = false, m_near = false;
     std::vector<char> m_inZone;
     std::vector<char> m_skip;  // bodies left out of the scene query
+    // CONTACT: per body, the fastest approach of its contacts since the last clearance
+    // check [m/s]: contact stops a hit within a step, before the check sees the touch
+    std::vector<double> m_impact;
+    void recordImpacts();
     double m_lastCheck = -1.0;
     // tracking
     std::vector<Eigen::Vector3d> m_jerkWindow;  // the last four positions at jerkInterval
