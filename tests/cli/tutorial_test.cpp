@@ -40,6 +40,20 @@ TEST(CliTutorial, EveryShippedTutorialChecksCleanAndItsDemonstrationPasses)
     }
 }
 
+TEST(CliTutorial, EveryShippedTutorialFailsWhenTheOperatorDoesNothing)
+{
+    // levers left alone for 5 s: the liner stays on its cart, no goal is done
+    const std::string path = test::writeTemp("idle.path", "wait=5\n");
+    for (const std::string& t : shippedTutorials()) {
+        const std::string log = test::writeTemp("idle.log", "");
+        padrob("tutorial " + t + " --autopilot '" + path + "' --record '" + log + "'");
+        const test::CliRun run = padrob("tutorial " + t + " --input '" + log + "' --json");
+        EXPECT_EQ(run.status, 1) << t << "\n" << run.out << run.err;
+        EXPECT_NE(run.out.find("\"passed\": false"), std::string::npos) << t << "\n" << run.out;
+        EXPECT_NE(run.out.find("\"end_reason\": \"input-ended\""), std::string::npos) << t << "\n" << run.out;
+    }
+}
+
 TEST(CliTutorial, ACarelessRunFailsWithThePenaltiesItEarned)
 {
     // the claws driven straight into the liner on its cart instead of around its edge

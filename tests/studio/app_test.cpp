@@ -22,6 +22,8 @@
 #include "ide/studio/view/viewport_layout.h"
 #include "solver/integrate/simulation.h"
 
+#include <cmath>
+
 #include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
@@ -453,6 +455,38 @@ private slots:
         QVERIFY(difference(images[0], images[1]) > 0.02);
         QVERIFY(difference(images[2], images[0]) > 0.01);
         QVERIFY(difference(images[2], images[1]) > 0.01);
+    }
+
+    void aModelWithContactTouchesTheSceneLoaded()
+    {
+        // a free box over nothing of its own: with the scene's slab under it, it rests on it
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString model = dir.filePath("box.pad"), slab = dir.filePath("slab.pad");
+        {
+            QFile m(model), sc(slab);
+            QVERIFY(m.open(QIODevice::WriteOnly) && sc.open(QIODevice::WriteOnly));
+            m.write("GRAVITY 0 0 -9.81\nCONTACT\nB 1 50 2 2 2\nC 1 T 3\nB1 0 P1 0 0 0.25 A1 1 0 0 R1 0 1 0\n"
+                    "B2 1 P2 0 0 0 A2 1 0 0 R2 0 1 0\nG 1 B 1 BOX 0.5 0.5 0.5\n");
+            sc.write("G 1 B 0 BOX 4 4 0.2 POS 0 0 -0.1\n");
+        }
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(openAndWait(w, model));
+        auto heightAfterASecond = [&] {
+            const quint64 serial = w.bundle()->serial;
+            w.run();
+            QTest::qWaitFor([&] { auto s = w.runner()->latest(); return s && s->bundle == w.bundle() && s->t > 1.0; }, 10000);
+            w.pause();
+            const auto s = w.runner()->latest();
+            return s && s->bundle && s->bundle->serial == serial ? s->bodyPoses[std::size_t(w.bundle()->model->bodyIndex(1))].translation().z()
+                                                               : std::nan("");
+        };
+        QVERIFY(w.loadScene(slab));
+        QVERIFY(std::abs(heightAfterASecond() - 0.25) < 1e-3);  // resting on the slab
+        w.clearScene();
+        QVERIFY(heightAfterASecond() < -1.0);  // nothing under it: it falls
     }
 
     void aSceneIsDrawnAndABadOneKeepsTheAppUsable()

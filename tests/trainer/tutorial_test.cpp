@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -479,18 +480,77 @@ TEST(TutorialSession, ATakenLoadCountsAgainstTheSceneOnceItHasComeClearOfItsCart
     auto t = load(text, d);
     ASSERT_TRUE(t) << dump(d);
     TutorialSession s(t);
-    const int z = t->model->jointIndex(12);
+    // the liner is a free body there: its height is its centre of mass's
+    auto z = [&] { return solver::comPosition(*t->model, s.simulation().data(), t->model->bodyIndex(15)).z(); };
     drive(s, {{8, -1.0}, {9, 1.0}}, 8.0);  // the claws shut on the liner's edge
     ASSERT_EQ(s.result().count(TutorialEvent::Kind::Grasp), 1) << s.result().events.size();
-    const double z0 = s.simulation().state().q[z];
+    const double z0 = z();
     drive(s, {{2, 0.06}}, 6.0);  // the boom, gently, until the liner is off the timbers
-    EXPECT_GT(s.simulation().state().q[z], z0 + 0.01);
+    EXPECT_GT(z(), z0 + 0.01);
     EXPECT_EQ(s.result().count(TutorialEvent::Kind::Hit), 0) << "taking the liner is not a hit";
     EXPECT_GT(s.progress().clearance, 0.0);
     // once clear, the liner counts: set back down on the cart, it touches it
     drive(s, {{2, -0.03}}, 12.0);
-    EXPECT_LT(s.simulation().state().q[z], z0 + 0.005);
+    EXPECT_LT(z(), z0 + 0.005);
     EXPECT_EQ(s.result().count(TutorialEvent::Kind::Hit), 1);
+}
+
+TEST(TutorialSession, UnderContactAReleasedLinerIsJudgedWhereItComesToRest)
+{
+    // liner_station_fluid: the liner is a free body under CONTACT. Taken, lifted off its
+    // timbers and let go, it falls back onto them; the PLACE goal is decided once it rests
+    auto text = [](const std::string& place) {
+        return "TUTORIAL X LEVEL 1\nTITLE ES \"Prueba\" EN \"Test\"\n"
+               "MODEL \"" + kSource + "/models/liner_station_fluid.pad\"\n"
+               "SET 1 -90 DEG\nSET 2 1.46095\nSET 3 0.45\nSET 5 0.413\nDROP PENALTY 20\n"
+               "GRIP LOAD 15 AT 0 -0.285 -0.065767 TOOL 6 AT 0 0.48 0 TOL 0.03 ANGTOL 3 DEG\n"
+               "CLAW 8 CLOSE -0.12 OPEN -0.03\nCLAW 9 CLOSE 0.12 OPEN 0.03\nFINGERS 7 8 9\n"
+               "GOAL take GRASP\n NAME ES \"Tome\" EN \"Take\"\n"
+               "GOAL put PLACE AT " + place + "\n NAME ES \"Póngala\" EN \"Put it\"\n";
+    };
+    const Eigen::Vector3d onCart(4.137788, 0, 0.228);
+    for (const bool onItsPlace : {true, false}) {
+        solver::Diagnostics d;
+        // its place: where it lay, on the cart (FIX: bolted there); elsewhere: 1 m up
+        auto t = load(text(onItsPlace ? "4.137788 0 0.228 TOL 0.02 FIX" : "4.137788 0 1.228 TOL 0.02"), d);
+        ASSERT_TRUE(t) << dump(d);
+        ASSERT_TRUE(t->model->contact);
+        TutorialSession s(t);
+        const int liner = t->model->bodyIndex(15);
+        auto com = [&] { return solver::comPosition(*t->model, s.simulation().data(), liner); };
+        drive(s, {{8, -1.0}, {9, 1.0}}, 8.0);
+        ASSERT_TRUE(s.progress().grasped);
+        drive(s, {{2, 0.06}}, 6.0);  // off the timbers
+        ASSERT_GT(com().z(), onCart.z() + 0.01);
+        // the claws open: released in the air
+        for (int k = 0; k < 600 && s.result().count(TutorialEvent::Kind::Release) == 0; ++k) {
+            drive(s, {{8, 1.0}, {9, -1.0}}, 0.01);
+        }
+        TutorialResult r = s.result();
+        ASSERT_EQ(r.count(TutorialEvent::Kind::Release), 1);
+        EXPECT_GT(com().z(), onCart.z() + 0.005) << "let go above its timbers";
+        EXPECT_EQ(r.count(TutorialEvent::Kind::Drop), 0) << "not judged while it falls";
+        EXPECT_FALSE(r.completed);
+        drive(s, {{8, 1.0}, {9, -1.0}}, 4.0);
+        r = s.result();
+        EXPECT_NEAR(com().z(), onCart.z(), 2e-3) << "fallen back onto its timbers";
+        if (onItsPlace) {
+            ASSERT_TRUE(s.ended());
+            EXPECT_TRUE(r.completed);
+            EXPECT_EQ(r.count(TutorialEvent::Kind::Drop), 0);
+            EXPECT_EQ(s.simulation().state().welds.size(), 1u) << "bolted once at rest";
+        } else {
+            EXPECT_FALSE(s.ended());
+            ASSERT_EQ(r.count(TutorialEvent::Kind::Drop), 1) << "at rest out of place";
+            const auto drop = std::find_if(r.events.begin(), r.events.end(),
+                                           [](const TutorialEvent& e) { return e.kind == TutorialEvent::Kind::Drop; });
+            EXPECT_DOUBLE_EQ(drop->penalty, 20.0);
+            const auto release = std::find_if(r.events.begin(), r.events.end(), [](const TutorialEvent& e) {
+                return e.kind == TutorialEvent::Kind::Release;
+            });
+            EXPECT_GE(drop->t, release->t + 0.5) << "judged once it has rested 0.5 s, not at the release";
+        }
+    }
 }
 
 TEST(TutorialSession, EnteringAWorkersZoneIsAPenaltyAndTouchingThemEndsTheAttempt)

@@ -2,10 +2,12 @@
 
 #include "trainer/io/read_file.h"
 
+#include "solver/contact/contact_geometry.h"
 #include "solver/kinematics/kinematics.h"
 
 #include <QCoreApplication>
 #include <QLocale>
+#include <QScopeGuard>
 
 #include <algorithm>
 #include <cmath>
@@ -100,6 +102,13 @@ QString TutorialEvent::label(Kind k)
 namespace {
 
 constexpr double kLiftedClear = 0.005;  // [m] a load taken counts once this clear of the scene
+// a load released under CONTACT has come to rest when its centre of mass moves slower than
+// kRestSpeed and it turns slower than kRestTurn for kSettleStill; not at rest kSettleLimit
+// after its release, it is dropped
+constexpr double kRestSpeed = 0.005;   // [m/s]
+constexpr double kRestTurn = 0.01;     // [rad/s]
+constexpr double kSettleStill = 0.5;   // [s]
+constexpr double kSettleLimit = 10.0;  // [s]
 
 /// A fault event's sentence from its detail ("hose-burst LEVANTE PLUMA"…): the drive as
 /// the model names it, the person in `language` (by `subject`, else by the English name).
@@ -312,6 +321,7 @@ bool TutorialSession::step()
         return false;
     }
     handleSolverEvents(m_simEvents, m_qdBefore);
+    recordImpacts();
     m_progress.t = time();
     checkGrip();
     if (!ended()) checkGoal();
@@ -410,6 +420,7 @@ void TutorialSession::checkGrip()
             if (m_sim->weld(t.toolBody, t.loadBody, m_simEvents, error)) {
                 m_grasped = true;
                 m_loadResting = true;
+                m_settling = false;
                 addEvent(TutorialEvent::Kind::Grasp, dist, 0.0, {});
             }
         } else {
@@ -422,7 +433,13 @@ void TutorialSession::checkGrip()
         addEvent(TutorialEvent::Kind::Release, 0.0, 0.0, {});
         const std::vector<Goal>& goals = t.spec.goals;
         const bool placing = m_progress.goal < int(goals.size()) && goals[std::size_t(m_progress.goal)].kind == Goal::Kind::Place;
-        if (placing && m_progress.withinTolerance) {
+        if (placing && m.contact) {
+            // contact holds it (its seat, its neighbours) or lets it fall: judged at rest (checkGoal)
+            m_settling = true;
+            m_settleStart = time();
+            m_stillSince = -1.0;
+        } else if (placing && m_progress.withinTolerance) {
+            // without contact nothing but its stops can hold it: placed where it was let go
             const Goal& g = goals[std::size_t(m_progress.goal)];
             if (g.fix && m_sim->weld(-1, t.loadBody, m_simEvents, error)) m_fixed = true;
             goalDone();
@@ -478,9 +495,31 @@ void TutorialSession::checkGoal()
     case Goal::Kind::Place: {
         const double dist = (solver::comPosition(m, d, t.loadBody) - g.target).norm();
         m_progress.distance = dist;
-        within = m_grasped && dist <= g.tolerance && aligned(t.loadBody);
+        within = (m_grasped || m_settling) && dist <= g.tolerance && aligned(t.loadBody);
         if (m_enteredGoal) m_result.overshoot = std::max(m_result.overshoot, dist - g.tolerance);
-        break;  // done when released within tolerance (checkGrip)
+        if (m_settling) {
+            // released under CONTACT: placed once it rests within tolerance (FIX: then
+            // bolted there), dropped when it rests elsewhere or has not come to rest
+            const std::size_t b = std::size_t(t.loadBody);
+            const Eigen::Vector3d com = solver::comPosition(m, d, t.loadBody);
+            const double v = (d.vel[b] + d.omega[b].cross(com - d.X_wb[b].translation())).norm();
+            const bool still = v < kRestSpeed && d.omega[b].norm() < kRestTurn;
+            if (!still) m_stillSince = -1.0;
+            else if (m_stillSince < 0) m_stillSince = time();
+            const bool rested = still && time() - m_stillSince >= kSettleStill - 1e-9;
+            if (rested || time() - m_settleStart >= kSettleLimit - 1e-9) {
+                m_settling = false;
+                if (rested && within) {
+                    std::string error;
+                    if (g.fix && m_sim->weld(-1, t.loadBody, m_simEvents, error)) m_fixed = true;
+                    m_progress.withinTolerance = true;
+                    goalDone();
+                    return;
+                }
+                addEvent(TutorialEvent::Kind::Drop, dist, t.scoring().dropPenalty, {});
+            }
+        }
+        break;  // done when released within tolerance (checkGrip) or rested there (above)
     }
     }
     m_progress.withinTolerance = within;
@@ -508,6 +547,22 @@ void TutorialSession::goalDone()
     if (m_progress.goal >= int(goals.size())) end("completed", true);
 }
 
+void TutorialSession::recordImpacts()
+{
+    const solver::Model& m = *m_tutorial->model;
+    if (!m.contact || !m.contact->geometry) return;
+    m_impact.resize(std::size_t(m.nb), 0.0);
+    const std::vector<solver::ContactShape>& shapes = m.contact->geometry->shapes;
+    for (const solver::ContactPoint& c : m_sim->data().contacts) {
+        const double approach = -c.normalSpeed;
+        if (!(approach > 0)) continue;
+        for (const int shape : {c.shapeA, c.shapeB}) {
+            const int body = shapes[std::size_t(shape)].body;
+            if (body >= 0) m_impact[std::size_t(body)] = std::max(m_impact[std::size_t(body)], approach);
+        }
+    }
+}
+
 void TutorialSession::checkClearances()
 {
     const Tutorial& t = *m_tutorial;
@@ -516,6 +571,8 @@ void TutorialSession::checkClearances()
     const Scoring& sc = t.scoring();
     m_lastCheck = time();
     m_world->update(d);
+    // the impacts recorded since the last check count for this one only
+    const auto forgetImpacts = qScopeGuard([this] { std::fill(m_impact.begin(), m_impact.end(), 0.0); });
     // the load counts while carried, except near the place it is being set down on (its
     // SEAT zone: a liner slid into its slot touches its neighbours): there only a hard
     // hit counts
@@ -538,7 +595,9 @@ void TutorialSession::checkClearances()
     }
     auto pointSpeed = [&](int body, const Eigen::Vector3d& world) {
         const std::size_t b = std::size_t(body);
-        return (d.vel[b] + d.omega[b].cross(world - d.X_wb[b].translation())).norm();
+        const double now = (d.vel[b] + d.omega[b].cross(world - d.X_wb[b].translation())).norm();
+        // under CONTACT the touch has already stopped it: the speed it came in at
+        return b < m_impact.size() ? std::max(now, m_impact[b]) : now;
     };
     if (sc.avoidScene && seating) {
         const solver::Clearance c = m_world->bodyToScene(t.loadBody);

@@ -239,6 +239,10 @@ private:
     // grip
     bool m_grasped = false, m_wasClosed = false, m_wasOpen = true, m_fixed = false;
     bool m_loadResting = false;  // grasped, not yet lifted clear of what it lay on
+    // released during a PLACE goal under CONTACT: the load settles by contact, and the goal
+    // is decided once it has rested (kSettleStill) or after kSettleLimit (placed or dropped)
+    bool m_settling = false;
+    double m_settleStart = 0.0, m_stillSince = -1.0;
     // goal
     double m_goalStart = 0.0;
     bool m_enteredGoal = false;
@@ -246,6 +250,10 @@ private:
     bool m_touching = false, m_near = false;
     std::vector<char> m_inZone;
     std::vector<char> m_skip;  // bodies left out of the scene query
+    // CONTACT: per body, the fastest approach of its contacts since the last clearance
+    // check [m/s]: contact stops a hit within a step, before the check sees the touch
+    std::vector<double> m_impact;
+    void recordImpacts();
     double m_lastCheck = -1.0;
     // tracking
     std::vector<Eigen::Vector3d> m_jerkWindow;  // the last four positions at jerkInterval

@@ -669,6 +669,8 @@ bool MainWindow::loadScene(const QString& path)
     }
     m_scenePath = QFileInfo(path).absoluteFilePath();
     m_viewports->setScene(scene.bundle);
+    m_sceneBundle = scene.bundle;
+    if (m_applied && m_applied->model->contact) applyInScene();  // its solids touch the scene's
     QSettings().setValue("scene/last", m_scenePath);
     statusBar()->showMessage(scene.note.isEmpty() ? tr("Scene: %1").arg(QFileInfo(path).fileName())
                                                   : tr("Scene: %1. %2").arg(QFileInfo(path).fileName(), scene.note),
@@ -680,6 +682,8 @@ void MainWindow::clearScene()
 {
     m_scenePath.clear();
     m_viewports->setScene(nullptr);
+    m_sceneBundle.reset();
+    if (m_applied && m_applied->model->contact) applyInScene();
     QSettings().remove("scene/last");
 }
 
@@ -696,6 +700,8 @@ bool MainWindow::restoreScene()
     }
     m_scenePath = QFileInfo(path).absoluteFilePath();
     m_viewports->setScene(scene.bundle);
+    m_sceneBundle = scene.bundle;
+    if (m_applied && m_applied->model->contact) applyInScene();
     return true;
 }
 
@@ -824,6 +830,23 @@ void MainWindow::onFileChangedOnDisk(const QString& path, bool deleted)
 void MainWindow::applyBundle(std::shared_ptr<const ModelBundle> bundle)
 {
     if (!bundle) return;
+    m_applied = std::move(bundle);
+    applyInScene();
+}
+
+void MainWindow::applyInScene()
+{
+    if (!m_applied) return;
+    solver::Diagnostics diagnostics;
+    std::shared_ptr<const ModelBundle> bundle = bundleInScene(m_applied, m_sceneBundle.get(), diagnostics);
+    if (!bundle) {
+        // the scene's solids cannot be taken in (a mesh that cannot serve): the model runs
+        // without them
+        bundle = m_applied;
+        statusBar()->showMessage(tr("The scene's solids cannot be taken into the model's contacts (a shape that cannot "
+                                    "serve): the model runs without touching them"),
+                                 15000);
+    }
     m_bundle = bundle;
     m_runner->setBundle(bundle);
     m_viewports->setBundle(bundle);

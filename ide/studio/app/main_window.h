@@ -165,7 +165,12 @@ private:
     void restoreLayout();
     void saveLayout();
 
-    std::shared_ptr<const ModelBundle> m_bundle;
+    std::shared_ptr<const ModelBundle> m_bundle;  ///< what runs: m_applied, in the scene under CONTACT
+    std::shared_ptr<const ModelBundle> m_applied;  ///< as the editor applied it
+    std::shared_ptr<const ModelBundle> m_sceneBundle;  ///< the scene loaded (nullptr: none)
+    /// Applies m_applied in m_sceneBundle (bundleInScene): with CONTACT the model touches the
+    /// scene's solids, and loading or clearing a scene compiles it again.
+    void applyInScene();
     std::unique_ptr<SimulationRunner> m_runner;
     std::unique_ptr<TutorialRunner> m_tutorialRunner;  ///< before m_station: destroyed after it
     KeyboardInput* m_keyboard = nullptr;

@@ -33,4 +33,13 @@ std::shared_ptr<const ModelBundle> makeBundle(std::shared_ptr<const solver::Comp
     return bundle;
 }
 
+std::shared_ptr<const ModelBundle> bundleInScene(const std::shared_ptr<const ModelBundle>& model,
+                                                 const ModelBundle* scene, solver::Diagnostics& diagnostics)
+{
+    if (!model || !scene || !model->model->contact) return model;
+    auto compiled = std::make_shared<const solver::CompiledModel>(solver::compileSpec(model->spec(), &scene->spec()));
+    diagnostics.append(compiled->diagnostics);
+    return makeBundle(std::move(compiled), model->filePath);
+}
+
 }  // namespace studio

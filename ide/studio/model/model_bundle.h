@@ -45,4 +45,12 @@ std::shared_ptr<const ModelBundle> makeBundleFromFile(const QString& filePath, s
 std::shared_ptr<const ModelBundle> makeBundle(std::shared_ptr<const solver::CompiledModel> compiled,
                                               const QString& filePath);
 
+/// The model that runs in `scene`: under CONTACT its solids touch the scene's
+/// (solver::compileSpec(spec, &scene), as the tutorials do; docs/contact.md), so it is
+/// compiled again with them (the same bodies and joints); without CONTACT, or without a
+/// scene, `model` itself. nullptr when it does not compile with the scene (its
+/// diagnostics appended to `diagnostics`).
+std::shared_ptr<const ModelBundle> bundleInScene(const std::shared_ptr<const ModelBundle>& model,
+                                                 const ModelBundle* scene, solver::Diagnostics& diagnostics);
+
 }  // namespace studio
