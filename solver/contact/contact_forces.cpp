@@ -14,6 +14,7 @@
 #include <fcl/narrowphase/collision_object.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 
@@ -55,6 +56,9 @@ public:
     const State* state = nullptr;
     Data* data = nullptr;
     int shape = -1;  // the moving shape being queried
+    // setContactTiming: a profiling counter, not state (changed through a const Data)
+    bool timing = false;
+    double seconds = 0;
 };
 
 Eigen::Vector3d pointVelocity(const Data& d, int body, const Eigen::Vector3d& p)
@@ -104,7 +108,7 @@ void contactPoints(Scratch& s, int a, int b)
     const fcl::CollisionObjectd& ob = *s.objects[b];
     if (oa.collisionGeometry()->getNodeType() == fcl::GEOM_BOX && ob.collisionGeometry()->getNodeType() == fcl::GEOM_BOX) {
         // what shapeIntersect does, into our list (boxBoxIntersect copies from a vector of its own)
-        Eigen::Vector3d normal;
+        Eigen::Vector3d normal = Eigen::Vector3d::Zero();
         double depth = 0;
         int code = 0;
         fcl::detail::boxBox2(static_cast<const fcl::Boxd&>(*oa.collisionGeometry()).side, oa.getTransform(),
@@ -152,7 +156,13 @@ void touch(Scratch& s, int a, int b)
         const fcl::ContactPoint<double>& fc = s.points[static_cast<std::size_t>(i)];
         Eigen::Vector3d normal = fc.normal;
         const double norm = normal.norm();
-        if (!(norm > 0) || !std::isfinite(fc.penetration_depth)) continue;
+        // FCL's normals are unit and its points lie where both solids' boxes meet; a point
+        // that is not such is not a contact (valgrind: FCL's primitive routines can hand
+        // back a point whose values were never set, which once gave a NaN step)
+        if (!(std::abs(norm - 1) < 1e-6) || !(std::abs(fc.penetration_depth) < 1) || !fc.pos.allFinite()) continue;
+        if (!s.objects[static_cast<std::size_t>(a)]->getAABB().contain(fc.pos) &&
+            !s.objects[static_cast<std::size_t>(b)]->getAABB().contain(fc.pos))
+            continue;
         normal /= norm;
         const Eigen::Vector3d p = fc.pos;
         const double depth = std::max(0.0, fc.penetration_depth);
@@ -198,21 +208,19 @@ bool broadPhaseCallback(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, vo
     const auto i1 = static_cast<int>(reinterpret_cast<std::intptr_t>(o1->getUserData()));
     const auto i2 = static_cast<int>(reinterpret_cast<std::intptr_t>(o2->getUserData()));
     const int other = i1 == s->shape ? i2 : i1;
+    // the mill's shell: a solid inside its bore cannot touch it (its AABB holds every other)
+    const ContactShape& o = s->geometry->shapes[static_cast<std::size_t>(other)];
+    if (o.tube) {
+        const fcl::AABBd& box = s->objects[static_cast<std::size_t>(s->shape)]->getAABB();
+        if (clearOfTube(o, box.center(), 0.5 * (box.max_ - box.min_).norm())) return false;
+    }
     touch(*s, s->shape, other);
     return false;  // all pairs
 }
 
-}  // namespace
-
-std::unique_ptr<ContactScratch> makeContactScratch(const ContactGeometry& geometry)
+/// applyContacts' work: the broad phase, the narrow phase and the forces.
+void findContacts(const Model& model, const State& state, Data& data, Scratch& s)
 {
-    return std::make_unique<Scratch>(geometry);
-}
-
-void applyContacts(const Model& model, const State& state, Data& data)
-{
-    if (!model.contact || !data.contactScratch) return;
-    auto& s = static_cast<Scratch&>(*data.contactScratch);
     const ContactGeometry& g = *s.geometry;
     s.model = &model;
     s.state = &state;
@@ -236,10 +244,44 @@ void applyContacts(const Model& model, const State& state, Data& data)
     }
 }
 
+}  // namespace
+
+std::unique_ptr<ContactScratch> makeContactScratch(const ContactGeometry& geometry)
+{
+    return std::make_unique<Scratch>(geometry);
+}
+
+void applyContacts(const Model& model, const State& state, Data& data)
+{
+    if (!model.contact || !data.contactScratch) return;
+    auto& s = static_cast<Scratch&>(*data.contactScratch);
+    if (!s.timing) {
+        findContacts(model, state, data, s);
+        return;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    findContacts(model, state, data, s);
+    s.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void setContactTiming(const Data& data, bool on)
+{
+    if (!data.contactScratch) return;
+    auto& s = static_cast<Scratch&>(*data.contactScratch);
+    s.timing = on;
+    s.seconds = 0;
+}
+
+double contactSeconds(const Data& data)
+{
+    return data.contactScratch ? static_cast<const Scratch&>(*data.contactScratch).seconds : 0.0;
+}
+
 void updateContactAnchors(const Model& model, Data& data, std::vector<ContactAnchor>& anchors)
 {
     if (!model.contact || !data.contactScratch) return;
     auto& s = static_cast<Scratch&>(*data.contactScratch);
+    const auto t0 = s.timing ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
     const ContactGeometry& g = *s.geometry;
     s.anchors.clear();
     for (const ContactPoint& c : data.contacts) {
@@ -259,6 +301,7 @@ void updateContactAnchors(const Model& model, Data& data, std::vector<ContactAnc
         s.anchors.push_back(an);
     }
     anchors.assign(s.anchors.begin(), s.anchors.end());
+    if (s.timing) s.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 }  // namespace solver
