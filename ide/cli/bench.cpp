@@ -30,9 +30,11 @@
 #include "ide/cli/cli_io.h"
 
 #include "ide/cli/json_writer.h"
+#include "solver/contact/contact_forces.h"
 #include "solver/dynamics/applied_forces.h"
 #include "solver/dynamics/forward_dynamics.h"
 #include "solver/integrate/simulation.h"
+#include "solver/io/mjcf.h"
 #include "solver/kinematics/kinematics.h"
 #include "bench/generate.h"
 #include "solver/pipeline.h"
@@ -179,7 +181,13 @@ struct StepOptions {
     bool adaptive = false;
     bool commanded = true;  ///< the sine set before every step; false: held (kHeldCommandTime)
     bool passive = false;   ///< no drives, no limits (the ODE MuJoCo is compared on)
+    /// With a scene: every this many steps the run starts again from the initial state
+    /// (kSceneEpisode), so that the machine works about its starting pose; 0: never.
+    int episode = 0;
 };
+
+/// --scene's episodes [steps]: 0.5 s at 1 ms, the arm about the liner on its cart.
+constexpr int kSceneEpisode = 500;
 
 solver::SimulationOptions simulationOptions(const StepOptions& o)
 {
@@ -193,29 +201,53 @@ solver::SimulationOptions simulationOptions(const StepOptions& o)
     return s;
 }
 
+/// The contact phase of a run (CONTACT): its time per step [µs] (applyContacts and
+/// updateContactAnchors, timed inside: solver/contact/contact_forces.h) and the mean
+/// number of contact points at a step's end.
+struct ContactProbe {
+    double micros = NAN;
+    double points = NAN;
+};
+
 /// The steps of one run. `events` gets the number of events in the run; on a failed
-/// simulation `error` is set and nullopt returned.
+/// simulation `error` is set and nullopt returned. With `probe` the contact phase is
+/// timed too (the clock's own cost, about 50 ns per evaluation, is in the whole step).
 std::optional<double> stepRun(const std::shared_ptr<const solver::Model>& model, const StepOptions& o, long& events,
-                              std::string& error)
+                              std::string& error, ContactProbe* probe = nullptr)
 {
-    solver::Simulation sim(model, simulationOptions(o));
     const SineCommands commands(*model);
     std::vector<solver::SimulationEvent> ev;
     ev.reserve(64);
     events = 0;
-    if (!o.passive && !o.commanded) commands.apply(sim, kHeldCommandTime);
-    const auto t0 = Clock::now();
-    for (int k = 0; k < o.steps; ++k) {
-        const double t = k * o.dt;
-        if (!o.passive && o.commanded) commands.apply(sim, t);
-        if (!sim.advanceTo((k + 1) * o.dt, ev, error)) {
-            error = fill(trStd("padrob", "the simulation failed: %1"), {error});
-            return std::nullopt;
+    long points = 0;
+    double micros = 0, contactSeconds = 0;
+    const int episode = o.episode > 0 ? o.episode : o.steps;
+    for (int first = 0; first < o.steps; first += episode) {
+        // a new simulation from the initial state (not timed)
+        solver::Simulation sim(model, simulationOptions(o));
+        if (probe) solver::setContactTiming(sim.data(), true);
+        if (!o.passive && !o.commanded) commands.apply(sim, kHeldCommandTime);
+        const int n = std::min(episode, o.steps - first);
+        const auto t0 = Clock::now();
+        for (int k = 0; k < n; ++k) {
+            const double t = k * o.dt;
+            if (!o.passive && o.commanded) commands.apply(sim, t);
+            if (!sim.advanceTo((k + 1) * o.dt, ev, error)) {
+                error = fill(trStd("padrob", "the simulation failed: %1"), {error});
+                return std::nullopt;
+            }
+            events += static_cast<long>(ev.size());
+            ev.clear();
+            if (probe) points += static_cast<long>(sim.data().contacts.size());
         }
-        events += static_cast<long>(ev.size());
-        ev.clear();
+        micros += microsSince(t0);
+        if (probe) contactSeconds += solver::contactSeconds(sim.data());
     }
-    return microsSince(t0) / o.steps;
+    if (probe) {
+        probe->micros = contactSeconds * 1e6 / o.steps;
+        probe->points = static_cast<double>(points) / o.steps;
+    }
+    return micros / o.steps;
 }
 
 /// The state the forward dynamics are timed at: the initial state with kForwardCommand
@@ -243,7 +275,12 @@ struct ModelFigures {
     int referenceEvaluations = 0, referenceSteps = 0;
     double referenceDifference = NAN;  ///< |θ̈ − θ̈_ref|∞ / max(|θ̈_ref|∞, 1e-12)
     long events = 0;                   ///< in the last RK4 run
+    bool contact = false;              ///< the model has CONTACT (its own or added for a scene)
+    Figure contactStep;                ///< µs of the contact phase per RK4 step (commanded)
+    double contactPoints = NAN;        ///< mean contact points at a step's end, last run
 #ifdef PADROB_HAVE_MUJOCO
+    Figure mujocoContactStep;          ///< µs per mj_step with the geoms and contacts
+
     bool mujocoTried = false;
     bool mujocoOk = false;
     std::string mujocoError;
@@ -253,8 +290,10 @@ struct ModelFigures {
 };
 
 /// Every figure of one model; false with `error` when a simulation fails.
+/// `contacts` (with CONTACT and a scene): the export options with the specs, for MuJoCo's
+/// side with geoms.
 bool benchModel(const std::shared_ptr<const solver::Model>& model, const StepOptions& so, int runs, bool mujoco,
-                ModelFigures& f, std::string& error)
+                ModelFigures& f, std::string& error, const solver::MjcfOptions* contacts = nullptr)
 {
     const solver::Model& m = *model;
     f.bodies = m.nb;
@@ -278,6 +317,23 @@ bool benchModel(const std::shared_ptr<const solver::Model>& model, const StepOpt
     // steps with drives, limits and reactions
     f.step = measure(runs, [&]() { return stepRun(model, so, f.events, error); });
     if (!f.step.ok()) return false;
+    // the contact phase of the same steps, timed inside them (separate runs: the whole
+    // step above is timed without the clock in the contact phase)
+    f.contact = m.contact != nullptr;
+    if (f.contact && !so.adaptive) {
+        std::vector<double> contactRuns;
+        ContactProbe probe;
+        long ignored = 0;
+        const Figure timed = measure(runs, [&]() -> std::optional<double> {
+            const std::optional<double> t = stepRun(model, so, ignored, error, &probe);
+            if (t) contactRuns.push_back(probe.micros);
+            return t;
+        });
+        if (!timed.ok()) return false;
+        contactRuns.erase(contactRuns.begin());  // the warm-up run
+        f.contactStep = summarize(contactRuns);
+        f.contactPoints = probe.points;
+    }
     if (!so.adaptive) {
         long ignored = 0;
         StepOptions held = so;
@@ -325,9 +381,10 @@ bool benchModel(const std::shared_ptr<const solver::Model>& model, const StepOpt
     } else if (mujoco && m.cuts.empty()) {
         f.mujocoTried = true;
         f.mujocoOk = runMujoco(m, so.dt, so.steps, runs, kMujocoAgreementSeconds, kMujocoTolerance, f.mujoco,
-                               f.mujocoError);
+                               f.mujocoError, contacts);
         if (f.mujocoOk) {
             f.mujocoStep = summarize(f.mujoco.stepMicros);
+            f.mujocoContactStep = summarize(f.mujoco.contactStepMicros);
             f.mujocoForward = summarize(f.mujoco.forwardMicros);
             f.mujocoOk = f.mujocoStep.ok() && f.mujocoForward.ok();
             if (!f.mujocoOk) f.mujocoError = trStd("padrob", "no timings");
@@ -335,6 +392,7 @@ bool benchModel(const std::shared_ptr<const solver::Model>& model, const StepOpt
     }
 #else
     (void)mujoco;
+    (void)contacts;
 #endif
     return true;
 }
@@ -442,6 +500,8 @@ int cores() { return static_cast<int>(std::thread::hardware_concurrency()); }
 
 struct Options {
     std::string model;
+    std::string scene;         ///< --scene FILE ("" none)
+    bool contactAdded = false; ///< the model had no CONTACT: added for the scene
     StepOptions step;
     int runs = 5;
     bool json = false, scaling = false, mujoco = true;
@@ -506,11 +566,25 @@ std::string jsonReport(const Options& o, const ModelFigures* mf, const Scaling* 
         if (!o.step.adaptive) j.key("reference_rk4_ratio").num(f.referenceStep.median / f.step.median);
         j.key("reference_qdd_difference").num(f.referenceDifference);
         j.key("allocations_counted").boolean(false);
+        if (!o.scene.empty()) j.key("scene").str(o.scene);
+        if (f.contact && f.contactStep.ok()) {
+            j.key("contact_source").str(o.contactAdded ? "added" : "model");
+            writeFigure(j, "contact_us", f.contactStep);
+            j.key("contact_points").num(f.contactPoints);
+        }
 #ifdef PADROB_HAVE_MUJOCO
         if (f.mujocoTried && f.mujocoOk) {
             writeFigure(j, "mujoco_rk4_step_us", f.mujocoStep);
             writeFigure(j, "mujoco_forward_us", f.mujocoForward);
-            j.key("ratio_vs_mujoco").num(f.step.median / f.mujocoStep.median);
+            if (f.mujocoContactStep.ok()) {
+                // the whole step against mj_step on the same scene with its geoms
+                writeFigure(j, "mujoco_contact_rk4_step_us", f.mujocoContactStep);
+                j.key("mujoco_geoms").integer(f.mujoco.geoms);
+                j.key("mujoco_contacts").num(f.mujoco.meanContacts);
+                j.key("ratio_vs_mujoco").num(f.step.median / f.mujocoContactStep.median);
+            } else {
+                j.key("ratio_vs_mujoco").num(f.step.median / f.mujocoStep.median);
+            }
             j.key("passive_ratio_vs_mujoco").num(f.passive.median / f.mujocoStep.median);
             j.key("mujoco_max_position_error_m").num(f.mujoco.maxPositionError);
             j.key("mujoco_agreement_s").num(f.mujoco.agreementSeconds);
@@ -571,6 +645,12 @@ std::string textReport(const Options& o, const ModelFigures* mf, const Scaling* 
         t += fill(trStd("padrob", "model: %1 (bodies: %2, drives: %3, loop closures: %4)"),
                   {o.model, std::to_string(f.bodies), std::to_string(f.drives), std::to_string(f.cuts)}) +
              "\n";
+        if (!o.scene.empty()) {
+            t += fill(o.contactAdded ? trStd("padrob", "scene: %1; CONTACT added (the model has none): MU 0.5, E 0")
+                                     : trStd("padrob", "scene: %1; the model's CONTACT"),
+                      {o.scene}) +
+                 "\n";
+        }
         t += fill(trStd("padrob", "steps: %1 of dt = %2 ms, %3"),
                   {std::to_string(o.step.steps), fmt(o.step.dt * 1e3, 6),
                    o.step.adaptive ? trStd("padrob", "adaptive integrator (Dormand–Prince 5(4), rtol 1e-8)") : trStd("padrob", "RK4")}) +
@@ -589,6 +669,10 @@ std::string textReport(const Options& o, const ModelFigures* mf, const Scaling* 
             t += row(trStd("padrob", "RK4 step, commands held"), f.held, trStd("padrob", "no restart after a new command"));
             t += row(trStd("padrob", "RK4 step, passive, no limits"), f.passive, trStd("padrob", "no drives, no events"));
         }
+        if (f.contactStep.ok()) {
+            t += row(trStd("padrob", "contact phase, per RK4 step"), f.contactStep,
+                     fill(trStd("padrob", "%1 contact points at a step's end (mean)"), {fmt(f.contactPoints)}));
+        }
         t += row(trStd("padrob", "reference N–E system, per solve"), f.reference,
                  fill(trStd("padrob", "×%1 Padrob's forward dynamics"), {fmt(f.reference.median / f.forward.median)}));
         t += row(trStd("padrob", "reference RK4 step"), f.referenceStep,
@@ -601,6 +685,12 @@ std::string textReport(const Options& o, const ModelFigures* mf, const Scaling* 
                           {fmt(f.step.median / f.mujocoStep.median), fmt(f.passive.median / f.mujocoStep.median)}));
             t += row(trStd("padrob", "MuJoCo forward (mj_forward)"), f.mujocoForward,
                      fill(trStd("padrob", "Padrob / MuJoCo %1"), {fmt(f.forward.median / f.mujocoForward.median)}));
+            if (f.mujocoContactStep.ok()) {
+                t += row(trStd("padrob", "MuJoCo RK4 step, geoms and contacts"), f.mujocoContactStep,
+                         fill(trStd("padrob", "Padrob / MuJoCo %1 (%2 geoms, %3 contacts)"),
+                              {fmt(f.step.median / f.mujocoContactStep.median), std::to_string(f.mujoco.geoms),
+                               fmt(f.mujoco.meanContacts)}));
+            }
         }
 #endif
         t += "\n";
@@ -649,7 +739,7 @@ std::string textReport(const Options& o, const ModelFigures* mf, const Scaling* 
 
 std::string benchHelp()
 {
-    return trStd("padrob", "Usage: padrob bench MODEL [OPTIONS]\n"
+    return trStd("padrob", "Usage: padrob bench MODEL [--scene FILE] [OPTIONS]\n"
               "       padrob bench --scaling [OPTIONS]\n"
               "\n"
               "Times the solver on a model: forward dynamics, RK4 steps with drives, limits and\n"
@@ -670,6 +760,10 @@ std::string benchHelp()
               "                        300 and 1000 bodies and fit time ∝ n^p (MODEL may then be\n"
               "                        left out)\n"
               "  --no-mujoco           skip the comparison with MuJoCo\n"
+              "  --scene FILE          run the model in a scene (its ground graphics) with contacts:\n"
+              "                        the model's CONTACT, or CONTACT (MU 0.5, E 0) added when it\n"
+              "                        has none; also times the contact phase per step (contact_us)\n"
+              "                        and MuJoCo on the export with the geoms (ratio_vs_mujoco)\n"
               "\n"
               "The RK4 steps command every drive with a slow sine, set before every step (so\n"
               "valves open and close and every step restarts the integrator, as at the station),\n"
@@ -693,6 +787,11 @@ int runBench(const std::vector<std::string>& args)
         if (a == "--json") { o.json = true; continue; }
         if (a == "--scaling") { o.scaling = true; continue; }
         if (a == "--no-mujoco") { o.mujoco = false; continue; }
+        if (a == "--scene") {
+            if (i + 1 >= args.size() || args[i + 1].empty()) return usage(fill(trStd("padrob", "%1 needs a value"), {a}));
+            o.scene = args[++i];
+            continue;
+        }
         if (a == "--steps" || a == "--runs" || a == "--dt" || a == "--integrator") {
             if (i + 1 >= args.size()) return usage(fill(trStd("padrob", "%1 needs a value"), {a}));
             const std::string& v = args[++i];
@@ -722,12 +821,31 @@ int runBench(const std::vector<std::string>& args)
         o.model = a;
     }
     if (o.model.empty() && !o.scaling) return usage(trStd("padrob", "no model given"));
+    if (!o.scene.empty() && o.model.empty()) return usage(trStd("padrob", "--scene needs a model"));
+    if (!o.scene.empty()) o.step.episode = static_cast<int>(std::lround(kSceneEpisode * 1e-3 / o.step.dt));
 
-    // the model
+    // the scene: its ground graphics touch the model's solids (CONTACT)
+    std::optional<solver::CompiledModel> scene;
+    if (!o.scene.empty()) {
+        int sceneStatus = kExitOk;
+        scene = loadScene(o.scene, sceneStatus);
+        if (!scene) return sceneStatus;
+    }
+
+    // the model (with a scene: with CONTACT, added when it has none)
     std::shared_ptr<const solver::Model> model;
+    solver::ModelSpec spec;
     if (!o.model.empty()) {
         int status = kExitOk;
-        model = loadAndCompile(o.model, status);
+        auto withContact = [&](solver::ModelSpec& s) {
+            if (!s.contact) {
+                s.contact = solver::ContactSpec{};
+                o.contactAdded = true;
+            }
+            spec = s;
+            return std::string();
+        };
+        model = scene ? loadAndCompile(o.model, status, withContact, &scene->spec) : loadAndCompile(o.model, status);
         if (!model) return status;
         if (model->nb == 0) {
             printErr("padrob bench: " + fill(trStd("padrob", "%1: the model has no moving body: nothing to time"), {o.model}) + "\n");
@@ -737,7 +855,11 @@ int runBench(const std::vector<std::string>& args)
 
     std::string error;
     ModelFigures figures;
-    if (model && !benchModel(model, o.step, o.runs, o.mujoco, figures, error)) {
+    solver::MjcfOptions contactExport;
+    contactExport.source = o.model;
+    contactExport.spec = &spec;
+    contactExport.scene = scene ? &scene->spec : nullptr;
+    if (model && !benchModel(model, o.step, o.runs, o.mujoco, figures, error, scene ? &contactExport : nullptr)) {
         printErr("padrob bench: " + o.model + ": " + error + "\n");
         return kModelErrors;
     }

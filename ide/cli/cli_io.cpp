@@ -85,6 +85,16 @@ void printDiagnostic(std::FILE* f, const solver::Diagnostic& d)
     std::fwrite(line.data(), 1, line.size(), f);
 }
 
+std::optional<solver::CompiledModel> loadScene(const std::string& path, int& status)
+{
+    solver::CompiledModel scene = solver::compileFile(path);
+    if (scene.ok()) return scene;
+    for (const solver::Diagnostic& d : scene.diagnostics)
+        if (d.severity == solver::Severity::Error) printDiagnostic(stderr, d);
+    status = scene.diagnostics.begin()->code == "io-error" ? kExitUsage : kExitModelErrors;
+    return std::nullopt;
+}
+
 std::shared_ptr<const solver::Model> loadAndCompile(const std::string& path, int& status)
 {
     return loadAndCompile(path, status, nullptr);

@@ -10,6 +10,7 @@
 
 #include "solver/core/diagnostic.h"
 #include "solver/core/model.h"
+#include "solver/pipeline.h"
 #include "solver/spec/model_spec.h"
 
 #include <cstdio>
@@ -48,6 +49,10 @@ std::string pad(const std::string& s, std::size_t width, bool right = false);
 /// Prints a diagnostic on `f` as "file:line:col: error: message [hint]" in the current
 /// language (i18n::format).
 void printDiagnostic(std::FILE* f, const solver::Diagnostic& d);
+
+/// Reads and compiles a scene file (`--scene`: ground graphics), printing its errors on
+/// standard error. Nothing with `status` kExitUsage (unreadable) or kExitModelErrors.
+std::optional<solver::CompiledModel> loadScene(const std::string& path, int& status);
 
 /// Loads and compiles the model file `path`, printing its errors (and an unreadable
 /// file's io-error) on standard error. nullptr with `status` kExitUsage (unreadable) or

@@ -86,40 +86,15 @@ ModelPtr loadFromMemory(const std::string& xml, std::string& error)
     return m;
 }
 
-}  // namespace
-
-bool runMujoco(const solver::Model& model, double dt, int steps, int runs, double agreementSeconds, double tolerance,
-               MujocoRun& out, std::string& error)
+/// Puts the true mass properties into a loaded export where it wrote placeholders (in
+/// body id order), each change into `adjustments`, and the constants derived from them.
+/// False with `error` when a body or joint of the export is missing.
+bool putTrueMasses(const solver::Model& model, mjModel* m, mjData* d, std::vector<int>& mjBody,
+                   std::vector<std::string>& adjustments, std::string& error)
 {
-    out = MujocoRun{};
-    error.clear();
-    if (!(dt > 0) || !std::isfinite(dt) || steps < 0 || runs < 0 || !(agreementSeconds >= 0) ||
-        !std::isfinite(agreementSeconds) || !(tolerance >= 0)) {
-        error = "runMujoco: bad arguments";
-        return false;
-    }
-    WarningCatcher warnings;
-
-    // export and load
-    solver::MjcfOptions options;
-    options.timestep = dt;
-    const std::string xml = solver::toMjcf(model, options, error);
-    if (xml.empty()) return false;
-    ModelPtr mp = loadFromMemory(xml, error);
-    if (!mp) return false;
-    mjModel* m = mp.get();
-    DataPtr dp(mj_makeData(m));
-    if (!dp) {
-        error = trStd("padrob", "MuJoCo could not allocate its data");
-        return false;
-    }
-    mjData* d = dp.get();
-
-    // the names of the export → MuJoCo's ids
     const solver::MjcfNames names = solver::mjcfNames(model);
-    std::vector<int> mjBody(static_cast<std::size_t>(model.nb));
+    mjBody.assign(static_cast<std::size_t>(model.nb), -1);
     for (int i = 0; i < model.nb; ++i) {
-        mjBody[i] = -1;
         if (model.bodyId[i] < 0) continue;  // a free joint's massless bodies: not exported
         // (a free body's joint: the free joint's, named at its first coordinate)
         const int jointAt = model.freeSlot[i] > 0 ? i - model.freeSlot[i] : i;
@@ -130,11 +105,10 @@ bool runMujoco(const solver::Model& model, double dt, int steps, int runs, doubl
             return false;
         }
     }
-
-    // the true mass properties where the export wrote placeholders (in body id order)
     std::vector<int> byId(static_cast<std::size_t>(model.nb));
     for (int i = 0; i < model.nb; ++i) byId[i] = i;
     std::sort(byId.begin(), byId.end(), [&](int a, int b) { return model.bodyId[a] < model.bodyId[b]; });
+    bool changed = false;
     for (int i : byId) {
         if (mjBody[i] < 0) continue;
         const solver::MjcfInertial p = solver::mjcfInertial(model, i);
@@ -160,10 +134,132 @@ bool runMujoco(const solver::Model& model, double dt, int steps, int runs, doubl
             const double iquat[4] = {q.w(), q.x(), q.y(), q.z()};
             std::memcpy(m->body_iquat + 4 * b, iquat, sizeof iquat);
         }
-        out.adjustments.push_back(change);
+        adjustments.push_back(change);
+        changed = true;
     }
     // the constants derived from them (subtree masses, inverse weights, mean inertia)
-    if (!out.adjustments.empty()) mj_setConst(m, d);
+    if (changed) mj_setConst(m, d);
+    return true;
+}
+
+/// An export loaded into MuJoCo with the true masses put in (putTrueMasses).
+struct Loaded {
+    ModelPtr model;
+    DataPtr data;
+    std::vector<int> mjBody;  ///< per tree index: MuJoCo's body id, −1 not exported
+};
+
+/// Exports `model` with `options`, loads it and puts the true masses in; false with `error`.
+bool loadExport(const solver::Model& model, const solver::MjcfOptions& options, Loaded& out,
+                std::vector<std::string>& adjustments, std::string& error)
+{
+    const std::string xml = solver::toMjcf(model, options, error);
+    if (xml.empty()) return false;
+    out.model = loadFromMemory(xml, error);
+    if (!out.model) return false;
+    out.data.reset(mj_makeData(out.model.get()));
+    if (!out.data) {
+        error = trStd("padrob", "MuJoCo could not allocate its data");
+        return false;
+    }
+    return putTrueMasses(model, out.model.get(), out.data.get(), out.mjBody, adjustments, error);
+}
+
+/// The export with geoms and contacts (runMujoco's `contacts`): loaded, the true masses
+/// put in, `steps` mj_step calls timed `runs` times after a warm-up run.
+bool timeContacts(const solver::Model& model, solver::MjcfOptions options, double dt, int steps, int runs,
+                  double contactSeconds, const std::shared_ptr<solver::Model>& passive, MujocoRun& out, std::string& error)
+{
+    options.timestep = dt;
+    Loaded loaded;
+    std::vector<std::string> adjustments;  // the same as the agreement's export's
+    if (!loadExport(model, options, loaded, adjustments, error)) return false;
+    mjModel* m = loaded.model.get();
+    mjData* d = loaded.data.get();
+    const std::vector<int>& mjBody = loaded.mjBody;
+    out.contactLoaded = true;
+    out.geoms = m->ngeom;
+    const int key = mj_name2id(m, mjOBJ_KEY, "initial");
+    m->opt.disableflags |= mjDSBL_LIMIT;
+
+    // side by side with contacts (Padrob's passive model, its contacts kept)
+    if (contactSeconds > 0) {
+        if (key >= 0) mj_resetDataKeyframe(m, d, key);
+        else mj_resetData(m, d);
+        solver::SimulationOptions simOptions;
+        simOptions.integrator.method = solver::IntegrationMethod::Rk4Fixed;
+        simOptions.integrator.step = dt;
+        simOptions.drives = false;
+        simOptions.limits = false;
+        solver::Simulation sim(passive, simOptions);
+        std::vector<solver::SimulationEvent> events;
+        long n = std::lround(contactSeconds / dt);
+        for (long k = 1; k <= n; ++k) {
+            std::string why;
+            if (!sim.advanceTo(static_cast<double>(k) * dt, events, why)) {
+                // reported, not judged (as the distances): the timing still runs
+                out.contactFailure = fill(trStd("padrob", "Padrob failed: %1"), {why});
+                n = k - 1;
+                break;
+            }
+            mj_step(m, d);
+            mj_kinematics(m, d);
+            for (int i = 0; i < model.nb; ++i) {
+                if (mjBody[i] < 0) continue;
+                const Eigen::Vector3d p = solver::comPosition(*passive, sim.data(), i);
+                const double distance = (p - Eigen::Map<const Eigen::Vector3d>(d->xipos + 3 * mjBody[i])).norm();
+                out.contactMaxDistance = std::max(out.contactMaxDistance, distance);
+            }
+        }
+        for (int i = 0; i < model.nb; ++i) {
+            if (mjBody[i] < 0) continue;
+            out.contactEnd.push_back({std::to_string(model.bodyId[i]) + quoted(model.bodyName[i]),
+                                      solver::comPosition(*passive, sim.data(), i),
+                                      Eigen::Map<const Eigen::Vector3d>(d->xipos + 3 * mjBody[i])});
+        }
+        out.contactSeconds = static_cast<double>(n) * dt;
+    }
+
+    using Clock = std::chrono::steady_clock;
+    if (steps == 0 || runs == 0) return true;
+    for (int r = -1; r < runs; ++r) {
+        if (key >= 0) mj_resetDataKeyframe(m, d, key);
+        else mj_resetData(m, d);
+        long contactsSeen = 0;
+        const Clock::time_point t0 = Clock::now();
+        for (int s = 0; s < steps; ++s) {
+            mj_step(m, d);
+            contactsSeen += d->ncon;
+        }
+        const Clock::time_point t1 = Clock::now();
+        if (r >= 0) out.contactStepMicros.push_back(std::chrono::duration<double, std::micro>(t1 - t0).count() / steps);
+        out.meanContacts = static_cast<double>(contactsSeen) / steps;
+    }
+    return true;
+}
+
+}  // namespace
+
+bool runMujoco(const solver::Model& model, double dt, int steps, int runs, double agreementSeconds, double tolerance,
+               MujocoRun& out, std::string& error, const solver::MjcfOptions* contacts, double contactSeconds)
+{
+    out = MujocoRun{};
+    error.clear();
+    if (!(dt > 0) || !std::isfinite(dt) || steps < 0 || runs < 0 || !(agreementSeconds >= 0) ||
+        !std::isfinite(agreementSeconds) || !(tolerance >= 0)) {
+        error = "runMujoco: bad arguments";
+        return false;
+    }
+    WarningCatcher warnings;
+
+    // export and load; the export's ids and the true mass properties where it wrote placeholders
+    solver::MjcfOptions options;
+    options.timestep = dt;
+    Loaded loaded;
+    if (!loadExport(model, options, loaded, out.adjustments, error)) return false;
+    mjModel* m = loaded.model.get();
+    mjData* d = loaded.data.get();
+    const std::vector<int>& mjBody = loaded.mjBody;
     m->opt.disableflags |= mjDSBL_LIMIT;
 
     // what Padrob's side leaves out so that both integrate the same equations
@@ -184,6 +280,10 @@ bool runMujoco(const solver::Model& model, double dt, int steps, int runs, doubl
         out.notes.push_back(trStd("padrob", "Padrob runs without the model's %n applied force(s) (F): they are not exported",
                                   nullptr, forces));
         padrobModel->forces.clear();
+    }
+    if (model.contact) {
+        out.notes.push_back(trStd("padrob", "the agreement is checked without contacts (MuJoCo's export there has no geoms)"));
+        padrobModel->contact = nullptr;
     }
     solver::SimulationOptions simOptions;
     simOptions.integrator.method = solver::IntegrationMethod::Rk4Fixed;
@@ -246,6 +346,11 @@ bool runMujoco(const solver::Model& model, double dt, int steps, int runs, doubl
     if (runs > 0) {
         timeRuns(&mj_step, out.stepMicros);
         timeRuns(&mj_forward, out.forwardMicros);
+    }
+    if (contacts) {
+        auto withContacts = std::make_shared<solver::Model>(*padrobModel);
+        withContacts->contact = model.contact;
+        if (!timeContacts(model, *contacts, dt, steps, runs, contactSeconds, withContacts, out, error)) return false;
     }
     for (int w = 0; w < mjNWARNING; ++w) {
         if (d->warning[w].number > 0) {

@@ -328,12 +328,9 @@ int runSimulate(const std::vector<std::string>& args)
     // --scene: its ground graphics are solids the model's touch (CONTACT, docs/contact.md)
     std::optional<solver::CompiledModel> scene;
     if (!scenePath.empty()) {
-        scene = solver::compileFile(scenePath);
-        if (!scene->ok()) {
-            for (const solver::Diagnostic& d : scene->diagnostics)
-                if (d.severity == solver::Severity::Error) printDiagnostic(stderr, d);
-            return scene->diagnostics.begin()->code == "io-error" ? kExitUsage : kExitModelErrors;
-        }
+        int sceneStatus = kExitOk;
+        scene = loadScene(scenePath, sceneStatus);
+        if (!scene) return sceneStatus;
     }
     std::shared_ptr<const solver::Model> model =
         sets.empty() && rates.empty() && !scene ? loadAndCompile(modelPath, status)

@@ -14,6 +14,7 @@
 #include <fcl/narrowphase/collision_object.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 
@@ -37,13 +38,37 @@ public:
         }
         for (int i : g.still) still.registerObject(objects[i].get());
         still.setup();
+        // the moving shapes by body, and a box per body for the broad phase's query
+        for (int i : g.moving) {
+            const int body = g.shapes[static_cast<std::size_t>(i)].body;
+            auto it = std::find_if(groups.begin(), groups.end(), [body](const Group& gr) { return gr.body == body; });
+            if (it == groups.end()) {
+                groups.push_back({body, {}, std::make_shared<fcl::Boxd>(1, 1, 1), nullptr});
+                groups.back().query = std::make_unique<fcl::CollisionObjectd>(groups.back().box);
+                groups.back().query->setUserData(reinterpret_cast<void*>(static_cast<std::intptr_t>(-1)));
+                it = groups.end() - 1;
+            }
+            it->shapes.push_back(i);
+        }
+        candidates.reserve(g.still.size());
         result.clear();
         anchors.reserve(kMaxContacts);
         points.reserve(64);
     }
 
+    /// A moving body's shapes and the box round them all, which queries the still
+    /// shapes' tree once for the body (not once per shape).
+    struct Group {
+        int body = -1;
+        std::vector<int> shapes;
+        std::shared_ptr<fcl::Boxd> box;
+        std::unique_ptr<fcl::CollisionObjectd> query;
+    };
+
     const ContactGeometry* geometry;
     std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects;
+    std::vector<Group> groups;
+    std::vector<int> candidates;  // the still shapes whose boxes meet a group's
     fcl::DynamicAABBTreeCollisionManagerd still;
     fcl::CollisionRequestd request;
     fcl::CollisionResultd result;
@@ -54,7 +79,9 @@ public:
     const Model* model = nullptr;
     const State* state = nullptr;
     Data* data = nullptr;
-    int shape = -1;  // the moving shape being queried
+    // setContactTiming: a profiling counter, not state (changed through a const Data)
+    bool timing = false;
+    double seconds = 0;
 };
 
 Eigen::Vector3d pointVelocity(const Data& d, int body, const Eigen::Vector3d& p)
@@ -104,7 +131,7 @@ void contactPoints(Scratch& s, int a, int b)
     const fcl::CollisionObjectd& ob = *s.objects[b];
     if (oa.collisionGeometry()->getNodeType() == fcl::GEOM_BOX && ob.collisionGeometry()->getNodeType() == fcl::GEOM_BOX) {
         // what shapeIntersect does, into our list (boxBoxIntersect copies from a vector of its own)
-        Eigen::Vector3d normal;
+        Eigen::Vector3d normal = Eigen::Vector3d::Zero();
         double depth = 0;
         int code = 0;
         fcl::detail::boxBox2(static_cast<const fcl::Boxd&>(*oa.collisionGeometry()).side, oa.getTransform(),
@@ -154,7 +181,13 @@ void touch(Scratch& s, int a, int b)
         const fcl::ContactPoint<double>& fc = s.points[static_cast<std::size_t>(i)];
         Eigen::Vector3d normal = fc.normal;
         const double norm = normal.norm();
-        if (!(norm > 0) || !std::isfinite(fc.penetration_depth)) continue;
+        // FCL's normals are unit and its points lie where both solids' boxes meet; a point
+        // that is not such is not a contact (valgrind: FCL's primitive routines can hand
+        // back a point whose values were never set, which once gave a NaN step)
+        if (!(std::abs(norm - 1) < 1e-6) || !(std::abs(fc.penetration_depth) < 1) || !fc.pos.allFinite()) continue;
+        if (!s.objects[static_cast<std::size_t>(a)]->getAABB().contain(fc.pos) &&
+            !s.objects[static_cast<std::size_t>(b)]->getAABB().contain(fc.pos))
+            continue;
         normal /= norm;
         const Eigen::Vector3d p = fc.pos;
         const double depth = std::max(0.0, fc.penetration_depth);
@@ -194,14 +227,63 @@ void touch(Scratch& s, int a, int b)
     }
 }
 
-bool broadPhaseCallback(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* cdata)
+/// The still shapes whose boxes meet the queried body's box, into s.candidates.
+bool candidateCallback(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* cdata)
 {
     auto* s = static_cast<Scratch*>(cdata);
     const auto i1 = static_cast<int>(reinterpret_cast<std::intptr_t>(o1->getUserData()));
     const auto i2 = static_cast<int>(reinterpret_cast<std::intptr_t>(o2->getUserData()));
-    const int other = i1 == s->shape ? i2 : i1;
-    touch(*s, s->shape, other);
-    return false;  // all pairs
+    s->candidates.push_back(i1 < 0 ? i2 : i1);
+    return false;  // all of them
+}
+
+/// Moving shape a against still shape b (their boxes already checked by the body's query).
+void touchStill(Scratch& s, int a, int b)
+{
+    const fcl::AABBd& box = s.objects[static_cast<std::size_t>(a)]->getAABB();
+    if (!box.overlap(s.objects[static_cast<std::size_t>(b)]->getAABB())) return;
+    // the mill's shell: a solid inside its bore cannot touch it (its AABB holds every other)
+    const ContactShape& o = s.geometry->shapes[static_cast<std::size_t>(b)];
+    if (o.tube && clearOfTube(o, box.center(), 0.5 * (box.max_ - box.min_).norm())) return;
+    touch(s, a, b);
+}
+
+/// applyContacts' work: the broad phase, the narrow phase and the forces.
+void findContacts(const Model& model, const State& state, Data& data, Scratch& s)
+{
+    const ContactGeometry& g = *s.geometry;
+    s.model = &model;
+    s.state = &state;
+    s.data = &data;
+    data.contacts.clear();
+    for (int i : g.moving) {
+        const int body = g.shapes[i].body;
+        s.objects[i]->setTransform(data.X_wb[body] * g.shapes[i].local);
+        s.objects[i]->computeAABB();
+    }
+    // the still shapes: one query of their tree per moving body, then shape by shape
+    for (Scratch::Group& gr : s.groups) {
+        fcl::AABBd box = s.objects[static_cast<std::size_t>(gr.shapes.front())]->getAABB();
+        for (int i : gr.shapes) box += s.objects[static_cast<std::size_t>(i)]->getAABB();
+        gr.box->side = box.max_ - box.min_;
+        gr.box->computeLocalAABB();  // what the object's computeAABB reads
+        gr.query->setTranslation(box.center());
+        gr.query->computeAABB();
+        s.candidates.clear();
+        s.still.collide(gr.query.get(), &s, candidateCallback);
+        for (int a : gr.shapes)
+            for (int b : s.candidates) touchStill(s, a, b);
+    }
+    // the moving pairs
+    for (std::size_t m = 0; m < g.moving.size(); ++m) {
+        const int a = g.moving[m];
+        for (std::size_t n = m + 1; n < g.moving.size(); ++n) {
+            const int b = g.moving[n];
+            if (g.shapes[a].body == g.shapes[b].body) continue;
+            if (!s.objects[a]->getAABB().overlap(s.objects[b]->getAABB())) continue;
+            touch(s, a, b);
+        }
+    }
 }
 
 }  // namespace
@@ -215,33 +297,33 @@ void applyContacts(const Model& model, const State& state, Data& data)
 {
     if (!model.contact || !data.contactScratch) return;
     auto& s = static_cast<Scratch&>(*data.contactScratch);
-    const ContactGeometry& g = *s.geometry;
-    s.model = &model;
-    s.state = &state;
-    s.data = &data;
-    data.contacts.clear();
-    for (int i : g.moving) {
-        const int body = g.shapes[i].body;
-        s.objects[i]->setTransform(data.X_wb[body] * g.shapes[i].local);
-        s.objects[i]->computeAABB();
+    if (!s.timing) {
+        findContacts(model, state, data, s);
+        return;
     }
-    for (std::size_t m = 0; m < g.moving.size(); ++m) {
-        const int a = g.moving[m];
-        s.shape = a;
-        s.still.collide(s.objects[a].get(), &s, broadPhaseCallback);
-        for (std::size_t n = m + 1; n < g.moving.size(); ++n) {
-            const int b = g.moving[n];
-            if (g.shapes[a].body == g.shapes[b].body) continue;
-            if (!s.objects[a]->getAABB().overlap(s.objects[b]->getAABB())) continue;
-            touch(s, a, b);
-        }
-    }
+    const auto t0 = std::chrono::steady_clock::now();
+    findContacts(model, state, data, s);
+    s.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void setContactTiming(const Data& data, bool on)
+{
+    if (!data.contactScratch) return;
+    auto& s = static_cast<Scratch&>(*data.contactScratch);
+    s.timing = on;
+    s.seconds = 0;
+}
+
+double contactSeconds(const Data& data)
+{
+    return data.contactScratch ? static_cast<const Scratch&>(*data.contactScratch).seconds : 0.0;
 }
 
 void updateContactAnchors(const Model& model, Data& data, std::vector<ContactAnchor>& anchors)
 {
     if (!model.contact || !data.contactScratch) return;
     auto& s = static_cast<Scratch&>(*data.contactScratch);
+    const auto t0 = s.timing ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
     const ContactGeometry& g = *s.geometry;
     s.anchors.clear();
     for (const ContactPoint& c : data.contacts) {
@@ -261,6 +343,7 @@ void updateContactAnchors(const Model& model, Data& data, std::vector<ContactAnc
         s.anchors.push_back(an);
     }
     anchors.assign(s.anchors.begin(), s.anchors.end());
+    if (s.timing) s.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 }  // namespace solver

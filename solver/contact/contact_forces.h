@@ -40,4 +40,12 @@ void applyContacts(const Model& model, const State& state, Data& data);
 /// (at a step's end): into `anchors` (capacity kMaxContacts).
 void updateContactAnchors(const Model& model, Data& data, std::vector<ContactAnchor>& anchors);
 
+/// A profiling clock for `padrob bench`'s contact_us: while on, applyContacts and
+/// updateContactAnchors add the time they take (detection and response, steady_clock) to a total kept in data's
+/// scratch, which contactSeconds reads. Off by default (then nothing is timed); a
+/// counter, not state: it changes no result. Nothing without CONTACT.
+void setContactTiming(const Data& data, bool on);
+/// The total of setContactTiming [s] since it was switched on (0 without CONTACT).
+double contactSeconds(const Data& data);
+
 }  // namespace solver

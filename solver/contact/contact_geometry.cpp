@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <string>
 
 namespace solver {
@@ -20,6 +21,27 @@ bool ContactGeometry::isExcluded(int a, int b) const
 {
     const std::pair<int, int> key(std::min(a, b), std::max(a, b));
     return std::binary_search(excluded.begin(), excluded.end(), key);
+}
+
+bool clearOfTube(const ContactShape& t, const Eigen::Vector3d& c, double r)
+{
+    const Eigen::Vector3d p = t.tubeInverse * c;
+    const double radial = std::hypot(p.x(), p.y());
+    return radial + r < t.tubeInner || radial - r > t.tubeOuter || std::abs(p.z()) - r > t.tubeHalfLength;
+}
+
+std::vector<std::pair<int, int>> contactExcludedBodies(const CompiledContact& contact)
+{
+    std::vector<std::pair<int, int>> out;
+    if (!contact.geometry) return out;
+    const ContactGeometry& g = *contact.geometry;
+    for (const auto& [a, b] : g.excluded) {
+        const int ba = g.shapes[a].body, bb = g.shapes[b].body;
+        out.emplace_back(std::min(ba, bb), std::max(ba, bb));
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
 }
 
 namespace {
@@ -109,7 +131,15 @@ std::shared_ptr<const CompiledContact> compileContact(const ModelSpec& spec, con
             return;
         }
         const int index = static_cast<int>(geometry->shapes.size());
-        geometry->shapes.push_back({std::move(shape.geometry), shape.local, body, g.id, isScene});
+        ContactShape cs{std::move(shape.geometry), shape.local, body, g.id, isScene};
+        if (g.shape == ShapeKind::Tube && body < 0) {
+            cs.tube = true;
+            cs.tubeInverse = shape.local.inverse();
+            cs.tubeOuter = g.dims[0];
+            cs.tubeInner = g.dims[1] * std::cos(std::numbers::pi / kTubeSegments);
+            cs.tubeHalfLength = g.dims[2] / 2;
+        }
+        geometry->shapes.push_back(std::move(cs));
         where.push_back(isScene ? SourcePos{} : g.src.pos);
         (body >= 0 ? geometry->moving : geometry->still).push_back(index);
     };

@@ -32,7 +32,18 @@ struct ContactShape {
     int body = -1;       ///< tree index, −1: ground
     int graphicId = 0;   ///< the G statement's id
     bool scene = false;  ///< from the scene
+    /// A TUBE on the ground or in the scene (the mill's shell): its frame's inverse (the
+    /// axis is z) and the radii and half-length a moving solid must stay clear of to
+    /// miss it (the inner wall's polygon's apothem, the outer radius), so that the
+    /// narrow phase skips the tube for a solid inside its bore (clearOfTube).
+    bool tube = false;
+    Eigen::Isometry3d tubeInverse = Eigen::Isometry3d::Identity();
+    double tubeInner = 0, tubeOuter = 0, tubeHalfLength = 0;
 };
+
+/// Whether a solid within the sphere (centre c, world; radius r) cannot touch the still
+/// tube `t`: inside its bore, outside its outer wall, or beyond its ends.
+bool clearOfTube(const ContactShape& t, const Eigen::Vector3d& c, double r);
 
 struct ContactGeometry {
     std::vector<ContactShape> shapes;

@@ -39,7 +39,7 @@ Geometry meshGeometry(const std::vector<Eigen::Vector3d>& vertices, const std::v
 /// A closed tube (outer and inner walls, two end rings), axis z, centred. The walls are
 /// cut along the axis into rings about as long as a segment is wide: long thin triangles
 /// make poor bounding volumes (a query inside the mill's shell would visit most of them).
-Geometry tubeGeometry(double ro, double ri, double length, int segments = 64)
+Geometry tubeGeometry(double ro, double ri, double length, int segments = kTubeSegments)
 {
     std::vector<Eigen::Vector3d> v;
     std::vector<std::array<int, 3>> t;

@@ -22,6 +22,10 @@
 
 namespace solver {
 
+/// Segments round a TUBE's triangle mesh (its walls are regular polygons inscribed in
+/// the circles of radii RO and RI).
+inline constexpr int kTubeSegments = 64;
+
 struct GraphicShape {
     std::shared_ptr<fcl::CollisionGeometryd> geometry;  ///< null: it could not be made
     Eigen::Isometry3d local = Eigen::Isometry3d::Identity();  ///< the shape in its body's frame

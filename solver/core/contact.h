@@ -11,6 +11,8 @@
 #include <Eigen/Core>
 
 #include <memory>
+#include <utility>
+#include <vector>
 
 namespace solver {
 
@@ -41,6 +43,11 @@ struct CompiledContact {
     /// Makes the per-thread scratch for `geometry` (Data's constructor calls it).
     std::unique_ptr<ContactScratch> (*makeScratch)(const ContactGeometry&) = nullptr;
 };
+
+/// The body pairs (tree indices, −1: the ground; first < second) that have two solids
+/// overlapping at the initial pose, which never touch each other (ContactGeometry::
+/// excluded by body: what MuJoCo's <exclude> can say). Sorted, no repeats.
+std::vector<std::pair<int, int>> contactExcludedBodies(const CompiledContact& contact);
 
 /// A contact's tangential anchor: the material points of the two solids that were
 /// together when it began to stick (or where the slip left the spring at μN).

@@ -1,11 +1,16 @@
 #include "solver/io/mjcf.h"
 
+#include "solver/inertia/solid_inertia.h"
+#include "solver/inertia/triangle_mesh.h"
+
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
+#include <numbers>
 #include <set>
 
 namespace solver {
@@ -207,6 +212,25 @@ MjcfInertial mjcfInertial(const Model& model, int body)
     return r;
 }
 
+MjcfContact mjcfContact(const CompiledContact& law, double timestep)
+{
+    MjcfContact c;
+    c.mu = law.mu;
+    // the linear spring–damper's restitution e = exp(−ζπ/√(1 − ζ²)), inverted
+    if (law.restitution > 0) {
+        const double l = std::log(law.restitution);
+        c.dampratio = -l / std::sqrt(std::numbers::pi * std::numbers::pi + l * l);
+    }
+    c.timeconst = std::max(1 / (law.omega * c.dampratio), 2 * timestep);
+    return c;
+}
+
+int mjcfTubeSegments(double outerRadius)
+{
+    // boxes about 0.7 m wide round a mill's shell, at least 12 round a pipe
+    return std::clamp(static_cast<int>(std::ceil(2 * std::numbers::pi * outerRadius / 0.7)), 12, 48);
+}
+
 namespace {
 
 /// Whether MuJoCo may refuse `in` written as fullinertia (its own eigen-decomposition
@@ -243,14 +267,25 @@ public:
         m_out += "<mujoco model=\"" + attr(modelName()) + "\">\n";
         m_out += "  <compiler angle=\"radian\" inertiafromgeom=\"false\"/>\n";
         m_out += "  <option timestep=\"" + num(m_options.timestep) + "\" gravity=\"" +
-                 vec3(m_model.gravity, false) + "\" integrator=\"RK4\">\n";
-        m_out += "    <flag contact=\"disable\"/>\n";
+                 vec3(m_model.gravity, false) + "\" integrator=\"RK4\"" + (contacts() ? " cone=\"elliptic\"" : "") + ">\n";
+        m_out += contacts() ? "    <flag filterparent=\"disable\"/>\n" : "    <flag contact=\"disable\"/>\n";
         m_out += "  </option>\n";
+        if (contacts()) contactDefaults();
+        const std::size_t assetsAt = m_out.size();
         m_out += "  <worldbody>\n";
+        if (contacts()) {
+            for (const GraphicSpec& g : m_options.spec->graphics)
+                if (g.body == 0) geom(g, *m_options.spec, false, "    ");
+            if (m_options.scene)
+                for (const GraphicSpec& g : m_options.scene->graphics)
+                    if (g.body == 0) geom(g, *m_options.scene, true, "    ");
+        }
         for (int i : m_children[0]) body(i, 2);
         m_out += "  </worldbody>\n";
+        if (contacts()) excludes();
         keyframe();
         m_out += "</mujoco>\n";
+        if (!m_assets.empty()) m_out.insert(assetsAt, "  <asset>\n" + m_assets + "  </asset>\n");
         return std::move(m_out);
     }
 
@@ -261,6 +296,133 @@ private:
     std::vector<std::vector<int>> m_children;
     std::vector<int> m_order;  // bodies (= joints) in the order written: MuJoCo's qpos order
     std::string m_out;
+    std::string m_assets;  // <mesh> elements (cones, prisms, meshes)
+
+    /// Geoms and contacts are written: the model has CONTACT and the spec is given.
+    bool contacts() const { return m_model.contact && m_options.spec; }
+
+    void contactDefaults()
+    {
+        const MjcfContact c = mjcfContact(*m_model.contact, m_options.timestep);
+        m_out += "  <!-- " +
+                 commentSafe("CONTACT MU " + short6(m_model.contact->mu) + " E " + short6(m_model.contact->restitution) +
+                             ": friction mu; solref = (1/(omega zeta), zeta) so that MuJoCo's contact frequency is "
+                             "Padrob's omega " + short6(m_model.contact->omega) + " rad/s (docs/contact.md)") +
+                 " -->\n";
+        m_out += "  <default>\n";
+        m_out += "    <geom condim=\"3\" friction=\"" + num(c.mu) + " 0.005 0.0001\" solref=\"" + num(c.timeconst) + " " +
+                 num(c.dampratio) + "\" solimp=\"" + kMjcfSolimp + "\" margin=\"0\"/>\n";
+        m_out += "  </default>\n";
+    }
+
+    /// The geom(s) of graphic g (on the body being written, or the world), in its body frame.
+    void geom(const GraphicSpec& g, const ModelSpec& from, bool scene, const std::string& in)
+    {
+        const std::string name = (scene ? "scene_g" : "g") + std::to_string(g.id);
+        Eigen::Isometry3d local = Eigen::Isometry3d::Identity();
+        local.linear() = shapeRotation(g);
+        local.translation() = g.position;
+        const std::string common = std::string(g.noContact ? " contype=\"0\" conaffinity=\"0\"" : "") + " rgba=\"" +
+                                   vec3(g.color, false) + " 1\"";
+        const auto& d = g.dims;
+        auto put = [&](const std::string& n, const std::string& typeAndSize, const Eigen::Isometry3d& X) {
+            m_out += in + "<geom name=\"" + attr(n) + "\" " + typeAndSize + pose(X) + common + "/>\n";
+        };
+        auto mesh = [&](const std::vector<Eigen::Vector3d>& vertices) {
+            const std::string meshName = "mesh_" + name;
+            std::string v;
+            for (const Eigen::Vector3d& p : vertices) v += (v.empty() ? "" : " ") + vec3(p);
+            m_assets += "    <mesh name=\"" + attr(meshName) + "\" vertex=\"" + v + "\"/>\n";
+            put(name, "type=\"mesh\" mesh=\"" + attr(meshName) + "\"", local);
+        };
+        switch (g.shape) {
+        case ShapeKind::Box: put(name, "type=\"box\" size=\"" + vec3(Eigen::Vector3d(d[0], d[1], d[2]) / 2, false) + "\"", local); break;
+        case ShapeKind::Sphere: put(name, "type=\"sphere\" size=\"" + num(d[0]) + "\"", local); break;
+        case ShapeKind::Ellipsoid:
+            put(name, "type=\"ellipsoid\" size=\"" + vec3(Eigen::Vector3d(d[0], d[1], d[2]), false) + "\"", local);
+            break;
+        case ShapeKind::Cylinder: put(name, "type=\"cylinder\" size=\"" + num(d[0]) + " " + num(d[1] / 2) + "\"", local); break;
+        case ShapeKind::Cone: {
+            std::vector<Eigen::Vector3d> v;
+            constexpr int kRound = 32;
+            for (int k = 0; k < kRound; ++k) {
+                const double a = 2 * std::numbers::pi * k / kRound;
+                v.emplace_back(d[0] * std::cos(a), d[0] * std::sin(a), 0.0);
+            }
+            v.emplace_back(0.0, 0.0, d[1]);
+            mesh(v);
+            break;
+        }
+        case ShapeKind::Prism: {
+            std::vector<Eigen::Vector3d> v;
+            for (double z : {0.0, d[0]})
+                for (std::size_t i = 1; i + 1 < d.size(); i += 2) v.emplace_back(d[i], d[i + 1], z);
+            mesh(v);
+            break;
+        }
+        case ShapeKind::Mesh: {
+            const std::filesystem::path dir = std::filesystem::path(from.file).parent_path();
+            const MeshLoad load = loadTriangleMesh((dir / g.meshFile).string(), g.hasScale ? g.scale : 1.0);
+            if (!load.mesh) {
+                m_out += in + "<!-- " + commentSafe("G " + std::to_string(g.id) + ": mesh not exported: " + load.error) + " -->\n";
+                return;
+            }
+            mesh(load.mesh->vertices);
+            break;
+        }
+        case ShapeKind::Tube: {
+            // a ring of boxes, each as wide as the outer wall's chord
+            const int n = mjcfTubeSegments(d[0]);
+            const double ro = d[0], ri = d[1];
+            const Eigen::Vector3d half((ro - ri) / 2, ro * std::sin(std::numbers::pi / n), d[2] / 2);
+            m_out += in + "<!-- " + commentSafe("G " + std::to_string(g.id) + " TUBE: a ring of " + std::to_string(n) + " boxes") + " -->\n";
+            for (int k = 0; k < n; ++k) {
+                const double a = 2 * std::numbers::pi * k / n;
+                Eigen::Isometry3d X = local;
+                X.translate(Eigen::Vector3d((ro + ri) / 2 * std::cos(a), (ro + ri) / 2 * std::sin(a), 0));
+                X.rotate(Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()));
+                put(name + "_" + std::to_string(k), "type=\"box\" size=\"" + vec3(half, false) + "\"", X);
+            }
+            break;
+        }
+        }
+    }
+
+    /// pos and quat attributes of a frame (quat left out when it is the identity).
+    static std::string pose(const Eigen::Isometry3d& X)
+    {
+        std::string out = " pos=\"" + vec3(X.translation()) + "\"";
+        Eigen::Quaterniond q(X.linear());
+        q.normalize();
+        if (q.w() < 0) q.coeffs() = -q.coeffs();
+        if (std::abs(q.w() - 1) > 1e-15) out += " quat=\"" + geo(q.w()) + " " + geo(q.x()) + " " + geo(q.y()) + " " + geo(q.z()) + "\"";
+        return out;
+    }
+
+    /// The graphics of body i (tree index) as geoms.
+    void bodyGeoms(int i, const std::string& in)
+    {
+        if (!contacts()) return;
+        for (const GraphicSpec& g : m_options.spec->graphics)
+            if (g.body != 0 && m_model.bodyIndex(g.body) == i) geom(g, *m_options.spec, false, in);
+    }
+
+    /// MuJoCo excludes body pairs: every pair of bodies with two solids that overlap at the
+    /// initial pose (Padrob excludes only those two solids).
+    void excludes()
+    {
+        std::set<std::pair<std::string, std::string>> pairs;
+        for (const auto& [a, b] : contactExcludedBodies(*m_model.contact)) {
+            std::string na = a < 0 ? "world" : m_names.body[a], nb = b < 0 ? "world" : m_names.body[b];
+            if (na > nb) std::swap(na, nb);
+            pairs.emplace(na, nb);
+        }
+        if (pairs.empty()) return;
+        m_out += "  <contact>\n";
+        m_out += "    <!-- solids overlapping at the initial pose (Padrob: kInitialOverlap): these bodies never touch -->\n";
+        for (const auto& [a, b] : pairs) m_out += "    <exclude body1=\"" + attr(a) + "\" body2=\"" + attr(b) + "\"/>\n";
+        m_out += "  </contact>\n";
+    }
 
     std::string modelName() const
     {
@@ -313,8 +475,14 @@ private:
              "  drives (" + std::to_string(driven) + " here): hydraulic drives and their relief valves, motors,\n"
              "    pneumatic cylinders, servos;\n"
              "  joint limit events and their impulses;\n"
-             "  applied forces (" + std::to_string(m_model.forces.size()) + " F statements here);\n"
-             "  graphics: no geoms, and contacts are off (Padrob has none).\n";
+             "  applied forces (" + std::to_string(m_model.forces.size()) + " F statements here);\n";
+        h += contacts() ? "CONTACT: the graphics are geoms (TUBE: a ring of boxes; CONE, PRISM, MESH: their\n"
+                          "convex hulls), NOCONTACT ones visual only" +
+                              std::string(m_options.scene ? ", the scene's as world geoms" : "") +
+                              "; contacts are on with\n"
+                              "MuJoCo's soft-constraint law set to approximate Padrob's compliant one\n"
+                              "(docs/contact.md): results agree within the two laws' differences.\n"
+                        : "  graphics: no geoms, and contacts are off (the model has no CONTACT).\n";
         if (placeholders > 0) {
             h += "\n" + count(static_cast<std::size_t>(placeholders), "body has", "bodies have") +
                  " placeholder mass properties: MuJoCo's compiler refuses\n"
@@ -350,6 +518,7 @@ private:
         const std::string in2 = in + "  ";
         m_out += in2 + "<freejoint name=\"" + attr(m_names.joint[i]) + "\"/>\n";
         inertial(b, in2);
+        bodyGeoms(b, in2);
         for (int c : m_children[static_cast<std::size_t>(b) + 1]) body(c, depth + 1);
         m_out += in + "</body>\n";
     }
@@ -397,6 +566,7 @@ private:
 
         joint(i, in2);
         inertial(i, in2);
+        bodyGeoms(i, in2);
         for (int c : m_children[static_cast<std::size_t>(i) + 1]) body(c, depth + 1);
         m_out += in + "</body>\n";
     }

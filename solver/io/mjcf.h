@@ -13,8 +13,16 @@
 //    not the actuator length —, m for slides), qvel is θ̇, and qpos0 = 0 (ref 0);
 //  - <inertial pos=com mass fullinertia="Ixx Iyy Izz Ixy Ixz Iyz"> (about the
 //    centre of mass, body axes, tensor elements; MuJoCo's order of the six);
-//  - <option timestep gravity integrator="RK4">, <flag contact="disable"/> (Padrob
-//    has no contacts), <compiler angle="radian" inertiafromgeom="false"/>;
+//  - <option timestep gravity integrator="RK4">, <flag contact="disable"/> (without
+//    CONTACT), <compiler angle="radian" inertiafromgeom="false"/>;
+//  - with CONTACT and MjcfOptions::spec: a <geom> per graphic (BOX, SPHERE,
+//    ELLIPSOID, CYL as MuJoCo's primitives; CONE, PRISM and MESH as <mesh> vertices,
+//    which MuJoCo collides as their convex hull; TUBE as a ring of boxes,
+//    mjcfTubeSegments), NOCONTACT graphics as visual geoms (contype = conaffinity =
+//    0), the scene's ground graphics as world geoms, the contact settings of
+//    mjcfContact in <default>, and an <exclude> per body pair with solids
+//    overlapping at the initial pose (Padrob excludes the two solids, MuJoCo the
+//    two bodies);
 //  - joint limits as range + limited="true" when both are finite (informative: the
 //    hard stops, restitution and limit impulses of Padrob are not MuJoCo's soft
 //    limits); a one-sided limit is only noted in a comment (MJCF ranges have two
@@ -45,6 +53,7 @@
 // constraints for the cut joints, which this export does not write.
 
 #include "solver/core/model.h"
+#include "solver/spec/model_spec.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -63,7 +72,29 @@ struct MjcfOptions {
     double timestep = 1e-3;  ///< <option timestep> [s] (> 0)
     bool limits = true;      ///< write joint ranges (limited="true") for two-sided limits
     std::string source;      ///< the model file, named in the header comment ("" = not named)
+    /// The model's spec (its graphics), for the geoms: used only when the model has
+    /// CONTACT (Model::contact); without either, no geoms and contacts off, as before.
+    const ModelSpec* spec = nullptr;
+    /// A scene (`--scene`) whose ground graphics become world geoms (with `spec`; the
+    /// model compiled with it, so that its initial overlaps are known). May be null.
+    const ModelSpec* scene = nullptr;
 };
+
+/// The contact settings the export writes for a model with CONTACT (docs/contact.md,
+/// "MuJoCo"): per geom friction "μ 0.005 0.0001" (condim 3: sliding only, as Padrob),
+/// solref "τ ζ" with MuJoCo's natural frequency 1/(τζ) equal to Padrob's ω (so τ =
+/// 1/(ω ζ), at least 2 dt: MuJoCo's own floor), ζ = 1 for e = 0, else the linear
+/// spring–damper's ζ of restitution e; solimp kMjcfSolimp; the friction cone elliptic
+/// (Padrob's is circular); parent–child contacts not filtered (Padrob's are not).
+struct MjcfContact {
+    double mu = 0.5;
+    double timeconst = 0;  ///< [s]
+    double dampratio = 1;
+};
+MjcfContact mjcfContact(const CompiledContact& law, double timestep);
+inline constexpr const char* kMjcfSolimp = "0.95 0.99 0.001";
+/// Boxes in the ring that stands for a TUBE (its wall seen from inside or out).
+int mjcfTubeSegments(double outerRadius);
 
 /// The MJCF names of the bodies and joints, by tree index (dim nb each): the
 /// modeler's NAME with every character other than ASCII letters, digits, '_', '-'

@@ -371,3 +371,40 @@ TEST(CliBench, AModelWithErrorsExitsOne)
     EXPECT_NE(r.err.find("bench_bad.pad:4:"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("error"), std::string::npos) << r.err;
 }
+
+// --scene: the model runs in the scene with contacts (CONTACT added when it has none),
+// the contact phase is timed apart (contact_us) and, with MuJoCo, mj_step on the export
+// with its geoms is the denominator of ratio_vs_mujoco. No speed is asserted here (the
+// targets live in docs/performance.md).
+TEST(CliBench, ASceneTimesTheContactPhaseAndMujocoWithGeoms)
+{
+    CliRun r = padrob("bench models/liner_mill.pad --scene resources/scenes/sag_mill.pad --json" + kCheap);
+    ASSERT_EQ(r.status, 0) << r.err;
+    auto doc = parse(r.out);
+    ASSERT_TRUE(doc) << r.out;
+    const Json& j = *doc;
+    EXPECT_EQ(j["scene"].string, "resources/scenes/sag_mill.pad");
+    EXPECT_EQ(j["contact_source"].string, "added");  // liner_mill.pad has no CONTACT
+    expectFigure(j, "contact_us");
+    expectFigure(j, "rk4_step_us");
+    EXPECT_LT(j["contact_us"].number, j["rk4_step_us_max"].number * 1.5);  // a part of the step (its clock aside)
+    EXPECT_GE(j["contact_points"].number, 0);
+    if (j.has("mujoco_rk4_step_us")) {
+        expectFigure(j, "mujoco_contact_rk4_step_us");
+        EXPECT_GT(j["mujoco_geoms"].number, 200);  // the machine's and the mill's solids, the shell a ring of boxes
+        EXPECT_NEAR(j["ratio_vs_mujoco"].number, j["rk4_step_us"].number / j["mujoco_contact_rk4_step_us"].number,
+                    1e-9 * j["ratio_vs_mujoco"].number);
+        EXPECT_TRUE(std::isfinite(j["ratio_vs_mujoco"].number) && j["ratio_vs_mujoco"].number > 0);
+    } else {
+        ASSERT_TRUE(j.has("mujoco_error")) << r.out;
+    }
+    // without a scene nothing of it
+    CliRun plain = padrob("bench models/pendulum.pad --json --no-mujoco" + kCheap);
+    auto p = parse(plain.out);
+    ASSERT_TRUE(p);
+    EXPECT_FALSE(p->has("contact_us"));
+    EXPECT_FALSE(p->has("scene"));
+    // a scene that cannot be read is a usage error
+    EXPECT_EQ(padrob("bench models/pendulum.pad --scene no_such_scene.pad" + kCheap).status, 2);
+    EXPECT_EQ(padrob("bench models/pendulum.pad --scene").status, 2);
+}

@@ -4,7 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -284,4 +288,111 @@ B2 3 P2 0 0 0 A2 1 0 0 R2 0 0 1
     CliRun loop = padrob("export --mjcf models/four_bar.pad --check");
     EXPECT_EQ(loop.status, 1);
     EXPECT_NE(loop.err.find("MJCF export needs a tree"), std::string::npos);
+}
+
+namespace {
+
+/// "  body 1: Padrob x y z, MuJoCo x y z" of --check's run with contacts: the two
+/// centres of mass at its end (nothing when the line is missing).
+using V3 = std::array<double, 3>;
+
+double dot(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+V3 minus(const V3& a, const V3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+
+bool contactEnd(const std::string& err, const std::string& body, V3& padrob, V3& mujoco)
+{
+    const std::string key = "  body " + body + ": Padrob ";
+    const std::size_t at = err.find(key);
+    if (at == std::string::npos) return false;
+    double v[6];
+    const int n = std::sscanf(err.c_str() + at + key.size(), "%lf %lf %lf, MuJoCo %lf %lf %lf", &v[0], &v[1], &v[2],
+                              &v[3], &v[4], &v[5]);
+    padrob = {v[0], v[1], v[2]};
+    mujoco = {v[3], v[4], v[5]};
+    return n == 6;
+}
+
+std::string fixed9(double v)
+{
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.9f", v);
+    return buf;
+}
+
+}  // namespace
+
+// CONTACT: the export has geoms and contacts on; MuJoCo loads it (--check) and runs it
+// side by side with Padrob for 1 s. The two contact laws differ (docs/contact.md,
+// "MuJoCo"): a box dropped 5 cm onto the floor rests at the same height within 0.3 mm
+// (Padrob's compliant contact sinks g/ω² = 0.11 mm, MuJoCo's soft constraint a few µm),
+// and a block sliding down a 35° incline (MU 0.5) covers ½·g(sin θ − μ cos θ)·t² in both
+// within 3 % of the closed form.
+TEST(CliExport, ContactScenesFollowMujocoWithinTheLawsDifferences)
+{
+    const std::string box = writeTemp("export_contact_box.pad", "GRAVITY 0 0 -9.81\nCONTACT\n"
+                                                                "B 1 100 16.667 16.667 16.667\nC 1 T 3\n"
+                                                                "B1 0 P1 0.2 -0.1 0.55 A1 1 0 0 R1 0 1 0\n"
+                                                                "B2 1 P2 0 0 0 A2 1 0 0 R2 0 1 0\n"
+                                                                "G 1 B 1 BOX 1 1 1\nG 2 B 0 BOX 4 4 1 POS 0 0 -0.5\n"
+                                                                "G 3 B 1 SPHERE 0.2 POS 0 0 0.6 NOCONTACT\n");
+    CliRun plain = padrob("export --mjcf '" + box + "'");
+    ASSERT_EQ(plain.status, 0) << plain.err;
+    EXPECT_NE(plain.out.find("<geom name=\"g1\" type=\"box\" size=\"0.5 0.5 0.5\""), std::string::npos) << plain.out;
+    EXPECT_NE(plain.out.find("<geom name=\"g2\" type=\"box\" size=\"2 2 0.5\" pos=\"0 0 -0.5\""), std::string::npos);
+    EXPECT_NE(plain.out.find("contype=\"0\" conaffinity=\"0\""), std::string::npos);  // G 3, NOCONTACT
+    EXPECT_EQ(plain.out.find("contact=\"disable\""), std::string::npos);
+    if (!buildHasMujoco()) PADROB_NEEDS_COMPONENT("padrob was built without MuJoCo: no side-by-side run");
+
+    CliRun r = padrob("export --mjcf '" + box + "' --check");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("MuJoCo loads the export with its 3 geoms and contacts on"), std::string::npos) << r.err;
+    V3 p, m;
+    ASSERT_TRUE(contactEnd(r.err, "1", p, m)) << r.err;
+    std::printf("box at rest: Padrob z %.6f, MuJoCo z %.6f\n", p[2], m[2]);
+    EXPECT_NEAR(p[2], 0.5, 0.3e-3);
+    EXPECT_NEAR(m[2], 0.5, 0.3e-3);
+    EXPECT_NEAR(p[2], m[2], 0.3e-3);
+    for (const V3& q : {p, m}) {  // neither drifts
+        EXPECT_NEAR(q[0], 0.2, 0.1e-3);
+        EXPECT_NEAR(q[1], -0.1, 0.1e-3);
+    }
+
+    // a free block on a 35° incline (MU 0.5), from rest: s = ½·a·t² after 1 s
+    const double th = 35 * std::numbers::pi / 180;
+    const V3 n = {std::sin(th), 0, std::cos(th)}, c = {0.25 * n[0], 0, 0.25 * n[2]};
+    const std::string incline = writeTemp(
+        "export_contact_incline.pad",
+        "GRAVITY 0 0 -9.81\nCONTACT MU 0.5\nB 1 100 4.1667 4.1667 4.1667\nC 1 T 3\nB1 0 P1 " + fixed9(c[0]) + " 0 " +
+            fixed9(c[2]) + " A1 " + fixed9(std::cos(th)) + " 0 " + fixed9(-std::sin(th)) +
+            " R1 0 1 0\nB2 1 P2 0 0 0 A2 1 0 0 R2 0 1 0\nG 1 B 1 BOX 0.5 0.5 0.5\nG 2 B 0 BOX 20 4 1 POS " +
+            fixed9(-0.5 * n[0]) + " 0 " + fixed9(-0.5 * n[2]) + " ROT 0 1 0 35\n");
+    CliRun s = padrob("export --mjcf '" + incline + "' --check");
+    ASSERT_EQ(s.status, 0) << s.err;
+    ASSERT_TRUE(contactEnd(s.err, "1", p, m)) << s.err;
+    const double a = 9.81 * (std::sin(th) - 0.5 * std::cos(th)), expected = 0.5 * a;
+    const V3 down = {std::cos(th), 0, -std::sin(th)};
+    const double sp = dot(minus(p, c), down), sm = dot(minus(m, c), down);
+    std::printf("block on 35 deg after 1 s: closed form %.4f m, Padrob %.4f m, MuJoCo %.4f m\n", expected, sp, sm);
+    EXPECT_NEAR(sp, expected, 0.03 * expected);
+    EXPECT_NEAR(sm, expected, 0.03 * expected);
+}
+
+// the liner manipulator in the SAG mill with CONTACT: the scene's solids are world geoms,
+// and MuJoCo loads the whole export
+TEST(CliExport, TheLinerManipulatorInTheMillExportsWithItsScene)
+{
+    const std::string text = slurp(std::string(PADROB_SOURCE_DIR) + "/models/liner_mill.pad");
+    ASSERT_FALSE(text.empty());
+    const std::string model = writeTemp("liner_mill_contact.pad", "CONTACT\n" + text);
+    CliRun r = padrob("export --mjcf '" + model + "' --scene resources/scenes/sag_mill.pad");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("<geom name=\"scene_g1_0\" type=\"box\""), std::string::npos);  // the shell: a ring of boxes
+    EXPECT_NE(r.out.find("<geom name=\"scene_g3\" type=\"cylinder\""), std::string::npos);  // the grate
+    EXPECT_NE(r.out.find("<exclude "), std::string::npos);  // the pins in their bores
+    CliRun noScene = padrob("export --mjcf '" + model + "'");
+    EXPECT_EQ(noScene.out.find("scene_g"), std::string::npos);
+    if (!buildHasMujoco()) PADROB_NEEDS_COMPONENT("padrob was built without MuJoCo: the export is not loaded");
+    CliRun c = padrob("export --mjcf '" + model + "' --scene resources/scenes/sag_mill.pad --check");
+    EXPECT_EQ(c.status, 0) << c.err;
+    EXPECT_NE(c.err.find("MuJoCo loads the export with its "), std::string::npos) << c.err;
 }

@@ -223,6 +223,8 @@ TEST(FreeContact, AHitDeeperThanTheContactHoldsIsAnEventAndIsSeparatedGentlyWith
     EXPECT_NE(said.find("G 1 and G 100 overlap by"), std::string::npos) << said;
     EXPECT_NE(deep[1].describe(*model).find("no longer overlap deeply"), std::string::npos);
     std::printf("20 m drop: %.1f mm deep, rebound %.2f mm; %s\n", -deepest * 1e3, rebound * 1e3, said.c_str());
+}
+
 TEST(LinerContact, TheLinerLiesStillOnItsCartAndTheMachineDoesNotStir)
 {
     auto model = test::compileExample("liner_station_fluid.pad");

@@ -1,6 +1,7 @@
 #include "solver/io/mjcf.h"
 
 #include "solver/kinematics/kinematics.h"
+#include "solver/pipeline.h"
 #include "tests/solver/test_models.h"
 
 #include <gtest/gtest.h>
@@ -578,6 +579,104 @@ TEST(Mjcf, EveryBundledTreeModelExports)
         EXPECT_EQ(e.root()->all("joint").size(), static_cast<std::size_t>(model->nb)) << name;
         expectSamePoses(*model, e, Eigen::Map<const Eigen::VectorXd>(model->theta0.data(), model->nb));
     }
+}
+
+// CONTACT: the graphics become geoms in their bodies' frames, NOCONTACT ones visual,
+// a TUBE a ring of boxes, the scene's graphics world geoms, the contact settings in
+// <default>, the pair overlapping at the start excluded; without CONTACT none of it.
+TEST(Mjcf, ContactWritesGeomsSettingsAndExcludes)
+{
+    const std::string text = "GRAVITY 0 0 -9.81\n"
+                             "CONTACT MU 0.4\n"
+                             "B 1 10 1 1 1 NAME \"arm\"\n"
+                             "C 1 NAME \"pivot\"\n"
+                             "B1 0 P1 0 0 1 A1 1 0 0 R1 0 1 0\n"
+                             "B2 1 P2 0 0 0 A2 1 0 0 R2 0 1 0\n"
+                             "G 1 B 1 BOX 0.2 0.4 0.6 POS 0 0.5 0\n"
+                             "G 2 B 1 CYL 0.1 0.3 POS 0 0 0 AXIS 1 0 0 NOCONTACT\n"
+                             "G 3 B 1 CONE 0.1 0.2 POS 0 1 0\n"
+                             "G 4 B 0 CYL 0.05 0.5 POS 0 0 1 AXIS 1 0 0\n"  // the pin through the arm's hub
+                             "G 5 B 0 TUBE 3 2.9 2 POS 0 0 0 AXIS 0 1 0\n";
+    const CompiledModel compiled = compileText(text, "contact.pad");
+    ASSERT_TRUE(compiled.model);
+    ASSERT_TRUE(compiled.model->contact);
+    const CompiledModel scene = compileText("G 7 B 0 SPHERE 0.25 POS 2 0 0\nG 8 B 0 BOX 1 1 1 POS 0 -3 0\n", "scene.pad");
+    ASSERT_TRUE(scene.ok());
+    const CompiledModel withScene = compileSpec(compiled.spec, &scene.spec);
+    ASSERT_TRUE(withScene.model);
+    MjcfOptions options;
+    options.spec = &withScene.spec;
+    options.scene = &scene.spec;
+    const Exported e = exportModel(*withScene.model, options);
+    ASSERT_TRUE(e.root());
+    const Element* option = e.root()->child("option");
+    ASSERT_TRUE(option && option->child("flag"));
+    EXPECT_FALSE(option->child("flag")->has("contact"));  // contacts on
+    EXPECT_EQ(option->child("flag")->attr("filterparent"), "disable");
+    EXPECT_EQ(option->attr("cone"), "elliptic");
+    const Element* defaults = e.root()->child("default");
+    ASSERT_TRUE(defaults && defaults->child("geom"));
+    EXPECT_EQ(numbers(defaults->child("geom")->attr("friction"))[0], 0.4);
+    const std::vector<double> solref = numbers(defaults->child("geom")->attr("solref"));
+    ASSERT_EQ(solref.size(), 2u);
+    EXPECT_NEAR(solref[0], 1 / 300.0, 1e-12);  // 1/(ω ζ), ζ = 1 for E 0
+    EXPECT_EQ(solref[1], 1);
+
+    std::map<std::string, const Element*> geoms;
+    for (const Element* g : e.root()->all("geom")) geoms[g->attr("name")] = g;
+    ASSERT_TRUE(geoms.count("g1") && geoms.count("g2") && geoms.count("g3") && geoms.count("g4"));
+    EXPECT_EQ(geoms["g1"]->parent->attr("name"), "arm");
+    EXPECT_EQ(geoms["g1"]->attr("type"), "box");
+    EXPECT_EQ(vec(geoms["g1"]->attr("size")), Eigen::Vector3d(0.1, 0.2, 0.3));
+    EXPECT_EQ(vec(geoms["g1"]->attr("pos")), Eigen::Vector3d(0, 0.5, 0));
+    EXPECT_EQ(geoms["g2"]->attr("contype"), "0");
+    EXPECT_EQ(geoms["g2"]->attr("conaffinity"), "0");
+    EXPECT_FALSE(geoms["g1"]->has("contype"));
+    EXPECT_EQ(geoms["g3"]->attr("type"), "mesh");
+    EXPECT_EQ(geoms["g4"]->parent->name, "worldbody");
+    // the tube: a ring of boxes in the world, their centres on the mean radius
+    int ring = 0;
+    for (const auto& [name, g] : geoms) {
+        if (name.rfind("g5_", 0) != 0) continue;
+        ++ring;
+        EXPECT_EQ(g->attr("type"), "box");
+        const Eigen::Vector3d c = vec(g->attr("pos"));
+        EXPECT_NEAR(std::hypot(c.x(), c.z()), 2.95, 1e-9) << name;
+        EXPECT_NEAR(c.y(), 0, 1e-12) << name;
+    }
+    EXPECT_EQ(ring, mjcfTubeSegments(3));
+    // the scene's
+    ASSERT_TRUE(geoms.count("scene_g7") && geoms.count("scene_g8"));
+    EXPECT_EQ(geoms["scene_g7"]->attr("type"), "sphere");
+    EXPECT_EQ(geoms["scene_g7"]->parent->name, "worldbody");
+    // the cone's vertices in <asset>
+    ASSERT_TRUE(e.root()->child("asset"));
+    EXPECT_EQ(e.root()->child("asset")->child("mesh")->attr("name"), "mesh_g3");
+    // the pin G 4 is inside only G 2, which is NOCONTACT: the arm and the world may touch
+    EXPECT_FALSE(e.root()->child("contact"));
+
+    // a pin through the arm's box: the world and the arm never touch in MuJoCo
+    const CompiledModel pinned = compileText(text + "G 6 B 0 CYL 0.05 1 POS 0 0.5 1 AXIS 1 0 0\n", "pinned.pad");
+    ASSERT_TRUE(pinned.model);
+    MjcfOptions pinnedOptions;
+    pinnedOptions.spec = &pinned.spec;
+    const Exported p = exportModel(*pinned.model, pinnedOptions);
+    ASSERT_TRUE(p.root() && p.root()->child("contact"));
+    const Element* exclude = p.root()->child("contact")->child("exclude");
+    ASSERT_TRUE(exclude);
+    EXPECT_EQ(exclude->attr("body1"), "arm");
+    EXPECT_EQ(exclude->attr("body2"), "world");
+
+    // without CONTACT, as before: no geoms, contacts off
+    const CompiledModel plain = compileText(text.substr(0, text.find("CONTACT")) + text.substr(text.find("B 1 10")), "plain.pad");
+    ASSERT_TRUE(plain.model);
+    ASSERT_FALSE(plain.model->contact);
+    MjcfOptions plainOptions;
+    plainOptions.spec = &plain.spec;
+    const Exported q = exportModel(*plain.model, plainOptions);
+    ASSERT_TRUE(q.root());
+    EXPECT_TRUE(q.root()->all("geom").empty());
+    EXPECT_EQ(q.root()->child("option")->child("flag")->attr("contact"), "disable");
 }
 
 }  // namespace
