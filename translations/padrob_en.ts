@@ -2750,7 +2750,7 @@
         <translation>the last row is not finished</translation>
     </message>
     <message>
-        <location filename="../solver/contact/contact_geometry.cpp" line="+105" />
+        <location filename="../solver/contact/contact_geometry.cpp" line="+127" />
         <source>G %1 cannot serve as a contact shape: %2</source>
         <translation>G %1 cannot serve as a contact shape: %2</translation>
     </message>
@@ -2760,7 +2760,7 @@
         <translation>fix the mesh file, or mark the graphic NOCONTACT (drawn only)</translation>
     </message>
     <message>
-        <location line="+49" />
+        <location line="+57" />
         <source>G %1 and %2 overlap by %3 mm at the initial pose: they never touch each other</source>
         <translation>G %1 and %2 overlap by %3 mm at the initial pose: they never touch each other</translation>
     </message>
@@ -2905,7 +2905,7 @@
 <context>
     <name>TutorialSession</name>
     <message>
-        <location filename="../trainer/training/session.cpp" line="+75" />
+        <location filename="../trainer/training/session.cpp" line="+77" />
         <source>Goal done</source>
         <translation>Goal done</translation>
     </message>
@@ -3000,7 +3000,7 @@
         <translation>Stopped</translation>
     </message>
     <message>
-        <location line="+66" />
+        <location line="+73" />
         <source>Goal done: %1</source>
         <translation>Goal done: %1</translation>
     </message>
@@ -3165,7 +3165,7 @@
         <translation>Complete every goal: the stage is passed only when all are done.</translation>
     </message>
     <message>
-        <location line="-136" />
+        <location line="-143" />
         <source>Fault injected</source>
         <translation>Fault injected</translation>
     </message>
@@ -3195,7 +3195,7 @@
         <translation>Power cut</translation>
     </message>
     <message>
-        <location filename="../trainer/training/session.cpp" line="+32" />
+        <location filename="../trainer/training/session.cpp" line="+39" />
         <source>Instructor: the hose of %1 was repaired</source>
         <translation>Instructor: the hose of %1 was repaired</translation>
     </message>
@@ -3235,7 +3235,7 @@
         <translation>Instructor: the power was cut; every valve closed</translation>
     </message>
     <message>
-        <location line="+650" />
+        <location line="+700" />
         <source>There is no drive "%1": this machine has no hydraulic drives</source>
         <translation>There is no drive "%1": this machine has no hydraulic drives</translation>
     </message>
@@ -4459,22 +4459,22 @@
 <context>
     <name>padrob</name>
     <message>
-        <location filename="../ide/cli/bench.cpp" line="+212" />
+        <location filename="../ide/cli/bench.cpp" line="+236" />
         <source>the simulation failed: %1</source>
         <translation>the simulation failed: %1</translation>
     </message>
     <message>
-        <location line="+112" />
+        <location line="+144" />
         <source>not compared with --integrator adaptive (MuJoCo is timed with RK4 at dt)</source>
         <translation>not compared with --integrator adaptive (MuJoCo is timed with RK4 at dt)</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+10" />
         <source>no timings</source>
         <translation>no timings</translation>
     </message>
     <message>
-        <location line="+60" />
+        <location line="+61" />
         <source>generated model of %1 bodies does not compile</source>
         <translation>generated model of %1 bodies does not compile</translation>
     </message>
@@ -4489,7 +4489,7 @@
         <translation>chain of %1 bodies: %2</translation>
     </message>
     <message>
-        <location line="+158" />
+        <location line="+174" />
         <source>machine: %1, %2 cores</source>
         <translation>machine: %1, %2 cores</translation>
     </message>
@@ -4507,7 +4507,17 @@
         <translation>model: %1 (bodies: %2, drives: %3, loop closures: %4)</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
+        <source>scene: %1; CONTACT added (the model has none): MU 0.5, E 0</source>
+        <translation>scene: %1; CONTACT added (the model has none): MU 0.5, E 0</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>scene: %1; the model's CONTACT</source>
+        <translation>scene: %1; the model's CONTACT</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>steps: %1 of dt = %2 ms, %3</source>
         <translation>steps: %1 of dt = %2 ms, %3</translation>
     </message>
@@ -4587,6 +4597,16 @@
         <translation>no drives, no events</translation>
     </message>
     <message>
+        <location line="+3" />
+        <source>contact phase, per RK4 step</source>
+        <translation>contact phase, per RK4 step</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 contact points at a step's end (mean)</source>
+        <translation>%1 contact points at a step's end (mean)</translation>
+    </message>
+    <message>
         <location line="+2" />
         <source>reference N–E system, per solve</source>
         <translation>reference N–E system, per solve</translation>
@@ -4627,7 +4647,17 @@
         <translation>Padrob / MuJoCo %1</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+2" />
+        <source>MuJoCo RK4 step, geoms and contacts</source>
+        <translation>MuJoCo RK4 step, geoms and contacts</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Padrob / MuJoCo %1 (%2 geoms, %3 contacts)</source>
+        <translation>Padrob / MuJoCo %1 (%2 geoms, %3 contacts)</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>Steps: every drive commanded by a sine (amplitude 0.8, 0.5 Hz, phases spread) set before every
 step (held: set once), limits and relief valves watched as events, the joint reactions computed
 at every step's end. Events in one run: %1.</source>
@@ -4698,7 +4728,7 @@ limits on all; commands held, or set every step</translation>
     </message>
     <message>
         <location line="+9" />
-        <source>Usage: padrob bench MODEL [OPTIONS]
+        <source>Usage: padrob bench MODEL [--scene FILE] [OPTIONS]
        padrob bench --scaling [OPTIONS]
 
 Times the solver on a model: forward dynamics, RK4 steps with drives, limits and
@@ -4719,6 +4749,10 @@ slowest run (the machine is noisy); times in µs per evaluation or per step.
                         300 and 1000 bodies and fit time ∝ n^p (MODEL may then be
                         left out)
   --no-mujoco           skip the comparison with MuJoCo
+  --scene FILE          run the model in a scene (its ground graphics) with contacts:
+                        the model's CONTACT, or CONTACT (MU 0.5, E 0) added when it
+                        has none; also times the contact phase per step (contact_us)
+                        and MuJoCo on the export with the geoms (ratio_vs_mujoco)
 
 The RK4 steps command every drive with a slow sine, set before every step (so
 valves open and close and every step restarts the integrator, as at the station),
@@ -4729,7 +4763,7 @@ limits. The real-time factor is dt / step time.
 Exit status: 0 success; 1 the model has errors or a simulation failed;
 2 usage error or unreadable model.
 </source>
-        <translation>Usage: padrob bench MODEL [OPTIONS]
+        <translation>Usage: padrob bench MODEL [--scene FILE] [OPTIONS]
        padrob bench --scaling [OPTIONS]
 
 Times the solver on a model: forward dynamics, RK4 steps with drives, limits and
@@ -4750,6 +4784,10 @@ slowest run (the machine is noisy); times in µs per evaluation or per step.
                         300 and 1000 bodies and fit time ∝ n^p (MODEL may then be
                         left out)
   --no-mujoco           skip the comparison with MuJoCo
+  --scene FILE          run the model in a scene (its ground graphics) with contacts:
+                        the model's CONTACT, or CONTACT (MU 0.5, E 0) added when it
+                        has none; also times the contact phase per step (contact_us)
+                        and MuJoCo on the export with the geoms (ratio_vs_mujoco)
 
 The RK4 steps command every drive with a slow sine, set before every step (so
 valves open and close and every step restarts the integrator, as at the station),
@@ -4762,14 +4800,15 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
 </translation>
     </message>
     <message>
-        <location line="+45" />
+        <location line="+49" />
+        <location line="+5" />
         <location filename="../ide/cli/centre.cpp" line="+90" />
         <location line="+6" />
         <location line="+2" />
         <location line="+3" />
         <location line="+3" />
         <location line="+580" />
-        <location filename="../ide/cli/export.cpp" line="+85" />
+        <location filename="../ide/cli/export.cpp" line="+92" />
         <location filename="../ide/cli/simulate.cpp" line="+243" />
         <location filename="../ide/cli/tutorial.cpp" line="-58" />
         <source>%1 needs a value</source>
@@ -4797,7 +4836,7 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
         <location line="+271" />
         <location line="+184" />
         <location line="+51" />
-        <location filename="../ide/cli/export.cpp" line="+12" />
+        <location filename="../ide/cli/export.cpp" line="+15" />
         <location filename="../ide/cli/inertia.cpp" line="+196" />
         <location filename="../ide/cli/main.cpp" line="+138" />
         <location line="+26" />
@@ -4826,12 +4865,17 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
         <translation>no model given</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+1" />
+        <source>--scene needs a model</source>
+        <translation>--scene needs a model</translation>
+    </message>
+    <message>
+        <location line="+27" />
         <source>%1: the model has no moving body: nothing to time</source>
         <translation>%1: the model has no moving body: nothing to time</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+17" />
         <source>MuJoCo: %1</source>
         <translation>MuJoCo: %1</translation>
     </message>
@@ -4846,27 +4890,32 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
         <translation>Try 'padrob %1 --help'.</translation>
     </message>
     <message>
-        <location line="+82" />
+        <location line="+92" />
         <source>the values given on the command line do not fit the model:</source>
         <translation>the values given on the command line do not fit the model:</translation>
     </message>
     <message>
-        <location filename="../ide/cli/export.cpp" line="-57" />
-        <source>Usage: padrob export --mjcf MODEL [--out FILE] [--dt H] [--check]
+        <location filename="../ide/cli/export.cpp" line="-65" />
+        <source>Usage: padrob export --mjcf MODEL [--scene FILE] [--out FILE] [--dt H] [--check]
 
 Writes a model without closed loops as MuJoCo's MJCF (XML). The bodies are posed
 with every joint at 0, so MuJoCo's qpos of each joint is Padrob's coordinate
 (the angle for T 0 and T 1 joints: a T 1 joint's length is not a coordinate in
 MuJoCo; the displacement for T 2); the keyframe "initial" holds the model's
 initial state. MuJoCo gets a passive model: drives, relief valves, limit
-impulses, applied forces and graphics are not exported (the file's header says
-so). Bodies MuJoCo would refuse (massless, or an inertia breaking I1 + I2 &gt;= I3)
+impulses and applied forces are not exported (the file's header says so). With
+CONTACT the graphics become geoms (a TUBE a ring of boxes; CONE, PRISM and MESH
+their convex hulls; NOCONTACT ones visual only) and contacts are on, with MuJoCo's
+law set to approximate Padrob's; without CONTACT there are no geoms and contacts
+are off. Bodies MuJoCo would refuse (massless, or an inertia breaking I1 + I2 &gt;= I3)
 get the nearest values it accepts, with the true ones in a comment there.
 
   --mjcf        the format (required; the only one)
   --out FILE    write the MJCF there (default: standard output); the file is
                 replaced whole or not at all
   --dt H        the time step written in &lt;option&gt; [s] (default 0.001)
+  --scene FILE  with CONTACT: the scene's ground graphics (e.g. a mill) as world
+                geoms, and the solids overlapping them at the start excluded
   --check       load the MJCF into MuJoCo (when padrob was built with it), put
                 the true masses and inertias in, and check that MuJoCo and Padrob
                 follow the same trajectory for 0.2 s (RK4 at --dt, every joint
@@ -4877,21 +4926,26 @@ Exit status: 0 success; 1 the model has errors, has closed loops, or MuJoCo
 disagrees (--check); 2 usage error, unreadable model, or --check in a padrob
 built without MuJoCo. On failure nothing is written.
 </source>
-        <translation>Usage: padrob export --mjcf MODEL [--out FILE] [--dt H] [--check]
+        <translation>Usage: padrob export --mjcf MODEL [--scene FILE] [--out FILE] [--dt H] [--check]
 
 Writes a model without closed loops as MuJoCo's MJCF (XML). The bodies are posed
 with every joint at 0, so MuJoCo's qpos of each joint is Padrob's coordinate
 (the angle for T 0 and T 1 joints: a T 1 joint's length is not a coordinate in
 MuJoCo; the displacement for T 2); the keyframe "initial" holds the model's
 initial state. MuJoCo gets a passive model: drives, relief valves, limit
-impulses, applied forces and graphics are not exported (the file's header says
-so). Bodies MuJoCo would refuse (massless, or an inertia breaking I1 + I2 &gt;= I3)
+impulses and applied forces are not exported (the file's header says so). With
+CONTACT the graphics become geoms (a TUBE a ring of boxes; CONE, PRISM and MESH
+their convex hulls; NOCONTACT ones visual only) and contacts are on, with MuJoCo's
+law set to approximate Padrob's; without CONTACT there are no geoms and contacts
+are off. Bodies MuJoCo would refuse (massless, or an inertia breaking I1 + I2 &gt;= I3)
 get the nearest values it accepts, with the true ones in a comment there.
 
   --mjcf        the format (required; the only one)
   --out FILE    write the MJCF there (default: standard output); the file is
                 replaced whole or not at all
   --dt H        the time step written in &lt;option&gt; [s] (default 0.001)
+  --scene FILE  with CONTACT: the scene's ground graphics (e.g. a mill) as world
+                geoms, and the solids overlapping them at the start excluded
   --check       load the MJCF into MuJoCo (when padrob was built with it), put
                 the true masses and inertias in, and check that MuJoCo and Padrob
                 follow the same trajectory for 0.2 s (RK4 at --dt, every joint
@@ -4904,7 +4958,12 @@ built without MuJoCo. On failure nothing is written.
 </translation>
     </message>
     <message>
-        <location line="+43" />
+        <location line="+48" />
+        <source>--scene needs a file name</source>
+        <translation>--scene needs a file name</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>--out needs a file name</source>
         <translation>--out needs a file name</translation>
     </message>
@@ -4925,12 +4984,19 @@ built without MuJoCo. On failure nothing is written.
         <translation>--check needs MuJoCo, and this padrob was built without it</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+21" />
+        <location line="+25" />
+        <location line="+13" />
         <source>note: %1</source>
         <translation>note: %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-38" />
+        <source>the model has no CONTACT: no geoms, and the scene is not exported</source>
+        <translation>the model has no CONTACT: no geoms, and the scene is not exported</translation>
+    </message>
+    <message>
+        <location line="+26" />
         <source>set in MuJoCo after loading: %1</source>
         <translation>set in MuJoCo after loading: %1</translation>
     </message>
@@ -4940,7 +5006,22 @@ built without MuJoCo. On failure nothing is written.
         <translation>MuJoCo agrees with Padrob over %1 s (RK4, dt %2 s): the centres of mass are at most %3 m apart</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+5" />
+        <source>MuJoCo loads the export with its %1 geoms and contacts on</source>
+        <translation>MuJoCo loads the export with its %1 geoms and contacts on</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>with contacts over %1 s (every joint passive, no limits): the centres of mass are at most %2 m apart; at the end:</source>
+        <translation>with contacts over %1 s (every joint passive, no limits): the centres of mass are at most %2 m apart; at the end:</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>  body %1: Padrob %2, MuJoCo %3</source>
+        <translation>  body %1: Padrob %2, MuJoCo %3</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>cannot write to standard output</source>
         <translation>cannot write to standard output</translation>
     </message>
@@ -5425,17 +5506,17 @@ A model with errors is not described: its problems are printed as by
         <translation>MuJoCo refused the exported MJCF: %1</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+77" />
         <source>MuJoCo could not allocate its data</source>
         <translation>MuJoCo could not allocate its data</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="-58" />
         <source>MuJoCo's model has no body '%1' or joint '%2'</source>
         <translation>MuJoCo's model has no body '%1' or joint '%2'</translation>
     </message>
     <message numerus="yes">
-        <location line="+48" />
+        <location line="+169" />
         <source>every joint passive in both: the model's %n drive(s) are not exported</source>
         <translation>
             <numerusform>every joint passive in both: the model's %n drive is not exported</numerusform>
@@ -5459,17 +5540,23 @@ A model with errors is not described: its problems are printed as by
         </translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="-79" />
+        <location line="+109" />
         <source>Padrob failed: %1</source>
         <translation>Padrob failed: %1</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="-25" />
+        <source>the agreement is checked without contacts (MuJoCo's export there has no geoms)</source>
+        <translation>the agreement is checked without contacts (MuJoCo's export there has no geoms)</translation>
+    </message>
+    <message>
+        <location line="+39" />
         <source>MuJoCo and Padrob disagree: the centre of mass of body %1 is %2 m apart at t = %3 s (tolerance %4 m; Padrob %5, MuJoCo %6)</source>
         <translation>MuJoCo and Padrob disagree: the centre of mass of body %1 is %2 m apart at t = %3 s (tolerance %4 m; Padrob %5, MuJoCo %6)</translation>
     </message>
     <message numerus="yes">
-        <location line="+29" />
+        <location line="+34" />
         <source>MuJoCo warned %n time(s): %1</source>
         <translation>
             <numerusform>MuJoCo warned %n time: %1</numerusform>
@@ -5682,7 +5769,7 @@ Exit status: 0 success; 1 the model has errors or the simulation failed;
         <translation>%1: the model has no joint %2</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+25" />
         <source>0 (the ground)</source>
         <translation>0 (the ground)</translation>
     </message>
@@ -8195,12 +8282,12 @@ never the .key files of the CAs; then run it with --security DIR.
     </message>
     <message>
         <location line="+65" />
-        <location line="+68" />
+        <location line="+74" />
         <source>Open Model</source>
         <translation>Open Model</translation>
     </message>
     <message>
-        <location line="-68" />
+        <location line="-74" />
         <source>Cannot open %1:
 %2</source>
         <translation>Cannot open %1:
@@ -8208,12 +8295,12 @@ never the .key files of the CAs; then run it with --security DIR.
     </message>
     <message>
         <location line="-243" />
-        <location line="+311" />
+        <location line="+317" />
         <source>Padrob models (*.pad);;All files (*)</source>
         <translation>Padrob models (*.pad);;All files (*)</translation>
     </message>
     <message numerus="yes">
-        <location line="-525" />
+        <location line="-531" />
         <source>%n attempt(s) kept while the trainee records could not be written were added to them.</source>
         <translation>
             <numerusform>%n attempt kept while the trainee records could not be written was added to them.</numerusform>
@@ -8302,7 +8389,7 @@ The 3D view goes on without this scene.</source>
 The 3D view goes on without this scene.</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+13" />
         <source>Scene: %1</source>
         <translation>Scene: %1</translation>
     </message>
@@ -8312,12 +8399,12 @@ The 3D view goes on without this scene.</translation>
         <translation>Scene: %1. %2</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+22" />
         <source>The scene used last is not drawn: %1</source>
         <translation>The scene used last is not drawn: %1</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+30" />
         <location line="+14" />
         <source>Save Model</source>
         <translation>Save Model</translation>
@@ -8400,8 +8487,13 @@ Use Save As to choose another place.</translation>
         <source>Model Changed on Disk</source>
         <translation>Model Changed on Disk</translation>
     </message>
+    <message>
+        <location line="+25" />
+        <source>The scene's solids cannot be taken into the model's contacts (a shape that cannot serve): the model runs without touching them</source>
+        <translation>The scene's solids cannot be taken into the model's contacts (a shape that cannot serve): the model runs without touching them</translation>
+    </message>
     <message numerus="yes">
-        <location line="+21" />
+        <location line="+13" />
         <source>Model applied: %n bodies</source>
         <translation>
             <numerusform>Model applied: %n body</numerusform>

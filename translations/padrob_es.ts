@@ -2750,7 +2750,7 @@
         <translation>la última fila no está terminada</translation>
     </message>
     <message>
-        <location filename="../solver/contact/contact_geometry.cpp" line="+105" />
+        <location filename="../solver/contact/contact_geometry.cpp" line="+127" />
         <source>G %1 cannot serve as a contact shape: %2</source>
         <translation>G %1 no puede servir como forma de contacto: %2</translation>
     </message>
@@ -2760,7 +2760,7 @@
         <translation>corrija el archivo de malla, o marque el gráfico NOCONTACT (solo se dibuja)</translation>
     </message>
     <message>
-        <location line="+49" />
+        <location line="+57" />
         <source>G %1 and %2 overlap by %3 mm at the initial pose: they never touch each other</source>
         <translation>G %1 y %2 se traslapan %3 mm en la pose inicial: nunca se tocan entre sí</translation>
     </message>
@@ -2905,7 +2905,7 @@
 <context>
     <name>TutorialSession</name>
     <message>
-        <location filename="../trainer/training/session.cpp" line="+75" />
+        <location filename="../trainer/training/session.cpp" line="+77" />
         <source>Goal done</source>
         <translation>Objetivo cumplido</translation>
     </message>
@@ -3000,7 +3000,7 @@
         <translation>Detenido</translation>
     </message>
     <message>
-        <location line="+66" />
+        <location line="+73" />
         <source>Goal done: %1</source>
         <translation>Objetivo cumplido: %1</translation>
     </message>
@@ -3165,7 +3165,7 @@
         <translation>Cumpla todos los objetivos: la etapa se aprueba solo cuando están todos cumplidos.</translation>
     </message>
     <message>
-        <location line="-136" />
+        <location line="-143" />
         <source>Fault injected</source>
         <translation>Falla introducida</translation>
     </message>
@@ -3195,7 +3195,7 @@
         <translation>Corte de energía</translation>
     </message>
     <message>
-        <location filename="../trainer/training/session.cpp" line="+32" />
+        <location filename="../trainer/training/session.cpp" line="+39" />
         <source>Instructor: the hose of %1 was repaired</source>
         <translation>Instructor: se reparó la manguera de %1</translation>
     </message>
@@ -3235,7 +3235,7 @@
         <translation>Instructor: se cortó la energía; todas las válvulas se cerraron</translation>
     </message>
     <message>
-        <location line="+650" />
+        <location line="+700" />
         <source>There is no drive "%1": this machine has no hydraulic drives</source>
         <translation>No hay un accionamiento "%1": esta máquina no tiene accionamientos hidráulicos</translation>
     </message>
@@ -4459,22 +4459,22 @@
 <context>
     <name>padrob</name>
     <message>
-        <location filename="../ide/cli/bench.cpp" line="+212" />
+        <location filename="../ide/cli/bench.cpp" line="+236" />
         <source>the simulation failed: %1</source>
         <translation>la simulación falló: %1</translation>
     </message>
     <message>
-        <location line="+112" />
+        <location line="+144" />
         <source>not compared with --integrator adaptive (MuJoCo is timed with RK4 at dt)</source>
         <translation>sin comparar con --integrator adaptive (a MuJoCo se le mide RK4 con dt)</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+10" />
         <source>no timings</source>
         <translation>sin tiempos medidos</translation>
     </message>
     <message>
-        <location line="+60" />
+        <location line="+61" />
         <source>generated model of %1 bodies does not compile</source>
         <translation>el modelo generado de %1 cuerpos no compila</translation>
     </message>
@@ -4489,7 +4489,7 @@
         <translation>cadena de %1 cuerpos: %2</translation>
     </message>
     <message>
-        <location line="+158" />
+        <location line="+174" />
         <source>machine: %1, %2 cores</source>
         <translation>máquina: %1, %2 núcleos</translation>
     </message>
@@ -4507,7 +4507,17 @@
         <translation>modelo: %1 (cuerpos: %2, accionamientos: %3, cierres de lazo: %4)</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
+        <source>scene: %1; CONTACT added (the model has none): MU 0.5, E 0</source>
+        <translation>escena: %1; CONTACT agregado (el modelo no lo tiene): MU 0.5, E 0</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>scene: %1; the model's CONTACT</source>
+        <translation>escena: %1; el CONTACT del modelo</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>steps: %1 of dt = %2 ms, %3</source>
         <translation>pasos: %1 de dt = %2 ms, %3</translation>
     </message>
@@ -4587,6 +4597,16 @@
         <translation>sin accionamientos, sin eventos</translation>
     </message>
     <message>
+        <location line="+3" />
+        <source>contact phase, per RK4 step</source>
+        <translation>fase de contacto, por paso de RK4</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 contact points at a step's end (mean)</source>
+        <translation>%1 puntos de contacto al final de un paso (media)</translation>
+    </message>
+    <message>
         <location line="+2" />
         <source>reference N–E system, per solve</source>
         <translation>N–E de referencia, por resolución</translation>
@@ -4627,7 +4647,17 @@
         <translation>Padrob / MuJoCo %1</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+2" />
+        <source>MuJoCo RK4 step, geoms and contacts</source>
+        <translation>paso de RK4 de MuJoCo, geoms y contactos</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Padrob / MuJoCo %1 (%2 geoms, %3 contacts)</source>
+        <translation>Padrob / MuJoCo %1 (%2 geoms, %3 contactos)</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>Steps: every drive commanded by a sine (amplitude 0.8, 0.5 Hz, phases spread) set before every
 step (held: set once), limits and relief valves watched as events, the joint reactions computed
 at every step's end. Events in one run: %1.</source>
@@ -4699,7 +4729,7 @@ limits on all; commands held, or set every step</source>
     </message>
     <message>
         <location line="+9" />
-        <source>Usage: padrob bench MODEL [OPTIONS]
+        <source>Usage: padrob bench MODEL [--scene FILE] [OPTIONS]
        padrob bench --scaling [OPTIONS]
 
 Times the solver on a model: forward dynamics, RK4 steps with drives, limits and
@@ -4720,6 +4750,10 @@ slowest run (the machine is noisy); times in µs per evaluation or per step.
                         300 and 1000 bodies and fit time ∝ n^p (MODEL may then be
                         left out)
   --no-mujoco           skip the comparison with MuJoCo
+  --scene FILE          run the model in a scene (its ground graphics) with contacts:
+                        the model's CONTACT, or CONTACT (MU 0.5, E 0) added when it
+                        has none; also times the contact phase per step (contact_us)
+                        and MuJoCo on the export with the geoms (ratio_vs_mujoco)
 
 The RK4 steps command every drive with a slow sine, set before every step (so
 valves open and close and every step restarts the integrator, as at the station),
@@ -4730,7 +4764,7 @@ limits. The real-time factor is dt / step time.
 Exit status: 0 success; 1 the model has errors or a simulation failed;
 2 usage error or unreadable model.
 </source>
-        <translation>Uso: padrob bench MODELO [OPCIONES]
+        <translation>Uso: padrob bench MODELO [--scene ARCHIVO] [OPCIONES]
      padrob bench --scaling [OPCIONES]
 
 Mide los tiempos del cálculo en un modelo: dinámica directa, pasos de RK4 con
@@ -4753,6 +4787,11 @@ paso.
                         100, 300 y 1000 cuerpos y ajusta tiempo ∝ n^p (MODELO se puede
                         omitir entonces)
   --no-mujoco           omite la comparación con MuJoCo
+  --scene ARCHIVO       ejecuta el modelo en una escena (sus gráficos del suelo) con
+                        contactos: el CONTACT del modelo, o CONTACT (MU 0.5, E 0)
+                        agregado si no lo tiene; mide además la fase de contacto por
+                        paso (contact_us) y MuJoCo en la exportación con los geoms
+                        (ratio_vs_mujoco)
 
 Los pasos de RK4 comandan cada accionamiento con una sinusoide lenta, fijada antes
 de cada paso (así las válvulas abren y cierran y cada paso reinicia el integrador,
@@ -4765,14 +4804,15 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
 </translation>
     </message>
     <message>
-        <location line="+45" />
+        <location line="+49" />
+        <location line="+5" />
         <location filename="../ide/cli/centre.cpp" line="+90" />
         <location line="+6" />
         <location line="+2" />
         <location line="+3" />
         <location line="+3" />
         <location line="+580" />
-        <location filename="../ide/cli/export.cpp" line="+85" />
+        <location filename="../ide/cli/export.cpp" line="+92" />
         <location filename="../ide/cli/simulate.cpp" line="+243" />
         <location filename="../ide/cli/tutorial.cpp" line="-58" />
         <source>%1 needs a value</source>
@@ -4800,7 +4840,7 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
         <location line="+271" />
         <location line="+184" />
         <location line="+51" />
-        <location filename="../ide/cli/export.cpp" line="+12" />
+        <location filename="../ide/cli/export.cpp" line="+15" />
         <location filename="../ide/cli/inertia.cpp" line="+196" />
         <location filename="../ide/cli/main.cpp" line="+138" />
         <location line="+26" />
@@ -4829,12 +4869,17 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
         <translation>no se indicó ningún modelo</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+1" />
+        <source>--scene needs a model</source>
+        <translation>--scene necesita un modelo</translation>
+    </message>
+    <message>
+        <location line="+27" />
         <source>%1: the model has no moving body: nothing to time</source>
         <translation>%1: el modelo no tiene ningún cuerpo móvil: no hay nada que medir</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+17" />
         <source>MuJoCo: %1</source>
         <translation>MuJoCo: %1</translation>
     </message>
@@ -4849,27 +4894,32 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
         <translation>Pruebe 'padrob %1 --help'.</translation>
     </message>
     <message>
-        <location line="+82" />
+        <location line="+92" />
         <source>the values given on the command line do not fit the model:</source>
         <translation>los valores dados en la línea de comandos no calzan con el modelo:</translation>
     </message>
     <message>
-        <location filename="../ide/cli/export.cpp" line="-57" />
-        <source>Usage: padrob export --mjcf MODEL [--out FILE] [--dt H] [--check]
+        <location filename="../ide/cli/export.cpp" line="-65" />
+        <source>Usage: padrob export --mjcf MODEL [--scene FILE] [--out FILE] [--dt H] [--check]
 
 Writes a model without closed loops as MuJoCo's MJCF (XML). The bodies are posed
 with every joint at 0, so MuJoCo's qpos of each joint is Padrob's coordinate
 (the angle for T 0 and T 1 joints: a T 1 joint's length is not a coordinate in
 MuJoCo; the displacement for T 2); the keyframe "initial" holds the model's
 initial state. MuJoCo gets a passive model: drives, relief valves, limit
-impulses, applied forces and graphics are not exported (the file's header says
-so). Bodies MuJoCo would refuse (massless, or an inertia breaking I1 + I2 &gt;= I3)
+impulses and applied forces are not exported (the file's header says so). With
+CONTACT the graphics become geoms (a TUBE a ring of boxes; CONE, PRISM and MESH
+their convex hulls; NOCONTACT ones visual only) and contacts are on, with MuJoCo's
+law set to approximate Padrob's; without CONTACT there are no geoms and contacts
+are off. Bodies MuJoCo would refuse (massless, or an inertia breaking I1 + I2 &gt;= I3)
 get the nearest values it accepts, with the true ones in a comment there.
 
   --mjcf        the format (required; the only one)
   --out FILE    write the MJCF there (default: standard output); the file is
                 replaced whole or not at all
   --dt H        the time step written in &lt;option&gt; [s] (default 0.001)
+  --scene FILE  with CONTACT: the scene's ground graphics (e.g. a mill) as world
+                geoms, and the solids overlapping them at the start excluded
   --check       load the MJCF into MuJoCo (when padrob was built with it), put
                 the true masses and inertias in, and check that MuJoCo and Padrob
                 follow the same trajectory for 0.2 s (RK4 at --dt, every joint
@@ -4880,15 +4930,19 @@ Exit status: 0 success; 1 the model has errors, has closed loops, or MuJoCo
 disagrees (--check); 2 usage error, unreadable model, or --check in a padrob
 built without MuJoCo. On failure nothing is written.
 </source>
-        <translation>Uso: padrob export --mjcf MODELO [--out ARCHIVO] [--dt H] [--check]
+        <translation>Uso: padrob export --mjcf MODELO [--scene ARCHIVO] [--out ARCHIVO] [--dt H] [--check]
 
 Escribe un modelo sin lazos cerrados en el formato MJCF (XML) de MuJoCo. Los cuerpos
 se ubican con todas las articulaciones en 0, así que el qpos de cada articulación en
 MuJoCo es la coordenada de Padrob (el ángulo en las articulaciones T 0 y T 1: el
 largo de una articulación T 1 no es una coordenada en MuJoCo; el desplazamiento en
 T 2); el keyframe "initial" guarda el estado inicial del modelo. MuJoCo recibe un
-modelo pasivo: accionamientos, válvulas de alivio, impulsos en los límites, fuerzas
-aplicadas y gráficos no se exportan (lo dice el encabezado del archivo). Los cuerpos
+modelo pasivo: accionamientos, válvulas de alivio, impulsos en los límites y fuerzas
+aplicadas no se exportan (lo dice el encabezado del archivo). Con CONTACT los
+gráficos se vuelven geoms (un TUBE, un anillo de cajas; CONE, PRISM y MESH, sus
+envolventes convexas; los NOCONTACT, solo visuales) y los contactos quedan activos,
+con la ley de MuJoCo ajustada para aproximar la de Padrob; sin CONTACT no hay geoms
+y los contactos quedan desactivados. Los cuerpos
 que MuJoCo rechazaría (sin masa, o con una inercia que no cumple I1 + I2 &gt;= I3)
 reciben los valores aceptables más cercanos, con los verdaderos en un comentario.
 
@@ -4896,6 +4950,9 @@ reciben los valores aceptables más cercanos, con los verdaderos en un comentari
   --out ARCHIVO escribe el MJCF ahí (por omisión: la salida estándar); el archivo
                 se reemplaza entero o no se toca
   --dt H        el paso de tiempo escrito en &lt;option&gt; [s] (por omisión 0.001)
+  --scene ARCHIVO  con CONTACT: los gráficos del suelo de la escena (p. ej. un
+                molino) como geoms del mundo, y excluidos los sólidos que al inicio
+                se traslapan con ellos
   --check       carga el MJCF en MuJoCo (si padrob se compiló con él), le pone las
                 masas e inercias verdaderas, y comprueba que MuJoCo y Padrob siguen
                 la misma trayectoria durante 0.2 s (RK4 con --dt, todas las
@@ -4908,7 +4965,12 @@ compilado sin MuJoCo. Si falla, no se escribe nada.
 </translation>
     </message>
     <message>
-        <location line="+43" />
+        <location line="+48" />
+        <source>--scene needs a file name</source>
+        <translation>--scene necesita un nombre de archivo</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>--out needs a file name</source>
         <translation>--out necesita un nombre de archivo</translation>
     </message>
@@ -4929,12 +4991,19 @@ compilado sin MuJoCo. Si falla, no se escribe nada.
         <translation>--check necesita MuJoCo, y este padrob se compiló sin él</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+21" />
+        <location line="+25" />
+        <location line="+13" />
         <source>note: %1</source>
         <translation>nota: %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-38" />
+        <source>the model has no CONTACT: no geoms, and the scene is not exported</source>
+        <translation>el modelo no tiene CONTACT: no hay geoms, y la escena no se exporta</translation>
+    </message>
+    <message>
+        <location line="+26" />
         <source>set in MuJoCo after loading: %1</source>
         <translation>fijado en MuJoCo después de cargar: %1</translation>
     </message>
@@ -4944,7 +5013,22 @@ compilado sin MuJoCo. Si falla, no se escribe nada.
         <translation>MuJoCo coincide con Padrob durante %1 s (RK4, dt %2 s): los centros de masa están a lo más a %3 m</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+5" />
+        <source>MuJoCo loads the export with its %1 geoms and contacts on</source>
+        <translation>MuJoCo carga la exportación con sus %1 geoms y los contactos activos</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>with contacts over %1 s (every joint passive, no limits): the centres of mass are at most %2 m apart; at the end:</source>
+        <translation>con contactos durante %1 s (todas las articulaciones pasivas, sin límites): los centros de masa distan a lo más %2 m; al final:</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>  body %1: Padrob %2, MuJoCo %3</source>
+        <translation>  cuerpo %1: Padrob %2, MuJoCo %3</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>cannot write to standard output</source>
         <translation>no se puede escribir en la salida estándar</translation>
     </message>
@@ -5439,17 +5523,17 @@ Un modelo con errores no se describe: sus problemas se informan como con
         <translation>MuJoCo rechazó el MJCF exportado: %1</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+77" />
         <source>MuJoCo could not allocate its data</source>
         <translation>MuJoCo no pudo reservar memoria para sus datos</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="-58" />
         <source>MuJoCo's model has no body '%1' or joint '%2'</source>
         <translation>el modelo de MuJoCo no tiene el cuerpo '%1' o la articulación '%2'</translation>
     </message>
     <message numerus="yes">
-        <location line="+48" />
+        <location line="+169" />
         <source>every joint passive in both: the model's %n drive(s) are not exported</source>
         <translation>
             <numerusform>todas las articulaciones pasivas en ambos: %n accionamiento del modelo no se exporta</numerusform>
@@ -5473,17 +5557,23 @@ Un modelo con errores no se describe: sus problemas se informan como con
         </translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="-79" />
+        <location line="+109" />
         <source>Padrob failed: %1</source>
         <translation>Padrob falló: %1</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="-25" />
+        <source>the agreement is checked without contacts (MuJoCo's export there has no geoms)</source>
+        <translation>la coincidencia se comprueba sin contactos (ahí la exportación a MuJoCo no tiene geoms)</translation>
+    </message>
+    <message>
+        <location line="+39" />
         <source>MuJoCo and Padrob disagree: the centre of mass of body %1 is %2 m apart at t = %3 s (tolerance %4 m; Padrob %5, MuJoCo %6)</source>
         <translation>MuJoCo y Padrob no coinciden: el centro de masa del cuerpo %1 difiere en %2 m en t = %3 s (tolerancia %4 m; Padrob %5, MuJoCo %6)</translation>
     </message>
     <message numerus="yes">
-        <location line="+29" />
+        <location line="+34" />
         <source>MuJoCo warned %n time(s): %1</source>
         <translation>
             <numerusform>MuJoCo advirtió %n vez: %1</numerusform>
@@ -5700,7 +5790,7 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o la simulación falló;
         <translation>%1: el modelo no tiene la articulación %2</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+25" />
         <source>0 (the ground)</source>
         <translation>0 (el suelo)</translation>
     </message>
@@ -8221,12 +8311,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
     </message>
     <message>
         <location line="+65" />
-        <location line="+68" />
+        <location line="+74" />
         <source>Open Model</source>
         <translation>Abrir modelo</translation>
     </message>
     <message>
-        <location line="-68" />
+        <location line="-74" />
         <source>Cannot open %1:
 %2</source>
         <translation>No se puede abrir %1:
@@ -8234,12 +8324,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
     </message>
     <message>
         <location line="-243" />
-        <location line="+311" />
+        <location line="+317" />
         <source>Padrob models (*.pad);;All files (*)</source>
         <translation>Modelos Padrob (*.pad);;Todos los archivos (*)</translation>
     </message>
     <message numerus="yes">
-        <location line="-525" />
+        <location line="-531" />
         <source>%n attempt(s) kept while the trainee records could not be written were added to them.</source>
         <translation>
             <numerusform>Se agregó a los registros de los aprendices %n intento guardado mientras no se podían escribir.</numerusform>
@@ -8328,7 +8418,7 @@ The 3D view goes on without this scene.</source>
 La vista 3D continúa sin esta escena.</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+13" />
         <source>Scene: %1</source>
         <translation>Escena: %1</translation>
     </message>
@@ -8338,12 +8428,12 @@ La vista 3D continúa sin esta escena.</translation>
         <translation>Escena: %1. %2</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+22" />
         <source>The scene used last is not drawn: %1</source>
         <translation>La última escena usada no se dibuja: %1</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+30" />
         <location line="+14" />
         <source>Save Model</source>
         <translation>Guardar modelo</translation>
@@ -8426,8 +8516,13 @@ Use Guardar como para elegir otro lugar.</translation>
         <source>Model Changed on Disk</source>
         <translation>El modelo cambió en el disco</translation>
     </message>
+    <message>
+        <location line="+25" />
+        <source>The scene's solids cannot be taken into the model's contacts (a shape that cannot serve): the model runs without touching them</source>
+        <translation>Los sólidos de la escena no pueden incorporarse a los contactos del modelo (una forma que no sirve): el modelo funciona sin tocarlos</translation>
+    </message>
     <message numerus="yes">
-        <location line="+21" />
+        <location line="+13" />
         <source>Model applied: %n bodies</source>
         <translation>
             <numerusform>Modelo aplicado: %n cuerpo</numerusform>
