@@ -23,6 +23,17 @@ namespace ide::cli {
 
 namespace {
 
+/// MuJoCo's side runs passive and without limits: Padrob's the same, RK4 at `dt`.
+solver::SimulationOptions passiveRk4(double dt)
+{
+    solver::SimulationOptions o;
+    o.integrator.method = solver::IntegrationMethod::Rk4Fixed;
+    o.integrator.step = dt;
+    o.drives = false;
+    o.limits = false;
+    return o;
+}
+
 using i18n::trStd;
 
 struct ModelDeleter {
@@ -186,12 +197,7 @@ bool timeContacts(const solver::Model& model, solver::MjcfOptions options, doubl
     if (contactSeconds > 0) {
         if (key >= 0) mj_resetDataKeyframe(m, d, key);
         else mj_resetData(m, d);
-        solver::SimulationOptions simOptions;
-        simOptions.integrator.method = solver::IntegrationMethod::Rk4Fixed;
-        simOptions.integrator.step = dt;
-        simOptions.drives = false;
-        simOptions.limits = false;
-        solver::Simulation sim(passive, simOptions);
+        solver::Simulation sim(passive, passiveRk4(dt));
         std::vector<solver::SimulationEvent> events;
         long n = std::lround(contactSeconds / dt);
         for (long k = 1; k <= n; ++k) {
@@ -285,12 +291,7 @@ bool runMujoco(const solver::Model& model, double dt, int steps, int runs, doubl
         out.notes.push_back(trStd("padrob", "the agreement is checked without contacts (MuJoCo's export there has no geoms)"));
         padrobModel->contact = nullptr;
     }
-    solver::SimulationOptions simOptions;
-    simOptions.integrator.method = solver::IntegrationMethod::Rk4Fixed;
-    simOptions.integrator.step = dt;
-    simOptions.drives = false;
-    simOptions.limits = false;
-    solver::Simulation sim(padrobModel, simOptions);
+    solver::Simulation sim(padrobModel, passiveRk4(dt));
     sim.evaluate();
 
     const int key = mj_name2id(m, mjOBJ_KEY, "initial");
