@@ -1,6 +1,7 @@
 #include "solver/contact/contact_forces.h"
 
 #include "solver/contact/contact_geometry.h"
+#include "solver/contact/sampled_contact.h"
 
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/geometry/shape/box.h>
@@ -139,6 +140,10 @@ void contactPoints(Scratch& s, int a, int b)
                              &depth, &code, 4, s.points);
         return;
     }
+    // a cylinder or a cone against a box, a cylinder or a cone: sampled points
+    if (sampledContactPoints(*oa.collisionGeometry(), oa.getTransform(), *ob.collisionGeometry(), ob.getTransform(),
+                             kPointsPerPair, s.points))
+        return;
     bool primitives = false;
     asPrimitive(*oa.collisionGeometry(), [&](const auto& sa) {
         primitives = asPrimitive(*ob.collisionGeometry(), [&](const auto& sb) {
