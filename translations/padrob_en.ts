@@ -97,7 +97,7 @@
         <translation>A %1 message was not sent: its field %2.</translation>
     </message>
     <message>
-        <location line="+85" />
+        <location line="+87" />
         <source>The centre's DDS domain must be a number from 0 to 232 (it is %1).</source>
         <translation>The centre's DDS domain must be a number from 0 to 232 (it is %1).</translation>
     </message>
@@ -136,7 +136,7 @@
 <context>
     <name>CentreKey</name>
     <message>
-        <location filename="../trainer/centre/signing.cpp" line="+179" />
+        <location filename="../trainer/centre/signing.cpp" line="+185" />
         <source>Cannot read the centre's key file %1: %2.</source>
         <translation>Cannot read the centre's key file %1: %2.</translation>
     </message>
@@ -146,19 +146,34 @@
         <translation>The centre's key file %1 can be read by other users: make it readable by its owner only (chmod 600 %1).</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+16" />
+        <source>The node key file %1 must name its node on its first line ('%2 NAME', a name of at most %3 bytes without spaces); make one with 'padrob centre key --key CENTRE-KEY --node NAME FILE'.</source>
+        <translation>The node key file %1 must name its node on its first line ('%2 NAME', a name of at most %3 bytes without spaces); make one with 'padrob centre key --key CENTRE-KEY --node NAME FILE'.</translation>
+    </message>
+    <message>
+        <location line="+12" />
         <source>The centre's key file %1 must hold 64 hexadecimal digits (32 bytes); make one with 'padrob centre key FILE'.</source>
         <translation>The centre's key file %1 must hold 64 hexadecimal digits (32 bytes); make one with 'padrob centre key FILE'.</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+16" />
         <source>%1 exists already: a centre's key is never overwritten.</source>
         <translation>%1 exists already: a centre's key is never overwritten.</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+7" />
         <source>Cannot write the centre's key file %1: %2.</source>
         <translation>Cannot write the centre's key file %1: %2.</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>A node's key is made from the centre's key, not from another node's key.</source>
+        <translation>A node's key is made from the centre's key, not from another node's key.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>A node's name has 1 to %1 bytes and no spaces.</source>
+        <translation>A node's name has 1 to %1 bytes and no spaces.</translation>
     </message>
 </context>
 <context>
@@ -4807,7 +4822,8 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
         <location line="+2" />
         <location line="+3" />
         <location line="+3" />
-        <location line="+580" />
+        <location line="+574" />
+        <location line="+51" />
         <location filename="../ide/cli/export.cpp" line="+92" />
         <location filename="../ide/cli/simulate.cpp" line="+243" />
         <location filename="../ide/cli/tutorial.cpp" line="-58" />
@@ -4832,9 +4848,10 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
     </message>
     <message>
         <location line="+4" />
-        <location filename="../ide/cli/centre.cpp" line="-452" />
-        <location line="+271" />
-        <location line="+184" />
+        <location filename="../ide/cli/centre.cpp" line="-497" />
+        <location line="+278" />
+        <location line="+171" />
+        <location line="+51" />
         <location line="+51" />
         <location filename="../ide/cli/export.cpp" line="+15" />
         <location filename="../ide/cli/inertia.cpp" line="+196" />
@@ -5496,7 +5513,7 @@ A model with errors is not described: its problems are printed as by
         <translation>unknown command '%1'</translation>
     </message>
     <message>
-        <location filename="../ide/cli/mujoco_bench.cpp" line="+78" />
+        <location filename="../ide/cli/mujoco_bench.cpp" line="+89" />
         <source>MuJoCo's virtual file system refused the MJCF</source>
         <translation>MuJoCo's virtual file system refused the MJCF</translation>
     </message>
@@ -5516,7 +5533,7 @@ A model with errors is not described: its problems are printed as by
         <translation>MuJoCo's model has no body '%1' or joint '%2'</translation>
     </message>
     <message numerus="yes">
-        <location line="+169" />
+        <location line="+164" />
         <source>every joint passive in both: the model's %n drive(s) are not exported</source>
         <translation>
             <numerusform>every joint passive in both: the model's %n drive is not exported</numerusform>
@@ -5541,17 +5558,17 @@ A model with errors is not described: its problems are printed as by
     </message>
     <message>
         <location line="-79" />
-        <location line="+109" />
+        <location line="+104" />
         <source>Padrob failed: %1</source>
         <translation>Padrob failed: %1</translation>
     </message>
     <message>
-        <location line="-25" />
+        <location line="-20" />
         <source>the agreement is checked without contacts (MuJoCo's export there has no geoms)</source>
         <translation>the agreement is checked without contacts (MuJoCo's export there has no geoms)</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+34" />
         <source>MuJoCo and Padrob disagree: the centre of mass of body %1 is %2 m apart at t = %3 s (tolerance %4 m; Padrob %5, MuJoCo %6)</source>
         <translation>MuJoCo and Padrob disagree: the centre of mass of body %1 is %2 m apart at t = %3 s (tolerance %4 m; Padrob %5, MuJoCo %6)</translation>
     </message>
@@ -5972,7 +5989,7 @@ Exit status: 0 the tutorial is fine (checked) or the run passed; 1 the run faile
         <translation>the tutorial has no usable demonstration (DEMO)</translation>
     </message>
     <message>
-        <location filename="../ide/cli/centre.cpp" line="-645" />
+        <location filename="../ide/cli/centre.cpp" line="-690" />
         <source>--domain must be a whole number from 0 to 232, not '%1'</source>
         <translation>--domain must be a whole number from 0 to 232, not '%1'</translation>
     </message>
@@ -6085,7 +6102,14 @@ Runs until interrupted (Ctrl+C or SIGTERM), then says it is leaving.
         <translation>--key FILE is required: the centre's key signs what the station says (no instructor or display believes it otherwise) and checks the instructor's commands</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+12" />
+        <source>%1 is node %2's key, not %3's: give this station its own (padrob centre key --key CENTRE-KEY --node %3 FILE) or the centre's key
+</source>
+        <translation>%1 is node %2's key, not %3's: give this station its own (padrob centre key --key CENTRE-KEY --node %3 FILE) or the centre's key
+</translation>
+    </message>
+    <message>
+        <location line="+29" />
         <source>cannot open the sealed password in %1: it must be made by 'padrob centre seal' with this centre's key</source>
         <translation>cannot open the sealed password in %1: it must be made by 'padrob centre seal' with this centre's key</translation>
     </message>
@@ -6248,12 +6272,12 @@ Exit status: 0 done or accepted, 1 the station refused or did not answer,
     </message>
     <message>
         <location line="+36" />
-        <location line="+232" />
+        <location line="+270" />
         <source>%1 needs a number</source>
         <translation>%1 needs a number</translation>
     </message>
     <message>
-        <location line="-224" />
+        <location line="-262" />
         <source>say what to do: list, watch or send</source>
         <translation>say what to do: list, watch or send</translation>
     </message>
@@ -6273,65 +6297,32 @@ Exit status: 0 done or accepted, 1 the station refused or did not answer,
         <translation>the centre's key is required (--key FILE): what the stations say is signed with it, and so are the commands</translation>
     </message>
     <message>
-        <location line="+226" />
+        <location line="+11" />
+        <source>%1 is node %2's key: an instructor needs the centre's key, which signs the commands for every station and checks what each says
+</source>
+        <translation>%1 is node %2's key: an instructor needs the centre's key, which signs the commands for every station and checks what each says
+</translation>
+    </message>
+    <message>
+        <location line="+151" />
+        <location line="+4" />
+        <source>expected: padrob centre key --key CENTRE-KEY --node NAME FILE</source>
+        <translation>expected: padrob centre key --key CENTRE-KEY --node NAME FILE</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>node %1's key in %2 (fingerprint %3), from the centre key %4
+</source>
+        <translation>node %1's key in %2 (fingerprint %3), from the centre key %4
+</translation>
+    </message>
+    <message>
+        <location line="+90" />
         <source>no tutorial file %1 (give --tutorial FILE)</source>
         <translation>no tutorial file %1 (give --tutorial FILE)</translation>
     </message>
     <message>
-        <location line="+164" />
-        <source>Usage: padrob centre key FILE
-       padrob centre seal --key FILE &lt; SECRET
-       padrob centre bench [--stations N] [--seconds S] [--tutorial FILE] [--json]
-       padrob centre pki DIR [--node NAME]...
-
-key: makes a new centre key (32 random bytes) in FILE, readable by its owner only.
-Copy it to every station, instructor and display of the centre (padrob station
---key, padrob instructor --key, padrob-studio --centre-key): every message is
-signed with it, and what is not is ignored (commands: refused). An existing file
-is never replaced.
-
-seal: prints the line read from standard input (the records server's password)
-sealed with the centre's key, for padrob station --records-password FILE.
-
-bench: starts N headless stations (default 16) on this computer, each running the
-tutorial's demonstration in real time and streaming its state at 60 Hz, and measures
-at one instructor the state rate, the latency from station to instructor and the CPU
-used (docs/performance.md).
-
-pki: makes the centre's PKI for DDS Security in DIR (an identity CA, a permissions
-CA and the signed governance document); with --node NAME, issues node NAME's
-identity and permissions (valid 10 years) in DIR/nodes/NAME. Copy to each node
-identity_ca.pem, permissions_ca.pem, governance.p7s and its nodes/NAME folder,
-never the .key files of the CAs; then run it with --security DIR.
-</source>
-        <translation>Usage: padrob centre key FILE
-       padrob centre seal --key FILE &lt; SECRET
-       padrob centre bench [--stations N] [--seconds S] [--tutorial FILE] [--json]
-       padrob centre pki DIR [--node NAME]...
-
-key: makes a new centre key (32 random bytes) in FILE, readable by its owner only.
-Copy it to every station, instructor and display of the centre (padrob station
---key, padrob instructor --key, padrob-studio --centre-key): every message is
-signed with it, and what is not is ignored (commands: refused). An existing file
-is never replaced.
-
-seal: prints the line read from standard input (the records server's password)
-sealed with the centre's key, for padrob station --records-password FILE.
-
-bench: starts N headless stations (default 16) on this computer, each running the
-tutorial's demonstration in real time and streaming its state at 60 Hz, and measures
-at one instructor the state rate, the latency from station to instructor and the CPU
-used (docs/performance.md).
-
-pki: makes the centre's PKI for DDS Security in DIR (an identity CA, a permissions
-CA and the signed governance document); with --node NAME, issues node NAME's
-identity and permissions (valid 10 years) in DIR/nodes/NAME. Copy to each node
-identity_ca.pem, permissions_ca.pem, governance.p7s and its nodes/NAME folder,
-never the .key files of the CAs; then run it with --security DIR.
-</translation>
-    </message>
-    <message>
-        <location line="-356" />
+        <location line="-223" />
         <source>no station answered
 </source>
         <translation>no station answered
@@ -6369,7 +6360,7 @@ never the .key files of the CAs; then run it with --security DIR.
 </translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+65" />
         <source>expected: padrob centre seal --key FILE</source>
         <translation>expected: padrob centre seal --key FILE</translation>
     </message>
@@ -6436,7 +6427,68 @@ never the .key files of the CAs; then run it with --security DIR.
 </translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+16" />
+        <source>Usage: padrob centre key FILE
+       padrob centre key --key CENTRE-KEY --node NAME FILE
+       padrob centre seal --key FILE &lt; SECRET
+       padrob centre bench [--stations N] [--seconds S] [--tutorial FILE] [--json]
+       padrob centre pki DIR [--node NAME]...
+
+key: makes a new centre key (32 random bytes) in FILE, readable by its owner only.
+Copy it to every station, instructor and display of the centre (padrob station
+--key, padrob instructor --key, padrob-studio --centre-key): every message is
+signed with it, and what is not is ignored (commands: refused). An existing file
+is never replaced. With --node NAME: node NAME's own key, derived from the
+centre's key, for a station (padrob station --name NAME --key FILE): it signs
+only that station's messages and checks only the commands for it, so the
+station cannot pass for another. Instructors keep the centre's key.
+
+seal: prints the line read from standard input (the records server's password)
+sealed with the centre's key, for padrob station --records-password FILE.
+
+bench: starts N headless stations (default 16) on this computer, each running the
+tutorial's demonstration in real time and streaming its state at 60 Hz, and measures
+at one instructor the state rate, the latency from station to instructor and the CPU
+used (docs/performance.md).
+
+pki: makes the centre's PKI for DDS Security in DIR (an identity CA, a permissions
+CA and the signed governance document); with --node NAME, issues node NAME's
+identity and permissions (valid 10 years) in DIR/nodes/NAME. Copy to each node
+identity_ca.pem, permissions_ca.pem, governance.p7s and its nodes/NAME folder,
+never the .key files of the CAs; then run it with --security DIR.
+</source>
+        <translation>Usage: padrob centre key FILE
+       padrob centre key --key CENTRE-KEY --node NAME FILE
+       padrob centre seal --key FILE &lt; SECRET
+       padrob centre bench [--stations N] [--seconds S] [--tutorial FILE] [--json]
+       padrob centre pki DIR [--node NAME]...
+
+key: makes a new centre key (32 random bytes) in FILE, readable by its owner only.
+Copy it to every station, instructor and display of the centre (padrob station
+--key, padrob instructor --key, padrob-studio --centre-key): every message is
+signed with it, and what is not is ignored (commands: refused). An existing file
+is never replaced. With --node NAME: node NAME's own key, derived from the
+centre's key, for a station (padrob station --name NAME --key FILE): it signs
+only that station's messages and checks only the commands for it, so the
+station cannot pass for another. Instructors keep the centre's key.
+
+seal: prints the line read from standard input (the records server's password)
+sealed with the centre's key, for padrob station --records-password FILE.
+
+bench: starts N headless stations (default 16) on this computer, each running the
+tutorial's demonstration in real time and streaming its state at 60 Hz, and measures
+at one instructor the state rate, the latency from station to instructor and the CPU
+used (docs/performance.md).
+
+pki: makes the centre's PKI for DDS Security in DIR (an identity CA, a permissions
+CA and the signed governance document); with --node NAME, issues node NAME's
+identity and permissions (valid 10 years) in DIR/nodes/NAME. Copy to each node
+identity_ca.pem, permissions_ca.pem, governance.p7s and its nodes/NAME folder,
+never the .key files of the CAs; then run it with --security DIR.
+</translation>
+    </message>
+    <message>
+        <location line="+30" />
         <source>expected: padrob centre key FILE</source>
         <translation>expected: padrob centre key FILE</translation>
     </message>
@@ -6851,7 +6903,12 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>This display has no centre key (--centre-key FILE): it cannot check what the stations send, so it shows nothing.</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+7" />
+        <source>This display's key is station %1's: it cannot check what station %2 sends, so it shows nothing. Give it station %2's key or the centre's key.</source>
+        <translation>This display's key is station %1's: it cannot check what station %2 sends, so it shows nothing. Give it station %2's key or the centre's key.</translation>
+    </message>
+    <message>
+        <location line="+9" />
         <source>This display cannot join the training centre's network (DDS domain %1): %2</source>
         <translation>This display cannot join the training centre's network (DDS domain %1): %2</translation>
     </message>
@@ -7413,7 +7470,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::InstructorWindow</name>
     <message>
-        <location filename="../ide/studio/centre/instructor_window.cpp" line="+269" />
+        <location filename="../ide/studio/centre/instructor_window.cpp" line="+274" />
         <source>up</source>
         <translation>up</translation>
     </message>
@@ -7644,7 +7701,12 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Not connected to the training centre's network.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-271" />
+        <source>%1 is node %2's key: the instructor needs the centre's key, which signs the commands for every station and checks what each says.</source>
+        <translation>%1 is node %2's key: the instructor needs the centre's key, which signs the commands for every station and checks what each says.</translation>
+    </message>
+    <message>
+        <location line="+272" />
         <source>Commands need the centre's key: start padrob-studio with --centre-key FILE.</source>
         <translation>Commands need the centre's key: start padrob-studio with --centre-key FILE.</translation>
     </message>
@@ -10672,7 +10734,12 @@ Id: %3</translation>
         <translation>no key file was given (--centre-key)</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+7" />
+        <source>%1 is node %2's key, not this station's (%3): give it its own (padrob centre key --key CENTRE-KEY --node %3 FILE) or the centre's key</source>
+        <translation>%1 is node %2's key, not this station's (%3): give it its own (padrob centre key --key CENTRE-KEY --node %3 FILE) or the centre's key</translation>
+    </message>
+    <message>
+        <location line="+13" />
         <source>DDS refused to join the domain</source>
         <translation>DDS refused to join the domain</translation>
     </message>

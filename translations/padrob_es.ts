@@ -97,7 +97,7 @@
         <translation>No se envió un mensaje %1: su campo %2.</translation>
     </message>
     <message>
-        <location line="+85" />
+        <location line="+87" />
         <source>The centre's DDS domain must be a number from 0 to 232 (it is %1).</source>
         <translation>El dominio DDS del centro debe ser un número de 0 a 232 (es %1).</translation>
     </message>
@@ -136,7 +136,7 @@
 <context>
     <name>CentreKey</name>
     <message>
-        <location filename="../trainer/centre/signing.cpp" line="+179" />
+        <location filename="../trainer/centre/signing.cpp" line="+185" />
         <source>Cannot read the centre's key file %1: %2.</source>
         <translation>No se puede leer el archivo de clave del centro %1: %2.</translation>
     </message>
@@ -146,19 +146,34 @@
         <translation>El archivo de clave del centro %1 lo pueden leer otros usuarios: déjelo legible solo por su dueño (chmod 600 %1).</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+16" />
+        <source>The node key file %1 must name its node on its first line ('%2 NAME', a name of at most %3 bytes without spaces); make one with 'padrob centre key --key CENTRE-KEY --node NAME FILE'.</source>
+        <translation>El archivo de clave de nodo %1 debe nombrar su nodo en su primera línea ('%2 NOMBRE', un nombre de a lo más %3 bytes sin espacios); cree uno con 'padrob centre key --key CLAVE-DEL-CENTRO --node NOMBRE ARCHIVO'.</translation>
+    </message>
+    <message>
+        <location line="+12" />
         <source>The centre's key file %1 must hold 64 hexadecimal digits (32 bytes); make one with 'padrob centre key FILE'.</source>
         <translation>El archivo de clave del centro %1 debe contener 64 dígitos hexadecimales (32 bytes); cree uno con 'padrob centre key ARCHIVO'.</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+16" />
         <source>%1 exists already: a centre's key is never overwritten.</source>
         <translation>%1 ya existe: la clave de un centro nunca se sobrescribe.</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+7" />
         <source>Cannot write the centre's key file %1: %2.</source>
         <translation>No se puede escribir el archivo de clave del centro %1: %2.</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>A node's key is made from the centre's key, not from another node's key.</source>
+        <translation>La clave de un nodo se crea a partir de la clave del centro, no de la clave de otro nodo.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>A node's name has 1 to %1 bytes and no spaces.</source>
+        <translation>El nombre de un nodo tiene de 1 a %1 bytes y no lleva espacios.</translation>
     </message>
 </context>
 <context>
@@ -4811,7 +4826,8 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
         <location line="+2" />
         <location line="+3" />
         <location line="+3" />
-        <location line="+580" />
+        <location line="+574" />
+        <location line="+51" />
         <location filename="../ide/cli/export.cpp" line="+92" />
         <location filename="../ide/cli/simulate.cpp" line="+243" />
         <location filename="../ide/cli/tutorial.cpp" line="-58" />
@@ -4836,9 +4852,10 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
     </message>
     <message>
         <location line="+4" />
-        <location filename="../ide/cli/centre.cpp" line="-452" />
-        <location line="+271" />
-        <location line="+184" />
+        <location filename="../ide/cli/centre.cpp" line="-497" />
+        <location line="+278" />
+        <location line="+171" />
+        <location line="+51" />
         <location line="+51" />
         <location filename="../ide/cli/export.cpp" line="+15" />
         <location filename="../ide/cli/inertia.cpp" line="+196" />
@@ -5513,7 +5530,7 @@ Un modelo con errores no se describe: sus problemas se informan como con
         <translation>comando desconocido '%1'</translation>
     </message>
     <message>
-        <location filename="../ide/cli/mujoco_bench.cpp" line="+78" />
+        <location filename="../ide/cli/mujoco_bench.cpp" line="+89" />
         <source>MuJoCo's virtual file system refused the MJCF</source>
         <translation>el sistema de archivos virtual de MuJoCo rechazó el MJCF</translation>
     </message>
@@ -5533,7 +5550,7 @@ Un modelo con errores no se describe: sus problemas se informan como con
         <translation>el modelo de MuJoCo no tiene el cuerpo '%1' o la articulación '%2'</translation>
     </message>
     <message numerus="yes">
-        <location line="+169" />
+        <location line="+164" />
         <source>every joint passive in both: the model's %n drive(s) are not exported</source>
         <translation>
             <numerusform>todas las articulaciones pasivas en ambos: %n accionamiento del modelo no se exporta</numerusform>
@@ -5558,17 +5575,17 @@ Un modelo con errores no se describe: sus problemas se informan como con
     </message>
     <message>
         <location line="-79" />
-        <location line="+109" />
+        <location line="+104" />
         <source>Padrob failed: %1</source>
         <translation>Padrob falló: %1</translation>
     </message>
     <message>
-        <location line="-25" />
+        <location line="-20" />
         <source>the agreement is checked without contacts (MuJoCo's export there has no geoms)</source>
         <translation>la coincidencia se comprueba sin contactos (ahí la exportación a MuJoCo no tiene geoms)</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+34" />
         <source>MuJoCo and Padrob disagree: the centre of mass of body %1 is %2 m apart at t = %3 s (tolerance %4 m; Padrob %5, MuJoCo %6)</source>
         <translation>MuJoCo y Padrob no coinciden: el centro de masa del cuerpo %1 difiere en %2 m en t = %3 s (tolerancia %4 m; Padrob %5, MuJoCo %6)</translation>
     </message>
@@ -5996,7 +6013,7 @@ registro ilegible.
         <translation>el tutorial no tiene una demostración utilizable (DEMO)</translation>
     </message>
     <message>
-        <location filename="../ide/cli/centre.cpp" line="-645" />
+        <location filename="../ide/cli/centre.cpp" line="-690" />
         <source>--domain must be a whole number from 0 to 232, not '%1'</source>
         <translation>--domain debe ser un número entero de 0 a 232, no '%1'</translation>
     </message>
@@ -6112,7 +6129,14 @@ entonces avisa que se va.
         <translation>se requiere --key ARCHIVO: la clave del centro firma lo que dice la estación (sin ella ningún instructor ni pantalla le cree) y verifica las órdenes del instructor</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+12" />
+        <source>%1 is node %2's key, not %3's: give this station its own (padrob centre key --key CENTRE-KEY --node %3 FILE) or the centre's key
+</source>
+        <translation>%1 es la clave del nodo %2, no la de %3: dé a esta estación la suya (padrob centre key --key CLAVE-DEL-CENTRO --node %3 ARCHIVO) o la clave del centro
+</translation>
+    </message>
+    <message>
+        <location line="+29" />
         <source>cannot open the sealed password in %1: it must be made by 'padrob centre seal' with this centre's key</source>
         <translation>no se puede abrir la contraseña sellada de %1: debe crearse con 'padrob centre seal' y la clave de este centro</translation>
     </message>
@@ -6276,12 +6300,12 @@ Estado de salida: 0 hecho o aceptado, 1 la estación rechazó o no respondió,
     </message>
     <message>
         <location line="+36" />
-        <location line="+232" />
+        <location line="+270" />
         <source>%1 needs a number</source>
         <translation>%1 necesita un número</translation>
     </message>
     <message>
-        <location line="-224" />
+        <location line="-262" />
         <source>say what to do: list, watch or send</source>
         <translation>indique qué hacer: list, watch o send</translation>
     </message>
@@ -6301,66 +6325,32 @@ Estado de salida: 0 hecho o aceptado, 1 la estación rechazó o no respondió,
         <translation>se requiere la clave del centro (--key ARCHIVO): lo que dicen las estaciones se firma con ella, y también las órdenes</translation>
     </message>
     <message>
-        <location line="+226" />
+        <location line="+11" />
+        <source>%1 is node %2's key: an instructor needs the centre's key, which signs the commands for every station and checks what each says
+</source>
+        <translation>%1 es la clave del nodo %2: un instructor necesita la clave del centro, que firma las órdenes para cada estación y verifica lo que cada una dice
+</translation>
+    </message>
+    <message>
+        <location line="+151" />
+        <location line="+4" />
+        <source>expected: padrob centre key --key CENTRE-KEY --node NAME FILE</source>
+        <translation>se esperaba: padrob centre key --key CLAVE-DEL-CENTRO --node NOMBRE ARCHIVO</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>node %1's key in %2 (fingerprint %3), from the centre key %4
+</source>
+        <translation>clave del nodo %1 en %2 (huella %3), a partir de la clave del centro %4
+</translation>
+    </message>
+    <message>
+        <location line="+90" />
         <source>no tutorial file %1 (give --tutorial FILE)</source>
         <translation>no existe el archivo de tutorial %1 (use --tutorial ARCHIVO)</translation>
     </message>
     <message>
-        <location line="+164" />
-        <source>Usage: padrob centre key FILE
-       padrob centre seal --key FILE &lt; SECRET
-       padrob centre bench [--stations N] [--seconds S] [--tutorial FILE] [--json]
-       padrob centre pki DIR [--node NAME]...
-
-key: makes a new centre key (32 random bytes) in FILE, readable by its owner only.
-Copy it to every station, instructor and display of the centre (padrob station
---key, padrob instructor --key, padrob-studio --centre-key): every message is
-signed with it, and what is not is ignored (commands: refused). An existing file
-is never replaced.
-
-seal: prints the line read from standard input (the records server's password)
-sealed with the centre's key, for padrob station --records-password FILE.
-
-bench: starts N headless stations (default 16) on this computer, each running the
-tutorial's demonstration in real time and streaming its state at 60 Hz, and measures
-at one instructor the state rate, the latency from station to instructor and the CPU
-used (docs/performance.md).
-
-pki: makes the centre's PKI for DDS Security in DIR (an identity CA, a permissions
-CA and the signed governance document); with --node NAME, issues node NAME's
-identity and permissions (valid 10 years) in DIR/nodes/NAME. Copy to each node
-identity_ca.pem, permissions_ca.pem, governance.p7s and its nodes/NAME folder,
-never the .key files of the CAs; then run it with --security DIR.
-</source>
-        <translation>Uso: padrob centre key ARCHIVO
-       padrob centre seal --key ARCHIVO &lt; SECRETO
-       padrob centre bench [--stations N] [--seconds S] [--tutorial ARCHIVO] [--json]
-       padrob centre pki CARPETA [--node NOMBRE]...
-
-key: crea una nueva clave del centro (32 bytes al azar) en ARCHIVO, legible solo por
-su dueño. Cópiela a cada estación, instructor y pantalla del centro (padrob station
---key, padrob instructor --key, padrob-studio --centre-key): cada mensaje se firma
-con ella, y lo que no lo esté se ignora (las órdenes: se rechazan). Un archivo
-existente nunca se reemplaza.
-
-seal: muestra la línea leída de la entrada estándar (la contraseña del servidor de
-registros) sellada con la clave del centro, para padrob station --records-password
-ARCHIVO.
-
-bench: inicia N estaciones sin ventana (por omisión 16) en este computador, cada una
-ejecutando la demostración del tutorial en tiempo real y transmitiendo su estado a
-60 Hz, y mide en un instructor la frecuencia de estados, la latencia de estación a
-instructor y la CPU usada (docs/performance.md).
-
-pki: crea la PKI del centro para DDS Security en CARPETA (una CA de identidad, una CA
-de permisos y el documento de gobernanza firmado); con --node NOMBRE, emite la
-identidad y los permisos del nodo NOMBRE (válidos 10 años) en CARPETA/nodes/NOMBRE.
-Copie a cada nodo identity_ca.pem, permissions_ca.pem, governance.p7s y su carpeta
-nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security CARPETA.
-</translation>
-    </message>
-    <message>
-        <location line="-356" />
+        <location line="-223" />
         <source>no station answered
 </source>
         <translation>ninguna estación respondió
@@ -6398,7 +6388,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 </translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+65" />
         <source>expected: padrob centre seal --key FILE</source>
         <translation>se esperaba: padrob centre seal --key ARCHIVO</translation>
     </message>
@@ -6465,7 +6455,70 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 </translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+16" />
+        <source>Usage: padrob centre key FILE
+       padrob centre key --key CENTRE-KEY --node NAME FILE
+       padrob centre seal --key FILE &lt; SECRET
+       padrob centre bench [--stations N] [--seconds S] [--tutorial FILE] [--json]
+       padrob centre pki DIR [--node NAME]...
+
+key: makes a new centre key (32 random bytes) in FILE, readable by its owner only.
+Copy it to every station, instructor and display of the centre (padrob station
+--key, padrob instructor --key, padrob-studio --centre-key): every message is
+signed with it, and what is not is ignored (commands: refused). An existing file
+is never replaced. With --node NAME: node NAME's own key, derived from the
+centre's key, for a station (padrob station --name NAME --key FILE): it signs
+only that station's messages and checks only the commands for it, so the
+station cannot pass for another. Instructors keep the centre's key.
+
+seal: prints the line read from standard input (the records server's password)
+sealed with the centre's key, for padrob station --records-password FILE.
+
+bench: starts N headless stations (default 16) on this computer, each running the
+tutorial's demonstration in real time and streaming its state at 60 Hz, and measures
+at one instructor the state rate, the latency from station to instructor and the CPU
+used (docs/performance.md).
+
+pki: makes the centre's PKI for DDS Security in DIR (an identity CA, a permissions
+CA and the signed governance document); with --node NAME, issues node NAME's
+identity and permissions (valid 10 years) in DIR/nodes/NAME. Copy to each node
+identity_ca.pem, permissions_ca.pem, governance.p7s and its nodes/NAME folder,
+never the .key files of the CAs; then run it with --security DIR.
+</source>
+        <translation>Uso: padrob centre key ARCHIVO
+       padrob centre key --key CLAVE-DEL-CENTRO --node NOMBRE ARCHIVO
+       padrob centre seal --key ARCHIVO &lt; SECRETO
+       padrob centre bench [--stations N] [--seconds S] [--tutorial ARCHIVO] [--json]
+       padrob centre pki CARPETA [--node NOMBRE]...
+
+key: crea una nueva clave del centro (32 bytes al azar) en ARCHIVO, legible solo por
+su dueño. Cópiela a cada estación, instructor y pantalla del centro (padrob station
+--key, padrob instructor --key, padrob-studio --centre-key): cada mensaje se firma
+con ella, y lo que no lo esté se ignora (las órdenes: se rechazan). Un archivo
+existente nunca se reemplaza. Con --node NOMBRE: la clave propia del nodo NOMBRE,
+derivada de la clave del centro, para una estación (padrob station --name NOMBRE
+--key ARCHIVO): firma solo los mensajes de esa estación y verifica solo las órdenes
+para ella, de modo que la estación no puede hacerse pasar por otra. Los instructores
+conservan la clave del centro.
+
+seal: muestra la línea leída de la entrada estándar (la contraseña del servidor de
+registros) sellada con la clave del centro, para padrob station --records-password
+ARCHIVO.
+
+bench: inicia N estaciones sin ventana (por omisión 16) en este computador, cada una
+ejecutando la demostración del tutorial en tiempo real y transmitiendo su estado a
+60 Hz, y mide en un instructor la frecuencia de estados, la latencia de estación a
+instructor y la CPU usada (docs/performance.md).
+
+pki: crea la PKI del centro para DDS Security en CARPETA (una CA de identidad, una CA
+de permisos y el documento de gobernanza firmado); con --node NOMBRE, emite la
+identidad y los permisos del nodo NOMBRE (válidos 10 años) en CARPETA/nodes/NOMBRE.
+Copie a cada nodo identity_ca.pem, permissions_ca.pem, governance.p7s y su carpeta
+nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security CARPETA.
+</translation>
+    </message>
+    <message>
+        <location line="+30" />
         <source>expected: padrob centre key FILE</source>
         <translation>se esperaba: padrob centre key ARCHIVO</translation>
     </message>
@@ -6880,7 +6933,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Esta pantalla no tiene la clave del centro (--centre-key ARCHIVO): no puede verificar lo que envían los puestos, así que no muestra nada.</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+7" />
+        <source>This display's key is station %1's: it cannot check what station %2 sends, so it shows nothing. Give it station %2's key or the centre's key.</source>
+        <translation>La clave de esta pantalla es la de la estación %1: no puede verificar lo que envía la estación %2, así que no muestra nada. Dele la clave de la estación %2 o la clave del centro.</translation>
+    </message>
+    <message>
+        <location line="+9" />
         <source>This display cannot join the training centre's network (DDS domain %1): %2</source>
         <translation>Esta pantalla no puede unirse a la red del centro de entrenamiento (dominio DDS %1): %2</translation>
     </message>
@@ -7442,7 +7500,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::InstructorWindow</name>
     <message>
-        <location filename="../ide/studio/centre/instructor_window.cpp" line="+269" />
+        <location filename="../ide/studio/centre/instructor_window.cpp" line="+274" />
         <source>up</source>
         <translation>en línea</translation>
     </message>
@@ -7673,7 +7731,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Sin conexión a la red del centro de entrenamiento.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-271" />
+        <source>%1 is node %2's key: the instructor needs the centre's key, which signs the commands for every station and checks what each says.</source>
+        <translation>%1 es la clave del nodo %2: el instructor necesita la clave del centro, que firma las órdenes para cada estación y verifica lo que cada una dice.</translation>
+    </message>
+    <message>
+        <location line="+272" />
         <source>Commands need the centre's key: start padrob-studio with --centre-key FILE.</source>
         <translation>Las órdenes necesitan la clave del centro: inicie padrob-studio con --centre-key ARCHIVO.</translation>
     </message>
@@ -10701,7 +10764,12 @@ Id: %3</translation>
         <translation>no se indicó un archivo de clave (--centre-key)</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+7" />
+        <source>%1 is node %2's key, not this station's (%3): give it its own (padrob centre key --key CENTRE-KEY --node %3 FILE) or the centre's key</source>
+        <translation>%1 es la clave del nodo %2, no la de esta estación (%3): dele la suya (padrob centre key --key CLAVE-DEL-CENTRO --node %3 ARCHIVO) o la clave del centro</translation>
+    </message>
+    <message>
+        <location line="+13" />
         <source>DDS refused to join the domain</source>
         <translation>DDS no permitió entrar al dominio</translation>
     </message>

@@ -247,6 +247,13 @@ int runStation(const std::vector<std::string>& argsIn)
             printErr("padrob station: " + error.toStdString() + "\n");
             return kExitUsage;
         }
+        if (!o.key.node().empty() && o.key.node() != o.name) {
+            printErr("padrob station: " +
+                     fill(trStd("padrob", "%1 is node %2's key, not %3's: give this station its own (padrob centre key "
+                                          "--key CENTRE-KEY --node %3 FILE) or the centre's key\n"),
+                          {net.keyFile, o.key.node(), o.name}));
+            return kExitUsage;
+        }
         net.bus.key = o.key;
     }
     for (const std::string& f : files) {
@@ -522,6 +529,13 @@ int runInstructor(const std::vector<std::string>& argsIn)
             printErr("padrob instructor: " + error.toStdString() + "\n");
             return kExitUsage;
         }
+        if (!key.node().empty()) {
+            printErr("padrob instructor: " +
+                     fill(trStd("padrob", "%1 is node %2's key: an instructor needs the centre's key, which signs the "
+                                          "commands for every station and checks what each says\n"),
+                          {net.keyFile, key.node()}));
+            return kExitUsage;
+        }
         net.bus.key = key;
     }
     net.bus.node = QString::fromStdString(name);
@@ -652,6 +666,37 @@ double percentile(std::vector<double> v, double p)
     std::sort(v.begin(), v.end());
     const std::size_t i = std::min(v.size() - 1, static_cast<std::size_t>(p * double(v.size() - 1) + 0.5));
     return v[i];
+}
+
+/// padrob centre key --key CENTRE-KEY --node NAME FILE: node NAME's key, derived from the centre's.
+int runCentreNodeKey(std::vector<std::string> args)
+{
+    std::string centreFile, node, file;
+    for (std::size_t i = 1; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        if (a == "--key" || a == "--node") {
+            if (i + 1 >= args.size()) return usageError("centre", fill(trStd("padrob", "%1 needs a value"), {a}));
+            (a == "--key" ? centreFile : node) = args[++i];
+        } else if (a.rfind("--", 0) == 0) {
+            return usageError("centre", fill(trStd("padrob", "unknown option '%1'"), {a}));
+        } else if (file.empty()) {
+            file = a;
+        } else {
+            return usageError("centre", trStd("padrob", "expected: padrob centre key --key CENTRE-KEY --node NAME FILE"));
+        }
+    }
+    if (centreFile.empty() || node.empty() || file.empty()) {
+        return usageError("centre", trStd("padrob", "expected: padrob centre key --key CENTRE-KEY --node NAME FILE"));
+    }
+    centre::CentreKey key;
+    QString error;
+    if (!key.load(QString::fromStdString(centreFile), &error) || !key.createNodeKey(node, QString::fromStdString(file), &error)) {
+        printErr("padrob centre: " + error.toStdString() + "\n");
+        return kExitUsage;
+    }
+    printOut(fill(trStd("padrob", "node %1's key in %2 (fingerprint %3), from the centre key %4\n"),
+                  {node, file, key.forNode(node).fingerprint().toStdString(), key.fingerprint().toStdString()}));
+    return kExitOk;
 }
 
 /// padrob centre seal --key FILE: a secret from standard input, sealed with the centre's key.
@@ -901,9 +946,11 @@ int runCentre(const std::vector<std::string>& args)
     if (!args.empty() && args[0] == "bench") return runCentreBench(args);
     if (!args.empty() && args[0] == "seal") return runCentreSeal(args);
     if (!args.empty() && args[0] == "pki") return runCentrePki(args);
+    if (!args.empty() && args[0] == "key" && args.size() > 2) return runCentreNodeKey(args);
     if (args.size() != 2 || args[0] != "key") {
         if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
             printOut(trStd("padrob", "Usage: padrob centre key FILE\n"
+                                     "       padrob centre key --key CENTRE-KEY --node NAME FILE\n"
                                      "       padrob centre seal --key FILE < SECRET\n"
                                      "       padrob centre bench [--stations N] [--seconds S] [--tutorial FILE] [--json]\n"
                                      "       padrob centre pki DIR [--node NAME]...\n"
@@ -912,7 +959,10 @@ int runCentre(const std::vector<std::string>& args)
                                      "Copy it to every station, instructor and display of the centre (padrob station\n"
                                      "--key, padrob instructor --key, padrob-studio --centre-key): every message is\n"
                                      "signed with it, and what is not is ignored (commands: refused). An existing file\n"
-                                     "is never replaced.\n"
+                                     "is never replaced. With --node NAME: node NAME's own key, derived from the\n"
+                                     "centre's key, for a station (padrob station --name NAME --key FILE): it signs\n"
+                                     "only that station's messages and checks only the commands for it, so the\n"
+                                     "station cannot pass for another. Instructors keep the centre's key.\n"
                                      "\n"
                                      "seal: prints the line read from standard input (the records server's password)\n"
                                      "sealed with the centre's key, for padrob station --records-password FILE.\n"

@@ -32,6 +32,17 @@ std::unique_ptr<Bus> open(unsigned reads, const CentreKey& key = kKey, bool chec
     return bus;
 }
 
+/// A state of `station` as it is now.
+State stateOf(const std::string& station, std::uint64_t seq, const std::string& status)
+{
+    State s;
+    s.seq = seq;
+    s.sentUs = wallUs();
+    s.station = station;
+    s.status = status;
+    return s;
+}
+
 }  // namespace
 
 TEST(CentreBus, EveryTopicCarriesItsMessagesWithTheirQos)
@@ -170,11 +181,7 @@ TEST(CentreBus, WhatIsNotSignedWithTheCentresKeyIsDropped)
         // one writer's state per pass: a reader keeps the last state per station, so
         // states written together would hide each other
         ++seq;
-        State s;
-        s.seq = seq;
-        s.sentUs = wallUs();
-        s.station = real;
-        s.status = "running";  // the forgers' lie: it runs
+        State s = stateOf(real, seq, "running");  // the forgers' lie: it runs
         if (seq % 8 == 2) unsignedForger->publish(s);
         else if (seq % 8 == 4) otherKeyForger->publish(s);
         else if (seq % 8 == 6) {
@@ -291,4 +298,74 @@ TEST(CentreBus, ABadDomainIsRefusedWithAMessage)
     QString error;
     EXPECT_FALSE(Bus::open(o, &error));
     EXPECT_TRUE(error.contains("0 to 232")) << error.toStdString();
+}
+
+// Issue 23 item 6: a station holding only its own node key cannot pass for another
+// station — its states, events, replies and announcements in another's name are dropped
+// by the instructor (the centre's key) — while a display given a station's key checks
+// that station's messages and passes over the others'.
+TEST(CentreBus, AStationWithItsOwnKeyCannotPassForAnother)
+{
+    const std::string one = centre_test::unique("one"), two = centre_test::unique("two");
+    auto instructor = open(TopicAnnounce | TopicState | TopicEvent | TopicReply);
+    auto stationOne = open(TopicCommand, kKey.forNode(one));
+    auto stationTwo = open(TopicCommand, kKey.forNode(two));
+    auto displayOfOne = open(TopicAnnounce | TopicState, kKey.forNode(one));
+    ASSERT_TRUE(instructor && stationOne && stationTwo && displayOfOne);
+    for (const auto& [bus, name] : {std::pair{stationOne.get(), one}, std::pair{stationTwo.get(), two}}) {
+        Announce a;
+        a.node = name;
+        a.role = "station";
+        ASSERT_TRUE(bus->announce(a));
+    }
+    // station two says it is one: unsigned, since its key does not cover one
+    Announce fake;
+    fake.node = one;
+    fake.role = "station";
+    fake.model = "fake";
+    ASSERT_TRUE(stationTwo->announce(fake));  // not written: its key cannot sign it
+    std::set<std::string> announced, displayed;
+    std::vector<State> states;
+    std::vector<Reply> replies;
+    std::uint64_t seq = 0;
+    auto pump = [&] {
+        ++seq;
+        State s = stateOf(one, seq, "idle");
+        if (seq % 2) {
+            s.status = "done";  // the forger's lie
+            stationTwo->publish(s);
+            Event e;
+            e.station = one;
+            e.kind = "goal";
+            stationTwo->publish(e);
+            stationTwo->reply(centre_test::doneReply(one, "desk", 42));
+        } else {
+            stationOne->publish(s);
+            stationTwo->publish(stateOf(two, seq, "idle"));
+        }
+        for (auto& x : instructor->takeAnnounces()) {
+            if (!x.gone) {
+                announced.insert(x.announce.node);
+                EXPECT_NE(x.announce.model, "fake");
+            }
+        }
+        for (auto& x : instructor->takeStates()) states.push_back(x);
+        for (auto& x : instructor->takeEvents()) ADD_FAILURE() << "a forged event of " << x.station;
+        for (auto& x : instructor->takeReplies()) replies.push_back(x);
+        for (auto& x : displayOfOne->takeStates()) {
+            displayed.insert(x.station);
+            EXPECT_EQ(x.status, "idle");
+        }
+        displayOfOne->takeAnnounces();
+    };
+    auto seen = [&](const std::string& station) {
+        return std::any_of(states.begin(), states.end(), [&](const State& s) { return s.station == station; });
+    };
+    ASSERT_TRUE(waitFor([&] { return announced.count(one) && announced.count(two) && seen(one) && seen(two) && displayed.count(one); },
+                        10000, pump));
+    ASSERT_TRUE(waitFor([&] { return instructor->dropped().badSignature >= 20; }, 10000, pump))
+        << instructor->dropped().badSignature;
+    for (const State& s : states) EXPECT_EQ(s.status, "idle") << "only " << s.station << "'s own states";
+    EXPECT_TRUE(replies.empty()) << "no forged 'done'";
+    EXPECT_EQ(displayed, std::set<std::string>{one}) << "the display checks only its station's states";
 }

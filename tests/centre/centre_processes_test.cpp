@@ -530,3 +530,58 @@ TEST_F(Centre, AStationTakesItsOperatorsDevicesFromAProfile)
     ASSERT_TRUE(station->waitForFinished(10000));
     EXPECT_EQ(station->exitCode(), 0);
 }
+
+// Issue 23 item 6: a station given only its own node key (padrob centre key --node) is
+// heard and obeyed as with the centre's key; the key refuses to serve under another name,
+// and an instructor refuses it (it needs the centre's key).
+TEST_F(Centre, AStationRunsOnItsOwnNodeKeyAndOnlyUnderItsName)
+{
+    const std::string name = centre_test::unique("N1");
+    const QString nodeKey = dir.filePath("n1.key");
+    QProcess make;
+    make.start(PADROB_CLI, {"centre", "key", "--key", keyFile, "--node", QString::fromStdString(name), nodeKey});
+    ASSERT_TRUE(make.waitForFinished(20000));
+    ASSERT_EQ(make.exitCode(), 0) << make.readAllStandardError().toStdString();
+    EXPECT_TRUE(make.readAllStandardOutput().contains(key.forNode(name).fingerprint().toLatin1()));
+    CentreKey loaded;
+    QString error;
+    ASSERT_TRUE(loaded.load(nodeKey, &error)) << error.toStdString();
+    EXPECT_EQ(loaded.node(), name);
+
+    // the station on its own key: heard, and it obeys the instructor's command
+    auto p = std::make_unique<QProcess>();
+    p->setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    p->start(PADROB_CLI, {"station", kTut0, "--name", QString::fromStdString(name), "--demo", "--for", "60", "--domain",
+                          QString::number(domain), "--loopback", "--key", nodeKey});
+    ASSERT_TRUE(p->waitForStarted(5000));
+    stations.push_back(std::move(p));
+    ASSERT_TRUE(waitFor([&] { return seenRunning(name); }, 20000, [&] { poll(); }));
+    auto r = command(name, "start", "T0", "OP-1");
+    ASSERT_TRUE(r);
+    EXPECT_TRUE(r->accepted) << r->message;
+    EXPECT_EQ(stateAfter(name, 500).status, "running");
+    EXPECT_EQ(bus->dropped().badSignature, 0u) << "nothing of the station was refused";
+
+    // the same key under another name, and as an instructor's: refused, saying why
+    QProcess other;
+    other.start(PADROB_CLI, {"station", kTut0, "--name", "someone-else", "--for", "1", "--domain",
+                             QString::number(domain), "--loopback", "--key", nodeKey});
+    ASSERT_TRUE(other.waitForFinished(20000));
+    EXPECT_EQ(other.exitCode(), 2);
+    const QString otherErr = QString::fromUtf8(other.readAllStandardError());
+    EXPECT_TRUE(otherErr.contains(QString::fromStdString(name)) && otherErr.contains("someone-else") &&
+                otherErr.contains("--node"))
+        << otherErr.toStdString();
+    QProcess desk;
+    desk.start(PADROB_CLI, {"instructor", "list", "--wait", "0.1", "--domain", QString::number(domain), "--loopback",
+                            "--key", nodeKey});
+    ASSERT_TRUE(desk.waitForFinished(20000));
+    EXPECT_EQ(desk.exitCode(), 2);
+    EXPECT_TRUE(desk.readAllStandardError().contains("centre's key"));
+    // a node key is never made from a node key, nor over an existing file
+    QProcess again;
+    again.start(PADROB_CLI, {"centre", "key", "--key", nodeKey, "--node", "N2", dir.filePath("n2.key")});
+    ASSERT_TRUE(again.waitForFinished(20000));
+    EXPECT_EQ(again.exitCode(), 2);
+    EXPECT_FALSE(QFile::exists(dir.filePath("n2.key")));
+}

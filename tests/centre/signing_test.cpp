@@ -365,3 +365,132 @@ TEST(CentreSigning, KeyFilesAreMadeOwnerOnlyAndCheckedWhenRead)
     EXPECT_TRUE(error.contains("64 hexadecimal digits")) << error.toStdString();
     EXPECT_FALSE(CentreKey().load(dir.filePath("missing.key"), &error));
 }
+
+// Issue 23 item 6: a station given only its own node key signs only its own messages and
+// checks only the commands for it, so it cannot pass for another station; the centre's
+// key (the instructors') derives every node key and checks everything.
+TEST(CentreSigning, ANodeKeyCoversOnlyItsNode)
+{
+    const CentreKey centre = keyOf('k');
+    const CentreKey s1 = centre.forNode("station-1"), s2 = centre.forNode("station-2");
+    ASSERT_TRUE(s1.isSet() && s2.isSet());
+    EXPECT_EQ(s1.node(), "station-1");
+    EXPECT_TRUE(centre.node().empty());
+    EXPECT_NE(s1.fingerprint(), s2.fingerprint());
+    EXPECT_NE(s1.fingerprint(), centre.fingerprint()) << "a node key is not the centre's";
+    EXPECT_FALSE(s1.forNode("station-2").isSet()) << "a node key derives no other";
+    EXPECT_EQ(s1.forNode("station-1").fingerprint(), s1.fingerprint());
+    EXPECT_FALSE(keyOf('x').forNode("station-1").verify([&] {
+        State s;
+        s.station = "station-1";
+        s1.sign(s);
+        return s;
+    }())) << "another centre's node key";
+
+    // station-1's own messages: signed by its key, believed by the centre's
+    State st;
+    st.station = "station-1";
+    st.status = "running";
+    s1.sign(st);
+    EXPECT_EQ(st.mac.size(), 64u);
+    EXPECT_TRUE(centre.verify(st));
+    EXPECT_TRUE(s1.verify(st));
+    EXPECT_FALSE(s2.verify(st)) << "another station's key does not cover it";
+    Reply r;
+    r.station = "station-1";
+    r.sender = "desk";
+    r.nonce = 7;
+    r.accepted = true;
+    s1.sign(r);
+    EXPECT_TRUE(centre.verify(r));
+    Announce a;
+    a.node = "station-1";
+    a.role = "station";
+    s1.sign(a);
+    EXPECT_TRUE(centre.verify(a));
+
+    // station-2 passing for station-1: it cannot sign (the mac is left empty), and what it
+    // signs as itself does not verify once the station is changed
+    State forged;
+    forged.station = "station-1";
+    forged.status = "done";
+    s2.sign(forged);
+    EXPECT_TRUE(forged.mac.empty());
+    EXPECT_FALSE(centre.verify(forged));
+    forged.station = "station-2";
+    s2.sign(forged);
+    EXPECT_TRUE(centre.verify(forged));
+    forged.station = "station-1";
+    EXPECT_FALSE(centre.verify(forged)) << "a signature is the signer's node's";
+    Reply fakeDone = r;
+    fakeDone.mac.clear();
+    s2.sign(fakeDone);
+    EXPECT_FALSE(centre.verify(fakeDone));
+    Announce fakeStation = a;
+    s2.sign(fakeStation);
+    EXPECT_FALSE(centre.verify(fakeStation));
+
+    // commands: the instructor signs with the centre's key; station-1's key checks those
+    // for it, and signs none for station-2
+    Command c = command();
+    centre.sign(c);
+    EXPECT_TRUE(s1.verify(c));
+    EXPECT_FALSE(s2.verify(c));
+    Command toOther = command();
+    toOther.target = "station-2";
+    s1.sign(toOther);
+    EXPECT_TRUE(toOther.mac.empty());
+    std::string why;
+    CommandGuard guard2(s2);
+    toOther.mac = std::string(64, 'a');
+    EXPECT_FALSE(guard2.accept(toOther, QDateTime::currentMSecsSinceEpoch(), why));
+    EXPECT_EQ(why, "bad-signature");
+    centre.sign(toOther);
+    EXPECT_TRUE(guard2.accept(toOther, QDateTime::currentMSecsSinceEpoch(), why)) << why;
+}
+
+TEST(CentreSigning, NodeKeyFilesNameTheirNode)
+{
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    QString error;
+    const QString centrePath = dir.filePath("centre.key"), nodePath = dir.filePath("station-1.key");
+    ASSERT_TRUE(CentreKey::create(centrePath, &error));
+    CentreKey centre;
+    ASSERT_TRUE(centre.load(centrePath, &error));
+    ASSERT_TRUE(centre.createNodeKey("station-1", nodePath, &error)) << error.toStdString();
+    EXPECT_EQ(QFile(nodePath).permissions() & (QFileDevice::ReadGroup | QFileDevice::ReadOther), QFileDevice::Permissions());
+    CentreKey node;
+    ASSERT_TRUE(node.load(nodePath, &error)) << error.toStdString();
+    EXPECT_EQ(node.node(), "station-1");
+    EXPECT_EQ(node.fingerprint(), centre.forNode("station-1").fingerprint());
+    State s;
+    s.station = "station-1";
+    node.sign(s);
+    EXPECT_TRUE(centre.verify(s));
+    // never replaced; a node key makes no node keys; names are bounded
+    EXPECT_FALSE(centre.createNodeKey("station-1", nodePath, &error));
+    EXPECT_TRUE(error.contains("never overwritten")) << error.toStdString();
+    EXPECT_FALSE(node.createNodeKey("station-2", dir.filePath("s2.key"), &error));
+    EXPECT_TRUE(error.contains("centre's key")) << error.toStdString();
+    EXPECT_FALSE(centre.createNodeKey("two words", dir.filePath("s3.key"), &error));
+    EXPECT_FALSE(centre.createNodeKey(std::string(65, 'n'), dir.filePath("s4.key"), &error));
+    EXPECT_FALSE(QFile::exists(dir.filePath("s2.key")) || QFile::exists(dir.filePath("s3.key")));
+    // a node key file without its node's name is refused, saying how to make one
+    const QString bad = dir.filePath("bad.key");
+    {
+        QFile f(bad);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly, QFileDevice::ReadOwner | QFileDevice::WriteOwner));
+        f.write("padrob-node-key \n" + QByteArray(64, 'a') + "\n");
+    }
+    EXPECT_FALSE(CentreKey().load(bad, &error));
+    EXPECT_TRUE(error.contains("--node NAME")) << error.toStdString();
+    // a huge file is not read whole, and is no key
+    const QString huge = dir.filePath("huge.key");
+    {
+        QFile f(huge);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly, QFileDevice::ReadOwner | QFileDevice::WriteOwner));
+        f.write(QByteArray(1 << 20, 'a'));
+    }
+    EXPECT_FALSE(CentreKey().load(huge, &error));
+}

@@ -118,10 +118,14 @@ private slots:
         m_window->setWorkspace(MainWindow::Workspace::Train);
         settle();
 
-        // the station: as padrob-studio --station-name NAME --centre-key FILE --loopback
+        // the station: as padrob-studio --station-name NAME --centre-key FILE --loopback,
+        // FILE its own node key (padrob centre key --node NAME: it signs only what this
+        // station says, docs/training-centre.md); the instructor holds the centre's key
+        const QString nodeKey = m_dir.filePath("station.key");
+        QVERIFY2(key.createNodeKey(m_name, nodeKey, &error), qPrintable(error));
         TrainStationOptions o;
         o.name = QString::fromStdString(m_name);
-        o.keyFile = m_keyFile;
+        o.keyFile = nodeKey;
         o.network = centre::BusOptions::loopback(m_domain);
         m_station = TrainStation::forPage(page(), o);
         QVERIFY2(m_station->online(), qPrintable(m_station->problem()));
@@ -291,6 +295,19 @@ private slots:
     {
         m_station.reset();
         QVERIFY(waitFor([&] { return view() && view()->presence == "left"; }));
+    }
+
+    // a station's node key under another name: no key, and the link says whose it is
+    void anotherStationsKeyIsRefused()
+    {
+        TrainStationOptions o;
+        o.name = QStringLiteral("someone-else");
+        o.keyFile = m_dir.filePath("station.key");
+        o.network = centre::BusOptions::loopback(m_domain);
+        auto other = TrainStation::forPage(page(), o);
+        QVERIFY(!other->hasKey());
+        QVERIFY2(other->problem().contains(QString::fromStdString(m_name)) && other->problem().contains("someone-else"),
+                 qPrintable(other->problem()));
     }
 };
 

@@ -181,6 +181,8 @@ struct Bus::Impl {
     bool believe(const M& m, const char* topic, const std::string& from, std::int64_t sentMs = -1)
     {
         std::uint64_t Dropped::*counter = nullptr;
+        // a node key checks only its node's messages: the others are not for it, not forged
+        if (key.isSet() && !key.covers(m)) return false;
         std::string why = limitProblem(m);
         if (!why.empty()) {
             counter = &Dropped::tooLong;
@@ -373,6 +375,9 @@ bool Bus::announce(const Announce& in)
     Announce a = in;
     a.sentMs = wallUs() / 1000;
     if (!d->fits(a, "padrob_Announce")) return false;
+    // a node key of another node (a display given its station's key) cannot sign this
+    // node's announcement, and no one would believe it unsigned: it is not written
+    if (d->key.isSet() && !d->key.covers(a)) return true;
     if (d->key.isSet()) d->key.sign(a);
     const std::string tutorials = joinTutorials(a.tutorials);
     padrob_centre_Announce s{};

@@ -7,6 +7,9 @@
 #include <QMessageAuthenticationCode>
 #include <QRandomGenerator>
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -20,6 +23,9 @@ namespace {
 struct Tr {
     Q_DECLARE_TR_FUNCTIONS(CentreKey)
 };
+
+/// The first line of a node's key file, before the node's name.
+const QByteArray kNodeKeyTag("padrob-node-key ");
 
 void put(QByteArray& out, const std::string& s)
 {
@@ -189,7 +195,25 @@ bool CentreKey::load(const QString& path, QString* error)
         }
         return false;
     }
-    const QByteArray text = f.readAll().trimmed();
+    // a key file is a line or two: what is longer is not one (and is not read whole)
+    QByteArray text = f.read(4096).trimmed();
+    std::string node;
+    if (text.startsWith(kNodeKeyTag)) {
+        const qsizetype eol = text.indexOf('\n');
+        node = text.mid(kNodeKeyTag.size(), eol < 0 ? -1 : eol - kNodeKeyTag.size()).trimmed().toStdString();
+        text = eol < 0 ? QByteArray() : text.mid(eol + 1).trimmed();
+        if (node.empty() || node.size() > limits::kName ||
+            std::any_of(node.begin(), node.end(), [](char c) { return static_cast<unsigned char>(c) <= ' '; })) {
+            if (error) {
+                *error = Tr::tr("The node key file %1 must name its node on its first line ('%2 NAME', a name of at "
+                                "most %3 bytes without spaces); make one with 'padrob centre key --key CENTRE-KEY "
+                                "--node NAME FILE'.")
+                             .arg(path, QString::fromLatin1(kNodeKeyTag.trimmed()))
+                             .arg(limits::kName);
+            }
+            return false;
+        }
+    }
     const QByteArray bytes = QByteArray::fromHex(text);
     if (text.size() != 64 || bytes.size() != 32 || bytes.toHex() != text.toLower()) {
         if (error) {
@@ -200,25 +224,65 @@ bool CentreKey::load(const QString& path, QString* error)
         return false;
     }
     m_key = bytes;
+    m_node = node;
     return true;
 }
 
-bool CentreKey::create(const QString& path, QString* error)
+namespace {
+
+bool writeKeyFile(const QString& path, const QByteArray& content, QString* error)
 {
-    if (QFileInfo::exists(path)) {
+    if (QFileInfo::exists(path) || QFileInfo(path).isSymLink()) {
         if (error) *error = Tr::tr("%1 exists already: a centre's key is never overwritten.").arg(path);
         return false;
     }
-    QByteArray bytes(32, Qt::Uninitialized);
-    QRandomGenerator::system()->fillRange(reinterpret_cast<quint32*>(bytes.data()), 8);
     QFile f(path);
-    // created owner-only before anything is written
+    // created owner-only before anything is written, and on the disk before we say so
     if (!f.open(QIODevice::WriteOnly | QIODevice::NewOnly, QFileDevice::ReadOwner | QFileDevice::WriteOwner) ||
-        f.write(bytes.toHex() + "\n") != 65 || !f.flush()) {
+        f.write(content) != content.size() || !f.flush() || ::fsync(f.handle()) != 0) {
         if (error) *error = Tr::tr("Cannot write the centre's key file %1: %2.").arg(path, f.errorString());
         return false;
     }
     return true;
+}
+
+}  // namespace
+
+bool CentreKey::create(const QString& path, QString* error)
+{
+    QByteArray bytes(32, Qt::Uninitialized);
+    QRandomGenerator::system()->fillRange(reinterpret_cast<quint32*>(bytes.data()), 8);
+    return writeKeyFile(path, bytes.toHex() + "\n", error);
+}
+
+bool CentreKey::createNodeKey(const std::string& node, const QString& path, QString* error) const
+{
+    if (!isSet() || !m_node.empty()) {
+        if (error) *error = Tr::tr("A node's key is made from the centre's key, not from another node's key.");
+        return false;
+    }
+    if (node.empty() || node.size() > limits::kName ||
+        std::any_of(node.begin(), node.end(), [](char c) { return static_cast<unsigned char>(c) <= ' '; })) {
+        if (error) *error = Tr::tr("A node's name has 1 to %1 bytes and no spaces.").arg(limits::kName);
+        return false;
+    }
+    return writeKeyFile(path, kNodeKeyTag + QByteArray::fromStdString(node) + "\n" + scopeKey(node).toHex() + "\n", error);
+}
+
+CentreKey CentreKey::forNode(const std::string& node) const
+{
+    CentreKey k;
+    if (!coversNode(node)) return k;
+    k.m_key = scopeKey(node);
+    k.m_node = node;
+    return k;
+}
+
+QByteArray CentreKey::scopeKey(const std::string& scope) const
+{
+    if (!coversNode(scope)) return {};
+    if (!m_node.empty()) return m_key;
+    return hmac(m_key, QByteArray("padrob-centre:node:") + QByteArray::fromStdString(scope));
 }
 
 CentreKey CentreKey::fromBytes(const QByteArray& bytes)
@@ -233,17 +297,18 @@ QString CentreKey::fingerprint() const
     return QString::fromLatin1(QCryptographicHash::hash(m_key, QCryptographicHash::Sha256).toHex().left(8));
 }
 
-void CentreKey::sign(Command& c) const { c.mac = macOf(m_key, c).toStdString(); }
-void CentreKey::sign(Announce& a) const { a.mac = macOf(m_key, a).toStdString(); }
-void CentreKey::sign(State& s) const { s.mac = macOf(m_key, s).toStdString(); }
-void CentreKey::sign(Event& e) const { e.mac = macOf(m_key, e).toStdString(); }
-void CentreKey::sign(Reply& r) const { r.mac = macOf(m_key, r).toStdString(); }
+// a message is signed with the key of the node it is about (signing.h)
+void CentreKey::sign(Command& c) const { c.mac = covers(c) ? macOf(scopeKey(c.target), c).toStdString() : std::string(); }
+void CentreKey::sign(Announce& a) const { a.mac = covers(a) ? macOf(scopeKey(a.node), a).toStdString() : std::string(); }
+void CentreKey::sign(State& s) const { s.mac = covers(s) ? macOf(scopeKey(s.station), s).toStdString() : std::string(); }
+void CentreKey::sign(Event& e) const { e.mac = covers(e) ? macOf(scopeKey(e.station), e).toStdString() : std::string(); }
+void CentreKey::sign(Reply& r) const { r.mac = covers(r) ? macOf(scopeKey(r.station), r).toStdString() : std::string(); }
 
-bool CentreKey::verify(const Command& c) const { return isSet() && sameBytes(macOf(m_key, c), QByteArray::fromStdString(c.mac)); }
-bool CentreKey::verify(const Announce& a) const { return isSet() && sameBytes(macOf(m_key, a), QByteArray::fromStdString(a.mac)); }
-bool CentreKey::verify(const State& s) const { return isSet() && sameBytes(macOf(m_key, s), QByteArray::fromStdString(s.mac)); }
-bool CentreKey::verify(const Event& e) const { return isSet() && sameBytes(macOf(m_key, e), QByteArray::fromStdString(e.mac)); }
-bool CentreKey::verify(const Reply& r) const { return isSet() && sameBytes(macOf(m_key, r), QByteArray::fromStdString(r.mac)); }
+bool CentreKey::verify(const Command& c) const { return covers(c) && sameBytes(macOf(scopeKey(c.target), c), QByteArray::fromStdString(c.mac)); }
+bool CentreKey::verify(const Announce& a) const { return covers(a) && sameBytes(macOf(scopeKey(a.node), a), QByteArray::fromStdString(a.mac)); }
+bool CentreKey::verify(const State& s) const { return covers(s) && sameBytes(macOf(scopeKey(s.station), s), QByteArray::fromStdString(s.mac)); }
+bool CentreKey::verify(const Event& e) const { return covers(e) && sameBytes(macOf(scopeKey(e.station), e), QByteArray::fromStdString(e.mac)); }
+bool CentreKey::verify(const Reply& r) const { return covers(r) && sameBytes(macOf(scopeKey(r.station), r), QByteArray::fromStdString(r.mac)); }
 
 QString CentreKey::seal(const QString& secret) const
 {

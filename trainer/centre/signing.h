@@ -12,6 +12,14 @@
 //    the centre's key (HMAC-SHA256 in counter mode as the keystream, encrypt-then-MAC),
 //    so a settings file never holds them in plain text.
 // The key is 32 random bytes kept in a file (64 hex digits) readable by its owner only.
+//
+// Node keys: every signature is made with a key of the node the message is about — the
+// station a state, event or reply comes from, the station a command is for, the node an
+// announcement announces — derived from the centre's key (K_node = HMAC(K, node)). The
+// centre's key derives every node's key, so the instructors that hold it sign and check
+// everything. A station given only its own node key (padrob centre key --node NAME) signs
+// only its own messages and checks only the commands for it: it cannot pass for another
+// station, forge another's replies, or command one.
 
 #include "trainer/centre/messages.h"
 
@@ -28,25 +36,44 @@ namespace trainer::centre {
 class CentreKey {
 public:
     CentreKey() = default;
-    /// Reads a key file: 64 hex digits (whitespace around them ignored). False with
-    /// `error` (translated) when it is missing, malformed, or readable by others.
+    /// Reads a key file: the centre's key (64 hex digits) or a node's key (a first line
+    /// "padrob-node-key NAME", then 64 hex digits); whitespace around them is ignored. False
+    /// with `error` (translated) when it is missing, malformed, or readable by others.
     bool load(const QString& path, QString* error);
-    /// Writes a new random key to `path` (mode 0600; refuses to replace a file).
+    /// Writes a new random centre key to `path` (mode 0600; refuses to replace a file).
     static bool create(const QString& path, QString* error);
+    /// Writes node `node`'s key, derived from this centre key, to `path` (mode 0600;
+    /// refuses to replace a file, and a node key cannot derive others).
+    bool createNodeKey(const std::string& node, const QString& path, QString* error) const;
     static CentreKey fromBytes(const QByteArray& bytes);
 
     bool isSet() const { return m_key.size() == 32; }
+    /// The node this key belongs to; empty for the centre's key (which covers every node).
+    const std::string& node() const { return m_node; }
+    /// This key's node key for `node`: derived from the centre's key, or this node key
+    /// itself when it is `node`'s; an unset key otherwise.
+    CentreKey forNode(const std::string& node) const;
     /// A short fingerprint for people (never the key): the first 8 hex digits of SHA-256(key).
     QString fingerprint() const;
 
-    /// Signs a message (sets its mac) with this key's key for its topic.
+    /// Whether this key can sign and check the message: the centre's key can every one;
+    /// a node key only those about its node (the scope: a command's target, a state's,
+    /// event's or reply's station, an announcement's node).
+    bool covers(const Command& c) const { return coversNode(c.target); }
+    bool covers(const Announce& a) const { return coversNode(a.node); }
+    bool covers(const State& s) const { return coversNode(s.station); }
+    bool covers(const Event& e) const { return coversNode(e.station); }
+    bool covers(const Reply& r) const { return coversNode(r.station); }
+
+    /// Signs a message (sets its mac) with its node's key for its topic; a message this
+    /// key does not cover is left unsigned (an empty mac, which every reader drops).
     void sign(Command& c) const;
     void sign(Announce& a) const;
     void sign(State& s) const;
     void sign(Event& e) const;
     void sign(Reply& r) const;
-    /// Whether the message's mac is this key's signature of it (constant-time comparison);
-    /// false without a key.
+    /// Whether the message's mac is its node's signature of it (constant-time comparison);
+    /// false without a key or when this key does not cover it.
     bool verify(const Command& c) const;
     bool verify(const Announce& a) const;
     bool verify(const State& s) const;
@@ -59,13 +86,19 @@ public:
     bool unseal(const QString& sealed, QString& secret) const;
 
 private:
+    bool coversNode(const std::string& n) const { return isSet() && (m_node.empty() || n == m_node); }
+    /// The key of `scope`'s signatures (empty when not covered).
+    QByteArray scopeKey(const std::string& scope) const;
+
     QByteArray m_key;
+    std::string m_node;  ///< empty: the centre's key
 };
 
 /// A station's guard against forged, stale and replayed commands.
 ///
-/// The replay memory is the station's, for the centre's key: the commands it accepted in
-/// the last maxAgeMs, by (sender, nonce). A command is a replay only if exactly that
+/// The replay memory is the station's: the commands it accepted in the last maxAgeMs, by
+/// (sender, nonce). Only a holder of the centre's key (an instructor) or of this station's
+/// node key can sign a command for it. A command is a replay only if exactly that
 /// sender and nonce were accepted; an older one is stale anyway. So a nonce of 2^64-1
 /// locks out nobody, not even its sender (the old rule, "above the sender's last nonce",
 /// let one signed command shut out every instructor using that name for good).

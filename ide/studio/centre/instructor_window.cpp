@@ -121,6 +121,11 @@ InstructorWindow::InstructorWindow(const centre::BusOptions& bus, const QString&
         if (!m_key.load(keyFile, &error)) {
             m_key = {};
             m_keyProblem = error;
+        } else if (!m_key.node().empty()) {
+            m_keyProblem = tr("%1 is node %2's key: the instructor needs the centre's key, which signs the commands for "
+                              "every station and checks what each says.")
+                               .arg(keyFile, QString::fromStdString(m_key.node()));
+            m_key = {};
         }
     }
     // the network
