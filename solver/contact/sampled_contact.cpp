@@ -3,6 +3,7 @@
 #include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/cone.h>
 #include <fcl/geometry/shape/cylinder.h>
+#include <fcl/math/bv/OBB.h>
 
 #include <algorithm>
 #include <array>
@@ -12,7 +13,28 @@
 
 namespace solver {
 
+/// depthInside with p given in g's frame (q = X⁻¹·p).
+bool depthInsideLocal(const fcl::CollisionGeometryd& g, const Eigen::Isometry3d& X, const Eigen::Vector3d& q,
+                      double& depth, Eigen::Vector3d& normal);
+
 namespace {
+
+/// Half the sides of the box round a box, a cylinder or a cone in its own frame (a
+/// cone's base at z = −lz/2, apex at +lz/2: centred too).
+Eigen::Vector3d halfBox(const fcl::CollisionGeometryd& g)
+{
+    switch (g.getNodeType()) {
+    case fcl::GEOM_BOX: return static_cast<const fcl::Boxd&>(g).side / 2;
+    case fcl::GEOM_CYLINDER: {
+        const auto& c = static_cast<const fcl::Cylinderd&>(g);
+        return {c.radius, c.radius, c.lz / 2};
+    }
+    default: {
+        const auto& c = static_cast<const fcl::Coned&>(g);
+        return {c.radius, c.radius, c.lz / 2};
+    }
+    }
+}
 
 bool isRound(const fcl::CollisionGeometryd& g)
 {
@@ -77,13 +99,19 @@ void forEachSample(const fcl::CollisionGeometryd& g, const Eigen::Isometry3d& X,
     const double lz = cone ? static_cast<const fcl::Coned&>(g).lz : static_cast<const fcl::Cylinderd&>(g).lz;
     const Eigen::Vector3d axis = X.linear().col(2);
     const Eigen::Vector3d u = X.linear().col(0), v = X.linear().col(1);
+    // the rim's directions, computed once
+    static const std::array<std::array<double, 2>, kRimSamples> around = [] {
+        std::array<std::array<double, 2>, kRimSamples> cs{};
+        for (int k = 0; k < kRimSamples; ++k) {
+            const double phi = 2 * std::numbers::pi * k / kRimSamples;
+            cs[static_cast<std::size_t>(k)] = {std::cos(phi), std::sin(phi)};
+        }
+        return cs;
+    }();
     auto rim = [&](double z) {
         const Eigen::Vector3d c = X * Eigen::Vector3d(0, 0, z);
         f(c);
-        for (int k = 0; k < kRimSamples; ++k) {
-            const double phi = 2 * std::numbers::pi * k / kRimSamples;
-            f(Eigen::Vector3d(c + r * (std::cos(phi) * u + std::sin(phi) * v)));
-        }
+        for (const auto& [cs, sn] : around) f(Eigen::Vector3d(c + r * (cs * u + sn * v)));
         for (int i = 0; i < nDirs; ++i) {
             Eigen::Vector3d d = dirs[static_cast<std::size_t>(i)];
             d -= d.dot(axis) * axis;
@@ -115,10 +143,11 @@ void samplesInside(const fcl::CollisionGeometryd& s, const Eigen::Isometry3d& Xs
 {
     std::array<Eigen::Vector3d, 4> dirs;
     const int nDirs = faceDirections(o, Xo, Xs.translation(), dirs);
+    const Eigen::Isometry3d inverse = Xo.inverse(Eigen::Isometry);
     forEachSample(s, Xs, dirs, nDirs, [&](const Eigen::Vector3d& p) {
         double depth = 0;
         Eigen::Vector3d outward;
-        if (n >= kMaxCandidates || !depthInside(o, Xo, p, depth, outward) || depth <= 0) return;
+        if (n >= kMaxCandidates || !depthInsideLocal(o, Xo, inverse * p, depth, outward) || depth <= 0) return;
         // p is on s's surface, o's nearest face is depth away along `outward`
         cand[n++] = {p + 0.5 * depth * outward, sIsB ? Eigen::Vector3d(outward) : Eigen::Vector3d(-outward), depth};
     });
@@ -129,7 +158,12 @@ void samplesInside(const fcl::CollisionGeometryd& s, const Eigen::Isometry3d& Xs
 bool depthInside(const fcl::CollisionGeometryd& g, const Eigen::Isometry3d& X, const Eigen::Vector3d& p, double& depth,
                  Eigen::Vector3d& normal)
 {
-    const Eigen::Vector3d q = X.inverse() * p;
+    return depthInsideLocal(g, X, X.inverse(Eigen::Isometry) * p, depth, normal);
+}
+
+bool depthInsideLocal(const fcl::CollisionGeometryd& g, const Eigen::Isometry3d& X, const Eigen::Vector3d& q,
+                      double& depth, Eigen::Vector3d& normal)
+{
     Eigen::Vector3d n;
     switch (g.getNodeType()) {
     case fcl::GEOM_BOX: {
@@ -143,7 +177,7 @@ bool depthInside(const fcl::CollisionGeometryd& g, const Eigen::Isometry3d& X, c
     }
     case fcl::GEOM_CYLINDER: {
         const auto& c = static_cast<const fcl::Cylinderd&>(g);
-        const double rho = std::hypot(q.x(), q.y());
+        const double rho = std::sqrt(q.x() * q.x() + q.y() * q.y());
         const double dr = c.radius - rho, dz = c.lz / 2 - std::abs(q.z());
         if (dr < dz) {
             depth = dr;
@@ -157,7 +191,7 @@ bool depthInside(const fcl::CollisionGeometryd& g, const Eigen::Isometry3d& X, c
     case fcl::GEOM_CONE: {
         // base at z = −lz/2, apex at +lz/2; the side's outward normal ∝ (ρ̂, r/lz)
         const auto& c = static_cast<const fcl::Coned&>(g);
-        const double rho = std::hypot(q.x(), q.y());
+        const double rho = std::sqrt(q.x() * q.x() + q.y() * q.y());
         const double slope = c.radius / c.lz;
         const double scale = std::sqrt(1 + slope * slope);
         const double side = (c.radius * (c.lz / 2 - q.z()) / c.lz - rho) / scale;
@@ -184,6 +218,12 @@ bool sampledContactPoints(const fcl::CollisionGeometryd& a, const Eigen::Isometr
 {
     if (!(isKnown(a) && isKnown(b) && (isRound(a) || isRound(b)))) return false;
     out.clear();
+    // the boxes round the two solids (oriented with them) apart: no sample can be inside
+    // (most pairs whose axis-aligned boxes meet: a long round bar has a fat one)
+    if (fcl::obbDisjoint<double>(Eigen::Matrix3d(Xa.linear().transpose() * Xb.linear()),
+                                 Eigen::Vector3d(Xa.linear().transpose() * (Xb.translation() - Xa.translation())),
+                                 halfBox(a), halfBox(b)))
+        return true;
     std::array<Candidate, kMaxCandidates> cand;
     std::size_t n = 0;
     samplesInside(a, Xa, b, Xb, false, cand, n);
