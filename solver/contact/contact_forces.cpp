@@ -156,12 +156,17 @@ void contactPoints(Scratch& s, int a, int b)
     s.points.clear();
     s.result.clear();
     fcl::collide(&oa, &ob, s.request, s.result);
+    // FCL's sphere–triangle test (a SPHERE against a mesh, a TUBE, a PRISM) gives the
+    // depth negated: a sphere 5 cm into the bore came back −5 cm, no force, and a ball fell
+    // through the mill's shell. Its normal and point are right.
+    const bool sphereOnMesh =
+        oa.collisionGeometry()->getNodeType() == fcl::GEOM_SPHERE || ob.collisionGeometry()->getNodeType() == fcl::GEOM_SPHERE;
     for (std::size_t i = 0; i < s.result.numContacts(); ++i) {
         const fcl::Contactd& c = s.result.getContact(i);
         // fcl: the normal points from o1 to o2; o1 may be either of ours
         const bool swapped = c.o1 != oa.collisionGeometry().get();
         s.points.emplace_back(swapped ? Eigen::Vector3d(-c.normal) : Eigen::Vector3d(c.normal), c.pos,
-                              c.penetration_depth);
+                              sphereOnMesh ? -c.penetration_depth : c.penetration_depth);
     }
 }
 
