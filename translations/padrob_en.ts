@@ -136,7 +136,7 @@
 <context>
     <name>CentreKey</name>
     <message>
-        <location filename="../trainer/centre/signing.cpp" line="+185" />
+        <location filename="../trainer/centre/signing.cpp" line="+192" />
         <source>Cannot read the centre's key file %1: %2.</source>
         <translation>Cannot read the centre's key file %1: %2.</translation>
     </message>
@@ -146,7 +146,7 @@
         <translation>The centre's key file %1 can be read by other users: make it readable by its owner only (chmod 600 %1).</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+15" />
         <source>The node key file %1 must name its node on its first line ('%2 NAME', a name of at most %3 bytes without spaces); make one with 'padrob centre key --key CENTRE-KEY --node NAME FILE'.</source>
         <translation>The node key file %1 must name its node on its first line ('%2 NAME', a name of at most %3 bytes without spaces); make one with 'padrob centre key --key CENTRE-KEY --node NAME FILE'.</translation>
     </message>
@@ -171,9 +171,19 @@
         <translation>A node's key is made from the centre's key, not from another node's key.</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+4" />
         <source>A node's name has 1 to %1 bytes and no spaces.</source>
         <translation>A node's name has 1 to %1 bytes and no spaces.</translation>
+    </message>
+    <message>
+        <location line="+63" />
+        <source>%1 is node %2's key, not %3's: give %3 its own (padrob centre key --key CENTRE-KEY --node %3 FILE) or the centre's key.</source>
+        <translation>%1 is node %2's key, not %3's: give %3 its own (padrob centre key --key CENTRE-KEY --node %3 FILE) or the centre's key.</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>%1 is node %2's key: an instructor needs the centre's key, which signs the commands for every station and checks what each says.</source>
+        <translation>%1 is node %2's key: an instructor needs the centre's key, which signs the commands for every station and checks what each says.</translation>
     </message>
 </context>
 <context>
@@ -4822,7 +4832,7 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
         <location line="+2" />
         <location line="+3" />
         <location line="+3" />
-        <location line="+574" />
+        <location line="+562" />
         <location line="+51" />
         <location filename="../ide/cli/export.cpp" line="+92" />
         <location filename="../ide/cli/simulate.cpp" line="+243" />
@@ -4848,9 +4858,9 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
     </message>
     <message>
         <location line="+4" />
-        <location filename="../ide/cli/centre.cpp" line="-497" />
-        <location line="+278" />
-        <location line="+171" />
+        <location filename="../ide/cli/centre.cpp" line="-485" />
+        <location line="+272" />
+        <location line="+165" />
         <location line="+51" />
         <location line="+51" />
         <location filename="../ide/cli/export.cpp" line="+15" />
@@ -5989,7 +5999,7 @@ Exit status: 0 the tutorial is fine (checked) or the run passed; 1 the run faile
         <translation>the tutorial has no usable demonstration (DEMO)</translation>
     </message>
     <message>
-        <location filename="../ide/cli/centre.cpp" line="-690" />
+        <location filename="../ide/cli/centre.cpp" line="-678" />
         <source>--domain must be a whole number from 0 to 232, not '%1'</source>
         <translation>--domain must be a whole number from 0 to 232, not '%1'</translation>
     </message>
@@ -6102,14 +6112,7 @@ Runs until interrupted (Ctrl+C or SIGTERM), then says it is leaving.
         <translation>--key FILE is required: the centre's key signs what the station says (no instructor or display believes it otherwise) and checks the instructor's commands</translation>
     </message>
     <message>
-        <location line="+12" />
-        <source>%1 is node %2's key, not %3's: give this station its own (padrob centre key --key CENTRE-KEY --node %3 FILE) or the centre's key
-</source>
-        <translation>%1 is node %2's key, not %3's: give this station its own (padrob centre key --key CENTRE-KEY --node %3 FILE) or the centre's key
-</translation>
-    </message>
-    <message>
-        <location line="+29" />
+        <location line="+35" />
         <source>cannot open the sealed password in %1: it must be made by 'padrob centre seal' with this centre's key</source>
         <translation>cannot open the sealed password in %1: it must be made by 'padrob centre seal' with this centre's key</translation>
     </message>
@@ -6272,12 +6275,12 @@ Exit status: 0 done or accepted, 1 the station refused or did not answer,
     </message>
     <message>
         <location line="+36" />
-        <location line="+270" />
+        <location line="+264" />
         <source>%1 needs a number</source>
         <translation>%1 needs a number</translation>
     </message>
     <message>
-        <location line="-262" />
+        <location line="-256" />
         <source>say what to do: list, watch or send</source>
         <translation>say what to do: list, watch or send</translation>
     </message>
@@ -6297,14 +6300,7 @@ Exit status: 0 done or accepted, 1 the station refused or did not answer,
         <translation>the centre's key is required (--key FILE): what the stations say is signed with it, and so are the commands</translation>
     </message>
     <message>
-        <location line="+11" />
-        <source>%1 is node %2's key: an instructor needs the centre's key, which signs the commands for every station and checks what each says
-</source>
-        <translation>%1 is node %2's key: an instructor needs the centre's key, which signs the commands for every station and checks what each says
-</translation>
-    </message>
-    <message>
-        <location line="+151" />
+        <location line="+156" />
         <location line="+4" />
         <source>expected: padrob centre key --key CENTRE-KEY --node NAME FILE</source>
         <translation>expected: padrob centre key --key CENTRE-KEY --node NAME FILE</translation>
@@ -7470,7 +7466,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::InstructorWindow</name>
     <message>
-        <location filename="../ide/studio/centre/instructor_window.cpp" line="+274" />
+        <location filename="../ide/studio/centre/instructor_window.cpp" line="+269" />
         <source>up</source>
         <translation>up</translation>
     </message>
@@ -7701,12 +7697,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Not connected to the training centre's network.</translation>
     </message>
     <message>
-        <location line="-271" />
-        <source>%1 is node %2's key: the instructor needs the centre's key, which signs the commands for every station and checks what each says.</source>
-        <translation>%1 is node %2's key: the instructor needs the centre's key, which signs the commands for every station and checks what each says.</translation>
-    </message>
-    <message>
-        <location line="+272" />
+        <location line="+1" />
         <source>Commands need the centre's key: start padrob-studio with --centre-key FILE.</source>
         <translation>Commands need the centre's key: start padrob-studio with --centre-key FILE.</translation>
     </message>
@@ -10734,12 +10725,7 @@ Id: %3</translation>
         <translation>no key file was given (--centre-key)</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>%1 is node %2's key, not this station's (%3): give it its own (padrob centre key --key CENTRE-KEY --node %3 FILE) or the centre's key</source>
-        <translation>%1 is node %2's key, not this station's (%3): give it its own (padrob centre key --key CENTRE-KEY --node %3 FILE) or the centre's key</translation>
-    </message>
-    <message>
-        <location line="+13" />
+        <location line="+16" />
         <source>DDS refused to join the domain</source>
         <translation>DDS refused to join the domain</translation>
     </message>

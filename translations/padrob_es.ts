@@ -136,7 +136,7 @@
 <context>
     <name>CentreKey</name>
     <message>
-        <location filename="../trainer/centre/signing.cpp" line="+185" />
+        <location filename="../trainer/centre/signing.cpp" line="+192" />
         <source>Cannot read the centre's key file %1: %2.</source>
         <translation>No se puede leer el archivo de clave del centro %1: %2.</translation>
     </message>
@@ -146,7 +146,7 @@
         <translation>El archivo de clave del centro %1 lo pueden leer otros usuarios: déjelo legible solo por su dueño (chmod 600 %1).</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+15" />
         <source>The node key file %1 must name its node on its first line ('%2 NAME', a name of at most %3 bytes without spaces); make one with 'padrob centre key --key CENTRE-KEY --node NAME FILE'.</source>
         <translation>El archivo de clave de nodo %1 debe nombrar su nodo en su primera línea ('%2 NOMBRE', un nombre de a lo más %3 bytes sin espacios); cree uno con 'padrob centre key --key CLAVE-DEL-CENTRO --node NOMBRE ARCHIVO'.</translation>
     </message>
@@ -171,9 +171,19 @@
         <translation>La clave de un nodo se crea a partir de la clave del centro, no de la clave de otro nodo.</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+4" />
         <source>A node's name has 1 to %1 bytes and no spaces.</source>
         <translation>El nombre de un nodo tiene de 1 a %1 bytes y no lleva espacios.</translation>
+    </message>
+    <message>
+        <location line="+63" />
+        <source>%1 is node %2's key, not %3's: give %3 its own (padrob centre key --key CENTRE-KEY --node %3 FILE) or the centre's key.</source>
+        <translation>%1 es la clave del nodo %2, no la de %3: dé a %3 la suya (padrob centre key --key CLAVE-DEL-CENTRO --node %3 ARCHIVO) o la clave del centro.</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>%1 is node %2's key: an instructor needs the centre's key, which signs the commands for every station and checks what each says.</source>
+        <translation>%1 es la clave del nodo %2: un instructor necesita la clave del centro, que firma las órdenes para cada estación y verifica lo que cada una dice.</translation>
     </message>
 </context>
 <context>
@@ -4826,7 +4836,7 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
         <location line="+2" />
         <location line="+3" />
         <location line="+3" />
-        <location line="+574" />
+        <location line="+562" />
         <location line="+51" />
         <location filename="../ide/cli/export.cpp" line="+92" />
         <location filename="../ide/cli/simulate.cpp" line="+243" />
@@ -4852,9 +4862,9 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
     </message>
     <message>
         <location line="+4" />
-        <location filename="../ide/cli/centre.cpp" line="-497" />
-        <location line="+278" />
-        <location line="+171" />
+        <location filename="../ide/cli/centre.cpp" line="-485" />
+        <location line="+272" />
+        <location line="+165" />
         <location line="+51" />
         <location line="+51" />
         <location filename="../ide/cli/export.cpp" line="+15" />
@@ -6013,7 +6023,7 @@ registro ilegible.
         <translation>el tutorial no tiene una demostración utilizable (DEMO)</translation>
     </message>
     <message>
-        <location filename="../ide/cli/centre.cpp" line="-690" />
+        <location filename="../ide/cli/centre.cpp" line="-678" />
         <source>--domain must be a whole number from 0 to 232, not '%1'</source>
         <translation>--domain debe ser un número entero de 0 a 232, no '%1'</translation>
     </message>
@@ -6129,14 +6139,7 @@ entonces avisa que se va.
         <translation>se requiere --key ARCHIVO: la clave del centro firma lo que dice la estación (sin ella ningún instructor ni pantalla le cree) y verifica las órdenes del instructor</translation>
     </message>
     <message>
-        <location line="+12" />
-        <source>%1 is node %2's key, not %3's: give this station its own (padrob centre key --key CENTRE-KEY --node %3 FILE) or the centre's key
-</source>
-        <translation>%1 es la clave del nodo %2, no la de %3: dé a esta estación la suya (padrob centre key --key CLAVE-DEL-CENTRO --node %3 ARCHIVO) o la clave del centro
-</translation>
-    </message>
-    <message>
-        <location line="+29" />
+        <location line="+35" />
         <source>cannot open the sealed password in %1: it must be made by 'padrob centre seal' with this centre's key</source>
         <translation>no se puede abrir la contraseña sellada de %1: debe crearse con 'padrob centre seal' y la clave de este centro</translation>
     </message>
@@ -6300,12 +6303,12 @@ Estado de salida: 0 hecho o aceptado, 1 la estación rechazó o no respondió,
     </message>
     <message>
         <location line="+36" />
-        <location line="+270" />
+        <location line="+264" />
         <source>%1 needs a number</source>
         <translation>%1 necesita un número</translation>
     </message>
     <message>
-        <location line="-262" />
+        <location line="-256" />
         <source>say what to do: list, watch or send</source>
         <translation>indique qué hacer: list, watch o send</translation>
     </message>
@@ -6325,14 +6328,7 @@ Estado de salida: 0 hecho o aceptado, 1 la estación rechazó o no respondió,
         <translation>se requiere la clave del centro (--key ARCHIVO): lo que dicen las estaciones se firma con ella, y también las órdenes</translation>
     </message>
     <message>
-        <location line="+11" />
-        <source>%1 is node %2's key: an instructor needs the centre's key, which signs the commands for every station and checks what each says
-</source>
-        <translation>%1 es la clave del nodo %2: un instructor necesita la clave del centro, que firma las órdenes para cada estación y verifica lo que cada una dice
-</translation>
-    </message>
-    <message>
-        <location line="+151" />
+        <location line="+156" />
         <location line="+4" />
         <source>expected: padrob centre key --key CENTRE-KEY --node NAME FILE</source>
         <translation>se esperaba: padrob centre key --key CLAVE-DEL-CENTRO --node NOMBRE ARCHIVO</translation>
@@ -7500,7 +7496,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::InstructorWindow</name>
     <message>
-        <location filename="../ide/studio/centre/instructor_window.cpp" line="+274" />
+        <location filename="../ide/studio/centre/instructor_window.cpp" line="+269" />
         <source>up</source>
         <translation>en línea</translation>
     </message>
@@ -7731,12 +7727,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Sin conexión a la red del centro de entrenamiento.</translation>
     </message>
     <message>
-        <location line="-271" />
-        <source>%1 is node %2's key: the instructor needs the centre's key, which signs the commands for every station and checks what each says.</source>
-        <translation>%1 es la clave del nodo %2: el instructor necesita la clave del centro, que firma las órdenes para cada estación y verifica lo que cada una dice.</translation>
-    </message>
-    <message>
-        <location line="+272" />
+        <location line="+1" />
         <source>Commands need the centre's key: start padrob-studio with --centre-key FILE.</source>
         <translation>Las órdenes necesitan la clave del centro: inicie padrob-studio con --centre-key ARCHIVO.</translation>
     </message>
@@ -10764,12 +10755,7 @@ Id: %3</translation>
         <translation>no se indicó un archivo de clave (--centre-key)</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>%1 is node %2's key, not this station's (%3): give it its own (padrob centre key --key CENTRE-KEY --node %3 FILE) or the centre's key</source>
-        <translation>%1 es la clave del nodo %2, no la de esta estación (%3): dele la suya (padrob centre key --key CLAVE-DEL-CENTRO --node %3 ARCHIVO) o la clave del centro</translation>
-    </message>
-    <message>
-        <location line="+13" />
+        <location line="+16" />
         <source>DDS refused to join the domain</source>
         <translation>DDS no permitió entrar al dominio</translation>
     </message>

@@ -243,15 +243,9 @@ int runStation(const std::vector<std::string>& argsIn)
     }
     {
         QString error;
-        if (!o.key.load(QString::fromStdString(net.keyFile), &error)) {
+        const QString keyFile = QString::fromStdString(net.keyFile);
+        if (!o.key.load(keyFile, &error) || !o.key.mayServe(o.name, keyFile, &error)) {
             printErr("padrob station: " + error.toStdString() + "\n");
-            return kExitUsage;
-        }
-        if (!o.key.node().empty() && o.key.node() != o.name) {
-            printErr("padrob station: " +
-                     fill(trStd("padrob", "%1 is node %2's key, not %3's: give this station its own (padrob centre key "
-                                          "--key CENTRE-KEY --node %3 FILE) or the centre's key\n"),
-                          {net.keyFile, o.key.node(), o.name}));
             return kExitUsage;
         }
         net.bus.key = o.key;
@@ -525,15 +519,9 @@ int runInstructor(const std::vector<std::string>& argsIn)
     }
     {
         QString error;
-        if (!key.load(QString::fromStdString(net.keyFile), &error)) {
+        const QString keyFile = QString::fromStdString(net.keyFile);
+        if (!key.load(keyFile, &error) || !key.isCentreKey(keyFile, &error)) {
             printErr("padrob instructor: " + error.toStdString() + "\n");
-            return kExitUsage;
-        }
-        if (!key.node().empty()) {
-            printErr("padrob instructor: " +
-                     fill(trStd("padrob", "%1 is node %2's key: an instructor needs the centre's key, which signs the "
-                                          "commands for every station and checks what each says\n"),
-                          {net.keyFile, key.node()}));
             return kExitUsage;
         }
         net.bus.key = key;

@@ -13,11 +13,59 @@
 
 namespace solver {
 
+namespace {
+
 /// depthInside with p given in g's frame (q = X⁻¹·p).
 bool depthInsideLocal(const fcl::CollisionGeometryd& g, const Eigen::Isometry3d& X, const Eigen::Vector3d& q,
-                      double& depth, Eigen::Vector3d& normal);
-
-namespace {
+                      double& depth, Eigen::Vector3d& normal)
+{
+    Eigen::Vector3d n;
+    switch (g.getNodeType()) {
+    case fcl::GEOM_BOX: {
+        const Eigen::Vector3d h = static_cast<const fcl::Boxd&>(g).side / 2;
+        const Eigen::Vector3d d = h - q.cwiseAbs();
+        Eigen::Index k = 0;
+        depth = d.minCoeff(&k);
+        n = Eigen::Vector3d::Zero();
+        n[k] = q[k] >= 0 ? 1 : -1;
+        break;
+    }
+    case fcl::GEOM_CYLINDER: {
+        const auto& c = static_cast<const fcl::Cylinderd&>(g);
+        const double rho = std::sqrt(q.x() * q.x() + q.y() * q.y());
+        const double dr = c.radius - rho, dz = c.lz / 2 - std::abs(q.z());
+        if (dr < dz) {
+            depth = dr;
+            n = rho > 1e-12 ? Eigen::Vector3d(q.x() / rho, q.y() / rho, 0) : Eigen::Vector3d::UnitX();
+        } else {
+            depth = dz;
+            n = Eigen::Vector3d(0, 0, q.z() >= 0 ? 1 : -1);
+        }
+        break;
+    }
+    case fcl::GEOM_CONE: {
+        // base at z = −lz/2, apex at +lz/2; the side's outward normal ∝ (ρ̂, r/lz)
+        const auto& c = static_cast<const fcl::Coned&>(g);
+        const double rho = std::sqrt(q.x() * q.x() + q.y() * q.y());
+        const double slope = c.radius / c.lz;
+        const double scale = std::sqrt(1 + slope * slope);
+        const double side = (c.radius * (c.lz / 2 - q.z()) / c.lz - rho) / scale;
+        const double base = q.z() + c.lz / 2;
+        if (side < base) {
+            depth = side;
+            const Eigen::Vector3d radial = rho > 1e-12 ? Eigen::Vector3d(q.x() / rho, q.y() / rho, 0) : Eigen::Vector3d::UnitX();
+            n = (radial + slope * Eigen::Vector3d::UnitZ()) / scale;
+        } else {
+            depth = base;
+            n = -Eigen::Vector3d::UnitZ();
+        }
+        break;
+    }
+    default: return false;
+    }
+    normal = X.linear() * n;
+    return true;
+}
 
 /// Half the sides of the box round a box, a cylinder or a cone in its own frame (a
 /// cone's base at z = −lz/2, apex at +lz/2: centred too).
@@ -159,57 +207,6 @@ bool depthInside(const fcl::CollisionGeometryd& g, const Eigen::Isometry3d& X, c
                  Eigen::Vector3d& normal)
 {
     return depthInsideLocal(g, X, X.inverse(Eigen::Isometry) * p, depth, normal);
-}
-
-bool depthInsideLocal(const fcl::CollisionGeometryd& g, const Eigen::Isometry3d& X, const Eigen::Vector3d& q,
-                      double& depth, Eigen::Vector3d& normal)
-{
-    Eigen::Vector3d n;
-    switch (g.getNodeType()) {
-    case fcl::GEOM_BOX: {
-        const Eigen::Vector3d h = static_cast<const fcl::Boxd&>(g).side / 2;
-        const Eigen::Vector3d d = h - q.cwiseAbs();
-        Eigen::Index k = 0;
-        depth = d.minCoeff(&k);
-        n = Eigen::Vector3d::Zero();
-        n[k] = q[k] >= 0 ? 1 : -1;
-        break;
-    }
-    case fcl::GEOM_CYLINDER: {
-        const auto& c = static_cast<const fcl::Cylinderd&>(g);
-        const double rho = std::sqrt(q.x() * q.x() + q.y() * q.y());
-        const double dr = c.radius - rho, dz = c.lz / 2 - std::abs(q.z());
-        if (dr < dz) {
-            depth = dr;
-            n = rho > 1e-12 ? Eigen::Vector3d(q.x() / rho, q.y() / rho, 0) : Eigen::Vector3d::UnitX();
-        } else {
-            depth = dz;
-            n = Eigen::Vector3d(0, 0, q.z() >= 0 ? 1 : -1);
-        }
-        break;
-    }
-    case fcl::GEOM_CONE: {
-        // base at z = −lz/2, apex at +lz/2; the side's outward normal ∝ (ρ̂, r/lz)
-        const auto& c = static_cast<const fcl::Coned&>(g);
-        const double rho = std::sqrt(q.x() * q.x() + q.y() * q.y());
-        const double slope = c.radius / c.lz;
-        const double scale = std::sqrt(1 + slope * slope);
-        const double side = (c.radius * (c.lz / 2 - q.z()) / c.lz - rho) / scale;
-        const double base = q.z() + c.lz / 2;
-        if (side < base) {
-            depth = side;
-            const Eigen::Vector3d radial = rho > 1e-12 ? Eigen::Vector3d(q.x() / rho, q.y() / rho, 0) : Eigen::Vector3d::UnitX();
-            n = (radial + slope * Eigen::Vector3d::UnitZ()) / scale;
-        } else {
-            depth = base;
-            n = -Eigen::Vector3d::UnitZ();
-        }
-        break;
-    }
-    default: return false;
-    }
-    normal = X.linear() * n;
-    return true;
 }
 
 bool sampledContactPoints(const fcl::CollisionGeometryd& a, const Eigen::Isometry3d& Xa,

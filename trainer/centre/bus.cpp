@@ -375,10 +375,12 @@ bool Bus::announce(const Announce& in)
     Announce a = in;
     a.sentMs = wallUs() / 1000;
     if (!d->fits(a, "padrob_Announce")) return false;
-    // a node key of another node (a display given its station's key) cannot sign this
-    // node's announcement, and no one would believe it unsigned: it is not written
-    if (d->key.isSet() && !d->key.covers(a)) return true;
-    if (d->key.isSet()) d->key.sign(a);
+    if (d->key.isSet()) {
+        // a node key of another node (a display given its station's key) cannot sign this
+        // node's announcement, and no one would believe it unsigned: it is not written
+        if (!d->key.covers(a)) return true;
+        d->key.sign(a);
+    }
     const std::string tutorials = joinTutorials(a.tutorials);
     padrob_centre_Announce s{};
     s.node = cstr(a.node);

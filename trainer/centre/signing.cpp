@@ -27,6 +27,13 @@ struct Tr {
 /// The first line of a node's key file, before the node's name.
 const QByteArray kNodeKeyTag("padrob-node-key ");
 
+/// A name a node key file can hold: 1 to limits::kName bytes, no spaces or control characters.
+bool validNodeName(const std::string& node)
+{
+    return !node.empty() && node.size() <= limits::kName &&
+           std::none_of(node.begin(), node.end(), [](char c) { return static_cast<unsigned char>(c) <= ' '; });
+}
+
 void put(QByteArray& out, const std::string& s)
 {
     const quint32 n = static_cast<quint32>(s.size());
@@ -202,8 +209,7 @@ bool CentreKey::load(const QString& path, QString* error)
         const qsizetype eol = text.indexOf('\n');
         node = text.mid(kNodeKeyTag.size(), eol < 0 ? -1 : eol - kNodeKeyTag.size()).trimmed().toStdString();
         text = eol < 0 ? QByteArray() : text.mid(eol + 1).trimmed();
-        if (node.empty() || node.size() > limits::kName ||
-            std::any_of(node.begin(), node.end(), [](char c) { return static_cast<unsigned char>(c) <= ' '; })) {
+        if (!validNodeName(node)) {
             if (error) {
                 *error = Tr::tr("The node key file %1 must name its node on its first line ('%2 NAME', a name of at "
                                 "most %3 bytes without spaces); make one with 'padrob centre key --key CENTRE-KEY "
@@ -261,8 +267,7 @@ bool CentreKey::createNodeKey(const std::string& node, const QString& path, QStr
         if (error) *error = Tr::tr("A node's key is made from the centre's key, not from another node's key.");
         return false;
     }
-    if (node.empty() || node.size() > limits::kName ||
-        std::any_of(node.begin(), node.end(), [](char c) { return static_cast<unsigned char>(c) <= ' '; })) {
+    if (!validNodeName(node)) {
         if (error) *error = Tr::tr("A node's name has 1 to %1 bytes and no spaces.").arg(limits::kName);
         return false;
     }
@@ -298,17 +303,51 @@ QString CentreKey::fingerprint() const
 }
 
 // a message is signed with the key of the node it is about (signing.h)
-void CentreKey::sign(Command& c) const { c.mac = covers(c) ? macOf(scopeKey(c.target), c).toStdString() : std::string(); }
-void CentreKey::sign(Announce& a) const { a.mac = covers(a) ? macOf(scopeKey(a.node), a).toStdString() : std::string(); }
-void CentreKey::sign(State& s) const { s.mac = covers(s) ? macOf(scopeKey(s.station), s).toStdString() : std::string(); }
-void CentreKey::sign(Event& e) const { e.mac = covers(e) ? macOf(scopeKey(e.station), e).toStdString() : std::string(); }
-void CentreKey::sign(Reply& r) const { r.mac = covers(r) ? macOf(scopeKey(r.station), r).toStdString() : std::string(); }
+template <class M>
+std::string CentreKey::macFor(const M& m) const
+{
+    return covers(m) ? macOf(scopeKey(scopeOf(m)), m).toStdString() : std::string();
+}
 
-bool CentreKey::verify(const Command& c) const { return covers(c) && sameBytes(macOf(scopeKey(c.target), c), QByteArray::fromStdString(c.mac)); }
-bool CentreKey::verify(const Announce& a) const { return covers(a) && sameBytes(macOf(scopeKey(a.node), a), QByteArray::fromStdString(a.mac)); }
-bool CentreKey::verify(const State& s) const { return covers(s) && sameBytes(macOf(scopeKey(s.station), s), QByteArray::fromStdString(s.mac)); }
-bool CentreKey::verify(const Event& e) const { return covers(e) && sameBytes(macOf(scopeKey(e.station), e), QByteArray::fromStdString(e.mac)); }
-bool CentreKey::verify(const Reply& r) const { return covers(r) && sameBytes(macOf(scopeKey(r.station), r), QByteArray::fromStdString(r.mac)); }
+template <class M>
+bool CentreKey::verifyMac(const M& m) const
+{
+    return covers(m) && sameBytes(QByteArray::fromStdString(macFor(m)), QByteArray::fromStdString(m.mac));
+}
+
+void CentreKey::sign(Command& c) const { c.mac = macFor(c); }
+void CentreKey::sign(Announce& a) const { a.mac = macFor(a); }
+void CentreKey::sign(State& s) const { s.mac = macFor(s); }
+void CentreKey::sign(Event& e) const { e.mac = macFor(e); }
+void CentreKey::sign(Reply& r) const { r.mac = macFor(r); }
+
+bool CentreKey::verify(const Command& c) const { return verifyMac(c); }
+bool CentreKey::verify(const Announce& a) const { return verifyMac(a); }
+bool CentreKey::verify(const State& s) const { return verifyMac(s); }
+bool CentreKey::verify(const Event& e) const { return verifyMac(e); }
+bool CentreKey::verify(const Reply& r) const { return verifyMac(r); }
+
+bool CentreKey::mayServe(const std::string& name, const QString& path, QString* error) const
+{
+    if (m_node.empty() || m_node == name) return true;
+    if (error) {
+        *error = Tr::tr("%1 is node %2's key, not %3's: give %3 its own (padrob centre key --key CENTRE-KEY --node %3 "
+                        "FILE) or the centre's key.")
+                     .arg(path, QString::fromStdString(m_node), QString::fromStdString(name));
+    }
+    return false;
+}
+
+bool CentreKey::isCentreKey(const QString& path, QString* error) const
+{
+    if (m_node.empty()) return true;
+    if (error) {
+        *error = Tr::tr("%1 is node %2's key: an instructor needs the centre's key, which signs the commands for every "
+                        "station and checks what each says.")
+                     .arg(path, QString::fromStdString(m_node));
+    }
+    return false;
+}
 
 QString CentreKey::seal(const QString& secret) const
 {

@@ -33,6 +33,14 @@
 
 namespace trainer::centre {
 
+/// The node a message is about, whose key signs it: a command's target station; a
+/// state's, event's or reply's station; an announcement's node.
+inline const std::string& scopeOf(const Command& c) { return c.target; }
+inline const std::string& scopeOf(const Announce& a) { return a.node; }
+inline const std::string& scopeOf(const State& s) { return s.station; }
+inline const std::string& scopeOf(const Event& e) { return e.station; }
+inline const std::string& scopeOf(const Reply& r) { return r.station; }
+
 class CentreKey {
 public:
     CentreKey() = default;
@@ -57,13 +65,19 @@ public:
     QString fingerprint() const;
 
     /// Whether this key can sign and check the message: the centre's key can every one;
-    /// a node key only those about its node (the scope: a command's target, a state's,
-    /// event's or reply's station, an announcement's node).
-    bool covers(const Command& c) const { return coversNode(c.target); }
-    bool covers(const Announce& a) const { return coversNode(a.node); }
-    bool covers(const State& s) const { return coversNode(s.station); }
-    bool covers(const Event& e) const { return coversNode(e.station); }
-    bool covers(const Reply& r) const { return coversNode(r.station); }
+    /// a node key only those about its node (scopeOf).
+    template <class M>
+    bool covers(const M& m) const
+    {
+        return coversNode(scopeOf(m));
+    }
+    /// Whether this key may serve as node `name`'s: the centre's key may serve any node, a
+    /// node key only its own. False with `error` (translated: the key file `path`, whose
+    /// key it is, and how to make `name`'s) otherwise.
+    bool mayServe(const std::string& name, const QString& path, QString* error) const;
+    /// Whether this is the centre's key, as an instructor needs (it signs the commands for
+    /// every station). False with `error` (translated, naming the file `path`) for a node key.
+    bool isCentreKey(const QString& path, QString* error) const;
 
     /// Signs a message (sets its mac) with its node's key for its topic; a message this
     /// key does not cover is left unsigned (an empty mac, which every reader drops).
@@ -89,6 +103,11 @@ private:
     bool coversNode(const std::string& n) const { return isSet() && (m_node.empty() || n == m_node); }
     /// The key of `scope`'s signatures (empty when not covered).
     QByteArray scopeKey(const std::string& scope) const;
+    /// The message's signature under its node's key; empty when this key does not cover it.
+    template <class M>
+    std::string macFor(const M& m) const;
+    template <class M>
+    bool verifyMac(const M& m) const;
 
     QByteArray m_key;
     std::string m_node;  ///< empty: the centre's key

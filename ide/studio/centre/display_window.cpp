@@ -31,7 +31,7 @@ DisplayWindow::DisplayWindow(const QString& station, DisplayView::Screen screen,
         m_view->setProblem(m_busError);
         return;
     }
-    if (!o.key.node().empty() && o.key.node() != station.toStdString()) {
+    if (!o.key.mayServe(station.toStdString(), QString(), nullptr)) {
         // a station's key checks only that station's messages
         m_busError = tr("This display's key is station %1's: it cannot check what station %2 sends, so it shows "
                         "nothing. Give it station %2's key or the centre's key.")

@@ -118,14 +118,9 @@ InstructorWindow::InstructorWindow(const centre::BusOptions& bus, const QString&
     // the key: without one (or with one that cannot be used) the window only watches
     if (!keyFile.isEmpty()) {
         QString error;
-        if (!m_key.load(keyFile, &error)) {
+        if (!m_key.load(keyFile, &error) || !m_key.isCentreKey(keyFile, &error)) {
             m_key = {};
             m_keyProblem = error;
-        } else if (!m_key.node().empty()) {
-            m_keyProblem = tr("%1 is node %2's key: the instructor needs the centre's key, which signs the commands for "
-                              "every station and checks what each says.")
-                               .arg(keyFile, QString::fromStdString(m_key.node()));
-            m_key = {};
         }
     }
     // the network

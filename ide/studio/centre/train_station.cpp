@@ -95,13 +95,9 @@ TrainStation::TrainStation(Host* host, TrainStationOptions options, QObject* par
     } else {
         QString error;
         m_hasKey = key.load(m_o.keyFile, &error);
+        // a node key serves only its own station
+        if (m_hasKey) m_hasKey = key.mayServe(m_o.name.toStdString(), m_o.keyFile, &error);
         if (!m_hasKey) m_problem = error;
-        if (m_hasKey && !key.node().empty() && key.node() != m_o.name.toStdString()) {
-            m_hasKey = false;
-            m_problem = tr("%1 is node %2's key, not this station's (%3): give it its own (padrob centre key --key "
-                           "CENTRE-KEY --node %3 FILE) or the centre's key")
-                            .arg(m_o.keyFile, QString::fromStdString(key.node()), m_o.name);
-        }
     }
     m_guard = std::make_unique<CommandGuard>(m_hasKey ? key : CentreKey());
     BusOptions net = m_o.network;
