@@ -4,6 +4,7 @@
 #include "solver/contact/sampled_contact.h"
 
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
+#include <fcl/math/bv/OBB.h>
 #include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/cone.h>
 #include <fcl/geometry/shape/cylinder.h>
@@ -11,6 +12,8 @@
 #include <fcl/geometry/shape/sphere.h>
 #include <fcl/narrowphase/detail/gjk_solver_libccd.h>
 #include <fcl/narrowphase/detail/primitive_shape_algorithm/box_box.h>
+#include <fcl/narrowphase/detail/traversal/collision/mesh_shape_collision_traversal_node.h>
+#include <fcl/narrowphase/detail/traversal/collision_node.h>
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/collision_object.h>
 
@@ -18,6 +21,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 namespace solver {
 
@@ -27,6 +31,10 @@ namespace {
 constexpr double kAnchorMatch = 0.02;
 /// Contact points asked of FCL per pair.
 constexpr int kPointsPerPair = 8;
+/// How far [m] a moving solid's bounding box may move before the pairs that may touch
+/// are searched again (findContacts: a Verlet list, as molecular dynamics keeps its
+/// neighbours): the broad phase runs once every few dozen steps, not four times a step.
+constexpr double kPairMargin = 0.05;
 
 class Scratch final : public ContactScratch {
 public:
@@ -52,6 +60,15 @@ public:
             it->shapes.push_back(i);
         }
         candidates.reserve(g.still.size());
+        fat.resize(g.shapes.size());
+        made.resize(g.shapes.size());
+        reach.resize(g.shapes.size());
+        for (std::size_t i = 0; i < g.shapes.size(); ++i) {
+            // the farthest point of the shape's local box from its frame's origin
+            const fcl::AABBd& local = g.shapes[i].geometry->aabb_local;
+            reach[i] = local.min_.cwiseAbs().cwiseMax(local.max_.cwiseAbs()).norm();
+        }
+        pairs.reserve(g.moving.size() * (g.still.size() + g.moving.size()));
         result.clear();
         anchors.reserve(kMaxContacts);
         points.reserve(64);
@@ -70,6 +87,21 @@ public:
     std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects;
     std::vector<Group> groups;
     std::vector<int> candidates;  // the still shapes whose boxes meet a group's
+    /// A pair that may touch until a moving shape has moved by kPairMargin: b still (the
+    /// ground's, the scene's) or moving; never excluded. In the order they are touched
+    /// (moving bodies' groups, their shapes, the still shapes by index; then the moving
+    /// pairs), which does not depend on when the list was made: the forces add up in
+    /// the same order, and a step's result does not depend on the list's history.
+    struct Pair {
+        int a, b;
+        bool still;
+    };
+    std::vector<Pair> pairs;
+    std::vector<fcl::AABBd> fat;  // per shape (the moving ones'): its box when the pairs were made, grown by kPairMargin
+    std::vector<Eigen::Isometry3d> made;  // per shape (the moving ones'): its pose then
+    std::vector<double> reach;  // per shape: how far its farthest point is from its frame's origin [m]
+    bool pairsMade = false;
+    long searches = 0;  // makePairs calls: a counter, not state
     fcl::DynamicAABBTreeCollisionManagerd still;
     fcl::CollisionRequestd request;
     fcl::CollisionResultd result;
@@ -122,6 +154,68 @@ bool asPrimitive(const fcl::CollisionGeometryd& g, F&& f)
     }
 }
 
+/// A triangle mesh (TUBE, PRISM, MESH) `mesh` against a primitive `other` (its FCL
+/// shape `shape`): their contact points into s.points, the normals from `first` (one of
+/// the two) to the other. What fcl::collide does for the pair (its OBB-tree traversal,
+/// libccd on each triangle near the primitive), without fitting a bounding volume to the
+/// primitive's corners through a covariance and an eigen-decomposition at every call
+/// (FCL 0.7's generic RSS): the traversal's tests read only the primitive's oriented
+/// box, which FCL gives directly; its swept-sphere rectangle is made from that box.
+template <class Shape>
+void meshAgainst(Scratch& s, const fcl::CollisionObjectd& mesh, const fcl::BVHModel<fcl::OBBRSSd>& model,
+                 const fcl::CollisionObjectd& other, const Shape& shape, const fcl::CollisionObjectd& first)
+{
+    using Node = fcl::detail::MeshShapeCollisionTraversalNodeOBBRSS<Shape, fcl::detail::GJKSolver_libccd<double>>;
+    Node node;
+    node.model1 = &model;
+    node.tf1 = mesh.getTransform();
+    node.model2 = &shape;
+    node.tf2 = other.getTransform();
+    node.nsolver = &s.solver;
+    fcl::OBBd& obb = node.model2_bv.obb;
+    fcl::computeBV(shape, node.tf2, obb);
+    // the swept-sphere rectangle: the box's two longest sides, its half-thinnest the radius
+    fcl::RSSd& rss = node.model2_bv.rss;
+    int order[3] = {0, 1, 2};
+    std::sort(order, order + 3, [&](int i, int j) { return obb.extent[i] > obb.extent[j]; });
+    rss.axis.col(0) = obb.axis.col(order[0]);
+    rss.axis.col(1) = obb.axis.col(order[1]);
+    rss.axis.col(2) = rss.axis.col(0).cross(rss.axis.col(1));
+    rss.l[0] = 2 * obb.extent[order[0]];
+    rss.l[1] = 2 * obb.extent[order[1]];
+    rss.r = obb.extent[order[2]];
+    rss.To = obb.To - obb.extent[order[0]] * rss.axis.col(0) - obb.extent[order[1]] * rss.axis.col(1);
+    node.vertices = model.vertices;
+    node.tri_indices = model.tri_indices;
+    node.request = s.request;
+    s.result.clear();
+    node.result = &s.result;
+    node.cost_density = model.cost_density * shape.cost_density;
+    fcl::detail::collide(&node);
+    s.points.clear();
+    // FCL's normals point from its first object (the mesh) to the second. Its
+    // sphere–triangle test gives the depth negated: a sphere 5 cm into the bore came back
+    // −5 cm, no force, and a ball fell through the mill's shell. Its normal and point are
+    // right.
+    const double towards = &first == &mesh ? 1.0 : -1.0;
+    const double depthSign = std::is_same_v<Shape, fcl::Sphered> ? -1.0 : 1.0;
+    for (std::size_t i = 0; i < s.result.numContacts(); ++i) {
+        const fcl::Contactd& c = s.result.getContact(i);
+        s.points.emplace_back(Eigen::Vector3d(towards * c.normal), c.pos, depthSign * c.penetration_depth);
+    }
+}
+
+/// meshAgainst when `mesh` is a triangle mesh and `other` a primitive; false otherwise.
+bool meshAgainstPrimitive(Scratch& s, const fcl::CollisionObjectd& mesh, const fcl::CollisionObjectd& other,
+                          const fcl::CollisionObjectd& first)
+{
+    if (mesh.collisionGeometry()->getNodeType() != fcl::BV_OBBRSS) return false;
+    const auto& model = static_cast<const fcl::BVHModel<fcl::OBBRSSd>&>(*mesh.collisionGeometry());
+    if (model.getModelType() != fcl::BVH_MODEL_TRIANGLES) return false;
+    return asPrimitive(*other.collisionGeometry(),
+                       [&](const auto& shape) { meshAgainst(s, mesh, model, other, shape, first); });
+}
+
 /// The contact points of shapes a and b into s.points (normals from a to b). Two
 /// primitives go straight to FCL's narrow-phase solver with the preallocated list
 /// (fcl::collide would allocate its own each call); a mesh through fcl::collide.
@@ -144,6 +238,7 @@ void contactPoints(Scratch& s, int a, int b)
     if (sampledContactPoints(*oa.collisionGeometry(), oa.getTransform(), *ob.collisionGeometry(), ob.getTransform(),
                              kPointsPerPair, s.points))
         return;
+    if (meshAgainstPrimitive(s, oa, ob, oa) || meshAgainstPrimitive(s, ob, oa, oa)) return;
     bool primitives = false;
     asPrimitive(*oa.collisionGeometry(), [&](const auto& sa) {
         primitives = asPrimitive(*ob.collisionGeometry(), [&](const auto& sb) {
@@ -155,26 +250,20 @@ void contactPoints(Scratch& s, int a, int b)
     if (primitives) return;
     s.points.clear();
     s.result.clear();
-    fcl::collide(&oa, &ob, s.request, s.result);
-    // FCL's sphere–triangle test (a SPHERE against a mesh, a TUBE, a PRISM) gives the
-    // depth negated: a sphere 5 cm into the bore came back −5 cm, no force, and a ball fell
-    // through the mill's shell. Its normal and point are right.
-    const bool sphereOnMesh =
-        oa.collisionGeometry()->getNodeType() == fcl::GEOM_SPHERE || ob.collisionGeometry()->getNodeType() == fcl::GEOM_SPHERE;
+    fcl::collide(&oa, &ob, s.request, s.result);  // two meshes
     for (std::size_t i = 0; i < s.result.numContacts(); ++i) {
         const fcl::Contactd& c = s.result.getContact(i);
         // fcl: the normal points from o1 to o2; o1 may be either of ours
         const bool swapped = c.o1 != oa.collisionGeometry().get();
-        s.points.emplace_back(swapped ? Eigen::Vector3d(-c.normal) : Eigen::Vector3d(c.normal), c.pos,
-                              sphereOnMesh ? -c.penetration_depth : c.penetration_depth);
+        s.points.emplace_back(swapped ? Eigen::Vector3d(-c.normal) : Eigen::Vector3d(c.normal), c.pos, c.penetration_depth);
     }
 }
 
-/// The narrow phase of shapes a and b (a on a moving body) and their contact forces.
+/// The narrow phase of shapes a and b (a on a moving body; not excluded) and their
+/// contact forces.
 void touch(Scratch& s, int a, int b)
 {
     const ContactGeometry& g = *s.geometry;
-    if (g.isExcluded(a, b)) return;
     Data& d = *s.data;
     const CompiledContact& law = *s.model->contact;
     contactPoints(s, a, b);
@@ -247,18 +336,79 @@ bool candidateCallback(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, voi
     return false;  // all of them
 }
 
-/// Moving shape a against still shape b (their boxes already checked by the body's query).
-void touchStill(Scratch& s, int a, int b)
+/// Whether no point of shape i has moved farther than kPairMargin since the pairs were
+/// made: its frame's origin moved |Δt|, and a point r from it moves at most ‖ΔR‖·r more.
+bool withinMargin(const Scratch& s, int i)
 {
-    const fcl::AABBd& box = s.objects[static_cast<std::size_t>(a)]->getAABB();
-    if (!box.overlap(s.objects[static_cast<std::size_t>(b)]->getAABB())) return;
-    // the mill's shell: a solid inside its bore cannot touch it (its AABB holds every other)
-    const ContactShape& o = s.geometry->shapes[static_cast<std::size_t>(b)];
-    if (o.tube && clearOfTube(o, box.center(), 0.5 * (box.max_ - box.min_).norm())) return;
-    touch(s, a, b);
+    const std::size_t k = static_cast<std::size_t>(i);
+    const Eigen::Isometry3d& now = s.objects[k]->getTransform();
+    const Eigen::Isometry3d& then = s.made[k];
+    return (now.translation() - then.translation()).norm() + (now.linear() - then.linear()).norm() * s.reach[k] <=
+           kPairMargin;
 }
 
-/// applyContacts' work: the broad phase, the narrow phase and the forces.
+/// Shape i's oriented bounding box (its local box in its frame), grown by `grow`.
+fcl::OBBd orientedBox(const Scratch& s, int i, double grow)
+{
+    const fcl::CollisionObjectd& o = *s.objects[static_cast<std::size_t>(i)];
+    const fcl::AABBd& local = o.collisionGeometry()->aabb_local;
+    fcl::OBBd box;
+    box.axis = o.getTransform().linear();
+    box.To = o.getTransform() * local.center();
+    box.extent = 0.5 * (local.max_ - local.min_) + Eigen::Vector3d::Constant(grow);
+    return box;
+}
+
+/// The pairs that may touch while no moving shape has moved farther than kPairMargin:
+/// each moving shape's axis-aligned and oriented bounding boxes, grown by the margin,
+/// meet the other's (grown too when it moves). Any two solids that touch before one
+/// of them has moved that far are among them.
+void makePairs(Scratch& s)
+{
+    const ContactGeometry& g = *s.geometry;
+    s.pairs.clear();
+    const Eigen::Vector3d margin = Eigen::Vector3d::Constant(kPairMargin);
+    for (int i : g.moving) {
+        const fcl::CollisionObjectd& o = *s.objects[static_cast<std::size_t>(i)];
+        s.fat[static_cast<std::size_t>(i)] = fcl::AABBd(o.getAABB().min_ - margin, o.getAABB().max_ + margin);
+        s.made[static_cast<std::size_t>(i)] = o.getTransform();
+    }
+    // the still shapes: one query of their tree per moving body, then shape by shape
+    for (Scratch::Group& gr : s.groups) {
+        fcl::AABBd box = s.fat[static_cast<std::size_t>(gr.shapes.front())];
+        for (int i : gr.shapes) box += s.fat[static_cast<std::size_t>(i)];
+        gr.box->side = box.max_ - box.min_;
+        gr.box->computeLocalAABB();  // what the object's computeAABB reads
+        gr.query->setTranslation(box.center());
+        gr.query->computeAABB();
+        s.candidates.clear();
+        s.still.collide(gr.query.get(), &s, candidateCallback);
+        std::sort(s.candidates.begin(), s.candidates.end());  // the tree's order depends on the query
+        for (int a : gr.shapes) {
+            const fcl::OBBd oa = orientedBox(s, a, kPairMargin);
+            for (int b : s.candidates)
+                if (s.fat[static_cast<std::size_t>(a)].overlap(s.objects[static_cast<std::size_t>(b)]->getAABB()) &&
+                    oa.overlap(orientedBox(s, b, 0)) && !g.isExcluded(a, b))
+                    s.pairs.push_back({a, b, true});
+        }
+    }
+    // the moving pairs
+    for (std::size_t m = 0; m < g.moving.size(); ++m) {
+        const int a = g.moving[m];
+        const fcl::OBBd oa = orientedBox(s, a, kPairMargin);
+        for (std::size_t n = m + 1; n < g.moving.size(); ++n) {
+            const int b = g.moving[n];
+            if (g.shapes[a].body == g.shapes[b].body) continue;
+            if (!s.fat[static_cast<std::size_t>(a)].overlap(s.fat[static_cast<std::size_t>(b)])) continue;
+            if (oa.overlap(orientedBox(s, b, kPairMargin)) && !g.isExcluded(a, b)) s.pairs.push_back({a, b, false});
+        }
+    }
+    s.pairsMade = true;
+    ++s.searches;
+}
+
+/// applyContacts' work: the broad phase (the pairs, made again only when a solid has
+/// moved out of its margin), the narrow phase and the forces.
 void findContacts(const Model& model, const State& state, Data& data, Scratch& s)
 {
     const ContactGeometry& g = *s.geometry;
@@ -266,33 +416,24 @@ void findContacts(const Model& model, const State& state, Data& data, Scratch& s
     s.state = &state;
     s.data = &data;
     data.contacts.clear();
+    bool inside = s.pairsMade;
     for (int i : g.moving) {
         const int body = g.shapes[i].body;
-        s.objects[i]->setTransform(data.X_wb[body] * g.shapes[i].local);
-        s.objects[i]->computeAABB();
+        fcl::CollisionObjectd& o = *s.objects[static_cast<std::size_t>(i)];
+        o.setTransform(data.X_wb[body] * g.shapes[i].local);
+        o.computeAABB();
+        inside = inside && withinMargin(s, i);
     }
-    // the still shapes: one query of their tree per moving body, then shape by shape
-    for (Scratch::Group& gr : s.groups) {
-        fcl::AABBd box = s.objects[static_cast<std::size_t>(gr.shapes.front())]->getAABB();
-        for (int i : gr.shapes) box += s.objects[static_cast<std::size_t>(i)]->getAABB();
-        gr.box->side = box.max_ - box.min_;
-        gr.box->computeLocalAABB();  // what the object's computeAABB reads
-        gr.query->setTranslation(box.center());
-        gr.query->computeAABB();
-        s.candidates.clear();
-        s.still.collide(gr.query.get(), &s, candidateCallback);
-        for (int a : gr.shapes)
-            for (int b : s.candidates) touchStill(s, a, b);
-    }
-    // the moving pairs
-    for (std::size_t m = 0; m < g.moving.size(); ++m) {
-        const int a = g.moving[m];
-        for (std::size_t n = m + 1; n < g.moving.size(); ++n) {
-            const int b = g.moving[n];
-            if (g.shapes[a].body == g.shapes[b].body) continue;
-            if (!s.objects[a]->getAABB().overlap(s.objects[b]->getAABB())) continue;
-            touch(s, a, b);
+    if (!inside) makePairs(s);
+    for (const Scratch::Pair& p : s.pairs) {
+        const fcl::AABBd& box = s.objects[static_cast<std::size_t>(p.a)]->getAABB();
+        if (!box.overlap(s.objects[static_cast<std::size_t>(p.b)]->getAABB())) continue;
+        // the mill's shell: a solid inside its bore cannot touch it (its AABB holds every other)
+        if (p.still) {
+            const ContactShape& o = g.shapes[static_cast<std::size_t>(p.b)];
+            if (o.tube && clearOfTube(o, box.center(), 0.5 * (box.max_ - box.min_).norm())) continue;
         }
+        touch(s, p.a, p.b);
     }
 }
 
@@ -327,6 +468,11 @@ void setContactTiming(const Data& data, bool on)
 double contactSeconds(const Data& data)
 {
     return data.contactScratch ? static_cast<const Scratch&>(*data.contactScratch).seconds : 0.0;
+}
+
+long contactPairSearches(const Data& data)
+{
+    return data.contactScratch ? static_cast<const Scratch&>(*data.contactScratch).searches : 0;
 }
 
 void updateContactAnchors(const Model& model, Data& data, std::vector<ContactAnchor>& anchors)

@@ -1,9 +1,11 @@
 #pragma once
 // Contact forces (CONTACT, docs/contact.md) at one evaluation of the dynamics: the
 // shapes of ContactGeometry are moved to the bodies' poses (Data::X_wb), the pairs
-// that can touch found (FCL: a dynamic AABB tree over the ground's and the scene's
-// shapes, bounding boxes between the moving ones), their contact points measured
-// (fcl::collide), and each point's force added to the bodies' loads Data::fext
+// whose bounding boxes meet taken from a list of those that may touch (made by FCL's
+// dynamic AABB tree over the ground's and the scene's shapes and bounding boxes between
+// the moving ones, each moving box grown by a margin, and made again only when a box
+// leaves its margin), their contact points measured (FCL's narrow phase, our sampled
+// round solids), and each point's force added to the bodies' loads Data::fext
 // (world axes, moment about the body frame's origin: dynamics/applied_forces.h).
 //
 // The law, per pair of solids with n contact points and the mass m_eff it moves
@@ -47,5 +49,9 @@ void updateContactAnchors(const Model& model, Data& data, std::vector<ContactAnc
 void setContactTiming(const Data& data, bool on);
 /// The total of setContactTiming [s] since it was switched on (0 without CONTACT).
 double contactSeconds(const Data& data);
+/// How many times data's scratch has searched for the pairs that may touch (the broad
+/// phase: on the first evaluation and whenever a moving solid's bounding box has left
+/// its margin, docs/contact.md); a counter, not state. 0 without CONTACT.
+long contactPairSearches(const Data& data);
 
 }  // namespace solver
