@@ -2897,18 +2897,23 @@
     </message>
     <message>
         <location line="+3" />
+        <source>stall must be greater than 0</source>
+        <translation>stall must be greater than 0</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>lever must be greater than 0 and at most 1</source>
         <translation>lever must be greater than 0 and at most 1</translation>
     </message>
     <message>
         <location line="+8" />
-        <source>"%1" is not a joint id, wait, tol, lever or ramp</source>
-        <translation>"%1" is not a joint id, wait, tol, lever or ramp</translation>
+        <source>"%1" is not a joint id, wait, tol, lever, ramp or stall</source>
+        <translation>"%1" is not a joint id, wait, tol, lever, ramp or stall</translation>
     </message>
     <message>
         <location line="+5" />
-        <source>line %1: lever= and ramp= go with joint targets</source>
-        <translation>line %1: lever= and ramp= go with joint targets</translation>
+        <source>line %1: lever=, ramp= and stall= go with joint targets</source>
+        <translation>line %1: lever=, ramp= and stall= go with joint targets</translation>
     </message>
     <message>
         <location line="+49" />

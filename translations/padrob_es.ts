@@ -2897,18 +2897,23 @@
     </message>
     <message>
         <location line="+3" />
+        <source>stall must be greater than 0</source>
+        <translation>stall debe ser mayor que 0</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>lever must be greater than 0 and at most 1</source>
         <translation>lever debe ser mayor que 0 y a lo sumo 1</translation>
     </message>
     <message>
         <location line="+8" />
-        <source>"%1" is not a joint id, wait, tol, lever or ramp</source>
-        <translation>"%1" no es un id de articulación, wait, tol, lever ni ramp</translation>
+        <source>"%1" is not a joint id, wait, tol, lever, ramp or stall</source>
+        <translation>"%1" no es un id de articulación, wait, tol, lever, ramp ni stall</translation>
     </message>
     <message>
         <location line="+5" />
-        <source>line %1: lever= and ramp= go with joint targets</source>
-        <translation>línea %1: lever= y ramp= van con objetivos de articulaciones</translation>
+        <source>line %1: lever=, ramp= and stall= go with joint targets</source>
+        <translation>línea %1: lever=, ramp= y stall= van con objetivos de articulaciones</translation>
     </message>
     <message>
         <location line="+49" />

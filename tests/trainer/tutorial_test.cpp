@@ -607,6 +607,15 @@ TEST(TutorialRun, TheDemonstrationPassesAndACarelessRunFailsWithItsPenalties)
     EXPECT_FALSE(replay.result.passed);
     EXPECT_EQ(replay.result.count(TutorialEvent::Kind::LimitBang), 1);
     EXPECT_FALSE(replay.result.completed);
+
+    // the same target pushed for with stall=: the extension stops on its end stop short
+    // of 1.2 m, and once it has stood there 0.5 s the waypoint is reached and the path
+    // ends, where the careless run waits for it until the time limit
+    ASSERT_TRUE(parseAutopilotPath("3=1.2 stall=0.5\n", path, &error)) << error.toStdString();
+    RunOutput pushed;
+    ASSERT_TRUE(recordWithAutopilot(t, path, profile, dir.filePath("pushed.log"), pushed, &error)) << error.toStdString();
+    EXPECT_GT(careless.result.time, 100.0);
+    EXPECT_LT(pushed.result.time, 20.0);
 }
 
 TEST(Autopilot, PathsAreCheckedLineByLine)
@@ -635,6 +644,11 @@ TEST(Autopilot, PathsAreCheckedLineByLine)
     EXPECT_FALSE(parseAutopilotPath("2=1.5 lever=1.5\n", p, &error));
     EXPECT_FALSE(parseAutopilotPath("2=1.5 lever=x:0.1\n", p, &error));
     EXPECT_FALSE(parseAutopilotPath("2=1.5 ramp=0\n", p, &error));
+    // a push: also reached once the joints have stood still that long
+    ASSERT_TRUE(parseAutopilotPath("2=1.5 stall=1.5\n", p, &error)) << error.toStdString();
+    EXPECT_DOUBLE_EQ(p[0].stall, 1.5);
+    EXPECT_FALSE(parseAutopilotPath("2=1.5 stall=0\n", p, &error));
+    EXPECT_FALSE(parseAutopilotPath("wait=1 stall=2\n", p, &error));
     EXPECT_FALSE(parseAutopilotPath("wait=1 ramp=2\n", p, &error));  // nothing to move gently
     EXPECT_TRUE(error.startsWith("line 1")) << error.toStdString();
 }

@@ -214,6 +214,9 @@ bool parseAutopilotPath(const QString& text, std::vector<AutopilotWaypoint>& out
             } else if (key == "ramp") {
                 if (!(v > 0)) return fail(Tr::tr("ramp must be greater than 0"));
                 w.ramp = v;
+            } else if (key == "stall") {
+                if (!(v > 0)) return fail(Tr::tr("stall must be greater than 0"));
+                w.stall = v;
             } else if (key == "lever") {
                 if (!(v > 0 && v <= 1)) return fail(Tr::tr("lever must be greater than 0 and at most 1"));
                 if (leverJoint != 0)
@@ -223,12 +226,12 @@ bool parseAutopilotPath(const QString& text, std::vector<AutopilotWaypoint>& out
             } else {
                 bool isId = false;
                 const int id = key.toInt(&isId);
-                if (!isId) return fail(Tr::tr("\"%1\" is not a joint id, wait, tol, lever or ramp").arg(key));
+                if (!isId) return fail(Tr::tr("\"%1\" is not a joint id, wait, tol, lever, ramp or stall").arg(key));
                 w.targets.emplace_back(id, v);
             }
         }
-        if ((w.lever > 0 || w.ramp > 0 || !w.jointLever.empty()) && w.targets.empty()) {
-            if (error) *error = Tr::tr("line %1: lever= and ramp= go with joint targets").arg(n + 1);
+        if ((w.lever > 0 || w.ramp > 0 || w.stall > 0 || !w.jointLever.empty()) && w.targets.empty()) {
+            if (error) *error = Tr::tr("line %1: lever=, ramp= and stall= go with joint targets").arg(n + 1);
             return false;
         }
         path.push_back(std::move(w));
@@ -331,6 +334,8 @@ bool recordWithAutopilot(std::shared_ptr<const Tutorial> tutorial, const std::ve
     std::size_t wayStarted = std::size_t(-1);  // the waypoint being flown
     double wayEase = 1.0;                      // its levers' easing (lever=), held until it is reached
     std::vector<double> wayAsked(std::size_t(m.nb), 0.0);  // the most each joint's lever has asked in it
+    std::vector<double> stallAt(std::size_t(m.nb), 0.0);   // stall=: where its joints were when they last moved
+    double stallSince = 0.0;                               // and when
     double waitUntil = kSettle;
     bool waiting = true;
     const double dt = 1e-3;
@@ -348,6 +353,12 @@ bool recordWithAutopilot(std::shared_ptr<const Tutorial> tutorial, const std::ve
             const AutopilotWaypoint& w = path[next];
             if (next != wayStarted) {
                 wayStarted = next;
+                stallSince = now;
+                const solver::State& st0 = session.simulation().state();
+                for (const auto& [id, value] : w.targets) {
+                    const int j = m.jointIndex(id);
+                    stallAt[std::size_t(j)] = m.coordinate(j, st0.q[j]);
+                }
                 wayEase = 1.0;
                 std::fill(wayAsked.begin(), wayAsked.end(), 0.0);
             }
@@ -448,6 +459,27 @@ bool recordWithAutopilot(std::shared_ptr<const Tutorial> tutorial, const std::ve
                     const double most = std::max(ease * wayAsked[std::size_t(a.joint)], least);
                     const double v = std::max(std::min(std::abs(u), most), least);
                     wa = (u > 0 ? v : -v) / lv.factor;
+                }
+                // stall=: pushed against something, its joints have stopped short of their
+                // targets (each moved less than its tolerance for that long): reached
+                if (!arrived && w.stall > 0) {
+                    bool moved = false;
+                    for (const auto& [id, value] : w.targets) {
+                        const int j = m.jointIndex(id);
+                        const bool linear = m.jointType[std::size_t(j)] != solver::JointType::Revolute;
+                        const double tol = w.tolerance > 0 ? w.tolerance : (linear ? 1e-3 : 0.2 * std::numbers::pi / 180.0);
+                        const double q = m.coordinate(j, st.q[j]);
+                        if (std::abs(q - stallAt[std::size_t(j)]) > tol) moved = true;
+                    }
+                    if (moved) {
+                        stallSince = now;
+                        for (const auto& [id, value] : w.targets) {
+                            const int j = m.jointIndex(id);
+                            stallAt[std::size_t(j)] = m.coordinate(j, st.q[j]);
+                        }
+                    } else if (now - stallSince >= w.stall) {
+                        arrived = true;
+                    }
                 }
                 if (arrived) {
                     waitUntil = now + std::max(w.wait, 0.2);

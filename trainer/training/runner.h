@@ -47,6 +47,7 @@ struct AutopilotWaypoint {
     double lever = 0.0;      ///< 0: full travel; else how far (0 … 1) the levers open at most (eased together)
     std::vector<std::pair<int, double>> jointLever;  ///< joint id → how far its lever opens at most (the others eased with it)
     double ramp = 0.0;       ///< [s] a lever's full travel (0: the autopilot's 0.5 s)
+    double stall = 0.0;      ///< [s] also reached when its joints have stopped this long short of their targets (0: never)
     int line = 0;
 };
 
@@ -54,8 +55,10 @@ struct AutopilotWaypoint {
 /// in `deg`), `tol=value`, `lever=fraction` or `lever=id:fraction` and `ramp=seconds`
 /// (a gentle move: the levers, or that joint's, open at most that far, the others eased
 /// with them so that the joints still arrive together, and take that long for their full
-/// travel instead of 0.5 s), or `wait=seconds`; `#` starts a comment. False with `error`
-/// ("line 3: …").
+/// travel instead of 0.5 s), `stall=seconds` (a push against something, as a part into its
+/// seat: the waypoint is also reached once its joints have all moved less than their
+/// tolerance for that long, their levers still pushing), or `wait=seconds`; `#` starts a
+/// comment. False with `error` ("line 3: …").
 bool parseAutopilotPath(const QString& text, std::vector<AutopilotWaypoint>& out, QString* error);
 
 /// Drives a session of `tutorial` along `path` with the levers of a virtual console that
