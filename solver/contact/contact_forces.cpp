@@ -31,7 +31,7 @@ namespace {
 constexpr double kAnchorMatch = 0.02;
 /// Contact points asked of FCL per pair.
 constexpr int kPointsPerPair = 8;
-/// How far [m] a moving solid's bounding box may move before the pairs that may touch
+/// How far [m] any point of a moving solid may move before the pairs that may touch
 /// are searched again (findContacts: a Verlet list, as molecular dynamics keeps its
 /// neighbours): the broad phase runs once every few dozen steps, not four times a step.
 constexpr double kPairMargin = 0.05;
@@ -218,7 +218,8 @@ bool meshAgainstPrimitive(Scratch& s, const fcl::CollisionObjectd& mesh, const f
 
 /// The contact points of shapes a and b into s.points (normals from a to b). Two
 /// primitives go straight to FCL's narrow-phase solver with the preallocated list
-/// (fcl::collide would allocate its own each call); a mesh through fcl::collide.
+/// (fcl::collide would allocate its own each call); a mesh against a primitive through
+/// meshAgainst; two meshes through fcl::collide.
 void contactPoints(Scratch& s, int a, int b)
 {
     s.points.clear();

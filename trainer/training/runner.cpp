@@ -89,6 +89,13 @@ double fullLeverRate(const solver::Model& m, int j, double err)
     return err > 0 ? d.vmax : (d.vmin > 0 ? d.vmin : d.vmax);
 }
 
+/// How near joint j must come to its target in waypoint w: its tol=, else 1 mm or 0.2°.
+double waypointTolerance(const solver::Model& m, const AutopilotWaypoint& w, int j)
+{
+    if (w.tolerance > 0) return w.tolerance;
+    return m.jointType[std::size_t(j)] != solver::JointType::Revolute ? 1e-3 : 0.2 * std::numbers::pi / 180.0;
+}
+
 /// The least lever that still moves joint j towards its target: a HYD drive's 12 %
 /// (past a real valve's dead band); a fluid-power drive's opening whose run-on after
 /// the decision to stop (the lever returning at `leverRate`, then the spool's lag τ)
@@ -336,6 +343,14 @@ bool recordWithAutopilot(std::shared_ptr<const Tutorial> tutorial, const std::ve
     std::vector<double> wayAsked(std::size_t(m.nb), 0.0);  // the most each joint's lever has asked in it
     std::vector<double> stallAt(std::size_t(m.nb), 0.0);   // stall=: where its joints were when they last moved
     double stallSince = 0.0;                               // and when
+    auto markStall = [&](const AutopilotWaypoint& w, double now) {
+        const solver::State& st = session.simulation().state();
+        for (const auto& [id, value] : w.targets) {
+            const int j = m.jointIndex(id);
+            stallAt[std::size_t(j)] = m.coordinate(j, st.q[j]);
+        }
+        stallSince = now;
+    };
     double waitUntil = kSettle;
     bool waiting = true;
     const double dt = 1e-3;
@@ -353,12 +368,7 @@ bool recordWithAutopilot(std::shared_ptr<const Tutorial> tutorial, const std::ve
             const AutopilotWaypoint& w = path[next];
             if (next != wayStarted) {
                 wayStarted = next;
-                stallSince = now;
-                const solver::State& st0 = session.simulation().state();
-                for (const auto& [id, value] : w.targets) {
-                    const int j = m.jointIndex(id);
-                    stallAt[std::size_t(j)] = m.coordinate(j, st0.q[j]);
-                }
+                markStall(w, now);
                 wayEase = 1.0;
                 std::fill(wayAsked.begin(), wayAsked.end(), 0.0);
             }
@@ -381,8 +391,7 @@ bool recordWithAutopilot(std::shared_ptr<const Tutorial> tutorial, const std::ve
                 for (const auto& [id, value] : w.targets) {
                     const int j = m.jointIndex(id);
                     const double q = m.coordinate(j, st.q[j]);
-                    const bool linear = m.jointType[std::size_t(j)] != solver::JointType::Revolute;
-                    const double tol = w.tolerance > 0 ? w.tolerance : (linear ? 1e-3 : 0.2 * std::numbers::pi / 180.0);
+                    const double tol = waypointTolerance(m, w, j);
                     const double err = value - q;
                     // a fluid-power joint rides on its oil: it may overshoot and swing about
                     // the target (a HYD joint stops when its lever closes)
@@ -466,17 +475,10 @@ bool recordWithAutopilot(std::shared_ptr<const Tutorial> tutorial, const std::ve
                     bool moved = false;
                     for (const auto& [id, value] : w.targets) {
                         const int j = m.jointIndex(id);
-                        const bool linear = m.jointType[std::size_t(j)] != solver::JointType::Revolute;
-                        const double tol = w.tolerance > 0 ? w.tolerance : (linear ? 1e-3 : 0.2 * std::numbers::pi / 180.0);
-                        const double q = m.coordinate(j, st.q[j]);
-                        if (std::abs(q - stallAt[std::size_t(j)]) > tol) moved = true;
+                        moved = moved || std::abs(m.coordinate(j, st.q[j]) - stallAt[std::size_t(j)]) > waypointTolerance(m, w, j);
                     }
                     if (moved) {
-                        stallSince = now;
-                        for (const auto& [id, value] : w.targets) {
-                            const int j = m.jointIndex(id);
-                            stallAt[std::size_t(j)] = m.coordinate(j, st.q[j]);
-                        }
+                        markStall(w, now);
                     } else if (now - stallSince >= w.stall) {
                         arrived = true;
                     }
