@@ -35,6 +35,8 @@ constexpr int kPointsPerPair = 8;
 /// are searched again (findContacts: a Verlet list, as molecular dynamics keeps its
 /// neighbours): the broad phase runs once every few dozen steps, not four times a step.
 constexpr double kPairMargin = 0.05;
+/// What a pair's gap must exceed the two solids' motions by before it is skipped [m].
+constexpr double kGapSlack = 1e-4;
 
 class Scratch final : public ContactScratch {
 public:
@@ -63,6 +65,7 @@ public:
         fat.resize(g.shapes.size());
         made.resize(g.shapes.size());
         reach.resize(g.shapes.size());
+        moved.assign(g.shapes.size(), 0.0);
         for (std::size_t i = 0; i < g.shapes.size(); ++i) {
             // the farthest point of the shape's local box from its frame's origin
             const fcl::AABBd& local = g.shapes[i].geometry->aabb_local;
@@ -95,11 +98,16 @@ public:
     struct Pair {
         int a, b;
         bool still;
+        /// At most the distance between the two solids when the list was made [m]
+        /// (0: their boxes may meet): the pair cannot touch while the two have moved
+        /// less than that between them (findContacts skips it).
+        double gap;
     };
     std::vector<Pair> pairs;
     std::vector<fcl::AABBd> fat;  // per shape (the moving ones'): its box when the pairs were made, grown by kPairMargin
     std::vector<Eigen::Isometry3d> made;  // per shape (the moving ones'): its pose then
     std::vector<double> reach;  // per shape: how far its farthest point is from its frame's origin [m]
+    std::vector<double> moved;  // per shape: how far any of its points may have moved since the list was made [m]
     bool pairsMade = false;
     long searches = 0;  // makePairs calls: a counter, not state
     fcl::DynamicAABBTreeCollisionManagerd still;
@@ -268,7 +276,22 @@ void touch(Scratch& s, int a, int b)
     Data& d = *s.data;
     const CompiledContact& law = *s.model->contact;
     contactPoints(s, a, b);
-    const int n = std::min(static_cast<int>(s.points.size()), kPointsPerPair);
+    // the points that are contacts, kept in front (at most kPointsPerPair). FCL's normals
+    // are unit and its points lie where both solids' boxes meet; a point that is not such
+    // is not a contact (valgrind: FCL's primitive routines can hand back a point whose
+    // values were never set, which once gave a NaN step); nor is a point less deep than
+    // kLeastDepth (faces that a joint holds together, apart by rounding)
+    int n = 0;
+    for (const fcl::ContactPoint<double>& fc : s.points) {
+        if (n == kPointsPerPair) break;
+        if (!(std::abs(fc.normal.norm() - 1) < 1e-6) || !(std::abs(fc.penetration_depth) < 1) || !fc.pos.allFinite())
+            continue;
+        if (fc.penetration_depth <= kLeastDepth) continue;
+        if (!s.objects[static_cast<std::size_t>(a)]->getAABB().contain(fc.pos) &&
+            !s.objects[static_cast<std::size_t>(b)]->getAABB().contain(fc.pos))
+            continue;
+        s.points[static_cast<std::size_t>(n++)] = fc;
+    }
     if (n == 0) return;
     const int ba = g.shapes[a].body, bb = g.shapes[b].body;
     const double ma = ba >= 0 ? g.mass[ba] : 0, mb = bb >= 0 ? g.mass[bb] : 0;
@@ -279,18 +302,9 @@ void touch(Scratch& s, int a, int b)
     for (int i = 0; i < n; ++i) {
         if (static_cast<int>(d.contacts.size()) >= kMaxContacts) return;
         const fcl::ContactPoint<double>& fc = s.points[static_cast<std::size_t>(i)];
-        Eigen::Vector3d normal = fc.normal;
-        const double norm = normal.norm();
-        // FCL's normals are unit and its points lie where both solids' boxes meet; a point
-        // that is not such is not a contact (valgrind: FCL's primitive routines can hand
-        // back a point whose values were never set, which once gave a NaN step)
-        if (!(std::abs(norm - 1) < 1e-6) || !(std::abs(fc.penetration_depth) < 1) || !fc.pos.allFinite()) continue;
-        if (!s.objects[static_cast<std::size_t>(a)]->getAABB().contain(fc.pos) &&
-            !s.objects[static_cast<std::size_t>(b)]->getAABB().contain(fc.pos))
-            continue;
-        normal /= norm;
+        const Eigen::Vector3d normal = fc.normal.normalized();
         const Eigen::Vector3d p = fc.pos;
-        const double depth = std::max(0.0, fc.penetration_depth);
+        const double depth = fc.penetration_depth;
         const Eigen::Vector3d vrel = pointVelocity(d, bb, p) - pointVelocity(d, ba, p);  // B relative to A
         const double vn = vrel.dot(normal);  // > 0: separating
         const double spring = k * std::min(depth, law.depthCap);
@@ -337,15 +351,14 @@ bool candidateCallback(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, voi
     return false;  // all of them
 }
 
-/// Whether no point of shape i has moved farther than kPairMargin since the pairs were
-/// made: its frame's origin moved |Δt|, and a point r from it moves at most ‖ΔR‖·r more.
-bool withinMargin(const Scratch& s, int i)
+/// How far a point of shape i may have moved at most since the pairs were made: its
+/// frame's origin moved |Δt|, and a point r from it moves at most ‖ΔR‖·r more.
+double movedSinceMade(const Scratch& s, int i)
 {
     const std::size_t k = static_cast<std::size_t>(i);
     const Eigen::Isometry3d& now = s.objects[k]->getTransform();
     const Eigen::Isometry3d& then = s.made[k];
-    return (now.translation() - then.translation()).norm() + (now.linear() - then.linear()).norm() * s.reach[k] <=
-           kPairMargin;
+    return (now.translation() - then.translation()).norm() + (now.linear() - then.linear()).norm() * s.reach[k];
 }
 
 /// Shape i's oriented bounding box (its local box in its frame), grown by `grow`.
@@ -358,6 +371,24 @@ fcl::OBBd orientedBox(const Scratch& s, int i, double grow)
     box.To = o.getTransform() * local.center();
     box.extent = 0.5 * (local.max_ - local.min_) + Eigen::Vector3d::Constant(grow);
     return box;
+}
+
+/// At most the distance between two oriented boxes: their largest gap along one of
+/// the six face normals (0 when none separates them).
+double gapBetween(const fcl::OBBd& a, const fcl::OBBd& b)
+{
+    const Eigen::Vector3d t = b.To - a.To;
+    double gap = 0;
+    auto along = [&](const Eigen::Vector3d& axis) {
+        const double ra = a.extent.dot((a.axis.transpose() * axis).cwiseAbs());
+        const double rb = b.extent.dot((b.axis.transpose() * axis).cwiseAbs());
+        gap = std::max(gap, std::abs(axis.dot(t)) - ra - rb);
+    };
+    for (int i = 0; i < 3; ++i) {
+        along(a.axis.col(i));
+        along(b.axis.col(i));
+    }
+    return gap;
 }
 
 /// The pairs that may touch while no moving shape has moved farther than kPairMargin:
@@ -387,10 +418,13 @@ void makePairs(Scratch& s)
         std::sort(s.candidates.begin(), s.candidates.end());  // the tree's order depends on the query
         for (int a : gr.shapes) {
             const fcl::OBBd oa = orientedBox(s, a, kPairMargin);
-            for (int b : s.candidates)
-                if (s.fat[static_cast<std::size_t>(a)].overlap(s.objects[static_cast<std::size_t>(b)]->getAABB()) &&
-                    oa.overlap(orientedBox(s, b, 0)) && !g.isExcluded(a, b))
-                    s.pairs.push_back({a, b, true});
+            const fcl::OBBd exact = orientedBox(s, a, 0);
+            for (int b : s.candidates) {
+                if (!s.fat[static_cast<std::size_t>(a)].overlap(s.objects[static_cast<std::size_t>(b)]->getAABB()))
+                    continue;
+                const fcl::OBBd ob = orientedBox(s, b, 0);
+                if (oa.overlap(ob) && !g.isExcluded(a, b)) s.pairs.push_back({a, b, true, gapBetween(exact, ob)});
+            }
         }
     }
     // the moving pairs
@@ -401,7 +435,8 @@ void makePairs(Scratch& s)
             const int b = g.moving[n];
             if (g.shapes[a].body == g.shapes[b].body) continue;
             if (!s.fat[static_cast<std::size_t>(a)].overlap(s.fat[static_cast<std::size_t>(b)])) continue;
-            if (oa.overlap(orientedBox(s, b, kPairMargin)) && !g.isExcluded(a, b)) s.pairs.push_back({a, b, false});
+            if (oa.overlap(orientedBox(s, b, kPairMargin)) && !g.isExcluded(a, b))
+                s.pairs.push_back({a, b, false, gapBetween(orientedBox(s, a, 0), orientedBox(s, b, 0))});
         }
     }
     s.pairsMade = true;
@@ -423,10 +458,18 @@ void findContacts(const Model& model, const State& state, Data& data, Scratch& s
         fcl::CollisionObjectd& o = *s.objects[static_cast<std::size_t>(i)];
         o.setTransform(data.X_wb[body] * g.shapes[i].local);
         o.computeAABB();
-        inside = inside && withinMargin(s, i);
+        if (inside) {
+            s.moved[static_cast<std::size_t>(i)] = movedSinceMade(s, i);
+            inside = s.moved[static_cast<std::size_t>(i)] <= kPairMargin;
+        }
     }
-    if (!inside) makePairs(s);
+    if (!inside) {
+        makePairs(s);
+        for (int i : g.moving) s.moved[static_cast<std::size_t>(i)] = 0;
+    }
     for (const Scratch::Pair& p : s.pairs) {
+        // apart by more than the two have moved (with 0.1 mm to spare for rounding)
+        if (p.gap > s.moved[static_cast<std::size_t>(p.a)] + s.moved[static_cast<std::size_t>(p.b)] + kGapSlack) continue;
         const fcl::AABBd& box = s.objects[static_cast<std::size_t>(p.a)]->getAABB();
         if (!box.overlap(s.objects[static_cast<std::size_t>(p.b)]->getAABB())) continue;
         // the mill's shell: a solid inside its bore cannot touch it (its AABB holds every other)

@@ -19,6 +19,12 @@
 
 namespace solver {
 
+/// The least depth [m] that is a contact: two faces that meet where a joint holds them
+/// together (a slide block on its mast, a bearing's flange on its housing) overlap by
+/// the rounding of their poses, 1e-16 m; their points carried no force and cost the
+/// narrow phase and the force law every evaluation.
+inline constexpr double kLeastDepth = 1e-9;
+
 /// Samples per rim of a cylinder or a cone.
 inline constexpr int kRimSamples = 16;
 
