@@ -90,8 +90,8 @@ TEST_P(ContactBounce, BallBouncesToRestitutionSquaredTimesHeight)
         if (touched && z > 0) peak = std::max(peak, z);
     });
     ASSERT_TRUE(touched);
-    // at the 1 ms step the bounce comes out 3 … 6 % low (docs/contact.md: the ~10 ms
-    // impact spans a few steps; 2 % low at 0.05 ms, gravity acting during the impact)
+    // at the 1 ms step the bounce comes out 3 … 6 % low (docs/contact.md: 3 … 4 % low
+    // at a 0.01 ms step, gravity acting during the ~10 ms impact; the rest the step)
     EXPECT_NEAR(peak, e * e * h, 0.10 * e * e * h);
     std::printf("bounce: %.4f m (e^2 h = %.4f m): %+.1f %%\n", peak, e * e * h, 100 * (peak / (e * e * h) - 1));
 }
