@@ -275,6 +275,7 @@ void PlotPanel::setRunner(SimulationRunner* runner)
     if (m_runner) disconnect(m_runner, nullptr, this, nullptr);
     m_runner = runner;
     m_lastPolled.reset();
+    m_leftOut.reset();
     if (!runner) {
         m_pollTimer->stop();
         return;
@@ -294,21 +295,33 @@ void PlotPanel::poll()
 {
     if (!m_runner) return;
     std::shared_ptr<const Snapshot> s = m_runner->latest();
-    if (!s || s == m_lastPolled) return;
+    if (!s) return;
+    if (s == m_lastPolled) {
+        // nothing newer since the last poll: the snapshot the interval left out is the
+        // simulation's state now (paused, or between two publications)
+        if (m_leftOut == s) addSample(*s, true);
+        m_leftOut.reset();
+        return;
+    }
     m_lastPolled = s;
-    addSnapshot(*s);
+    m_leftOut = addSample(*s, false) ? nullptr : s;
 }
 
 void PlotPanel::addSnapshot(const Snapshot& snapshot)
 {
-    if (!snapshot.bundle) return;
+    addSample(snapshot, false);
+}
+
+bool PlotPanel::addSample(const Snapshot& snapshot, bool always)
+{
+    if (!snapshot.bundle) return false;
     if (snapshot.bundle != m_bundle) setBundle(snapshot.bundle);
     if (!m_samples.empty()) {
         const double last = m_samples.back().t;
         if (snapshot.t < last) {
             clear();  // a reset
-        } else if (snapshot.t == last || snapshot.t - last < m_minInterval) {
-            return;
+        } else if (snapshot.t == last || (!always && snapshot.t - last < m_minInterval)) {
+            return false;
         }
     }
     auto at = [](const Eigen::VectorXd& v, int i) { return i >= 0 && i < v.size() ? v[i] : kNaN; };
@@ -357,6 +370,7 @@ void PlotPanel::addSnapshot(const Snapshot& snapshot)
     const double from = snapshot.t - m_window;
     while (!m_samples.empty() && m_samples.front().t < from) m_samples.pop_front();
     m_dirty = true;
+    return true;
 }
 
 void PlotPanel::clear()

@@ -151,6 +151,9 @@ private:
     void rebuildCharts();
     void onItemChanged(QTreeWidgetItem* item, int column);
     void poll();
+    /// addSnapshot's work; `always`: also when less than minSampleInterval() after the
+    /// last sample. False when the snapshot was left out.
+    bool addSample(const Snapshot& snapshot, bool always);
     void exportCsvInteractive();
     void exportPngInteractive();
 
@@ -168,6 +171,10 @@ private:
 
     QPointer<SimulationRunner> m_runner;
     std::shared_ptr<const Snapshot> m_lastPolled;
+    /// The runner's newest snapshot when the sampling interval left it out: plotted at
+    /// the next poll that finds nothing newer (paused, the plot ends where the
+    /// simulation stands)
+    std::shared_ptr<const Snapshot> m_leftOut;
     QTimer* m_pollTimer = nullptr;
     QTimer* m_redrawTimer = nullptr;
     QTreeWidget* m_list = nullptr;
