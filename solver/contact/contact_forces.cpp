@@ -431,12 +431,13 @@ void makePairs(Scratch& s)
     for (std::size_t m = 0; m < g.moving.size(); ++m) {
         const int a = g.moving[m];
         const fcl::OBBd oa = orientedBox(s, a, kPairMargin);
+        const fcl::OBBd exact = orientedBox(s, a, 0);
         for (std::size_t n = m + 1; n < g.moving.size(); ++n) {
             const int b = g.moving[n];
             if (g.shapes[a].body == g.shapes[b].body) continue;
             if (!s.fat[static_cast<std::size_t>(a)].overlap(s.fat[static_cast<std::size_t>(b)])) continue;
             if (oa.overlap(orientedBox(s, b, kPairMargin)) && !g.isExcluded(a, b))
-                s.pairs.push_back({a, b, false, gapBetween(orientedBox(s, a, 0), orientedBox(s, b, 0))});
+                s.pairs.push_back({a, b, false, gapBetween(exact, orientedBox(s, b, 0))});
         }
     }
     s.pairsMade = true;

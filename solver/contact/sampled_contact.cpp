@@ -16,7 +16,8 @@ namespace solver {
 namespace {
 
 /// What the sampling reads of a box, a cylinder or a cone, read once per pair (FCL's
-/// getNodeType is a virtual call: once per sample it cost as much as the test).
+/// getNodeType is a virtual call: once per sample it cost as much as the test; the
+/// switch on the kind read here costs nothing beside it).
 struct Solid {
     fcl::NODE_TYPE type = fcl::BV_UNKNOWN;
     Eigen::Vector3d half = Eigen::Vector3d::Zero();  ///< half the sides of its box (centred in its frame)
@@ -210,11 +211,9 @@ struct Candidate {
 constexpr std::size_t kMaxCandidates = 160;
 
 /// Adds to `cand` the samples of `s` (pose Xs) that lie inside `o` (pose Xo); `sIsB`:
-/// s is b (its normal from a to b is then o's outward normal, else its opposite). `depth`
-/// is o's depthIn… for its type (chosen once per pair, not per sample).
-template <class Depth>
-void samplesInsideOf(const Solid& s, const Eigen::Isometry3d& Xs, const Solid& o, const Eigen::Isometry3d& Xo, bool sIsB,
-                     Depth&& depthIn, std::array<Candidate, kMaxCandidates>& cand, std::size_t& n)
+/// s is b (its normal from a to b is then o's outward normal, else its opposite).
+void samplesInside(const Solid& s, const Eigen::Isometry3d& Xs, const Solid& o, const Eigen::Isometry3d& Xo, bool sIsB,
+                   std::array<Candidate, kMaxCandidates>& cand, std::size_t& n)
 {
     std::array<Eigen::Vector3d, 4> dirs;
     const int nDirs = faceDirections(o, Xo, Xs.translation(), dirs);
@@ -225,36 +224,12 @@ void samplesInsideOf(const Solid& s, const Eigen::Isometry3d& Xs, const Solid& o
             if (n >= kMaxCandidates) return;
             double depth = 0;
             Eigen::Vector3d local;
-            depthIn(Eigen::Vector3d(inverse * p), depth, local);
-            if (depth <= kLeastDepth) return;
+            if (!depthInsideLocal(o, Eigen::Vector3d(inverse * p), depth, local) || depth <= kLeastDepth) return;
             const Eigen::Vector3d outward = Xo.linear() * local;
             // p is on s's surface, o's nearest face is depth away along `outward`
             cand[n++] = {p + 0.5 * depth * outward, sIsB ? Eigen::Vector3d(outward) : Eigen::Vector3d(-outward), depth};
         },
         [&](const Eigen::Vector3d& c, double r) { return ballMissesBox(c, r, Xo, o.half); });
-}
-
-void samplesInside(const Solid& s, const Eigen::Isometry3d& Xs, const Solid& o, const Eigen::Isometry3d& Xo, bool sIsB,
-                   std::array<Candidate, kMaxCandidates>& cand, std::size_t& n)
-{
-    switch (o.type) {
-    case fcl::GEOM_BOX:
-        samplesInsideOf(
-            s, Xs, o, Xo, sIsB,
-            [&o](const Eigen::Vector3d& q, double& d, Eigen::Vector3d& nl) { depthInBox(o.half, q, d, nl); }, cand, n);
-        return;
-    case fcl::GEOM_CYLINDER:
-        samplesInsideOf(
-            s, Xs, o, Xo, sIsB,
-            [&o](const Eigen::Vector3d& q, double& d, Eigen::Vector3d& nl) { depthInCylinder(o, q, d, nl); }, cand, n);
-        return;
-    case fcl::GEOM_CONE:
-        samplesInsideOf(
-            s, Xs, o, Xo, sIsB, [&o](const Eigen::Vector3d& q, double& d, Eigen::Vector3d& nl) { depthInCone(o, q, d, nl); },
-            cand, n);
-        return;
-    default: return;
-    }
 }
 
 }  // namespace
