@@ -381,10 +381,13 @@ std::string presenceText(const std::string& p)
 
 std::string statusText(const std::string& s)
 {
-    if (s == "idle") return trStd("padrob", "idle");
-    if (s == "running") return trStd("padrob", "running");
-    if (s == "paused") return trStd("padrob", "paused");
-    if (s == "ended") return trStd("padrob", "ended");
+    switch (centre::stationStatus(s)) {
+    case centre::StationStatus::Idle: return trStd("padrob", "idle");
+    case centre::StationStatus::Running: return trStd("padrob", "running");
+    case centre::StationStatus::Paused: return trStd("padrob", "paused");
+    case centre::StationStatus::Ended: return trStd("padrob", "ended");
+    case centre::StationStatus::Unknown: break;
+    }
     return s;
 }
 

@@ -19,6 +19,7 @@
 #include "ide/studio/view/viewport.h"
 #include "trainer/centre/instructor_node.h"
 #include "trainer/centre/signing.h"
+#include "trainer/centre/station_node.h"
 #include "trainer/records/records_db.h"
 
 #include <QApplication>
@@ -34,7 +35,10 @@
 #include <QTest>
 
 #include <algorithm>
+#include <atomic>
+#include <cmath>
 #include <memory>
+#include <thread>
 #include <optional>
 #include <unistd.h>
 
@@ -55,15 +59,22 @@ class TrainStationTest : public QObject {
     std::unique_ptr<TrainStation> m_station;
     std::unique_ptr<centre::Bus> m_bus;
     std::unique_ptr<centre::InstructorNode> m_instructor;
+    centre::CentreKey m_key;
     QElapsedTimer m_clock;
 
     TrainPage* page() const { return m_window->trainPage(); }
     void poll() { m_instructor->poll(m_clock.nsecsElapsed() * 1e-9); }
-    const centre::StationView* view() const
+    const centre::StationView* view(const std::string& name) const
     {
         const auto& all = m_instructor->stations();
-        const auto it = all.find(m_name);
+        const auto it = all.find(name);
         return it == all.end() ? nullptr : &it->second;
+    }
+    const centre::StationView* view() const { return view(m_name); }
+    const centre::State* stateOf(const std::string& name) const
+    {
+        const centre::StationView* v = view(name);
+        return v && v->hasState ? &v->state : nullptr;
     }
     template <class F>
     bool waitFor(F done, int ms = 10000)
@@ -108,6 +119,7 @@ private slots:
         QVERIFY2(centre::CentreKey::create(m_keyFile, &error), qPrintable(error));
         centre::CentreKey key;
         QVERIFY2(key.load(m_keyFile, &error), qPrintable(error));
+        m_key = key;
         m_clock.start();
 
         m_window = std::make_unique<MainWindow>();
@@ -289,6 +301,120 @@ private slots:
         QVERIFY(waitFor([&] { return m_window->tutorialRunner()->generation() != g && status() == "running"; }));
         QVERIFY(waitFor([&] { return hasEvent("instructor", "reset:" + m_desk); }));
         QCOMPARE(page()->operatorId(), QString("OP-2"));
+    }
+
+    // The headless station (padrob station: trainer::centre::StationNode) and the studio's
+    // answer the same commands with the same words and publish the same state: both run
+    // T0 with the levers at rest, paused, faulted, stopped by one instructor; the running
+    // score is published by both (the studio's published 0 until the attempt ended).
+    void bothStationsPublishTheSameState()
+    {
+        const std::string headless = "TS-headless-" + std::to_string(::getpid());
+        centre::BusOptions net = centre::BusOptions::loopback(m_domain);
+        net.reads = centre::TopicCommand;
+        net.node = QString::fromStdString(headless);
+        net.key = m_key;
+        QString error;
+        std::unique_ptr<centre::Bus> bus = centre::Bus::open(net, &error);
+        QVERIFY2(bus, qPrintable(error));
+        centre::StationNodeOptions o;
+        o.name = headless;
+        o.key = m_key;
+        const auto all = page()->tutorials();
+        const auto t0 = std::find_if(all.begin(), all.end(), [](const auto& t) { return t->spec.id == "T0"; });
+        QVERIFY(t0 != all.end());
+        for (const auto& t : all)
+            if (t->modelFile == (*t0)->modelFile) o.tutorials.push_back(t);
+        centre::StationNode node(*bus, o);
+        QVERIFY2(node.ok(), qPrintable(node.error()));
+        std::atomic<bool> stop{false};
+        std::thread thread([&] { node.run(stop); });
+        struct Join {
+            std::atomic<bool>& stop;
+            std::thread& thread;
+            ~Join()
+            {
+                stop = true;
+                if (thread.joinable()) thread.join();
+            }
+        } join{stop, thread};
+        QVERIFY2(waitFor([&] { return stateOf(headless) != nullptr; }), "the headless station is not heard");
+
+        const std::vector<std::string> both{m_name, headless};
+        // the same command to both; both answers
+        auto commandBoth = [&](const std::string& kind, const std::string& arg = {}, const std::string& arg2 = {}) {
+            std::vector<std::uint64_t> n;
+            for (const auto& s : both) n.push_back(m_instructor->send(s, kind, arg, arg2));
+            waitFor([&] { return m_instructor->reply(n[0]).has_value() && m_instructor->reply(n[1]).has_value(); });
+            return std::make_pair(m_instructor->reply(n[0]), m_instructor->reply(n[1]));
+        };
+        auto statusBoth = [&](const std::string& st) {
+            return waitFor([&] {
+                const centre::State* a = stateOf(m_name);
+                const centre::State* b = stateOf(headless);
+                return a && b && a->status == st && b->status == st && a->attemptTime > 1.0 && b->attemptTime > 1.0;
+            });
+        };
+        auto same = [&](const char* when) {
+            poll();
+            const centre::State& a = *stateOf(m_name);
+            const centre::State& b = *stateOf(headless);
+            const QString what = QString("%1: studio %2 %3 %4 score %5 faults %6 warnings %7; headless %8 %9 %10 score %11 faults %12 warnings %13")
+                                     .arg(when)
+                                     .arg(QString::fromStdString(a.status), QString::fromStdString(a.tutorial),
+                                          QString::fromStdString(a.operatorCode))
+                                     .arg(a.score)
+                                     .arg(QString::fromStdString(a.faults))
+                                     .arg(a.warnings)
+                                     .arg(QString::fromStdString(b.status), QString::fromStdString(b.tutorial),
+                                          QString::fromStdString(b.operatorCode))
+                                     .arg(b.score)
+                                     .arg(QString::fromStdString(b.faults))
+                                     .arg(b.warnings);
+            QVERIFY2(a.status == b.status && a.tutorial == b.tutorial && a.operatorCode == b.operatorCode, qPrintable(what));
+            QVERIFY2(a.goal == b.goal && a.goals == b.goals && a.goals > 0, qPrintable(what));
+            QVERIFY2(a.faults == b.faults && a.warnings == b.warnings && a.endReason == b.endReason, qPrintable(what));
+            QVERIFY2(a.score > 0 && std::abs(a.score - b.score) < 0.5, qPrintable(what));
+            QVERIFY2(a.q.size() == b.q.size() && a.commands.size() == b.commands.size(), qPrintable(what));
+            for (std::size_t i = 0; i < a.commands.size(); ++i) QVERIFY2(a.commands[i] == b.commands[i], qPrintable(what));
+        };
+
+        auto [sa, sb] = commandBoth("start", "T0", "OP-7");
+        QVERIFY(sa && sa->accepted && sb && sb->accepted);
+        QVERIFY(statusBoth("running"));
+        QVERIFY(waitFor([&] { return stateOf(m_name)->operatorCode == "OP-7"; }));
+        auto [pa, pb] = commandBoth("pause");
+        QVERIFY(pa && pa->accepted && pb && pb->accepted);
+        QVERIFY(statusBoth("paused"));
+        same("paused");
+        if (QTest::currentTestFailed()) return;
+        auto [ra, rb] = commandBoth("resume");  // the same refusal from both
+        QVERIFY(ra && rb && ra->accepted && rb->accepted);
+        auto [aa, ab] = commandBoth("resume");
+        QVERIFY(aa && ab && !aa->accepted && !ab->accepted);
+        QCOMPARE(aa->message, ab->message);
+        QCOMPARE(aa->message, std::string("not-paused"));
+        auto [ia, ib] = commandBoth("inject", "power-cut");
+        QVERIFY(ia && ib && ia->accepted && ib->accepted);
+        QCOMPARE(ia->message, ib->message);
+        QVERIFY(waitFor([&] {
+            return stateOf(m_name)->faults == "power-cut" && stateOf(headless)->faults == "power-cut";
+        }));
+        same("power cut");
+        if (QTest::currentTestFailed()) return;
+        auto [ua, ub] = commandBoth("inject", "meteor");
+        QVERIFY(ua && ub && !ua->accepted && !ub->accepted);
+        QCOMPARE(ua->message, ub->message);
+        auto [xa, xb] = commandBoth("stop");
+        QVERIFY(xa && xb && xa->accepted && xb->accepted);
+        QVERIFY(statusBoth("ended"));
+        QVERIFY(waitFor([&] { return !stateOf(m_name)->endReason.empty() && !stateOf(headless)->endReason.empty(); }));
+        same("ended");
+        if (QTest::currentTestFailed()) return;
+        QCOMPARE(stateOf(m_name)->endReason, std::string("aborted"));
+        auto [za, zb] = commandBoth("pause");
+        QVERIFY(za && zb && !za->accepted && !zb->accepted);
+        QCOMPARE(za->message, zb->message);
     }
 
     void withdrawsWhenClosed()

@@ -65,7 +65,7 @@ struct State {
     std::vector<double> q;        ///< θ per tree joint
     std::vector<float> commands;  ///< valve openings applied, per tree joint
     std::string tutorial;
-    std::string status;           ///< "idle", "running", "paused", "ended"
+    std::string status;           ///< "idle", "running", "paused", "ended" (StationStatus, station_protocol.h)
     std::string operatorCode;
     double attemptTime = 0;
     double score = 0;
@@ -100,7 +100,7 @@ struct Command {
     std::string sender;
     std::uint64_t nonce = 0;
     std::int64_t issuedMs = 0;
-    std::string kind;  ///< "start", "pause", "resume", "reset", "stop", "inject", "clear"
+    std::string kind;  ///< "start", "pause", "resume", "reset", "stop", "inject", "clear" (CommandKind)
     std::string arg;
     std::string arg2;
     double value = std::numeric_limits<double>::quiet_NaN();

@@ -115,7 +115,7 @@ void StationNode::tick(double nowS)
     for (const Command& c : m_bus.takeCommands()) {
         if (c.target == m_o.name) handle(c);
     }
-    if (m_status == "running") {
+    if (m_status == StationStatus::Running) {
         // real time: the simulation keeps wall time minus the pauses
         const double target = nowS - m_simOffset;
         int steps = 0;
@@ -132,7 +132,7 @@ void StationNode::tick(double nowS)
         }
         if (m_session->time() + 0.5e-3 < target) m_simOffset = nowS - m_session->time();  // fell behind: slip
         if (m_session->ended()) {
-            m_status = "ended";
+            m_status = StationStatus::Ended;
             publishEvents();
             finishRecord(m_session->result().endReason == "aborted");
         }
@@ -167,58 +167,33 @@ void StationNode::noticeRecords()
 
 void StationNode::publishState(double /*nowS*/)
 {
-    State s;
-    s.station = m_o.name;
-    s.seq = m_stateSeq++;
-    s.sentUs = wallUs();
     const solver::Simulation& sim = m_session->simulation();
-    s.simTime = sim.state().t;
-    s.q.assign(sim.state().q.data(), sim.state().q.data() + sim.state().q.size());
-    s.tutorial = m_tutorial->spec.id;
-    s.status = m_status;
-    s.operatorCode = m_operator;
-    const SessionProgress& p = m_session->progress();
-    s.attemptTime = m_session->time();
-    s.goal = p.goal;
-    s.goals = static_cast<int>(m_tutorial->spec.goals.size());
-    s.clearance = p.clearance;
-    s.workerDistance = p.workerDistance;
     const TutorialResult r = m_session->result();
-    s.score = m_status == "idle" ? 0.0 : r.score;
-    s.endReason = r.endReason;
-    if (p.overload) s.warnings |= WarnOverload;
-    if (p.nearWorker) s.warnings |= WarnNearWorker;
-    if (p.clearance >= 0 && p.clearance < m_tutorial->scoring().nearDistance) s.warnings |= WarnNearScene;
-    for (const Fault& f : m_session->activeFaults()) {
-        s.warnings |= WarnFault;
-        s.faults += (s.faults.empty() ? "" : ",") + std::string(Fault::key(f.kind)) + (f.drive.empty() ? "" : ":" + f.drive);
-    }
-    if (m_records && m_records->offline()) s.warnings |= WarnRecordsOffline;
-    if (!m_recordsProblem.isEmpty()) s.warnings |= WarnRecordsRefused;
-    s.faults = clip(s.faults, limits::kText);
-    s.endReason = clip(s.endReason, limits::kField);
-    s.commands.assign(sim.state().u.data(), sim.state().u.data() + sim.state().u.size());
-    m_bus.publish(s);
+    const std::vector<Fault> faults = m_session->activeFaults();
+    StationSituation x;
+    x.station = m_o.name;
+    x.status = m_status;
+    x.tutorial = m_tutorial.get();
+    x.operatorCode = m_operator;
+    x.simTime = sim.state().t;
+    x.q = std::span<const double>(sim.state().q.data(), static_cast<std::size_t>(sim.state().q.size()));
+    x.commands = std::span<const double>(sim.state().u.data(), static_cast<std::size_t>(sim.state().u.size()));
+    x.progress = m_session->progress();
+    x.progress.t = m_session->time();
+    x.score = r.score;
+    x.endReason = r.endReason;
+    x.faults = faults;
+    x.recordsOffline = m_records && m_records->offline();
+    x.recordsRefused = !m_recordsProblem.isEmpty();
+    m_bus.publish(buildState(x, m_stateSeq++));
 }
 
 void StationNode::publishEvents()
 {
     const std::string lang = m_o.language.toStdString();
     const std::vector<TutorialEvent>& events = m_session->events();
-    for (; m_published < events.size(); ++m_published) {
-        const TutorialEvent& e = events[m_published];
-        Event out;
-        out.station = m_o.name;
-        out.seq = m_eventSeq++;
-        out.t = e.t;
-        out.tutorial = m_tutorial->spec.id;
-        out.kind = TutorialEvent::key(e.kind);
-        out.text = clip(e.text(m_tutorial.get(), lang).toStdString(), limits::kText);
-        out.detail = clip(e.detail, limits::kField);
-        out.value = e.value;
-        out.penalty = e.penalty;
-        m_bus.publish(out);
-    }
+    for (; m_published < events.size(); ++m_published)
+        m_bus.publish(buildEvent(m_o.name, m_eventSeq++, *m_tutorial, events[m_published], lang));
 }
 
 void StationNode::instructorEvent(const Command& c, const std::string& what)
@@ -227,13 +202,10 @@ void StationNode::instructorEvent(const Command& c, const std::string& what)
     m_session->addInstructorEvent(what, c.sender);
 }
 
-bool StationNode::start(const std::string& tutorialId, const std::string& operatorCode, std::string& why)
+bool StationNode::start(const std::string& tutorialId, const std::string& operatorCode)
 {
     std::shared_ptr<const Tutorial> t = tutorialId.empty() ? m_tutorial : tutorial(tutorialId);
-    if (!t) {
-        why = "unknown-tutorial";
-        return false;
-    }
+    if (!t) return false;
     if (m_recording && !m_session->ended()) {
         m_session->stop(TutorialEvent::Kind::Aborted);
         publishEvents();
@@ -258,7 +230,7 @@ bool StationNode::start(const std::string& tutorialId, const std::string& operat
         }
     }
     m_operator = operatorCode;
-    m_status = "running";
+    m_status = StationStatus::Running;
     m_simOffset = m_lastTick;
     if (m_records) {
         m_records->begin(m_tutorial, QString::fromStdString(operatorCode.empty() ? std::string("guest") : operatorCode));
@@ -289,73 +261,54 @@ void StationNode::handle(const Command& c)
         m_bus.reply(r);
         return;
     }
+    const CommandKind kind = commandKind(c.kind);
     bool done = false;
-    if (c.kind == "start") {
-        done = start(c.arg, c.arg2, why);
-        if (done) instructorEvent(c, "start");
-    } else if (c.kind == "reset") {
-        const std::string op = m_operator;
-        done = start(m_tutorial->spec.id, op, why);
-        if (done) instructorEvent(c, "reset");
-    } else if (c.kind == "pause") {
-        done = m_status == "running";
-        if (done) {
-            m_status = "paused";
-            instructorEvent(c, "pause");
-        } else {
-            why = "not-running";
+    Refusal refusal = Refusal::UnknownCommand;
+    FaultCommand fault;
+    if (refused(c, kind, m_status, &fault, &refusal)) {
+        why = key(refusal);
+    } else {
+        switch (kind) {
+        case CommandKind::Start:
+        case CommandKind::Reset: {
+            const bool reset = kind == CommandKind::Reset;
+            const std::string op = m_operator;
+            done = reset ? start(m_tutorial->spec.id, op) : start(c.arg, c.arg2);
+            if (done) instructorEvent(c, key(kind));
+            else why = key(Refusal::UnknownTutorial);
+            break;
         }
-    } else if (c.kind == "resume") {
-        done = m_status == "paused";
-        if (done) {
-            m_status = "running";
+        case CommandKind::Pause:
+            m_status = StationStatus::Paused;
+            instructorEvent(c, key(kind));
+            done = true;
+            break;
+        case CommandKind::Resume:
+            m_status = StationStatus::Running;
             m_simOffset = m_lastTick - m_session->time();
-            instructorEvent(c, "resume");
-        } else {
-            why = "not-paused";
-        }
-    } else if (c.kind == "stop") {
-        done = m_status == "running" || m_status == "paused";
-        if (done) {
-            instructorEvent(c, "stop");
+            instructorEvent(c, key(kind));
+            done = true;
+            break;
+        case CommandKind::Stop:
+            instructorEvent(c, key(kind));
             m_session->stop(TutorialEvent::Kind::Aborted);
-            m_status = "ended";
+            m_status = StationStatus::Ended;
             publishEvents();
             finishRecord(true);
-        } else {
-            why = "not-running";
-        }
-    } else if (c.kind == "inject" || c.kind == "clear") {
-        Fault f;
-        if (!Fault::fromKey(c.arg, &f.kind)) {
-            why = "unknown-fault";
-        } else if (m_status != "running" && m_status != "paused") {
-            why = "not-running";
-        } else {
-            f.drive = c.arg2;
+            done = true;
+            break;
+        case CommandKind::Inject:
+        case CommandKind::Clear: {
             QString error;
-            if (c.kind == "inject") {
-                if (f.kind == Fault::Kind::StuckValve) f.opening = c.value;
-                if (f.kind == Fault::Kind::WorkerIn) {
-                    // arg2 "x,y,z" [m]: where the person walks to
-                    const QStringList xyz = QString::fromStdString(c.arg2).split(',');
-                    f.drive.clear();
-                    if (xyz.size() == 3) f.where = {xyz[0].toDouble(), xyz[1].toDouble(), xyz[2].toDouble()};
-                    f.worker = std::isnan(c.value) ? 0 : static_cast<int>(c.value);
-                }
-                done = m_session->inject(f, &error);
-            } else {
-                const bool worker = f.kind == Fault::Kind::WorkerIn;
-                const int which = worker && !std::isnan(c.value) ? static_cast<int>(c.value) : -1;
-                done = m_session->clearFault(f.kind, worker ? std::string() : f.drive, &error, which);
-            }
+            done = applyFault(*m_session, kind, fault, &error);
             if (!done) why = error.toStdString();
+            break;
         }
-    } else {
-        why = "unknown-command";
+        case CommandKind::Unknown: break;  // (refused above)
+        }
     }
     r.accepted = done;
-    r.message = done ? std::string("done") : clip(why, limits::kText);
+    r.message = done ? std::string(kDone) : clip(why, limits::kText);
     publishEvents();
     m_bus.reply(r);
 }

@@ -13,6 +13,7 @@
 
 #include "trainer/centre/bus.h"
 #include "trainer/centre/signing.h"
+#include "trainer/centre/station_protocol.h"
 #include "trainer/records/shared_records.h"
 #include "trainer/training/session.h"
 
@@ -76,15 +77,15 @@ public:
     /// (at most 50 to catch up), state and events when due.
     void tick(double nowS);
 
-    /// The status as published: "idle", "running", "paused", "ended".
-    const std::string& status() const { return m_status; }
+    /// The status as published.
+    StationStatus status() const { return m_status; }
     const TutorialSession* session() const { return m_session.get(); }
     /// The recorder (nullptr when not recording).
     StationRecords* records() const { return m_records.get(); }
 
 private:
     void handle(const Command& c);
-    bool start(const std::string& tutorialId, const std::string& operatorCode, std::string& why);
+    bool start(const std::string& tutorialId, const std::string& operatorCode);
     void finishRecord(bool aborted);
     void instructorEvent(const Command& c, const std::string& what);
     void publishState(double nowS);
@@ -106,7 +107,7 @@ private:
     int m_recordsImported = 0; ///< the last told (notice)
     std::vector<double> m_input;
     std::size_t m_published = 0;  ///< how many of the session's events went out
-    std::string m_status = "idle";
+    StationStatus m_status = StationStatus::Idle;
     std::string m_operator;
     double m_simOffset = 0.0;  ///< wall time minus simulation time while running [s]
     double m_nextState = 0.0, m_nextRecord = 0.0, m_lastTick = -1.0;

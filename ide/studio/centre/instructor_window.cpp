@@ -268,12 +268,15 @@ void InstructorWindow::refreshTable()
         const std::string shown = presenceOf(name, v);
         QString presence = shown == "up" ? tr("up") : shown == "silent" ? tr("silent") : tr("left");
         QString status, warnings;
+        const bool idle = centre::stationStatus(s.status) == centre::StationStatus::Idle;
         if (v.hasState) {
-            if (s.status == "idle") status = tr("idle");
-            else if (s.status == "running") status = tr("running");
-            else if (s.status == "paused") status = tr("paused");
-            else if (s.status == "ended") status = tr("ended");
-            else status = QString::fromStdString(s.status);
+            switch (centre::stationStatus(s.status)) {
+            case centre::StationStatus::Idle: status = tr("idle"); break;
+            case centre::StationStatus::Running: status = tr("running"); break;
+            case centre::StationStatus::Paused: status = tr("paused"); break;
+            case centre::StationStatus::Ended: status = tr("ended"); break;
+            case centre::StationStatus::Unknown: status = QString::fromStdString(s.status); break;
+            }
             QStringList w;
             if (s.warnings & centre::WarnOverload) w << tr("overload");
             if (s.warnings & centre::WarnNearWorker) w << tr("near a worker");
@@ -296,8 +299,8 @@ void InstructorWindow::refreshTable()
             status,
             v.hasState ? QString::fromStdString(s.tutorial) : QString(),
             v.hasState ? QString::fromStdString(s.operatorCode) : QString(),
-            v.hasState && s.status != "idle" ? tr("%1 s").arg(num(s.attemptTime, 1)) : QString(),
-            v.hasState && s.status != "idle" ? num(s.score, 0) : QString(),
+            v.hasState && !idle ? tr("%1 s").arg(num(s.attemptTime, 1)) : QString(),
+            v.hasState && !idle ? num(s.score, 0) : QString(),
             v.hasState && s.goals > 0 ? tr("%1/%2").arg(s.goal).arg(s.goals) : QString(),
             warnings,
             v.hasState && v.latencyMs >= 0 ? tr("%1 ms").arg(num(v.latencyMs, 0)) : QString(),
@@ -343,12 +346,13 @@ void InstructorWindow::refreshButtons()
 {
     const centre::StationView* v = selectedView();
     const bool can = canCommand() && v && presenceOf(m_selected, *v) == "up";
-    const std::string status = v && v->hasState ? v->state.status : std::string();
-    const bool active = status == "running" || status == "paused";
+    const bool known = v && v->hasState;
+    const centre::StationStatus status = known ? centre::stationStatus(v->state.status) : centre::StationStatus::Unknown;
+    const bool active = centre::attemptOn(status);
     m_start->setEnabled(can && !v->announce.tutorials.empty());
-    m_pause->setEnabled(can && status == "running");
-    m_resume->setEnabled(can && status == "paused");
-    m_reset->setEnabled(can && !status.empty() && status != "idle");
+    m_pause->setEnabled(can && status == centre::StationStatus::Running);
+    m_resume->setEnabled(can && status == centre::StationStatus::Paused);
+    m_reset->setEnabled(can && known && status != centre::StationStatus::Idle);
     m_stop->setEnabled(can && active);
     m_inject->setEnabled(can && active);
     m_clear->setEnabled(can && active && v->hasState && !v->state.faults.empty());

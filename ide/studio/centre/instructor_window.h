@@ -12,6 +12,7 @@
 #include "ide/studio/centre/display_view.h"
 #include "trainer/centre/bus.h"
 #include "trainer/centre/instructor_node.h"
+#include "trainer/centre/station_protocol.h"
 
 #include <QMainWindow>
 

@@ -185,16 +185,16 @@ std::shared_ptr<const trainer::Tutorial> TrainStation::findTutorial(const std::s
 
 namespace {
 
-std::string statusOf(const TrainFrame* f, bool live)
+StationStatus statusOf(const TrainFrame* f, bool live)
 {
-    if (!f) return "idle";
-    if (f->ended || !live) return "ended";
-    return f->paused ? "paused" : "running";
+    if (!f) return StationStatus::Idle;
+    if (f->ended || !live) return StationStatus::Ended;
+    return f->paused ? StationStatus::Paused : StationStatus::Running;
 }
 
 }  // namespace
 
-std::string TrainStation::status() const
+StationStatus TrainStation::status() const
 {
     return statusOf(m_attempt ? m_attempt->frame.get() : nullptr, m_host->attemptFrame() != nullptr);
 }
@@ -243,42 +243,23 @@ State TrainStation::buildState()
         auto newest = m_host->latestFrame();
         if (newest && newest->snapshot && newest->generation == frame->generation) frame = std::move(newest);
     }
-    State s;
-    s.station = m_announce.node;
-    s.seq = m_stateSeq++;
-    s.sentUs = wallUs();
-    s.status = statusOf(frame.get(), p.live);
-    if (!frame || !p.attempt->tutorial) return s;
-    const TrainFrame& f = *frame;
-    const trainer::Tutorial& t = *p.attempt->tutorial;
-    const Snapshot& snap = *f.snapshot;
-    s.simTime = snap.t;
-    s.q.assign(snap.theta.data(), snap.theta.data() + snap.theta.size());
-    s.commands.reserve(std::size_t(snap.u.size()));
-    for (Eigen::Index i = 0; i < snap.u.size(); ++i) s.commands.push_back(float(snap.u[i]));
-    s.tutorial = t.spec.id;
-    s.operatorCode = clip(p.attempt->operatorCode, limits::kOperatorCode);  // as typed at the station
-    const trainer::SessionProgress& progress = f.progress;
-    s.attemptTime = progress.t;
-    s.goal = progress.goal;
-    s.goals = int(t.spec.goals.size());
-    s.clearance = progress.clearance;
-    s.workerDistance = progress.workerDistance;
-    if (f.output) {  // the score is known once the attempt has ended
-        s.score = f.output->result.score;
-        s.endReason = f.output->result.endReason;
+    StationSituation x;
+    x.station = m_announce.node;
+    x.status = statusOf(frame.get(), p.live);
+    if (frame && p.attempt->tutorial) {
+        const TrainFrame& f = *frame;
+        const Snapshot& snap = *f.snapshot;
+        x.tutorial = p.attempt->tutorial.get();
+        x.operatorCode = p.attempt->operatorCode;
+        x.simTime = snap.t;
+        x.q = std::span<const double>(snap.theta.data(), static_cast<std::size_t>(snap.theta.size()));
+        x.commands = std::span<const double>(snap.u.data(), static_cast<std::size_t>(snap.u.size()));
+        x.progress = f.progress;
+        x.score = f.score;
+        if (f.output) x.endReason = f.output->result.endReason;
+        x.faults = f.faults;
     }
-    if (progress.overload) s.warnings |= WarnOverload;
-    if (progress.nearWorker) s.warnings |= WarnNearWorker;
-    if (progress.clearance >= 0 && progress.clearance < t.scoring().nearDistance) s.warnings |= WarnNearScene;
-    for (const trainer::Fault& fault : f.faults) {
-        s.warnings |= WarnFault;
-        s.faults += (s.faults.empty() ? "" : ",") + std::string(trainer::Fault::key(fault.kind)) +
-                    (fault.drive.empty() ? "" : ":" + fault.drive);
-    }
-    s.faults = clip(s.faults, limits::kText);
-    s.endReason = clip(s.endReason, limits::kField);
-    return s;
+    return trainer::centre::buildState(x, m_stateSeq++);
 }
 
 void TrainStation::publishEvents()
@@ -290,20 +271,8 @@ void TrainStation::publishEvents()
         m_publishedEvents = 0;
     }
     const std::string lang = m_host->language().toStdString();
-    for (; m_publishedEvents < f.events.size(); ++m_publishedEvents) {
-        const trainer::TutorialEvent& e = f.events[m_publishedEvents];
-        Event out;
-        out.station = m_announce.node;
-        out.seq = m_eventSeq++;
-        out.t = e.t;
-        out.tutorial = m_attempt->tutorial->spec.id;
-        out.kind = trainer::TutorialEvent::key(e.kind);
-        out.text = clip(e.text(m_attempt->tutorial.get(), lang).toStdString(), limits::kText);
-        out.detail = clip(e.detail, limits::kField);
-        out.value = e.value;
-        out.penalty = e.penalty;
-        m_bus->publish(out);
-    }
+    for (; m_publishedEvents < f.events.size(); ++m_publishedEvents)
+        m_bus->publish(buildEvent(m_announce.node, m_eventSeq++, *m_attempt->tutorial, f.events[m_publishedEvents], lang));
 }
 
 void TrainStation::reply(const Command& c, bool accepted, const std::string& message)
@@ -318,8 +287,9 @@ void TrainStation::reply(const Command& c, bool accepted, const std::string& mes
     m_bus->reply(r);
 }
 
-void TrainStation::instructorEvent(const std::string& action, const std::string& sender, long generation)
+void TrainStation::instructorEvent(CommandKind kind, const std::string& sender, long generation)
 {
+    const std::string action = key(kind);
     m_host->runInSession(
         [action, sender](trainer::TutorialSession& s, QString&) {
             s.addInstructorEvent(action, sender);
@@ -343,15 +313,22 @@ void TrainStation::handle(const Command& c)
         reply(c, false, why);
         return;
     }
-    const std::string st = status();
-    const bool going = st == "running" || st == "paused";
+    const StationStatus st = status();
+    const CommandKind kind = commandKind(c.kind);
     const long generation = m_attempt && m_attempt->frame ? m_attempt->frame->generation : 0;
-    bool done = false;
-    if (c.kind == "start" || c.kind == "reset") {
+    Refusal refusal = Refusal::UnknownCommand;
+    FaultCommand fault;
+    if (refused(c, kind, st, &fault, &refusal)) {
+        reply(c, false, key(refusal));
+        return;
+    }
+    switch (kind) {
+    case CommandKind::Start:
+    case CommandKind::Reset: {
         PendingStart p;
-        p.action = c.kind;
+        p.action = kind;
         p.sender = c.sender;
-        if (c.kind == "start") {
+        if (kind == CommandKind::Start) {
             p.tutorial = c.arg;
             p.operatorCode = c.arg2;
         } else if (m_attempt && m_attempt->tutorial) {
@@ -363,80 +340,49 @@ void TrainStation::handle(const Command& c)
             if (m_attempt && m_attempt->tutorial) p.tutorial = m_attempt->tutorial->spec.id;
             else if (!all.empty()) p.tutorial = all.front()->spec.id;
         }
+        bool done = false;
         if (!findTutorial(p.tutorial)) {
-            why = "unknown-tutorial";
+            done = false;
         } else if (m_host->attemptFrame()) {
             // the attempt on now ends first (aborted, recorded as the trainee's Stop
             // does), then the new one starts (tick())
-            if (going) m_host->stopAttempt();
+            if (attemptOn(st)) m_host->stopAttempt();
             m_pending = p;
             done = true;
         } else {
             m_pending.reset();
             done = doStart(p);
-            if (!done) why = "unknown-tutorial";
         }
-    } else if (c.kind == "pause") {
-        done = st == "running";
-        if (done) {
-            m_host->setPaused(true);
-            instructorEvent("pause", c.sender, generation);
-        } else {
-            why = "not-running";
-        }
-    } else if (c.kind == "resume") {
-        done = st == "paused";
-        if (done) {
-            instructorEvent("resume", c.sender, generation);
-            m_host->setPaused(false);
-        } else {
-            why = "not-paused";
-        }
-    } else if (c.kind == "stop") {
-        done = going;
-        if (done) {
-            instructorEvent("stop", c.sender, generation);
-            m_host->stopAttempt();
-        } else {
-            why = "not-running";
-        }
-    } else if (c.kind == "inject" || c.kind == "clear") {
-        trainer::Fault f;
-        if (!trainer::Fault::fromKey(c.arg, &f.kind)) {
-            why = "unknown-fault";
-        } else if (!going) {
-            why = "not-running";
-        } else {
-            f.drive = c.arg2;
-            const bool inject = c.kind == "inject";
-            if (inject && f.kind == trainer::Fault::Kind::StuckValve) f.opening = c.value;
-            if (inject && f.kind == trainer::Fault::Kind::WorkerIn) {
-                // arg2 "x,y,z" [m]: where the person walks to
-                const QStringList xyz = QString::fromStdString(c.arg2).split(',');
-                f.drive.clear();
-                if (xyz.size() == 3) f.where = {xyz[0].toDouble(), xyz[1].toDouble(), xyz[2].toDouble()};
-                f.worker = std::isnan(c.value) ? 0 : static_cast<int>(c.value);
-            }
-            const double value = c.value;
-            // the session does it in the runner's thread; the reply waits for its answer
-            QPointer<TrainStation> self(this);
-            m_host->runInSession(
-                [f, inject, value](trainer::TutorialSession& s, QString& error) {
-                    if (inject) return s.inject(f, &error);
-                    const bool worker = f.kind == trainer::Fault::Kind::WorkerIn;
-                    const int which = worker && !std::isnan(value) ? static_cast<int>(value) : -1;
-                    return s.clearFault(f.kind, worker ? std::string() : f.drive, &error, which);
-                },
-                [self, c](bool ok, const QString& error) {
-                    if (self) self->reply(c, ok, ok ? std::string("done") : error.toStdString());
-                },
-                generation);
-            return;
-        }
-    } else {
-        why = "unknown-command";
+        reply(c, done, done ? kDone : key(Refusal::UnknownTutorial));
+        return;
     }
-    reply(c, done, done ? std::string("done") : why);
+    case CommandKind::Pause:
+        m_host->setPaused(true);
+        instructorEvent(kind, c.sender, generation);
+        break;
+    case CommandKind::Resume:
+        instructorEvent(kind, c.sender, generation);
+        m_host->setPaused(false);
+        break;
+    case CommandKind::Stop:
+        instructorEvent(kind, c.sender, generation);
+        m_host->stopAttempt();
+        break;
+    case CommandKind::Inject:
+    case CommandKind::Clear: {
+        // the session does it in the runner's thread; the reply waits for its answer
+        QPointer<TrainStation> self(this);
+        m_host->runInSession(
+            [kind, fault](trainer::TutorialSession& s, QString& error) { return applyFault(s, kind, fault, &error); },
+            [self, c](bool ok, const QString& error) {
+                if (self) self->reply(c, ok, ok ? std::string(kDone) : error.toStdString());
+            },
+            generation);
+        return;
+    }
+    case CommandKind::Unknown: return;  // (refused above)
+    }
+    reply(c, true, kDone);
 }
 
 }  // namespace studio

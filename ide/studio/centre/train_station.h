@@ -25,6 +25,7 @@
 #include "ide/studio/train/tutorial_runner.h"
 #include "trainer/centre/bus.h"
 #include "trainer/centre/signing.h"
+#include "trainer/centre/station_protocol.h"
 
 #include <QObject>
 #include <QPointer>
@@ -89,8 +90,7 @@ public:
     /// Why the bus or the key failed ("" when all is well).
     QString problem() const { return m_problem; }
     const trainer::centre::Announce& announcement() const { return m_announce; }
-    /// "idle", "running", "paused", "ended".
-    std::string status() const;
+    trainer::centre::StationStatus status() const;
 
     /// One pass (the timer calls it): the attempt, commands, a pending start, events.
     void tick();
@@ -110,11 +110,12 @@ private:
         std::string operatorCode;
     };
     struct PendingStart {
-        std::string tutorial, operatorCode, action, sender;
+        std::string tutorial, operatorCode, sender;
+        trainer::centre::CommandKind action = trainer::centre::CommandKind::Start;
     };
     void reply(const trainer::centre::Command& c, bool accepted, const std::string& message);
     bool doStart(const PendingStart& p);
-    void instructorEvent(const std::string& action, const std::string& sender, long generation);
+    void instructorEvent(trainer::centre::CommandKind kind, const std::string& sender, long generation);
     void announceFor(const trainer::Tutorial* tutorial);
     void publishEvents();
     std::shared_ptr<const trainer::Tutorial> findTutorial(const std::string& id) const;
