@@ -477,8 +477,10 @@ private slots:
         auto heightAfterASecond = [&] {
             const quint64 serial = w.bundle()->serial;
             w.run();
-            QTest::qWaitFor([&] { auto s = w.runner()->latest(); return s && s->bundle == w.bundle() && s->t > 1.0; }, 10000);
+            // (a wait that times out leaves NaN: the comparison after it fails)
+            const bool ran = QTest::qWaitFor([&] { auto s = w.runner()->latest(); return s && s->bundle == w.bundle() && s->t > 1.0; }, 10000);
             w.pause();
+            if (!ran) return std::nan("");
             const auto s = w.runner()->latest();
             return s && s->bundle && s->bundle->serial == serial ? s->bodyPoses[std::size_t(w.bundle()->model->bodyIndex(1))].translation().z()
                                                                : std::nan("");

@@ -65,7 +65,7 @@ CalibrationWizard::CalibrationWizard(trainer::Station* station, const trainer::D
                                      QWidget* parent)
     : QWizard(parent), m_station(station), m_device(device), m_replay(replay), m_axis(axis), m_base(current)
 {
-    onLanguage([this] {
+    m_texts.add([this] {
         const QString axisName = m_axis >= 0 && m_axis < m_device.axes.size() ? m_device.axes[m_axis].name
                                                                                : tr("Axis %1").arg(m_axis);
         setWindowTitle(tr("Calibrate %1 of %2").arg(axisName, m_device.name));
@@ -135,7 +135,7 @@ QWizardPage* CalibrationWizard::buildRestPage()
     m_restNoise->hide();
     layout->addWidget(m_restNoise);
     auto* again = new QPushButton(page);
-    onLanguage([page, text, again] {
+    m_texts.add([page, text, again] {
         page->setTitle(tr("Leave the lever at rest"));
         text->setText(tr("Let go of the lever (or stick) and leave it where it rests by itself. Its reading over "
                          "the next moments is the centre of the channel."));
@@ -168,7 +168,7 @@ QWizardPage* CalibrationWizard::buildTravelPage()
     layout->addSpacing(8);
     m_travelBar = new LevelBar(page);
     m_travelBar->setFixedHeight(28);
-    onLanguage([this, page, text] {
+    m_texts.add([this, page, text] {
         page->setTitle(tr("Move the lever to its full travel, both ways"));
         text->setText(tr("Push the lever slowly all the way to one end, then all the way to the other, and let it "
                          "come back to rest. A lever that only moves one way (a trigger, a pedal) is fine: move it "
@@ -244,7 +244,7 @@ QWizardPage* CalibrationWizard::buildSettingsPage()
     m_thisDevice = new QRadioButton(keep);
     m_anyKind = new QRadioButton(keep);
     const auto label = [form](QWidget* field) { return qobject_cast<QLabel*>(form->labelForField(field)); };
-    onLanguage([=, this] {
+    m_texts.add([=, this] {
         page->setTitle(tr("Dead band, direction and response"));
         m_deadLow->setToolTip(tr("Fraction of the travel below the centre where the output stays 0"));
         m_deadHigh->setToolTip(tr("Fraction of the travel above the centre where the output stays 0"));
@@ -288,7 +288,7 @@ QWizardPage* CalibrationWizard::buildSettingsPage()
     m_previewValue->setScale(-1.0, 0.0, 1.0);
     bars->addRow(QStringLiteral("-"), m_previewRaw);
     bars->addRow(QStringLiteral("-"), m_previewValue);
-    onLanguage([bars, this] {
+    m_texts.add([bars, this] {
         qobject_cast<QLabel*>(bars->labelForField(m_previewRaw))->setText(tr("Raw:"));
         qobject_cast<QLabel*>(bars->labelForField(m_previewValue))->setText(tr("Calibrated:"));
     });
@@ -489,17 +489,11 @@ void CalibrationWizard::settingsChanged()
     showSettings();
 }
 
-void CalibrationWizard::onLanguage(std::function<void()> set)
-{
-    set();
-    m_texts.push_back(std::move(set));
-}
-
 void CalibrationWizard::changeEvent(QEvent* event)
 {
     if (event->type() == QEvent::LanguageChange) {
         setLocale(QLocale());  // the spin boxes in the new locale (a window: its own)
-        for (const auto& set : m_texts) set();
+        m_texts.apply();
         showRest();
         showTravel();
         showSettings();

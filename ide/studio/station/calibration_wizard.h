@@ -21,6 +21,7 @@
 
 #include "trainer/station/calibration.h"
 #include "trainer/station/station.h"
+#include "ide/i18n/texts.h"
 
 #include <QPointer>
 #include <QWizard>
@@ -117,8 +118,6 @@ protected:
     void changeEvent(QEvent* event) override;
 
 private:
-    /// Sets a text now and at every language change (`set` calls tr()).
-    void onLanguage(std::function<void()> set);
     QWizardPage* buildRestPage();
     QWizardPage* buildTravelPage();
     QWizardPage* buildSettingsPage();
@@ -142,7 +141,7 @@ private:
     double m_last = std::numeric_limits<double>::quiet_NaN();
     double m_previewOutput = 0.0;
     QTimer* m_timer = nullptr;
-    std::vector<std::function<void()>> m_texts;
+    i18n::Texts m_texts;  ///< the texts that follow the language
 
     QLabel* m_connection[3] = {};
     QProgressBar* m_restProgress = nullptr;

@@ -148,7 +148,7 @@ MappingTable::MappingTable(QWidget* parent) : QWidget(parent)
     bankButtons->addWidget(nextLabel);
     m_nextDevice = editableCombo(this);
     m_nextButton = buttonSpin(this);
-    onLanguage([=, this] {
+    m_texts.add([=, this] {
         m_table->setHorizontalHeaderLabels({tr("Bank"), tr("Device"), tr("Axis"), tr("Drive"), tr("Gain"), tr("Sign"),
                                             tr("Live")});
         m_table->horizontalHeaderItem(DeviceColumn)
@@ -196,16 +196,10 @@ MappingTable::MappingTable(QWidget* parent) : QWidget(parent)
 
 MappingTable::~MappingTable() = default;
 
-void MappingTable::onLanguage(std::function<void()> set)
-{
-    set();
-    m_texts.push_back(std::move(set));
-}
-
 void MappingTable::changeEvent(QEvent* event)
 {
     if (event->type() == QEvent::LanguageChange) {
-        for (const auto& set : m_texts) set();
+        m_texts.apply();
         // the cells (bank and axis names, "none", tooltips, the issues) made again; the
         // live column at the next showState()
         rebuildBanks();

@@ -12,6 +12,7 @@
 // showState() fills the live column and the device choices from the station's state.
 
 #include "trainer/station/station_engine.h"
+#include "ide/i18n/texts.h"
 
 #include <QList>
 #include <QStringList>
@@ -94,8 +95,6 @@ protected:
     void changeEvent(QEvent* event) override;
 
 private:
-    /// Sets a text now and at every language change (`set` calls tr()).
-    void onLanguage(std::function<void()> set);
     struct Row {
         int bank = -1;
         trainer::Mapping mapping;
@@ -130,7 +129,7 @@ private:
     QList<DeviceChoice> m_devices;
     QString m_devicesKey;
     std::function<bool(const QString&)> m_confirm;
-    std::vector<std::function<void()>> m_texts;
+    i18n::Texts m_texts;  ///< the texts that follow the language
     bool m_filling = false;
 
     QTableWidget* m_table = nullptr;

@@ -63,7 +63,7 @@ StationPage::StationPage(trainer::Station* station, QWidget* parent) : QWidget(p
     big.setPointSizeF(big.pointSizeF() * 1.45);
     big.setBold(true);
     m_bank->setFont(big);
-    onLanguage([this] { m_bank->setToolTip(tr("The bank of mappings the operator's levers drive now")); });
+    m_texts.add([this] { m_bank->setToolTip(tr("The bank of mappings the operator's levers drive now")); });
     bannerLayout->addWidget(m_bank, 0, Qt::AlignTop);
     bannerLayout->addSpacing(24);
     m_warnings = new QLabel(m_banner);
@@ -80,7 +80,7 @@ StationPage::StationPage(trainer::Station* station, QWidget* parent) : QWidget(p
     splitter->setChildrenCollapsible(false);
     splitter->addWidget(buildDevices(splitter));
     auto* mapping = new QGroupBox(splitter);
-    onLanguage([mapping] { mapping->setTitle(tr("Valve mapping")); });
+    m_texts.add([mapping] { mapping->setTitle(tr("Valve mapping")); });
     auto* mappingLayout = new QVBoxLayout(mapping);
     m_mappings = new MappingTable(mapping);
     mappingLayout->addWidget(m_mappings);
@@ -139,7 +139,7 @@ void StationPage::buildProfileBar(QVBoxLayout* layout)
     m_delete = new QPushButton(this);
     m_import = new QPushButton(this);
     m_export = new QPushButton(this);
-    onLanguage([this, title] {
+    m_texts.add([this, title] {
         title->setText(tr("Profile:"));
         m_profiles->setToolTip(tr("The station profiles of this model: yours, and those shipped with it"));
         m_new->setText(tr("New"));
@@ -180,7 +180,7 @@ void StationPage::buildProfileBar(QVBoxLayout* layout)
     m_issues = new QListWidget(this);
     m_issues->setSelectionMode(QAbstractItemView::NoSelection);
     m_issues->setFocusPolicy(Qt::NoFocus);
-    onLanguage([this] {
+    m_texts.add([this] {
         m_issues->setToolTip(tr("Problems of this profile with this model: a mapping with a warning is ignored"));
     });
     m_issues->hide();
@@ -197,7 +197,7 @@ QWidget* StationPage::buildDevices(QWidget* parent)
     auto* dl = new QVBoxLayout(devices);
     m_devices = new QTreeWidget(devices);
     m_devices->setColumnCount(DeviceColumnCount);
-    onLanguage([this, devices] {
+    m_texts.add([this, devices] {
         devices->setTitle(tr("Devices"));
         m_devices->setHeaderLabels({tr("Device"), tr("Status"), tr("Samples"), tr("Dropped")});
         m_devices->headerItem()->setToolTip(DroppedColumn,
@@ -233,7 +233,7 @@ QWidget* StationPage::buildDevices(QWidget* parent)
     m_removeDevice = new QPushButton(devices);
     m_record = new QPushButton(tr("Record input…"), devices);
     m_replay = new QPushButton(tr("Replay a log…"), devices);
-    onLanguage([this] {  // (the record and replay buttons' texts: updateButtons())
+    m_texts.add([this] {  // (the record and replay buttons' texts: updateButtons())
         m_addSerial->setText(tr("Add serial console…"));
         m_addSerial->setToolTip(tr("A replica console (DAQ box) on a serial port, kept in the profile"));
         m_removeDevice->setText(tr("Remove"));
@@ -259,7 +259,7 @@ QWidget* StationPage::buildDevices(QWidget* parent)
     layout->addWidget(devices, 0);
 
     auto* channels = new QGroupBox(left);
-    onLanguage([channels] { channels->setTitle(tr("Channels")); });
+    m_texts.add([channels] { channels->setTitle(tr("Channels")); });
     auto* cl = new QVBoxLayout(channels);
     auto* scroll = new QScrollArea(channels);
     scroll->setWidgetResizable(true);
@@ -1002,12 +1002,6 @@ void StationPage::hideEvent(QHideEvent* event)
     m_timer->stop();
 }
 
-void StationPage::onLanguage(std::function<void()> set)
-{
-    set();
-    m_texts.push_back(std::move(set));
-}
-
 void StationPage::changeEvent(QEvent* event)
 {
     if (event->type() == QEvent::LanguageChange) retranslate();
@@ -1018,7 +1012,7 @@ void StationPage::retranslate()
 {
     // the spin boxes (gain…) read and show numbers in the new locale
     setLocale(QLocale());
-    for (const auto& set : m_texts) set();
+    m_texts.apply();
     fillCombo();
     updateButtons();
     // the lists shown from the state are made again: kinds, statuses, issues

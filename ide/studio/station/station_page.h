@@ -24,7 +24,7 @@
 // profileChanged() tells the main window. The main window gives the engine the model's
 // drives (StationEngine::setDrives); the page only lists them.
 //
-// Language: on QEvent::LanguageChange every text is set again (onLanguage) and the
+// Language: on QEvent::LanguageChange every text is set again (m_texts, i18n::Texts) and the
 // lists made from the state are made anew; numbers follow the locale (spin boxes too),
 // profiles on disk keep '.'.
 //
@@ -34,6 +34,7 @@
 
 #include "trainer/station/profile_store.h"
 #include "trainer/station/station.h"
+#include "ide/i18n/texts.h"
 
 #include <QDateTime>
 #include <QElapsedTimer>
@@ -195,8 +196,6 @@ protected:
 private:
     enum class Origin { Unsaved, User, Shipped };
 
-    /// Sets a text now and at every language change (`set` calls tr()).
-    void onLanguage(std::function<void()> set);
     void retranslate();
     void buildProfileBar(QVBoxLayout* layout);
     QWidget* buildDevices(QWidget* parent);
@@ -242,7 +241,7 @@ private:
     QPointer<CalibrationWizard> m_wizard;
 
     QTimer* m_timer = nullptr;
-    std::vector<std::function<void()>> m_texts;  ///< onLanguage()
+    i18n::Texts m_texts;  ///< the texts that follow the language
     QComboBox* m_profiles = nullptr;
     QPushButton* m_new = nullptr;
     QPushButton* m_save = nullptr;

@@ -171,7 +171,7 @@ RecordsView::RecordsView(QWidget* parent) : QWidget(parent)
     auto* reload = new QPushButton;
     m_export = new QPushButton;
     m_export->setObjectName("ExportCsvButton");
-    onLanguage([=, this] {
+    m_texts.add([=, this] {
         title->setText(tr("Trainee records"));
         operatorsTitle->setText("<b>" + tr("Operators") + "</b>");
         m_operators->setHorizontalHeaderLabels({tr("Code"), tr("Name"), tr("Attempts"), tr("Passed"), tr("Last attempt")});
@@ -235,16 +235,10 @@ void RecordsView::setTutorials(const QHash<QString, QString>& titles, const QHas
     m_tutorials = tutorials;
 }
 
-void RecordsView::onLanguage(std::function<void()> set)
-{
-    set();
-    m_texts.push_back(std::move(set));
-}
-
 void RecordsView::changeEvent(QEvent* event)
 {
     if (event->type() == QEvent::LanguageChange) {
-        for (const auto& set : m_texts) set();
+        m_texts.apply();
         const int attempt = m_attempts->currentRow();
         refresh();  // keeps the operator
         if (attempt >= 0 && attempt < m_attempts->rowCount()) m_attempts->setCurrentCell(attempt, 0);

@@ -18,6 +18,7 @@
 // view has the tutorial). Numbers and dates follow the locale; the CSV keeps '.'.
 
 #include "trainer/records/records_db.h"
+#include "ide/i18n/texts.h"
 
 #include <QHash>
 #include <QWidget>
@@ -78,8 +79,6 @@ protected:
     void changeEvent(QEvent* event) override;
 
 private:
-    /// Sets a text now and at every language change.
-    void onLanguage(std::function<void()> set);
     QString titleOf(const trainer::records::Attempt& a) const;
     QString eventText(const trainer::records::Attempt& a, const trainer::records::AttemptEvent& e) const;
     void showOperator(int row);
@@ -91,7 +90,7 @@ private:
     QHash<QString, QString> m_titles;
     QHash<QString, double> m_passMarks;
     QHash<QString, std::shared_ptr<const trainer::Tutorial>> m_tutorials;
-    std::vector<std::function<void()>> m_texts;
+    i18n::Texts m_texts;  ///< the texts that follow the language
     QList<trainer::records::OperatorProgress> m_progress;
     QList<trainer::records::Attempt> m_list;  ///< of the selected operator, newest first
 

@@ -418,12 +418,6 @@ void TrainPage::setScreen(Screen s)
     emit screenChanged(s);
 }
 
-void TrainPage::onLanguage(std::function<void()> set)
-{
-    set();
-    m_texts.push_back(std::move(set));
-}
-
 void TrainPage::changeEvent(QEvent* event)
 {
     if (event->type() == QEvent::LanguageChange) retranslate();
@@ -433,7 +427,7 @@ void TrainPage::changeEvent(QEvent* event)
 void TrainPage::retranslate()
 {
     // (the children that are screens of their own, the records view, follow by themselves)
-    for (const auto& set : m_texts) set();
+    m_texts.apply();
     for (QPushButton* b : m_languageButtons) b->setChecked(b->objectName() == "LanguageButton_" + language());
     retitle();
     refreshCourse();
@@ -464,7 +458,7 @@ QWidget* TrainPage::buildCourse()
     auto* top = new QHBoxLayout;
     m_courseTitle = new QLabel;
     m_courseTitle->setObjectName("TrainTitle");
-    onLanguage([this] { m_courseTitle->setText(tr("Training course")); });
+    m_texts.add([this] { m_courseTitle->setText(tr("Training course")); });
     top->addWidget(m_courseTitle, 1);
     // the languages, each in its own name, big enough for a finger on the kiosk's screen
     auto* languages = new QButtonGroup(page);
@@ -488,7 +482,7 @@ QWidget* TrainPage::buildCourse()
     layout->addLayout(top);
     auto* opRow = new QHBoxLayout;
     auto* opLabel = new QLabel;
-    onLanguage([opLabel] { opLabel->setText(tr("Operator:")); });
+    m_texts.add([opLabel] { opLabel->setText(tr("Operator:")); });
     opRow->addWidget(opLabel);
     m_operatorBox = new QComboBox;
     m_operatorBox->setObjectName("OperatorBox");
@@ -496,7 +490,7 @@ QWidget* TrainPage::buildCourse()
     m_operatorBox->setMinimumWidth(240);
     m_operatorBox->addItems(knownOperators());
     m_operatorBox->setCurrentText(m_operator);
-    onLanguage([this] { m_operatorBox->lineEdit()->setPlaceholderText(tr("name or number")); });
+    m_texts.add([this] { m_operatorBox->lineEdit()->setPlaceholderText(tr("name or number")); });
     connect(m_operatorBox->lineEdit(), &QLineEdit::editingFinished, this,
             [this] { setOperator(m_operatorBox->currentText()); });
     connect(m_operatorBox, &QComboBox::textActivated, this, [this](const QString& t) { setOperator(t); });
@@ -510,7 +504,7 @@ QWidget* TrainPage::buildCourse()
     auto* buttons = new QHBoxLayout;
     m_recordsButton = new QPushButton;
     m_recordsButton->setObjectName("RecordsButton");
-    onLanguage([this] {
+    m_texts.add([this] {
         m_recordsButton->setText(tr("Records"));
         m_recordsButton->setToolTip(tr("The trainee records: operators, attempts, progress (for the trainer)."));
     });
@@ -524,7 +518,7 @@ QWidget* TrainPage::buildCourse()
     buttons->addWidget(courseCentre);
     buttons->addStretch();
     m_openButton = new QPushButton;
-    onLanguage([this] { m_openButton->setText(tr("Open")); });
+    m_texts.add([this] { m_openButton->setText(tr("Open")); });
     m_openButton->setEnabled(false);
     buttons->addWidget(m_openButton);
     layout->addLayout(buttons);
@@ -823,7 +817,7 @@ QWidget* TrainPage::buildStart()
     m_startButton->setObjectName("StartButton");
     m_startButton->setStyleSheet("font-size: 18pt; font-weight: bold; padding: 10px 30px;");
     auto* back = new QPushButton;
-    onLanguage([this, back] {
+    m_texts.add([this, back] {
         m_watchButton->setText(tr("Watch the demonstration"));
         m_startButton->setText(tr("Start"));
         back->setText(tr("Back to the course"));
@@ -844,13 +838,13 @@ QWidget* TrainPage::buildStart()
     auto* controls = new QHBoxLayout;
     m_demoPlay = new QPushButton;
     m_demoPlay->setEnabled(false);
-    onLanguage([this] {
+    m_texts.add([this] {
         m_demoPlay->setText(m_demoRunning && !m_runner->isPaused() ? tr("Pause") : tr("Play"));
     });
     m_demoSpeed = new QComboBox;
     for (double s : kSpeeds) m_demoSpeed->addItem(QString(), s);
     m_demoSpeed->setCurrentIndex(2);
-    onLanguage([this] {  // ×0.25 or ×0,25
+    m_texts.add([this] {  // ×0.25 or ×0,25
         for (int i = 0; i < m_demoSpeed->count(); ++i)
             m_demoSpeed->setItemText(i, QStringLiteral("×%1").arg(QLocale().toString(m_demoSpeed->itemData(i).toDouble())));
     });
@@ -871,7 +865,7 @@ QWidget* TrainPage::buildStart()
     controls->addWidget(m_demoTime);
     m_demoFollow = new QCheckBox;
     m_demoFollow->setObjectName("DemoFollowCamera");
-    onLanguage([this, speedLabel] {
+    m_texts.add([this, speedLabel] {
         speedLabel->setText(tr("Speed:"));
         m_demoFollow->setText(tr("Expert's camera"));
         m_demoFollow->setToolTip(tr("Look where the expert looked while recording (untick to move the view yourself)."));
@@ -1048,7 +1042,7 @@ QWidget* TrainPage::buildAttempt()
     auto* stop = new QPushButton;
     stop->setObjectName("StopButton");
     bar->addWidget(stop);
-    onLanguage([this, keys, viewLabel, stop] {
+    m_texts.add([this, keys, viewLabel, stop] {
         keys->setText(tr("Esc or Stop ends the attempt."));
         m_expertBox->setText(tr("Show the expert"));
         m_expertBox->setToolTip(tr("The demonstration runs beside the attempt, drawn translucent."));
@@ -1469,7 +1463,7 @@ QWidget* TrainPage::buildResult()
     m_saveDemoButton->setObjectName("SaveDemoButton");
     m_useDemoButton = new QPushButton;
     m_useDemoButton->setObjectName("UseDemoButton");
-    onLanguage([=, this] {
+    m_texts.add([=, this] {
         m_breakdown->setHorizontalHeaderLabels({tr("Measure"), tr("Measured"), tr("Points"), tr("Of")});
         scoreTitle->setText("<b>" + tr("Score") + "</b>");
         improveTitle->setText("<b>" + tr("What to improve") + "</b>");
@@ -1643,7 +1637,7 @@ QWidget* TrainPage::buildDebrief()
     sideLayout->addWidget(m_comparison);
     auto* back = new QPushButton;
     sideLayout->addWidget(back);
-    onLanguage([=, this] {
+    m_texts.add([=, this] {
         m_replayPlay->setText(m_replayPlaying ? tr("Pause") : tr("Play"));
         eventsTitle->setText("<b>" + tr("Events") + "</b>");
         expertTitle->setText("<b>" + tr("You and the expert") + "</b>");

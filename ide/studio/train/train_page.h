@@ -29,7 +29,7 @@
 // Language (docs/glossary.md): the course screen has "Español" and "English" (big
 // enough for the kiosk's touch screen) that switch the whole application at once
 // (i18n::switchTo). On QEvent::LanguageChange every text is set again: the static ones
-// (onLanguage), the course with the tutorials' titles in the new language, the start
+// (m_texts, i18n::Texts), the course with the tutorials' titles in the new language, the start
 // screen, the HUD's goal and hints, the result, the debrief and the records. Numbers
 // follow the locale (1,5 in Spanish); files for machines keep '.'.
 //
@@ -53,6 +53,7 @@
 #include "trainer/training/camera_path.h"
 #include "trainer/training/runner.h"
 #include "trainer/training/tutorial.h"
+#include "ide/i18n/texts.h"
 
 #include <QHash>
 #include <QPointer>
@@ -255,8 +256,6 @@ private:
     QWidget* buildResult();
     QWidget* buildDebrief();
     void setScreen(Screen s);
-    /// Sets a text now and again at every language change (`set` calls tr()).
-    void onLanguage(std::function<void()> set);
     void retranslate();
     /// The entries' titles in language().
     void retitle();
@@ -332,7 +331,7 @@ private:
 
     QStackedWidget* m_stack = nullptr;
     QTimer* m_timer = nullptr;
-    std::vector<std::function<void()>> m_texts;  ///< onLanguage()
+    i18n::Texts m_texts;  ///< the texts that follow the language
     // course
     QLabel* m_courseTitle = nullptr;
     QList<QPushButton*> m_languageButtons;  ///< objectName "LanguageButton_<code>"
