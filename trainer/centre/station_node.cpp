@@ -116,10 +116,9 @@ void StationNode::tick(double nowS)
         if (c.target == m_o.name) handle(c);
     }
     if (m_status == StationStatus::Running) {
-        // real time: the simulation keeps wall time minus the pauses
-        const double target = nowS - m_simOffset;
-        int steps = 0;
-        while (m_session->time() + 0.5e-3 < target && steps < 50 && !m_session->ended()) {
+        // real time: the simulation follows the wall clock from its start or resumption
+        m_pacer.runDue([&] {
+            if (m_session->ended()) return false;
             if (m_engine) {
                 m_engine->update(m_session->time());
                 m_session->setCommands(m_engine->commands());
@@ -128,9 +127,8 @@ void StationNode::tick(double nowS)
                 m_session->setCommands(m_input);
             }
             m_session->step();
-            ++steps;
-        }
-        if (m_session->time() + 0.5e-3 < target) m_simOffset = nowS - m_session->time();  // fell behind: slip
+            return true;
+        });
         if (m_session->ended()) {
             m_status = StationStatus::Ended;
             publishEvents();
@@ -231,7 +229,7 @@ bool StationNode::start(const std::string& tutorialId, const std::string& operat
     }
     m_operator = operatorCode;
     m_status = StationStatus::Running;
-    m_simOffset = m_lastTick;
+    m_pacer.anchor(m_session->time(), 1.0);
     if (m_records) {
         m_records->begin(m_tutorial, QString::fromStdString(operatorCode.empty() ? std::string("guest") : operatorCode));
         m_recording = true;
@@ -285,7 +283,7 @@ void StationNode::handle(const Command& c)
             break;
         case CommandKind::Resume:
             m_status = StationStatus::Running;
-            m_simOffset = m_lastTick - m_session->time();
+            m_pacer.anchor(m_session->time(), 1.0);
             instructorEvent(c, key(kind));
             done = true;
             break;

@@ -15,6 +15,7 @@
 #include "trainer/centre/signing.h"
 #include "trainer/centre/station_protocol.h"
 #include "trainer/records/shared_records.h"
+#include "trainer/station/paced_loop.h"
 #include "trainer/training/session.h"
 
 #include <QString>
@@ -73,8 +74,8 @@ public:
     /// Announces the station, then ticks every millisecond in real time until `stop`;
     /// withdraws the announcement at the end.
     void run(const std::atomic<bool>& stop);
-    /// One pass at wall-clock time `nowS` [s]: commands, simulation steps up to nowS
-    /// (at most 50 to catch up), state and events when due.
+    /// One pass at wall-clock time `nowS` [s]: commands, the simulation steps due
+    /// (PacedLoop: at most 10 ms of them, a lag over 50 ms dropped), state and events when due.
     void tick(double nowS);
 
     /// The status as published.
@@ -109,7 +110,7 @@ private:
     std::size_t m_published = 0;  ///< how many of the session's events went out
     StationStatus m_status = StationStatus::Idle;
     std::string m_operator;
-    double m_simOffset = 0.0;  ///< wall time minus simulation time while running [s]
+    PacedLoop m_pacer;  ///< the simulation's real-time pacing while running
     double m_nextState = 0.0, m_nextRecord = 0.0, m_lastTick = -1.0;
     std::uint64_t m_stateSeq = 0, m_eventSeq = 0;
     Announce m_announce;

@@ -2,6 +2,7 @@
 
 #include "ide/i18n/diagnostic_text.h"
 #include "solver/integrate/simulation.h"
+#include "trainer/station/paced_loop.h"
 
 #include <QMetaObject>
 
@@ -25,10 +26,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr double kLead = 2e-3;       // a step is computed up to this long before its deadline [s]
-constexpr double kTick = 1e-3;       // shortest interval between two batches [s]
-constexpr double kMaxLag = 0.05;     // further behind than this: stop catching up [s]
-constexpr double kMaxBatch = 0.01;   // longest batch before a snapshot is published [s]
 constexpr double kStatsPeriod = 0.1; // statistics refreshed this often [s]
 constexpr double kStatsWindow = 1.0; // over the last [s]
 constexpr std::size_t kStepSamples = 1 << 15;  // ring of step timings
@@ -135,7 +132,7 @@ public:
             if (m_sim && !m_failed) {
                 if (wantRun) {
                     if (!m_running) beginRun(speed);
-                    else if (speed != m_speed) anchor(speed);
+                    else if (speed != m_pacer.speed()) anchor(speed);
                     wakeAt = runBatch(version);
                 } else {
                     if (m_running) {
@@ -185,12 +182,9 @@ private:
     bool m_pullCommands = true;
     unsigned m_commandVersion = 0;
 
-    // pacing: τ = m_anchorSim + m_speed · (w − m_anchorWall)
-    double m_speed = 1;
-    double m_anchorWall = 0, m_anchorSim = 0;
-    double m_plannedWake = 0;  // when the current batch was due to start [s since m_epoch]
-    long m_overruns = 0;
-    double m_dropped = 0;
+    // pacing (lead 2 ms, batches at least 1 ms apart and at most 10 ms long, a lag over
+    // 50 ms dropped: PacedLoopOptions' defaults), on this thread's clock
+    trainer::PacedLoop m_pacer = makePacer(kDefaultTimeStep);
 
     // events
     std::vector<solver::SimulationEvent> m_events;  // since the last snapshot
@@ -215,7 +209,12 @@ private:
         return m_epoch + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(wall));
     }
     /// The wall time at which the end of step k is due [s since m_epoch].
-    double deadline(long k) const { return m_anchorWall + (double(k) * m_h - m_anchorSim) / m_speed; }
+    trainer::PacedLoop makePacer(double h)
+    {
+        trainer::PacedLoopOptions o;
+        o.step = h;
+        return trainer::PacedLoop(o, [this] { return now(); });
+    }
 
     /// Takes over the simulation setBundle() or reset() built (control lock held).
     void adopt()
@@ -229,8 +228,7 @@ private:
         m_failed = false;
         m_running = false;
         m_pullCommands = true;
-        m_overruns = 0;
-        m_dropped = 0;
+        m_pacer = makePacer(m_h);
         m_events.clear();
         m_eventLog = std::make_shared<const std::vector<solver::SimulationEvent>>();
         m_eventCount = 0;
@@ -260,39 +258,25 @@ private:
         m_lastStats = m_rates.back().wall;
     }
 
-    void anchor(double speed)
-    {
-        m_speed = speed;
-        m_anchorWall = now();
-        m_anchorSim = double(m_step) * m_h;
-        m_plannedWake = m_anchorWall - kTick;
-    }
+    void anchor(double speed) { m_pacer.anchor(double(m_step) * m_h, speed); }
 
     /// Runs the steps due now (or until the controls change), publishes, and returns
     /// when the next batch is due.
     Clock::time_point runBatch(unsigned version)
     {
-        const double start = now();
-        // too far behind: carry on from here rather than race to catch up
-        const double lag = start - deadline(m_step + 1);
-        if (lag > kMaxLag) {
-            m_dropped += lag;
-            m_anchorWall = start;
-            m_anchorSim = double(m_step) * m_h;
-            m_plannedWake = start;
-        }
-        bool stepped = false;
-        while (m_shared.controlVersion.load(std::memory_order_acquire) == version) {
-            const double t = now();
-            if (deadline(m_step + 1) - kLead > t || t - start > kMaxBatch) break;
-            if (!doStep(true)) return Clock::time_point::max();
+        bool stepped = false, failed = false;
+        m_pacer.runDue([&] {
+            if (m_shared.controlVersion.load(std::memory_order_acquire) != version) return false;
+            if (!doStep(true)) {
+                failed = true;
+                return false;
+            }
             stepped = true;
-        }
+            return true;
+        });
+        if (failed) return Clock::time_point::max();
         if (stepped) publish();
-        // the next batch: when its first step is due, but at least a tick after this
-        // one was planned (not after it began: a late wake-up must not shift the grid)
-        m_plannedWake = std::max(deadline(m_step + 1) - kLead, m_plannedWake + kTick);
-        return toClock(m_plannedWake);
+        return toClock(m_pacer.wakeAt());
     }
 
     /// Reads the newest commands when they changed (never waits for the GUI).
@@ -330,7 +314,6 @@ private:
         m_stepCount = std::min(m_stepCount + 1, kStepSamples);
         m_lastStepEnd = paced ? t1 : -1;
         if (s.period >= 0) countPeriod(double(s.period));
-        if (paced && t1 > deadline(m_step)) ++m_overruns;
         return true;
     }
 
@@ -416,14 +399,14 @@ private:
         snap->eventCount = m_eventCount;
         refreshStatistics();
         snap->running = m_running;
-        snap->speed = m_running ? m_speed : speedRequested();
+        snap->speed = m_running ? m_pacer.speed() : speedRequested();
         snap->realTimeFactor = m_running ? m_realTimeFactor : 0;
         snap->stepMicros = m_stepMicros;
         snap->stepPeriodMicros = m_periodMicros;
         snap->stepPeriodMaxMicros = m_periodMaxMicros;
         snap->cpuLoad = m_cpuLoad;
-        snap->overruns = m_overruns;
-        snap->droppedSeconds = m_dropped;
+        snap->overruns = m_pacer.overruns();
+        snap->droppedSeconds = m_pacer.droppedSeconds();
         return snap;
     }
 

@@ -2,6 +2,7 @@
 
 #include "solver/core/data.h"
 #include "solver/kinematics/kinematics.h"
+#include "trainer/station/paced_loop.h"
 #include "trainer/station/station_engine.h"
 
 #include <QFile>
@@ -16,18 +17,6 @@
 #include <utility>
 
 namespace studio {
-
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-constexpr double kMaxLag = 0.05;   // further behind than this: stop catching up [s]
-constexpr int kMaxBatch = 50;      // most steps before a frame is published
-constexpr auto kTick = std::chrono::milliseconds(1);
-
-double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
-
-}  // namespace
 
 struct TutorialRunner::Shared {
     std::mutex control;
@@ -331,8 +320,7 @@ void TutorialRunner::loop()
     unsigned seenControl = 0;
     unsigned seenCommands = 0;
     std::vector<double> commands;
-    double tau0 = 0.0;
-    Clock::time_point w0 = Clock::now();
+    trainer::PacedLoop pacer;  // lead 2 ms, batches ≤ 10 ms, a lag over 50 ms dropped
     bool endSignalled = false;
 
     const auto signalEnd = [&] {
@@ -427,10 +415,7 @@ void TutorialRunner::loop()
         } else if (run && resync) {
             sh.publish(run->frame(paused, speed));
         }
-        if (resync && run) {
-            tau0 = run->session->time();
-            w0 = Clock::now();
-        }
+        if (resync && run) pacer.anchor(run->session->time(), speed);
 
         if (!run || paused || run->session->ended()) {
             std::unique_lock lock(sh.control);
@@ -439,15 +424,7 @@ void TutorialRunner::loop()
         }
 
         // the steps due by now
-        trainer::TutorialSession& s = *run->session;
-        const Clock::time_point now = Clock::now();
-        double due = tau0 + speed * seconds(now - w0);
-        if (due - s.time() > kMaxLag * speed) {  // too far behind: carry on from here
-            tau0 = s.time();
-            w0 = now;
-            due = s.time() + speed * seconds(kTick);
-        }
-        for (int n = 0; n < kMaxBatch && s.time() + 0.5e-3 <= due; ++n) {
+        pacer.runDue([&] {
             if (!run->log) {
                 const unsigned v = sh.commandVersion.load(std::memory_order_acquire);
                 if (v != seenCommands) {
@@ -457,17 +434,17 @@ void TutorialRunner::loop()
                         seenCommands = v;
                     }
                 }
-                s.setCommands(commands);
+                run->session->setCommands(commands);
             }
             const bool going = run->step();
             run->syncGhost();
-            if (!going) break;
-        }
+            return going;
+        });
         sh.publish(run->frame(paused, speed));
         signalEnd();
 
         std::unique_lock lock(sh.control);
-        sh.wake.wait_until(lock, now + kTick, [&] { return sh.quit || sh.controlVersion != seenControl; });
+        sh.wake.wait_until(lock, pacer.wake(), [&] { return sh.quit || sh.controlVersion != seenControl; });
     }
 }
 
