@@ -2830,7 +2830,7 @@
         <translation>The tutorials of one station must all use the same model: %1 uses %2, %3 uses %4.</translation>
     </message>
     <message>
-        <location line="+107" />
+        <location line="+105" />
         <source>the records journal takes writes again</source>
         <translation>the records journal takes writes again</translation>
     </message>
@@ -2861,7 +2861,7 @@
         <translation>Lever %1</translation>
     </message>
     <message>
-        <location line="+139" />
+        <location line="+146" />
         <source>line %1: %2</source>
         <translation>line %1: %2</translation>
     </message>
@@ -4837,7 +4837,7 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
         <location line="+2" />
         <location line="+3" />
         <location line="+3" />
-        <location line="+562" />
+        <location line="+565" />
         <location line="+51" />
         <location filename="../ide/cli/export.cpp" line="+92" />
         <location filename="../ide/cli/simulate.cpp" line="+243" />
@@ -4863,8 +4863,8 @@ Exit status: 0 success; 1 the model has errors or a simulation failed;
     </message>
     <message>
         <location line="+4" />
-        <location filename="../ide/cli/centre.cpp" line="-485" />
-        <location line="+272" />
+        <location filename="../ide/cli/centre.cpp" line="-488" />
+        <location line="+275" />
         <location line="+165" />
         <location line="+51" />
         <location line="+51" />
@@ -6004,7 +6004,7 @@ Exit status: 0 the tutorial is fine (checked) or the run passed; 1 the run faile
         <translation>the tutorial has no usable demonstration (DEMO)</translation>
     </message>
     <message>
-        <location filename="../ide/cli/centre.cpp" line="-678" />
+        <location filename="../ide/cli/centre.cpp" line="-681" />
         <source>--domain must be a whole number from 0 to 232, not '%1'</source>
         <translation>--domain must be a whole number from 0 to 232, not '%1'</translation>
     </message>
@@ -6204,7 +6204,7 @@ Exit status: 0 done or accepted, 1 the station refused or did not answer,
         <translation>gone (it left)</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+7" />
         <source>idle</source>
         <translation>idle</translation>
     </message>
@@ -6224,7 +6224,7 @@ Exit status: 0 done or accepted, 1 the station refused or did not answer,
         <translation>ended</translation>
     </message>
     <message>
-        <location line="+68" />
+        <location line="+70" />
         <source>the station has no centre key and takes no commands</source>
         <translation>the station has no centre key and takes no commands</translation>
     </message>
@@ -7486,7 +7486,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>left</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+5" />
         <source>idle</source>
         <translation>idle</translation>
     </message>
@@ -7506,7 +7506,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>ended</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>overload</source>
         <translation>overload</translation>
     </message>
@@ -7532,12 +7532,12 @@ never the .key files of the CAs; then run it with --security DIR.
     </message>
     <message>
         <location line="+5" />
-        <location line="+306" />
+        <location line="+307" />
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location line="-294" />
+        <location line="-295" />
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
@@ -7557,7 +7557,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>%1 s  %2</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+24" />
         <source>Padrob instructor</source>
         <translation>Padrob instructor</translation>
     </message>
@@ -8745,7 +8745,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>The device whose button steps to the next bank</translation>
     </message>
     <message>
-        <location line="+96" />
+        <location line="+90" />
         <source>Always</source>
         <translation>Always</translation>
     </message>
@@ -9198,7 +9198,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>pump %1 %2</translation>
     </message>
     <message>
-        <location line="+263" />
+        <location line="+277" />
         <source>Mechanical energy [J]</source>
         <translation>Mechanical energy [J]</translation>
     </message>
@@ -9335,6 +9335,19 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <location line="+37" />
         <source>%1 at %2: %3</source>
         <translation>%1 at %2: %3</translation>
+    </message>
+</context>
+<context>
+    <name>studio::ProfileDocument</name>
+    <message>
+        <location filename="../ide/studio/station/profile_document.cpp" line="+75" />
+        <source>Cannot open the profile “%1”: %2</source>
+        <translation>Cannot open the profile “%1”: %2</translation>
+    </message>
+    <message>
+        <location line="+62" />
+        <source>Cannot import %1: %2</source>
+        <translation>Cannot import %1: %2</translation>
     </message>
 </context>
 <context>
@@ -9497,7 +9510,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>CSV files (*.csv);;All files (*)</translation>
     </message>
     <message>
-        <location line="+85" />
+        <location line="+79" />
         <location line="+161" />
         <location line="+17" />
         <source>There are no trainee records.</source>
@@ -9663,7 +9676,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
 <context>
     <name>studio::SimulationRunner</name>
     <message>
-        <location filename="../ide/studio/sim/simulation_runner.cpp" line="+456" />
+        <location filename="../ide/studio/sim/simulation_runner.cpp" line="+439" />
         <source>The simulation stopped: %1</source>
         <translation>The simulation stopped: %1</translation>
     </message>
@@ -9832,23 +9845,23 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
     </message>
     <message>
         <location line="-6" />
-        <location line="+704" />
+        <location line="+639" />
         <source>Record input…</source>
         <translation>Record input…</translation>
     </message>
     <message>
-        <location line="-696" />
+        <location line="-631" />
         <source>Write everything the devices read to an input log</source>
         <translation>Write everything the devices read to an input log</translation>
     </message>
     <message>
         <location line="-7" />
-        <location line="+705" />
+        <location line="+640" />
         <source>Replay a log…</source>
         <translation>Replay a log…</translation>
     </message>
     <message>
-        <location line="-697" />
+        <location line="-632" />
         <source>Play a recorded input log: it drives the machine instead of the operator</source>
         <translation>Play a recorded input log: it drives the machine instead of the operator</translation>
     </message>
@@ -9858,7 +9871,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>Channels</translation>
     </message>
     <message>
-        <location line="+76" />
+        <location line="+51" />
         <source>(no name)</source>
         <translation>(no name)</translation>
     </message>
@@ -9883,7 +9896,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>%1 (shipped)</translation>
     </message>
     <message>
-        <location line="+70" />
+        <location line="+63" />
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
@@ -9893,12 +9906,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>The profile “%1” has changes that are not saved. Discard them?</translation>
     </message>
     <message>
-        <location line="+33" />
-        <source>Cannot open the profile “%1”: %2</source>
-        <translation>Cannot open the profile “%1”: %2</translation>
-    </message>
-    <message>
-        <location line="+15" />
+        <location line="+43" />
         <source>New profile</source>
         <translation>New profile</translation>
     </message>
@@ -9908,12 +9916,12 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>Name of the new profile:</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+3" />
         <source>Bank 1</source>
         <translation>Bank 1</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+14" />
         <source>Save profile as</source>
         <translation>Save profile as</translation>
     </message>
@@ -9928,17 +9936,17 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>A profile needs a name.</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+5" />
         <source>Replace profile</source>
         <translation>Replace profile</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>A profile named “%1” exists already for this model. Replace it?</source>
         <translation>A profile named “%1” exists already for this model. Replace it?</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+4" />
         <source>Cannot save the profile: %1</source>
         <translation>Cannot save the profile: %1</translation>
     </message>
@@ -9948,7 +9956,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>Save profile</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+18" />
         <location line="+4" />
         <source>Delete profile</source>
         <translation>Delete profile</translation>
@@ -9974,17 +9982,12 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>Station profiles (*.json);;All files (*)</translation>
     </message>
     <message>
-        <location line="+9" />
-        <source>Cannot import %1: %2</source>
-        <translation>Cannot import %1: %2</translation>
-    </message>
-    <message>
-        <location line="+2" />
+        <location line="+7" />
         <source>Import profile</source>
         <translation>Import profile</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+11" />
         <source>Export station profile</source>
         <translation>Export station profile</translation>
     </message>
@@ -9995,13 +9998,13 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
     </message>
     <message>
         <location line="+6" />
-        <location line="+8" />
+        <location line="+6" />
         <source>Export profile</source>
         <translation>Export profile</translation>
     </message>
     <message>
-        <location line="-8" />
-        <location line="+87" />
+        <location line="-6" />
+        <location line="+85" />
         <source>%1 exists already. Replace it?</source>
         <translation>%1 exists already. Replace it?</translation>
     </message>
@@ -10180,13 +10183,13 @@ Id: %3</translation>
         <translation>The trainer's PIN:</translation>
     </message>
     <message>
-        <location line="+340" />
+        <location line="+334" />
         <source>This tutorial cannot be loaded.</source>
         <translation>This tutorial cannot be loaded.</translation>
     </message>
     <message>
-        <location line="-198" />
-        <location line="+727" />
+        <location line="-192" />
+        <location line="+721" />
         <source>Guest</source>
         <translation>Guest</translation>
     </message>
@@ -10322,7 +10325,7 @@ Id: %3</translation>
         <translation>Play</translation>
     </message>
     <message>
-        <location line="-1519" />
+        <location line="-1513" />
         <source>OK</source>
         <translation>OK</translation>
     </message>
@@ -10332,7 +10335,7 @@ Id: %3</translation>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location line="+823" />
+        <location line="+817" />
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc or Stop ends the attempt.</translation>
     </message>

@@ -2830,7 +2830,7 @@
         <translation>Los tutoriales de una estación deben usar todos el mismo modelo: %1 usa %2, %3 usa %4.</translation>
     </message>
     <message>
-        <location line="+107" />
+        <location line="+105" />
         <source>the records journal takes writes again</source>
         <translation>el registro local vuelve a aceptar escrituras</translation>
     </message>
@@ -2861,7 +2861,7 @@
         <translation>Palanca %1</translation>
     </message>
     <message>
-        <location line="+139" />
+        <location line="+146" />
         <source>line %1: %2</source>
         <translation>línea %1: %2</translation>
     </message>
@@ -4841,7 +4841,7 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
         <location line="+2" />
         <location line="+3" />
         <location line="+3" />
-        <location line="+562" />
+        <location line="+565" />
         <location line="+51" />
         <location filename="../ide/cli/export.cpp" line="+92" />
         <location filename="../ide/cli/simulate.cpp" line="+243" />
@@ -4867,8 +4867,8 @@ Estado de salida: 0 éxito; 1 el modelo tiene errores o una simulación falló;
     </message>
     <message>
         <location line="+4" />
-        <location filename="../ide/cli/centre.cpp" line="-485" />
-        <location line="+272" />
+        <location filename="../ide/cli/centre.cpp" line="-488" />
+        <location line="+275" />
         <location line="+165" />
         <location line="+51" />
         <location line="+51" />
@@ -6028,7 +6028,7 @@ registro ilegible.
         <translation>el tutorial no tiene una demostración utilizable (DEMO)</translation>
     </message>
     <message>
-        <location filename="../ide/cli/centre.cpp" line="-678" />
+        <location filename="../ide/cli/centre.cpp" line="-681" />
         <source>--domain must be a whole number from 0 to 232, not '%1'</source>
         <translation>--domain debe ser un número entero de 0 a 232, no '%1'</translation>
     </message>
@@ -6232,7 +6232,7 @@ Estado de salida: 0 hecho o aceptado, 1 la estación rechazó o no respondió,
         <translation>fuera (se retiró)</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+7" />
         <source>idle</source>
         <translation>inactiva</translation>
     </message>
@@ -6252,7 +6252,7 @@ Estado de salida: 0 hecho o aceptado, 1 la estación rechazó o no respondió,
         <translation>terminado</translation>
     </message>
     <message>
-        <location line="+68" />
+        <location line="+70" />
         <source>the station has no centre key and takes no commands</source>
         <translation>la estación no tiene clave del centro y no acepta órdenes</translation>
     </message>
@@ -7516,7 +7516,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>se fue</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+5" />
         <source>idle</source>
         <translation>inactivo</translation>
     </message>
@@ -7536,7 +7536,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>terminado</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>overload</source>
         <translation>sobrecarga</translation>
     </message>
@@ -7562,12 +7562,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
     </message>
     <message>
         <location line="+5" />
-        <location line="+306" />
+        <location line="+307" />
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location line="-294" />
+        <location line="-295" />
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
@@ -7587,7 +7587,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>%1 s  %2</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+24" />
         <source>Padrob instructor</source>
         <translation>Instructor Padrob</translation>
     </message>
@@ -8775,7 +8775,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>El dispositivo cuyo botón pasa al banco siguiente</translation>
     </message>
     <message>
-        <location line="+96" />
+        <location line="+90" />
         <source>Always</source>
         <translation>Siempre</translation>
     </message>
@@ -9228,7 +9228,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>bomba %1 %2</translation>
     </message>
     <message>
-        <location line="+263" />
+        <location line="+277" />
         <source>Mechanical energy [J]</source>
         <translation>Energía mecánica [J]</translation>
     </message>
@@ -9365,6 +9365,19 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <location line="+37" />
         <source>%1 at %2: %3</source>
         <translation>%1 en %2: %3</translation>
+    </message>
+</context>
+<context>
+    <name>studio::ProfileDocument</name>
+    <message>
+        <location filename="../ide/studio/station/profile_document.cpp" line="+75" />
+        <source>Cannot open the profile “%1”: %2</source>
+        <translation>No se puede abrir el perfil “%1”: %2</translation>
+    </message>
+    <message>
+        <location line="+62" />
+        <source>Cannot import %1: %2</source>
+        <translation>No se puede importar %1: %2</translation>
     </message>
 </context>
 <context>
@@ -9527,7 +9540,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>Archivos CSV (*.csv);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location line="+85" />
+        <location line="+79" />
         <location line="+161" />
         <location line="+17" />
         <source>There are no trainee records.</source>
@@ -9693,7 +9706,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
 <context>
     <name>studio::SimulationRunner</name>
     <message>
-        <location filename="../ide/studio/sim/simulation_runner.cpp" line="+456" />
+        <location filename="../ide/studio/sim/simulation_runner.cpp" line="+439" />
         <source>The simulation stopped: %1</source>
         <translation>La simulación se detuvo: %1</translation>
     </message>
@@ -9862,23 +9875,23 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
     </message>
     <message>
         <location line="-6" />
-        <location line="+704" />
+        <location line="+639" />
         <source>Record input…</source>
         <translation>Grabar entradas…</translation>
     </message>
     <message>
-        <location line="-696" />
+        <location line="-631" />
         <source>Write everything the devices read to an input log</source>
         <translation>Escribir todo lo que leen los dispositivos en un registro de entradas</translation>
     </message>
     <message>
         <location line="-7" />
-        <location line="+705" />
+        <location line="+640" />
         <source>Replay a log…</source>
         <translation>Reproducir registro…</translation>
     </message>
     <message>
-        <location line="-697" />
+        <location line="-632" />
         <source>Play a recorded input log: it drives the machine instead of the operator</source>
         <translation>Reproducir un registro de entradas grabado: mueve la máquina en lugar del operador</translation>
     </message>
@@ -9888,7 +9901,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>Canales</translation>
     </message>
     <message>
-        <location line="+76" />
+        <location line="+51" />
         <source>(no name)</source>
         <translation>(sin nombre)</translation>
     </message>
@@ -9913,7 +9926,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>%1 (incluido)</translation>
     </message>
     <message>
-        <location line="+70" />
+        <location line="+63" />
         <source>Unsaved changes</source>
         <translation>Cambios sin guardar</translation>
     </message>
@@ -9923,12 +9936,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>El perfil “%1” tiene cambios sin guardar. ¿Descartarlos?</translation>
     </message>
     <message>
-        <location line="+33" />
-        <source>Cannot open the profile “%1”: %2</source>
-        <translation>No se puede abrir el perfil “%1”: %2</translation>
-    </message>
-    <message>
-        <location line="+15" />
+        <location line="+43" />
         <source>New profile</source>
         <translation>Perfil nuevo</translation>
     </message>
@@ -9938,12 +9946,12 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>Nombre del perfil nuevo:</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+3" />
         <source>Bank 1</source>
         <translation>Banco 1</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+14" />
         <source>Save profile as</source>
         <translation>Guardar perfil como</translation>
     </message>
@@ -9958,17 +9966,17 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>Un perfil necesita un nombre.</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+5" />
         <source>Replace profile</source>
         <translation>Reemplazar perfil</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>A profile named “%1” exists already for this model. Replace it?</source>
         <translation>Ya existe un perfil llamado “%1” para este modelo. ¿Reemplazarlo?</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+4" />
         <source>Cannot save the profile: %1</source>
         <translation>No se puede guardar el perfil: %1</translation>
     </message>
@@ -9978,7 +9986,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>Guardar perfil</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+18" />
         <location line="+4" />
         <source>Delete profile</source>
         <translation>Eliminar perfil</translation>
@@ -10004,17 +10012,12 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>Perfiles de puesto (*.json);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location line="+9" />
-        <source>Cannot import %1: %2</source>
-        <translation>No se puede importar %1: %2</translation>
-    </message>
-    <message>
-        <location line="+2" />
+        <location line="+7" />
         <source>Import profile</source>
         <translation>Importar perfil</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+11" />
         <source>Export station profile</source>
         <translation>Exportar perfil de puesto</translation>
     </message>
@@ -10025,13 +10028,13 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
     </message>
     <message>
         <location line="+6" />
-        <location line="+8" />
+        <location line="+6" />
         <source>Export profile</source>
         <translation>Exportar perfil</translation>
     </message>
     <message>
-        <location line="-8" />
-        <location line="+87" />
+        <location line="-6" />
+        <location line="+85" />
         <source>%1 exists already. Replace it?</source>
         <translation>%1 ya existe. ¿Reemplazarlo?</translation>
     </message>
@@ -10210,13 +10213,13 @@ Id: %3</translation>
         <translation>El PIN del instructor:</translation>
     </message>
     <message>
-        <location line="+340" />
+        <location line="+334" />
         <source>This tutorial cannot be loaded.</source>
         <translation>Este tutorial no se puede cargar.</translation>
     </message>
     <message>
-        <location line="-198" />
-        <location line="+727" />
+        <location line="-192" />
+        <location line="+721" />
         <source>Guest</source>
         <translation>Invitado</translation>
     </message>
@@ -10352,7 +10355,7 @@ Id: %3</translation>
         <translation>Reproducir</translation>
     </message>
     <message>
-        <location line="-1519" />
+        <location line="-1513" />
         <source>OK</source>
         <translation>Aceptar</translation>
     </message>
@@ -10362,7 +10365,7 @@ Id: %3</translation>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location line="+823" />
+        <location line="+817" />
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc o Detener termina el intento.</translation>
     </message>

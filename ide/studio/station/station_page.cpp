@@ -275,8 +275,8 @@ QWidget* StationPage::buildDevices(QWidget* parent)
 
 void StationPage::setProfileStore(const trainer::ProfileStore& store)
 {
-    m_store = store;
-    listProfiles();
+    m_doc.setStore(store);
+    m_doc.relist();
     fillCombo();
 }
 
@@ -284,47 +284,20 @@ void StationPage::setDrives(const QList<trainer::DriveInfo>& drives)
 {
     m_drives = drives;
     m_mappings->setDrives(drives);
-    m_mappings->setProfile(m_profile);
+    m_mappings->setProfile(m_doc.profile());
     install(true);
 }
 
 void StationPage::setModel(const QString& modelPath, const QList<trainer::DriveInfo>& drives, const QString& preferred)
 {
-    m_modelPath = modelPath;
     m_drives = drives;
     m_mappings->setDrives(drives);
-    listProfiles();
+    const bool was = m_doc.isDirty();
+    m_doc.setModelPath(modelPath);
     clearError();
     // the preferred profile, the first readable one, or the model's default
-    QStringList order;
-    if (!preferred.isEmpty()) order << preferred;
-    for (const trainer::StoredProfile& s : m_stored)
-        if (s.readable) order << s.name;
-    for (const QString& name : order) {
-        if (std::none_of(m_stored.begin(), m_stored.end(),
-                         [&](const trainer::StoredProfile& s) { return s.name == name && s.readable; }))
-            continue;
-        trainer::StationProfile p;
-        QList<trainer::ProfileIssue> issues;
-        if (!m_store.load(m_modelPath, name, p, issues)) continue;
-        const auto s = std::find_if(m_stored.begin(), m_stored.end(),
-                                    [&](const trainer::StoredProfile& s) { return s.name == name; });
-        setCurrent(p, s->shipped ? Origin::Shipped : Origin::User, name, false);
-        return;
-    }
-    setCurrent(trainer::StationProfile::defaultFor(trainer::ProfileStore::modelKey(modelPath), drives), Origin::Unsaved,
-               {}, false);
-}
-
-void StationPage::listProfiles()
-{
-    m_stored = m_modelPath.isEmpty() ? QList<trainer::StoredProfile>{} : m_store.list(m_modelPath);
-}
-
-QString StationPage::userFile(const QString& name) const
-{
-    return m_store.root() + QLatin1Char('/') + trainer::ProfileStore::modelKey(m_modelPath) + QLatin1Char('/') +
-           trainer::ProfileStore::fileNameFor(name);
+    m_doc.openFirst(preferred, drives);
+    showCurrent(was);
 }
 
 void StationPage::fillCombo()
@@ -332,21 +305,23 @@ void StationPage::fillCombo()
     const QSignalBlocker block(m_profiles);
     m_profiles->clear();
     auto* model = qobject_cast<QStandardItemModel*>(m_profiles->model());
-    const QString star = m_dirty ? QStringLiteral(" *") : QString();
+    const QString star = m_doc.isDirty() ? QStringLiteral(" *") : QString();
+    const trainer::StationProfile& profile = m_doc.profile();
+    const bool unsaved = m_doc.origin() == ProfileDocument::Origin::Unsaved;
     int current = -1;
-    if (m_origin == Origin::Unsaved) {
-        const QString name = m_profile.name.isEmpty() ? tr("(no name)") : m_profile.name;
+    if (unsaved) {
+        const QString name = profile.name.isEmpty() ? tr("(no name)") : profile.name;
         m_profiles->addItem(tr("%1 (not saved)").arg(name) + star);
-        m_profiles->setItemData(0, m_profile.name, kNameRole);
+        m_profiles->setItemData(0, profile.name, kNameRole);
         m_profiles->setItemData(0, false, kStoredRole);
         m_profiles->setItemData(0, tr("This profile is not saved yet"), Qt::ToolTipRole);
         current = 0;
     }
-    for (const trainer::StoredProfile& s : m_stored) {
+    for (const trainer::StoredProfile& s : m_doc.stored()) {
         QString text = s.name;
         if (!s.readable) text = tr("%1 (unreadable)").arg(s.name);
         else if (s.shipped) text = tr("%1 (shipped)").arg(s.name);
-        const bool isCurrent = m_origin != Origin::Unsaved && s.readable && s.name == m_storedName;
+        const bool isCurrent = !unsaved && s.readable && s.name == m_doc.storedName();
         if (isCurrent) text += star;
         const int i = m_profiles->count();
         m_profiles->addItem(text);
@@ -366,34 +341,27 @@ void StationPage::profileActivated(int index)
 {
     if (index < 0 || !m_profiles->itemData(index, kStoredRole).toBool()) return;
     const QString name = m_profiles->itemData(index, kNameRole).toString();
-    if (m_origin != Origin::Unsaved && name == m_storedName && !m_dirty) return;
+    if (m_doc.origin() != ProfileDocument::Origin::Unsaved && name == m_doc.storedName() && !m_doc.isDirty()) return;
     if (!loadProfile(name)) fillCombo();
 }
 
 // ---- the profile ---------------------------------------------------------------
 
-void StationPage::setCurrent(const trainer::StationProfile& profile, Origin origin, const QString& storedName,
-                             bool dirty)
+void StationPage::showCurrent(bool wasDirty)
 {
-    m_profile = profile;
-    m_origin = origin;
-    m_storedName = storedName;
-    m_storedTime = origin == Origin::User ? QFileInfo(userFile(storedName)).lastModified() : QDateTime();
+    const trainer::StationProfile& profile = m_doc.profile();
     m_mappings->setProfile(profile);
     m_description->setText(profile.description);
     m_description->setVisible(!profile.description.isEmpty());
-    const bool was = m_dirty;
-    m_dirty = dirty;
     fillCombo();
-    if (was != dirty) emit dirtyChanged(dirty);
+    if (wasDirty != m_doc.isDirty()) emit dirtyChanged(m_doc.isDirty());
     updateButtons();
     install(false);
 }
 
 void StationPage::setDirty(bool dirty)
 {
-    if (m_dirty == dirty) return;
-    m_dirty = dirty;
+    if (!m_doc.setDirty(dirty)) return;
     fillCombo();
     updateButtons();
     emit dirtyChanged(dirty);
@@ -401,22 +369,22 @@ void StationPage::setDirty(bool dirty)
 
 void StationPage::install(bool keepBank)
 {
-    const trainer::StationProfile p = m_profile;
+    const trainer::StationProfile p = m_doc.profile();
     const int bank = keepBank && m_state ? m_state->activeBank : 0;
     if (m_station)
         m_station->post([p, bank](trainer::StationEngine& e) {
             e.setProfile(p);
             if (bank > 0) e.selectBank(bank);
         });
-    emit profileChanged(m_profile);
+    emit profileChanged(m_doc.profile());
     refresh();
 }
 
 bool StationPage::maybeDiscard()
 {
-    if (!m_dirty) return true;
+    if (!m_doc.isDirty()) return true;
     return ask(tr("Unsaved changes"),
-               tr("The profile “%1” has changes that are not saved. Discard them?").arg(m_profile.name));
+               tr("The profile “%1” has changes that are not saved. Discard them?").arg(m_doc.profile().name));
 }
 
 QString StationPage::lastError() const
@@ -443,20 +411,15 @@ bool StationPage::loadProfile(const QString& name)
 
 bool StationPage::loadStored(const QString& name)
 {
-    trainer::StationProfile p;
-    QList<trainer::ProfileIssue> issues;
-    listProfiles();
-    if (!m_store.load(m_modelPath, name, p, issues)) {
-        QStringList lines;
-        for (const trainer::ProfileIssue& i : issues) lines << i.text();
-        showError(tr("Cannot open the profile “%1”: %2").arg(name, lines.join(QStringLiteral("; "))));
+    const bool was = m_doc.isDirty();
+    QString error;
+    if (!m_doc.open(name, &error)) {
+        showError(error);
         fillCombo();
         return false;
     }
-    const auto s = std::find_if(m_stored.begin(), m_stored.end(),
-                                [&](const trainer::StoredProfile& s) { return s.name == name; });
     clearError();
-    setCurrent(p, s != m_stored.end() && s->shipped ? Origin::Shipped : Origin::User, name, false);
+    showCurrent(was);
     return true;
 }
 
@@ -466,30 +429,22 @@ bool StationPage::newProfile(const QString& nameIn)
     QString name = nameIn.trimmed();
     if (name.isEmpty()) name = askText(tr("New profile"), tr("Name of the new profile:"), tr("New profile")).trimmed();
     if (name.isEmpty()) return false;
-    trainer::StationProfile p;
-    p.name = name;
-    p.model = trainer::ProfileStore::modelKey(m_modelPath);
-    p.banks.append(trainer::Bank{tr("Bank 1"), {}, {}});
+    const bool was = m_doc.isDirty();
+    m_doc.makeNew(name, tr("Bank 1"));
     clearError();
-    setCurrent(p, Origin::Unsaved, {}, true);
+    showCurrent(was);
     return true;
 }
 
 bool StationPage::save()
 {
-    if (m_origin == Origin::User && m_profile.name == m_storedName) {
-        // its own file, unless someone else changed it meanwhile
-        const QFileInfo file(userFile(m_storedName));
-        const bool untouched = file.exists() && file.lastModified() == m_storedTime;
-        return saveUnder(m_profile.name, !untouched);
-    }
-    return saveUnder(m_profile.name, true);
+    return saveUnder(m_doc.profile().name, m_doc.saveMustAsk());
 }
 
 bool StationPage::saveAs(const QString& nameIn)
 {
     QString name = nameIn.trimmed();
-    if (name.isEmpty()) name = askText(tr("Save profile as"), tr("Name of the profile:"), m_profile.name).trimmed();
+    if (name.isEmpty()) name = askText(tr("Save profile as"), tr("Name of the profile:"), m_doc.profile().name).trimmed();
     if (name.isEmpty()) return false;
     return saveUnder(name, true);
 }
@@ -501,53 +456,40 @@ bool StationPage::saveUnder(const QString& nameIn, bool askBeforeReplacing)
         showError(tr("A profile needs a name."));
         return false;
     }
-    trainer::StationProfile p = m_profile;
-    p.name = name;
-    p.model = trainer::ProfileStore::modelKey(m_modelPath);
-    const QString path = userFile(name);
-    auto mode = trainer::ProfileStore::SaveMode::CreateOnly;
-    if (QFileInfo::exists(path)) {
-        if (askBeforeReplacing &&
-            !ask(tr("Replace profile"),
-                 tr("A profile named “%1” exists already for this model. Replace it?").arg(name)))
-            return false;
-        mode = trainer::ProfileStore::SaveMode::Overwrite;
-    }
+    const bool replacing = m_doc.exists(name);
+    if (replacing && askBeforeReplacing &&
+        !ask(tr("Replace profile"), tr("A profile named “%1” exists already for this model. Replace it?").arg(name)))
+        return false;
     QString error;
-    if (!m_store.save(m_modelPath, p, mode, &error)) {
+    if (!m_doc.saveUnder(name, replacing, &error)) {
         showError(tr("Cannot save the profile: %1").arg(error));
         tell(tr("Save profile"), error);
         return false;
     }
-    listProfiles();
-    m_profile = p;
-    m_origin = Origin::User;
-    m_storedName = name;
-    m_storedTime = QFileInfo(path).lastModified();
     clearError();
-    if (m_dirty) {
+    if (m_doc.isDirty()) {
         setDirty(false);
     } else {
         fillCombo();
         updateButtons();
     }
-    emit profileChanged(m_profile);
+    emit profileChanged(m_doc.profile());
     return true;
 }
 
 bool StationPage::deleteProfile()
 {
-    if (m_origin != Origin::User) return false;
-    const QString name = m_storedName;
+    if (m_doc.origin() != ProfileDocument::Origin::User) return false;
+    const QString name = m_doc.storedName();
     if (!ask(tr("Delete profile"), tr("Delete the profile “%1”? This cannot be undone.").arg(name))) return false;
     QString error;
-    if (!m_store.remove(m_modelPath, name, &error)) {
+    if (!m_doc.remove(&error)) {
         showError(tr("Cannot delete the profile: %1").arg(error));
         tell(tr("Delete profile"), error);
         return false;
     }
     // the shipped profile it replaced, else the first one, else the default
-    setModel(m_modelPath, m_drives, name);
+    setModel(m_doc.modelPath(), m_drives, name);
     return true;
 }
 
@@ -557,18 +499,13 @@ bool StationPage::importProfile(const QString& fileIn)
         fileIn.isEmpty() ? askOpenFile(tr("Import station profile"), tr("Station profiles (*.json);;All files (*)"))
                          : fileIn;
     if (file.isEmpty()) return false;
-    QList<trainer::ProfileIssue> issues;
-    const QString name = m_store.importFile(file, m_modelPath, issues);
+    QString message;
+    const QString name = m_doc.importFile(file, &message);
     if (name.isEmpty()) {
-        QStringList lines;
-        for (const trainer::ProfileIssue& i : issues) lines << i.text();
-        const QString message =
-            tr("Cannot import %1: %2").arg(QFileInfo(file).fileName(), lines.join(QStringLiteral("; ")));
         showError(message);
         tell(tr("Import profile"), message);
         return false;
     }
-    listProfiles();
     fillCombo();
     if (!maybeDiscard()) return true;  // imported, the edits stay on screen
     return loadStored(name);
@@ -578,7 +515,7 @@ bool StationPage::exportProfile(const QString& fileIn)
 {
     const QString file =
         fileIn.isEmpty() ? askSaveFile(tr("Export station profile"), tr("Station profiles (*.json)"),
-                                       trainer::ProfileStore::fileNameFor(m_profile.name))
+                                       trainer::ProfileStore::fileNameFor(m_doc.profile().name))
                          : fileIn;
     if (file.isEmpty()) return false;
     bool overwrite = false;
@@ -586,10 +523,8 @@ bool StationPage::exportProfile(const QString& fileIn)
         if (!ask(tr("Export profile"), tr("%1 exists already. Replace it?").arg(file))) return false;
         overwrite = true;
     }
-    trainer::StationProfile p = m_profile;
-    p.model = trainer::ProfileStore::modelKey(m_modelPath);
     QString error;
-    if (!trainer::ProfileStore::exportFile(p, file, overwrite, &error)) {
+    if (!m_doc.exportTo(file, overwrite, &error)) {
         showError(tr("Cannot export the profile: %1").arg(error));
         tell(tr("Export profile"), error);
         return false;
@@ -599,7 +534,7 @@ bool StationPage::exportProfile(const QString& fileIn)
 
 void StationPage::mappingEdited()
 {
-    m_mappings->writeTo(m_profile);
+    m_mappings->writeTo(m_doc.edit());
     setDirty(true);
     install(true);
 }
@@ -618,16 +553,16 @@ bool StationPage::addSerialConsole(const trainer::DeviceSetting& settingIn)
         tell(tr("Add serial console"), tr("“%1” is not a serial port (serial:/dev/…)").arg(setting.id));
         return false;
     }
-    const auto same = std::find_if(m_profile.devices.begin(), m_profile.devices.end(),
+    const auto same = std::find_if(m_doc.edit().devices.begin(), m_doc.edit().devices.end(),
                                    [&](const trainer::DeviceSetting& d) { return d.id == setting.id; });
-    if (same != m_profile.devices.end()) {
+    if (same != m_doc.edit().devices.end()) {
         if (*same == setting) return true;
         // another baud rate: the device is opened again
-        m_profile.devices.erase(same);
-        const trainer::StationProfile p = m_profile;
+        m_doc.edit().devices.erase(same);
+        const trainer::StationProfile p = m_doc.edit();
         if (m_station) m_station->post([p](trainer::StationEngine& e) { e.setProfile(p); });
     }
-    m_profile.devices.append(setting);
+    m_doc.edit().devices.append(setting);
     setDirty(true);
     install(true);
     selectDevice(setting.id);
@@ -637,10 +572,10 @@ bool StationPage::addSerialConsole(const trainer::DeviceSetting& settingIn)
 bool StationPage::removeSelectedDevice()
 {
     if (m_selectedReplay) return false;
-    const auto it = std::find_if(m_profile.devices.begin(), m_profile.devices.end(),
+    const auto it = std::find_if(m_doc.edit().devices.begin(), m_doc.edit().devices.end(),
                                  [&](const trainer::DeviceSetting& d) { return d.id == m_selectedId; });
-    if (it == m_profile.devices.end()) return false;
-    m_profile.devices.erase(it);
+    if (it == m_doc.edit().devices.end()) return false;
+    m_doc.edit().devices.erase(it);
     setDirty(true);
     install(true);
     return true;
@@ -659,7 +594,7 @@ void StationPage::selectDevice(const QString& id, bool replay)
                 m_devices->setCurrentItem(item);
         }
     }
-    m_channels->setDevice(m_state ? findDevice(*m_state, id, replay) : nullptr, m_profile);
+    m_channels->setDevice(m_state ? findDevice(*m_state, id, replay) : nullptr, m_doc.edit());
     updateButtons();
 }
 
@@ -746,19 +681,19 @@ CalibrationWizard* StationPage::calibrate(int axis)
     const trainer::DeviceState* d = m_state ? findDevice(*m_state, m_selectedId, m_selectedReplay) : nullptr;
     if (!d || axis < 0 || axis >= d->info.axes.size()) return nullptr;
     if (m_wizard) m_wizard->close();
-    auto* wizard = new CalibrationWizard(m_station, d->info, d->replay, axis, channelCalibration(m_profile, d->info, axis),
-                                         calibrationKey(m_profile, d->info, axis), this);
+    auto* wizard = new CalibrationWizard(m_station, d->info, d->replay, axis, channelCalibration(m_doc.edit(), d->info, axis),
+                                         calibrationKey(m_doc.edit(), d->info, axis), this);
     wizard->setAttribute(Qt::WA_DeleteOnClose);
     const QString id = d->info.id;
     connect(wizard, &CalibrationWizard::calibrationReady, this,
             [this, id](const QString& match, int a, const trainer::ChannelCalibration& c) {
                 // kept for "any gamepad": this device's own entry would still win over it
                 if (match != id) {
-                    const auto before = m_profile.calibrations.size();
-                    m_profile.calibrations.removeIf(
+                    const auto before = m_doc.edit().calibrations.size();
+                    m_doc.edit().calibrations.removeIf(
                         [&](const trainer::CalibrationEntry& entry) { return entry.device == id && entry.axis == a; });
-                    if (m_profile.calibrations.size() != before) {
-                        m_profile.setCalibration(match, a, c);
+                    if (m_doc.edit().calibrations.size() != before) {
+                        m_doc.edit().setCalibration(match, a, c);
                         setDirty(true);
                         install(true);
                         return;
@@ -778,13 +713,13 @@ CalibrationWizard* StationPage::calibrate(int axis)
 
 void StationPage::applyCalibration(const QString& deviceMatch, int axis, const trainer::ChannelCalibration& calibration)
 {
-    m_profile.setCalibration(deviceMatch, axis, calibration);
+    m_doc.edit().setCalibration(deviceMatch, axis, calibration);
     setDirty(true);
     if (m_station)
         m_station->post([deviceMatch, axis, calibration](trainer::StationEngine& e) {
             e.setCalibration(deviceMatch, axis, calibration);
         });
-    emit profileChanged(m_profile);
+    emit profileChanged(m_doc.edit());
     refresh();
 }
 
@@ -799,7 +734,7 @@ void StationPage::refresh()
         showDevices(*m_state);
         m_mappings->showState(*m_state);
     } else {
-        showIssues(m_profile.check(m_drives));
+        showIssues(m_doc.profile().check(m_drives));
         showBanner(trainer::StationState{});
     }
     QStringList activity;
@@ -920,15 +855,15 @@ void StationPage::showDevices(const trainer::StationState& state)
                                                : QString());
     }
     m_deviceDetail->setVisible(!detail.isEmpty());
-    m_channels->setDevice(selected, m_profile);
+    m_channels->setDevice(selected, m_doc.edit());
     updateButtons();
 }
 
 void StationPage::updateButtons()
 {
-    m_save->setEnabled(m_dirty || m_origin != Origin::User);
-    m_delete->setEnabled(m_origin == Origin::User);
-    const bool inProfile = !m_selectedReplay && std::any_of(m_profile.devices.begin(), m_profile.devices.end(),
+    m_save->setEnabled(m_doc.isDirty() || m_doc.origin() != ProfileDocument::Origin::User);
+    m_delete->setEnabled(m_doc.origin() == ProfileDocument::Origin::User);
+    const bool inProfile = !m_selectedReplay && std::any_of(m_doc.edit().devices.begin(), m_doc.edit().devices.end(),
                                                             [&](const trainer::DeviceSetting& d) {
                                                                 return d.id == m_selectedId;
                                                             });

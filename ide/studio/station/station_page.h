@@ -32,6 +32,7 @@
 // askText(), askOpenFile(), askSaveFile(), askSerialConsole(), tell()) that show
 // dialogs; tests override them with scripted answers.
 
+#include "ide/studio/station/profile_document.h"
 #include "trainer/station/profile_store.h"
 #include "trainer/station/station.h"
 #include "ide/i18n/texts.h"
@@ -79,27 +80,27 @@ public:
 
     /// Where user profiles are kept (the default: under the user's configuration).
     void setProfileStore(const trainer::ProfileStore& store);
-    const trainer::ProfileStore& profileStore() const { return m_store; }
+    const trainer::ProfileStore& profileStore() const { return m_doc.store(); }
 
     /// The model whose profiles are listed (profiles are per model file) and its drives.
     /// Loads `preferred` when it can, else the first readable profile, else the model's
     /// default profile (StationProfile::defaultFor, not saved). Unsaved edits of the
     /// previous profile are dropped: ask first (maybeDiscard()).
     void setModel(const QString& modelPath, const QList<trainer::DriveInfo>& drives, const QString& preferred = {});
-    QString modelPath() const { return m_modelPath; }
+    QString modelPath() const { return m_doc.modelPath(); }
     /// The same model with new drives (re-applied after an edit): the profile stays,
     /// unsaved edits too, and is installed again.
     void setDrives(const QList<trainer::DriveInfo>& drives);
     const QList<trainer::DriveInfo>& drives() const { return m_drives; }
 
     // ---- the profile
-    const trainer::StationProfile& profile() const { return m_profile; }
-    bool isDirty() const { return m_dirty; }
+    const trainer::StationProfile& profile() const { return m_doc.profile(); }
+    bool isDirty() const { return m_doc.isDirty(); }
     /// The profile came from (or was saved to) the user's folder / ships with the model.
-    bool isUserProfile() const { return m_origin == Origin::User; }
-    bool isShippedProfile() const { return m_origin == Origin::Shipped; }
+    bool isUserProfile() const { return m_doc.origin() == ProfileDocument::Origin::User; }
+    bool isShippedProfile() const { return m_doc.origin() == ProfileDocument::Origin::Shipped; }
     /// The model's profiles as the combo lists them.
-    const QList<trainer::StoredProfile>& storedProfiles() const { return m_stored; }
+    const QList<trainer::StoredProfile>& storedProfiles() const { return m_doc.stored(); }
     /// The last error of loading, saving, importing or exporting ("" none; cleared by
     /// the next success).
     QString lastError() const;
@@ -194,20 +195,18 @@ protected:
     void changeEvent(QEvent* event) override;
 
 private:
-    enum class Origin { Unsaved, User, Shipped };
-
     void retranslate();
     void buildProfileBar(QVBoxLayout* layout);
     QWidget* buildDevices(QWidget* parent);
-    void setCurrent(const trainer::StationProfile& profile, Origin origin, const QString& storedName, bool dirty);
+    /// Shows the document's profile as the current one (mapping, description, combo,
+    /// buttons) and installs it; `wasDirty`: before it changed (dirtyChanged()).
+    void showCurrent(bool wasDirty);
     void setDirty(bool dirty);
     void install(bool keepBank);
-    void listProfiles();
     void fillCombo();
     void profileActivated(int index);
     bool loadStored(const QString& name);
     bool saveUnder(const QString& name, bool askBeforeReplacing);
-    QString userFile(const QString& name) const;
     void showError(const QString& text);
     void clearError();
     void mappingEdited();
@@ -217,16 +216,8 @@ private:
     void updateButtons();
 
     QPointer<trainer::Station> m_station;
-    trainer::ProfileStore m_store;
-    QString m_modelPath;
     QList<trainer::DriveInfo> m_drives;
-    QList<trainer::StoredProfile> m_stored;
-
-    trainer::StationProfile m_profile;
-    Origin m_origin = Origin::Unsaved;
-    QString m_storedName;   ///< the name it is stored under (User, Shipped)
-    QDateTime m_storedTime; ///< the user file's time when read or written
-    bool m_dirty = false;
+    ProfileDocument m_doc;  ///< the profile edited, its origin and its files
 
     std::shared_ptr<const trainer::StationState> m_state;
     QString m_selectedId;
