@@ -1,5 +1,8 @@
 #include "ide/studio/centre/train_station.h"
 
+#include "ide/i18n/language.h"
+#include "ide/studio/train/train_page.h"
+
 #include "trainer/training/faults.h"
 
 #include <QCoreApplication>
@@ -35,7 +38,7 @@ class PageHost : public TrainStation::Host {
 public:
     explicit PageHost(TrainPage* page) : m_page(page), m_runner(page->runner()) {}
     std::vector<std::shared_ptr<const trainer::Tutorial>> tutorials() const override { return m_page->tutorials(); }
-    QString language() const override { return TrainPage::language(); }
+    QString language() const override { return i18n::current(); }
     std::shared_ptr<const TrainFrame> attemptFrame() const override
     {
         if (!m_page->attemptLive()) return nullptr;
@@ -56,7 +59,7 @@ public:
     {
         m_page->runner()->runInSession(std::move(task), std::move(done), generation);
     }
-    void setLink(TrainPage::CentreLink link, const QString& name, const QString& detail) override
+    void setLink(CentreLink link, const QString& name, const QString& detail) override
     {
         m_page->setCentreLink(link, name, detail);
     }
@@ -108,10 +111,10 @@ TrainStation::TrainStation(Host* host, TrainStationOptions options, QObject* par
     m_bus = Bus::open(net, &busError);
     if (!m_bus) {
         m_problem = busError.isEmpty() ? tr("DDS refused to join the domain") : busError;
-        m_host->setLink(TrainPage::CentreLink::Failed, m_o.name, m_problem);
+        m_host->setLink(CentreLink::Failed, m_o.name, m_problem);
         return;
     }
-    m_host->setLink(m_hasKey ? TrainPage::CentreLink::Online : TrainPage::CentreLink::NoKey, m_o.name, m_problem);
+    m_host->setLink(m_hasKey ? CentreLink::Online : CentreLink::NoKey, m_o.name, m_problem);
     m_announce.node = m_o.name.toStdString();
     m_announce.role = "station";
     m_announce.host = QSysInfo::machineHostName().toStdString();

@@ -21,7 +21,7 @@
 // may give its own). Everything but the state's publisher runs in the GUI thread; DDS
 // writes never wait.
 
-#include "ide/studio/train/train_page.h"
+#include "ide/studio/train/centre_link.h"
 #include "ide/studio/train/tutorial_runner.h"
 #include "trainer/centre/bus.h"
 #include "trainer/centre/signing.h"
@@ -41,7 +41,13 @@
 
 class QTimer;
 
+namespace trainer {
+struct Tutorial;
+}  // namespace trainer
+
 namespace studio {
+
+class TrainPage;
 
 struct TrainStationOptions {
     QString name;     ///< the station's node name, unique in the centre
@@ -74,7 +80,7 @@ public:
         virtual void stopAttempt() = 0;
         virtual void runInSession(TutorialRunner::SessionTask task,
                                   std::function<void(bool, const QString&)> done, long generation) = 0;
-        virtual void setLink(TrainPage::CentreLink link, const QString& name, const QString& detail) = 0;
+        virtual void setLink(CentreLink link, const QString& name, const QString& detail) = 0;
     };
 
     /// Opens the bus and loads the key (a failure is shown by the host, never fatal),

@@ -47,6 +47,7 @@
 // The page owns no thread: the TutorialRunner (owned by MainWindow, whose station
 // writes its commands during an attempt) runs the sessions.
 
+#include "ide/studio/train/centre_link.h"
 #include "ide/studio/model/model_bundle.h"
 #include "trainer/input/input_log.h"
 #include "trainer/records/records_db.h"
@@ -220,7 +221,6 @@ public:
     /// when the tutorial is unknown or cannot start.
     bool startAttemptFor(const QString& id, const QString& operatorCode);
     /// What the network indicator says (the attempt's bar and the course screen).
-    enum class CentreLink { Off, Online, NoKey, Failed };
     /// `name`: the station's name; `detail`: why it failed (translated), or the
     /// instructor who paused the attempt.
     void setCentreLink(CentreLink link, const QString& name, const QString& detail = {});
