@@ -1,4 +1,5 @@
 #include "trainer/records/records_db.h"
+#include "trainer/io/user_folders.h"
 
 #include "solver/core/output_file.h"
 #include "trainer/io/read_file.h"
@@ -13,7 +14,6 @@
 #include <QSqlDatabase>
 #include <QSqlError>
 #include <QSqlQuery>
-#include <QStandardPaths>
 #include <QThread>
 #include <QUrl>
 #include <QUuid>
@@ -743,7 +743,7 @@ RecordsDb::~RecordsDb()
 
 QString RecordsDb::defaultSqlitePath()
 {
-    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/records.sqlite";
+    return userFolders::recordsDatabase();
 }
 
 int RecordsDb::schemaVersion()

@@ -1,4 +1,5 @@
 #include "trainer/station/profile_store.h"
+#include "trainer/io/user_folders.h"
 
 #include "trainer/io/read_file.h"
 
@@ -9,7 +10,6 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QStandardPaths>
 
 #include <algorithm>
 
@@ -60,7 +60,7 @@ ProfileStore::ProfileStore(QString root) : m_root(root.isEmpty() ? defaultRoot()
 
 QString ProfileStore::defaultRoot()
 {
-    return QStandardPaths::writableLocation(QStandardPaths::AppConfigLocation) + "/station-profiles";
+    return userFolders::stationProfiles();
 }
 
 QString ProfileStore::modelKey(const QString& modelPath)

@@ -1,4 +1,5 @@
 #include "ide/studio/editor/model_document.h"
+#include "trainer/io/user_folders.h"
 
 #include "solver/pipeline.h"
 
@@ -13,7 +14,6 @@
 #include <QJsonObject>
 #include <QPlainTextDocumentLayout>
 #include <QSaveFile>
-#include <QStandardPaths>
 #include <QStringDecoder>
 #include <QTextCursor>
 #include <QTextDocument>
@@ -324,7 +324,7 @@ void ModelDocument::checkDisk()
 
 QString ModelDocument::recoveryDirectory()
 {
-    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/recovery");
+    return trainer::userFolders::recovery();
 }
 
 QString ModelDocument::recoveryBaseName() const

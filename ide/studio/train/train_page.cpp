@@ -1,4 +1,5 @@
 #include "ide/studio/train/train_page.h"
+#include "trainer/io/user_folders.h"
 
 #include "ide/i18n/language.h"
 #include "ide/paths/paths.h"
@@ -43,7 +44,6 @@
 #include <QShortcut>
 #include <QSlider>
 #include <QSplitter>
-#include <QStandardPaths>
 #include <QStackedWidget>
 #include <QTableWidget>
 #include <QThread>
@@ -73,17 +73,6 @@ constexpr qint64 kLogEveryMs = 500;  // events to the records this often during 
 
 QString guestCode() { return QStringLiteral("guest"); }
 
-/// Where attempts the records refused wait to be imported.
-QString pendingFolder()
-{
-    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/pending-attempts");
-}
-
-/// Where the operator's input of each live attempt is recorded.
-QString recordingsFolder()
-{
-    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/attempt-input");
-}
 constexpr int kKeptRecordings = 20;  // older recordings are deleted
 
 /// The station profile saved beside an input log.
@@ -187,7 +176,7 @@ void TrainPage::openRecords(const QString& path)
     }
     m_db = std::move(db);
     QString importError;
-    m_imported = trainer::AttemptLog::importPending(*m_db, pendingFolder(), &importError);
+    m_imported = trainer::AttemptLog::importPending(*m_db, trainer::userFolders::pendingAttempts(), &importError);
     if (!importError.isEmpty()) m_recordsProblem = importError;
 }
 
@@ -650,8 +639,7 @@ void TrainPage::fillStart()
 
 QString TrainPage::userDemonstrationPath(const QString& tutorialId)
 {
-    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/demonstrations/") +
-           tutorialId + QStringLiteral(".demo.log");
+    return trainer::userFolders::demonstrations() + QLatin1Char('/') + tutorialId + QStringLiteral(".demo.log");
 }
 
 void TrainPage::loadDemonstration(const trainer::Tutorial& t)
@@ -751,7 +739,7 @@ void TrainPage::useShippedDemonstration()
 bool TrainPage::startRecording(const trainer::Tutorial& t)
 {
     if (!m_station || m_recorder) return false;
-    QDir dir(recordingsFolder());
+    QDir dir(trainer::userFolders::attemptInput());
     dir.mkpath(".");
     // keep the newest few
     const QFileInfoList old = dir.entryInfoList({"*.log"}, QDir::Files, QDir::Time);
@@ -1085,7 +1073,7 @@ void TrainPage::startAttempt(std::shared_ptr<const trainer::InputLog> drive)
     m_attemptLog.reset();
     m_attemptTutorial = t;
     const QString code = m_operator.isEmpty() ? guestCode() : m_operator;
-    m_attemptLog = std::make_unique<trainer::AttemptLog>(m_db.get(), pendingFolder(), code,
+    m_attemptLog = std::make_unique<trainer::AttemptLog>(m_db.get(), trainer::userFolders::pendingAttempts(), code,
                                                          m_operator.isEmpty() ? tr("Guest") : code, *t, language());
     m_lastLogUpdate = QDateTime::currentMSecsSinceEpoch();
     m_shownStep = -1;
