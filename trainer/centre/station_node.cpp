@@ -13,7 +13,6 @@
 #include <QSysInfo>
 
 #include <chrono>
-#include <cmath>
 #include <thread>
 
 namespace trainer::centre {

@@ -1,8 +1,8 @@
 #include "trainer/records/records_db.h"
-#include "trainer/io/user_folders.h"
 
 #include "solver/core/output_file.h"
 #include "trainer/io/read_file.h"
+#include "trainer/io/user_folders.h"
 
 #include <QCoreApplication>
 #include <QDir>

@@ -1,7 +1,7 @@
 #include "trainer/station/profile_store.h"
-#include "trainer/io/user_folders.h"
 
 #include "trainer/io/read_file.h"
+#include "trainer/io/user_folders.h"
 
 #include "solver/core/output_file.h"
 

@@ -2,7 +2,6 @@
 
 #include "ide/i18n/language.h"
 #include "ide/studio/train/train_page.h"
-
 #include "trainer/training/faults.h"
 
 #include <QCoreApplication>
@@ -10,13 +9,10 @@
 #include <QDateTime>
 #include <QFile>
 #include <QFileInfo>
-#include <QStringList>
 #include <QSysInfo>
 #include <QTimer>
 
 #include <chrono>
-#include <cmath>
-#include <limits>
 
 namespace studio {
 
@@ -344,17 +340,17 @@ void TrainStation::handle(const Command& c)
             else if (!all.empty()) p.tutorial = all.front()->spec.id;
         }
         bool done = false;
-        if (!findTutorial(p.tutorial)) {
-            done = false;
-        } else if (m_host->attemptFrame()) {
-            // the attempt on now ends first (aborted, recorded as the trainee's Stop
-            // does), then the new one starts (tick())
-            if (attemptOn(st)) m_host->stopAttempt();
-            m_pending = p;
-            done = true;
-        } else {
-            m_pending.reset();
-            done = doStart(p);
+        if (findTutorial(p.tutorial)) {
+            if (m_host->attemptFrame()) {
+                // the attempt on now ends first (aborted, recorded as the trainee's Stop
+                // does), then the new one starts (tick())
+                if (attemptOn(st)) m_host->stopAttempt();
+                m_pending = p;
+                done = true;
+            } else {
+                m_pending.reset();
+                done = doStart(p);
+            }
         }
         reply(c, done, done ? kDone : key(Refusal::UnknownTutorial));
         return;

@@ -1,7 +1,7 @@
 #include "ide/studio/editor/model_document.h"
-#include "trainer/io/user_folders.h"
 
 #include "solver/pipeline.h"
+#include "trainer/io/user_folders.h"
 
 #include <QCoreApplication>
 #include <QCryptographicHash>

@@ -208,7 +208,7 @@ private:
     {
         return m_epoch + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(wall));
     }
-    /// The wall time at which the end of step k is due [s since m_epoch].
+    /// The pacing of a run with step `h`, on this thread's clock (now()).
     trainer::PacedLoop makePacer(double h)
     {
         trainer::PacedLoopOptions o;

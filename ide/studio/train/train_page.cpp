@@ -1,5 +1,4 @@
 #include "ide/studio/train/train_page.h"
-#include "trainer/io/user_folders.h"
 
 #include "ide/i18n/language.h"
 #include "ide/paths/paths.h"
@@ -7,6 +6,7 @@
 #include "ide/studio/train/records_view.h"
 #include "ide/studio/train/tutorial_runner.h"
 #include "ide/studio/view/viewport.h"
+#include "trainer/io/user_folders.h"
 #include "trainer/station/station.h"
 #include "trainer/training/attempt_log.h"
 
