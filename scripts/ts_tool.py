@@ -9,6 +9,11 @@
                                        translation is its source (plurals: singular
                                        with %n → 1 form, the source as the other)
   ts_tool.py stats TS                  finished / unfinished / obsolete per context
+  ts_tool.py carry TS OLD_TS CONTEXT...
+                                       after code moved between classes: fills each
+                                       unfinished message of TS with the translation its
+                                       source had in OLD_TS (a copy taken before
+                                       lupdate) in the first of the CONTEXTs that has it
 
 The test suite's check (tests/i18n) does not use this script: it runs lupdate and
 reads the catalogues itself.
@@ -133,6 +138,30 @@ def stats(path):
         print(f"{c['finished']:5d} {c['unfinished']:5d} {c['obsolete']:5d}  {ctx}")
 
 
+def carry(path, old_path, contexts):
+    old = {}
+    for ctx, m in messages(load(old_path)):
+        tr = m.find('translation')
+        if ctx not in contexts or tr is None or tr.get('type') is not None:
+            continue
+        forms = [f.text or '' for f in tr.findall('numerusform')]
+        old.setdefault(source(m), {})[ctx] = forms if is_numerus(m) else (tr.text or '')
+    tree = load(path)
+    filled = 0
+    for ctx, m in messages(tree):
+        tr = m.find('translation')
+        if tr is not None and tr.get('type') != 'unfinished':
+            continue
+        found = old.get(source(m), {})
+        for c in contexts:
+            if c in found and found[c] not in ('', []):
+                set_translation(m, found[c])
+                filled += 1
+                break
+    save(tree, path)
+    print(f'{path}: {filled} translations carried from {old_path}', file=sys.stderr)
+
+
 def main(argv):
     if len(argv) < 3:
         print(__doc__)
@@ -146,6 +175,8 @@ def main(argv):
         english(path)
     elif cmd == 'stats':
         stats(path)
+    elif cmd == 'carry' and len(argv) > 4:
+        carry(path, argv[3], argv[4:])
     else:
         print(__doc__)
         return 2

@@ -2815,7 +2815,7 @@
 <context>
     <name>StationNode</name>
     <message>
-        <location filename="../trainer/centre/station_node.cpp" line="+42" />
+        <location filename="../trainer/centre/station_node.cpp" line="+41" />
         <source>A station needs at least one tutorial to run.</source>
         <translation>A station needs at least one tutorial to run.</translation>
     </message>
@@ -6502,6 +6502,104 @@ never the .key files of the CAs; then run it with --security DIR.
     </message>
 </context>
 <context>
+    <name>studio::AttemptScreen</name>
+    <message>
+        <location filename="../ide/studio/train/attempt_screen.cpp" line="+154" />
+        <source>Esc or Stop ends the attempt.</source>
+        <translation>Esc or Stop ends the attempt.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Show the expert</source>
+        <translation>Show the expert</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The demonstration runs beside the attempt, drawn translucent.</source>
+        <translation>The demonstration runs beside the attempt, drawn translucent.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Hydraulics</source>
+        <translation>Hydraulics</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The pump, the spools and the chamber pressures beside the view.</source>
+        <translation>The pump, the spools and the chamber pressures beside the view.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>View:</source>
+        <translation>View:</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Stop</source>
+        <translation>Stop</translation>
+    </message>
+    <message>
+        <location line="+93" />
+        <source>Goal %1 of %2</source>
+        <translation>Goal %1 of %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Distance: %1 m</source>
+        <translation>Distance: %1 m</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Hold: %1 of %2 s</source>
+        <translation>Hold: %1 of %2 s</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>All goals done</source>
+        <translation>All goals done</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Time: %1 / %2 s</source>
+        <translation>Time: %1 / %2 s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Penalties: %1</source>
+        <translation>Penalties: %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Load in the claws</source>
+        <translation>Load in the claws</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</source>
+        <translation>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Paused by the instructor</source>
+        <translation>Paused by the instructor</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Overload: a relief valve is open</source>
+        <translation>Overload: a relief valve is open</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Too close to a worker (%1 m)</source>
+        <translation>Too close to a worker (%1 m)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Clearance %1 m</source>
+        <translation>Clearance %1 m</translation>
+    </message>
+</context>
+<context>
     <name>studio::CalibrationWizard</name>
     <message>
         <location filename="../ide/studio/station/calibration_wizard.cpp" line="+70" />
@@ -6838,11 +6936,206 @@ never the .key files of the CAs; then run it with --security DIR.
     </message>
 </context>
 <context>
+    <name>studio::CourseScreen</name>
+    <message>
+        <location filename="../ide/studio/train/course_screen.cpp" line="+25" />
+        <source>Training course</source>
+        <translation>Training course</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>Operator:</source>
+        <translation>Operator:</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>name or number</source>
+        <translation>name or number</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Records</source>
+        <translation>Records</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The trainee records: operators, attempts, progress (for the trainer).</source>
+        <translation>The trainee records: operators, attempts, progress (for the trainer).</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>Open</source>
+        <translation>Open</translation>
+    </message>
+    <message>
+        <location line="+48" />
+        <source>Level %1 — %2</source>
+        <translation>Level %1 — %2</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>(cannot be used)</source>
+        <translation>(cannot be used)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>This tutorial cannot be loaded.</source>
+        <translation>This tutorial cannot be loaded.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>(locked: pass the level before)</source>
+        <translation>(locked: pass the level before)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Pass every stage of the level before to unlock this one.</source>
+        <translation>Pass every stage of the level before to unlock this one.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>best %1 of 100</source>
+        <translation>best %1 of 100</translation>
+    </message>
+</context>
+<context>
     <name>studio::CurvePlot</name>
     <message>
         <location filename="../ide/studio/station/curve_plot.cpp" line="+118" />
         <source>raw reading → output (shaded: dead band)</source>
         <translation>raw reading → output (shaded: dead band)</translation>
+    </message>
+</context>
+<context>
+    <name>studio::DebriefScreen</name>
+    <message>
+        <location filename="../ide/studio/train/debrief_screen.cpp" line="+55" />
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <location line="+76" />
+        <location line="+24" />
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <location line="-24" />
+        <location line="+24" />
+        <location line="+30" />
+        <location line="+21" />
+        <source>Play</source>
+        <translation>Play</translation>
+    </message>
+    <message>
+        <location line="-74" />
+        <source>Events</source>
+        <translation>Events</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>You and the expert</source>
+        <translation>You and the expert</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Measure</source>
+        <translation>Measure</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>You</source>
+        <translation>You</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Expert</source>
+        <translation>Expert</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Back to the result</source>
+        <translation>Back to the result</translation>
+    </message>
+    <message>
+        <location line="+62" />
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location line="+38" />
+        <source>%1 s — %2</source>
+        <translation>%1 s — %2</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>No events.</source>
+        <translation>No events.</translation>
+    </message>
+    <message>
+        <location line="+43" />
+        <source>Force of %1</source>
+        <translation>Force of %1</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>No drive force</source>
+        <translation>No drive force</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>kN</source>
+        <translation>kN</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>kN·m</source>
+        <translation>kN·m</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Relief valves open</source>
+        <translation>Relief valves open</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>valves</source>
+        <translation>valves</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Time [s]</source>
+        <translation>Time [s]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Path length [m]</source>
+        <translation>Path length [m]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Overshoot [m]</source>
+        <translation>Overshoot [m]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>RMS jerk [m/s³]</source>
+        <translation>RMS jerk [m/s³]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Score</source>
+        <translation>Score</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>…</source>
+        <translation>…</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>none</source>
+        <translation>none</translation>
     </message>
 </context>
 <context>
@@ -9583,6 +9876,171 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
     </message>
 </context>
 <context>
+    <name>studio::ResultScreen</name>
+    <message>
+        <location filename="../ide/studio/train/result_screen.cpp" line="+82" />
+        <source>Measure</source>
+        <translation>Measure</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Measured</source>
+        <translation>Measured</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Points</source>
+        <translation>Points</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Of</source>
+        <translation>Of</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Score</source>
+        <translation>Score</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>What to improve</source>
+        <translation>What to improve</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Course</source>
+        <translation>Course</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Retry</source>
+        <translation>Retry</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Debrief</source>
+        <translation>Debrief</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Next stage</source>
+        <translation>Next stage</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Save as demonstration…</source>
+        <translation>Save as demonstration…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Saves the operator's input of this attempt as an input log.</source>
+        <translation>Saves the operator's input of this attempt as an input log.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+23" />
+        <source>Use as this stage's demonstration</source>
+        <translation>Use as this stage's demonstration</translation>
+    </message>
+    <message>
+        <location line="-22" />
+        <source>From now on the demonstration, the expert and the comparison of this stage replay this attempt's input instead of the shipped one.</source>
+        <translation>From now on the demonstration, the expert and the comparison of this stage replay this attempt's input instead of the shipped one.</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <location line="+5" />
+        <source>Save as demonstration</source>
+        <translation>Save as demonstration</translation>
+    </message>
+    <message>
+        <location line="-3" />
+        <source>Padrob input logs (*.log);;All files (*)</source>
+        <translation>Padrob input logs (*.log);;All files (*)</translation>
+    </message>
+    <message>
+        <location line="+37" />
+        <source>PASSED</source>
+        <translation>PASSED</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>NOT PASSED</source>
+        <translation>NOT PASSED</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The time ran out.</source>
+        <translation>The time ran out.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The machine hit the scene too hard.</source>
+        <translation>The machine hit the scene too hard.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The machine touched a worker.</source>
+        <translation>The machine touched a worker.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The attempt was stopped.</source>
+        <translation>The attempt was stopped.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The input ended before the goals were done.</source>
+        <translation>The input ended before the goals were done.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The simulation failed.</source>
+        <translation>The simulation failed.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Score %1 of 100 in %2 s</source>
+        <translation>Score %1 of 100 in %2 s</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The trainee records could not be written (%1); the attempt is kept and will be added the next time they can.</source>
+        <translation>The trainee records could not be written (%1); the attempt is kept and will be added the next time they can.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>This attempt is now the stage's demonstration.</source>
+        <translation>This attempt is now the stage's demonstration.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 m/s³</source>
+        <translation>%1 m/s³</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 penalty points</source>
+        <translation>%1 penalty points</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Nothing: a clean run.</source>
+        <translation>Nothing: a clean run.</translation>
+    </message>
+</context>
+<context>
     <name>studio::SceneFile</name>
     <message>
         <location filename="../ide/studio/view/scene_file.cpp" line="+28" />
@@ -9684,6 +10142,79 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <location line="+65" />
         <source>The simulation cannot start: %1</source>
         <translation>The simulation cannot start: %1</translation>
+    </message>
+</context>
+<context>
+    <name>studio::StartScreen</name>
+    <message>
+        <location filename="../ide/studio/train/start_screen.cpp" line="+47" />
+        <source>Watch the demonstration</source>
+        <translation>Watch the demonstration</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Back to the course</source>
+        <translation>Back to the course</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <location line="+42" />
+        <location line="+73" />
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <location line="-115" />
+        <location line="+42" />
+        <location line="+103" />
+        <location line="+5" />
+        <source>Play</source>
+        <translation>Play</translation>
+    </message>
+    <message>
+        <location line="-124" />
+        <source>Speed:</source>
+        <translation>Speed:</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Expert's camera</source>
+        <translation>Expert's camera</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Look where the expert looked while recording (untick to move the view yourself).</source>
+        <translation>Look where the expert looked while recording (untick to move the view yourself).</translation>
+    </message>
+    <message>
+        <location line="+63" />
+        <source>Time limit: %1 s. Pass mark: %2 of 100.</source>
+        <translation>Time limit: %1 s. Pass mark: %2 of 100.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>This tutorial has no demonstration.</source>
+        <translation>This tutorial has no demonstration.</translation>
+    </message>
+    <message>
+        <location line="+41" />
+        <source>%1 s of %2 s</source>
+        <translation>%1 s of %2 s</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Done: passed, %1 of 100</source>
+        <translation>Done: passed, %1 of 100</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Done</source>
+        <translation>Done</translation>
     </message>
 </context>
 <context>
@@ -10173,7 +10704,7 @@ Id: %3</translation>
 <context>
     <name>studio::TrainPage</name>
     <message>
-        <location filename="../ide/studio/train/train_page.cpp" line="+225" />
+        <location filename="../ide/studio/train/train_page.cpp" line="+150" />
         <source>Trainee records</source>
         <translation>Trainee records</translation>
     </message>
@@ -10183,149 +10714,7 @@ Id: %3</translation>
         <translation>The trainer's PIN:</translation>
     </message>
     <message>
-        <location line="+334" />
-        <source>This tutorial cannot be loaded.</source>
-        <translation>This tutorial cannot be loaded.</translation>
-    </message>
-    <message>
-        <location line="-192" />
-        <location line="+721" />
-        <source>Guest</source>
-        <translation>Guest</translation>
-    </message>
-    <message>
-        <location line="-628" />
-        <source>Training course</source>
-        <translation>Training course</translation>
-    </message>
-    <message>
-        <location line="+24" />
-        <source>Operator:</source>
-        <translation>Operator:</translation>
-    </message>
-    <message>
-        <location line="+8" />
-        <source>name or number</source>
-        <translation>name or number</translation>
-    </message>
-    <message>
-        <location line="+15" />
-        <source>Records</source>
-        <translation>Records</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>The trainee records: operators, attempts, progress (for the trainer).</source>
-        <translation>The trainee records: operators, attempts, progress (for the trainer).</translation>
-    </message>
-    <message>
-        <location line="+12" />
-        <source>Open</source>
-        <translation>Open</translation>
-    </message>
-    <message>
-        <location line="+33" />
-        <source>Level %1 — %2</source>
-        <translation>Level %1 — %2</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>(cannot be used)</source>
-        <translation>(cannot be used)</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>(locked: pass the level before)</source>
-        <translation>(locked: pass the level before)</translation>
-    </message>
-    <message>
         <location line="+2" />
-        <source>Pass every stage of the level before to unlock this one.</source>
-        <translation>Pass every stage of the level before to unlock this one.</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>best %1 of 100</source>
-        <translation>best %1 of 100</translation>
-    </message>
-    <message>
-        <location line="+73" />
-        <source>Time limit: %1 s. Pass mark: %2 of 100.</source>
-        <translation>Time limit: %1 s. Pass mark: %2 of 100.</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>This tutorial has no demonstration.</source>
-        <translation>This tutorial has no demonstration.</translation>
-    </message>
-    <message>
-        <location line="-18" />
-        <source>The demonstration chosen for this stage (%1) cannot be read: %2. The shipped demonstration is used.</source>
-        <translation>The demonstration chosen for this stage (%1) cannot be read: %2. The shipped demonstration is used.</translation>
-    </message>
-    <message>
-        <location line="+83" />
-        <source>There is no recorded input: only an attempt with the operator's controls is recorded.</source>
-        <translation>There is no recorded input: only an attempt with the operator's controls is recorded.</translation>
-    </message>
-    <message>
-        <location line="+7" />
-        <source>Cannot write %1.</source>
-        <translation>Cannot write %1.</translation>
-    </message>
-    <message>
-        <location line="+103" />
-        <source>Watch the demonstration</source>
-        <translation>Watch the demonstration</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Start</source>
-        <translation>Start</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Back to the course</source>
-        <translation>Back to the course</translation>
-    </message>
-    <message>
-        <location line="+19" />
-        <location line="+43" />
-        <location line="+32" />
-        <location line="+724" />
-        <location line="+23" />
-        <source>Pause</source>
-        <translation>Pause</translation>
-    </message>
-    <message>
-        <location line="-795" />
-        <source>Speed:</source>
-        <translation>Speed:</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Expert's camera</source>
-        <translation>Expert's camera</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Look where the expert looked while recording (untick to move the view yourself).</source>
-        <translation>Look where the expert looked while recording (untick to move the view yourself).</translation>
-    </message>
-    <message>
-        <location line="-29" />
-        <location line="+43" />
-        <location line="+352" />
-        <location line="+19" />
-        <location line="+120" />
-        <location line="+265" />
-        <location line="+23" />
-        <location line="+77" />
-        <source>Play</source>
-        <translation>Play</translation>
-    </message>
-    <message>
-        <location line="-1513" />
         <source>OK</source>
         <translation>OK</translation>
     </message>
@@ -10335,42 +10724,7 @@ Id: %3</translation>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location line="+817" />
-        <source>Esc or Stop ends the attempt.</source>
-        <translation>Esc or Stop ends the attempt.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Show the expert</source>
-        <translation>Show the expert</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>The demonstration runs beside the attempt, drawn translucent.</source>
-        <translation>The demonstration runs beside the attempt, drawn translucent.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Hydraulics</source>
-        <translation>Hydraulics</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>The pump, the spools and the chamber pressures beside the view.</source>
-        <translation>The pump, the spools and the chamber pressures beside the view.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>View:</source>
-        <translation>View:</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>Stop</source>
-        <translation>Stop</translation>
-    </message>
-    <message>
-        <location line="+90" />
+        <location line="+222" />
         <source>On the centre's network as %1</source>
         <translation>On the centre's network as %1</translation>
     </message>
@@ -10384,351 +10738,11 @@ Id: %3</translation>
         <source>Not on the centre's network: %1</source>
         <translation>Not on the centre's network: %1</translation>
     </message>
-    <message>
-        <location line="+132" />
-        <source>%1 s of %2 s</source>
-        <translation>%1 s of %2 s</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Done: passed, %1 of 100</source>
-        <translation>Done: passed, %1 of 100</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Done</source>
-        <translation>Done</translation>
-    </message>
-    <message>
-        <location line="+31" />
-        <source>Goal %1 of %2</source>
-        <translation>Goal %1 of %2</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Distance: %1 m</source>
-        <translation>Distance: %1 m</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>Hold: %1 of %2 s</source>
-        <translation>Hold: %1 of %2 s</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>All goals done</source>
-        <translation>All goals done</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>Time: %1 / %2 s</source>
-        <translation>Time: %1 / %2 s</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Penalties: %1</source>
-        <translation>Penalties: %1</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Load in the claws</source>
-        <translation>Load in the claws</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</source>
-        <translation>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</translation>
-    </message>
-    <message>
-        <location line="+8" />
-        <source>Paused by the instructor</source>
-        <translation>Paused by the instructor</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Overload: a relief valve is open</source>
-        <translation>Overload: a relief valve is open</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Too close to a worker (%1 m)</source>
-        <translation>Too close to a worker (%1 m)</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Clearance %1 m</source>
-        <translation>Clearance %1 m</translation>
-    </message>
-    <message>
-        <location line="+193" />
-        <source>The trainee records could not be written (%1); the attempt is kept and will be added the next time they can.</source>
-        <translation>The trainee records could not be written (%1); the attempt is kept and will be added the next time they can.</translation>
-    </message>
-    <message>
-        <location line="-72" />
-        <location line="+177" />
-        <source>Measure</source>
-        <translation>Measure</translation>
-    </message>
-    <message>
-        <location line="-177" />
-        <source>Measured</source>
-        <translation>Measured</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>Points</source>
-        <translation>Points</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>Of</source>
-        <translation>Of</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <location line="+393" />
-        <source>Score</source>
-        <translation>Score</translation>
-    </message>
-    <message>
-        <location line="-392" />
-        <source>What to improve</source>
-        <translation>What to improve</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Course</source>
-        <translation>Course</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Retry</source>
-        <translation>Retry</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Debrief</source>
-        <translation>Debrief</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Next stage</source>
-        <translation>Next stage</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Save as demonstration…</source>
-        <translation>Save as demonstration…</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Saves the operator's input of this attempt as an input log.</source>
-        <translation>Saves the operator's input of this attempt as an input log.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <location line="+22" />
-        <source>Use as this stage's demonstration</source>
-        <translation>Use as this stage's demonstration</translation>
-    </message>
-    <message>
-        <location line="-21" />
-        <source>From now on the demonstration, the expert and the comparison of this stage replay this attempt's input instead of the shipped one.</source>
-        <translation>From now on the demonstration, the expert and the comparison of this stage replay this attempt's input instead of the shipped one.</translation>
-    </message>
-    <message>
-        <location line="+9" />
-        <location line="+4" />
-        <source>Save as demonstration</source>
-        <translation>Save as demonstration</translation>
-    </message>
-    <message>
-        <location line="-3" />
-        <source>Padrob input logs (*.log);;All files (*)</source>
-        <translation>Padrob input logs (*.log);;All files (*)</translation>
-    </message>
-    <message>
-        <location line="+55" />
-        <source>This attempt is now the stage's demonstration.</source>
-        <translation>This attempt is now the stage's demonstration.</translation>
-    </message>
-    <message>
-        <location line="-18" />
-        <source>PASSED</source>
-        <translation>PASSED</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>NOT PASSED</source>
-        <translation>NOT PASSED</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>The time ran out.</source>
-        <translation>The time ran out.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>The machine hit the scene too hard.</source>
-        <translation>The machine hit the scene too hard.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>The machine touched a worker.</source>
-        <translation>The machine touched a worker.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>The attempt was stopped.</source>
-        <translation>The attempt was stopped.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>The input ended before the goals were done.</source>
-        <translation>The input ended before the goals were done.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>The simulation failed.</source>
-        <translation>The simulation failed.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Score %1 of 100 in %2 s</source>
-        <translation>Score %1 of 100 in %2 s</translation>
-    </message>
-    <message>
-        <location line="+13" />
-        <location line="+142" />
-        <source>%1 s</source>
-        <translation>%1 s</translation>
-    </message>
-    <message>
-        <location line="-141" />
-        <source>%1 %</source>
-        <translation>%1 %</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>%1 m/s³</source>
-        <translation>%1 m/s³</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>%1 penalty points</source>
-        <translation>%1 penalty points</translation>
-    </message>
-    <message>
-        <location line="+10" />
-        <source>Nothing: a clean run.</source>
-        <translation>Nothing: a clean run.</translation>
-    </message>
-    <message>
-        <location line="+81" />
-        <source>Events</source>
-        <translation>Events</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>You and the expert</source>
-        <translation>You and the expert</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>You</source>
-        <translation>You</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>Expert</source>
-        <translation>Expert</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Back to the result</source>
-        <translation>Back to the result</translation>
-    </message>
-    <message>
-        <location line="+114" />
-        <source>%1 s — %2</source>
-        <translation>%1 s — %2</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>No events.</source>
-        <translation>No events.</translation>
-    </message>
-    <message>
-        <location line="-45" />
-        <source>t [s]</source>
-        <translation>t [s]</translation>
-    </message>
-    <message>
-        <location line="+86" />
-        <source>Force of %1</source>
-        <translation>Force of %1</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>No drive force</source>
-        <translation>No drive force</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>kN</source>
-        <translation>kN</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>kN·m</source>
-        <translation>kN·m</translation>
-    </message>
-    <message>
-        <location line="+10" />
-        <source>Relief valves open</source>
-        <translation>Relief valves open</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>valves</source>
-        <translation>valves</translation>
-    </message>
-    <message>
-        <location line="+42" />
-        <source>Time [s]</source>
-        <translation>Time [s]</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Path length [m]</source>
-        <translation>Path length [m]</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Overshoot [m]</source>
-        <translation>Overshoot [m]</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>RMS jerk [m/s³]</source>
-        <translation>RMS jerk [m/s³]</translation>
-    </message>
-    <message>
-        <location line="+8" />
-        <source>…</source>
-        <translation>…</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>none</source>
-        <translation>none</translation>
-    </message>
 </context>
 <context>
     <name>studio::TrainStation</name>
     <message>
-        <location filename="../ide/studio/centre/train_station.cpp" line="+94" />
+        <location filename="../ide/studio/centre/train_station.cpp" line="+93" />
         <source>no key file was given (--centre-key)</source>
         <translation>no key file was given (--centre-key)</translation>
     </message>
@@ -10736,6 +10750,30 @@ Id: %3</translation>
         <location line="+16" />
         <source>DDS refused to join the domain</source>
         <translation>DDS refused to join the domain</translation>
+    </message>
+</context>
+<context>
+    <name>studio::TrainingController</name>
+    <message>
+        <location filename="../ide/studio/train/training_controller.cpp" line="+205" />
+        <location line="+241" />
+        <source>Guest</source>
+        <translation>Guest</translation>
+    </message>
+    <message>
+        <location line="-156" />
+        <source>The demonstration chosen for this stage (%1) cannot be read: %2. The shipped demonstration is used.</source>
+        <translation>The demonstration chosen for this stage (%1) cannot be read: %2. The shipped demonstration is used.</translation>
+    </message>
+    <message>
+        <location line="+52" />
+        <source>There is no recorded input: only an attempt with the operator's controls is recorded.</source>
+        <translation>There is no recorded input: only an attempt with the operator's controls is recorded.</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Cannot write %1.</source>
+        <translation>Cannot write %1.</translation>
     </message>
 </context>
 <context>

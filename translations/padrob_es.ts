@@ -2815,7 +2815,7 @@
 <context>
     <name>StationNode</name>
     <message>
-        <location filename="../trainer/centre/station_node.cpp" line="+42" />
+        <location filename="../trainer/centre/station_node.cpp" line="+41" />
         <source>A station needs at least one tutorial to run.</source>
         <translation>Una estación necesita al menos un tutorial que ejecutar.</translation>
     </message>
@@ -6532,6 +6532,104 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
     </message>
 </context>
 <context>
+    <name>studio::AttemptScreen</name>
+    <message>
+        <location filename="../ide/studio/train/attempt_screen.cpp" line="+154" />
+        <source>Esc or Stop ends the attempt.</source>
+        <translation>Esc o Detener termina el intento.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Show the expert</source>
+        <translation>Mostrar al experto</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The demonstration runs beside the attempt, drawn translucent.</source>
+        <translation>La demostración corre junto al intento, dibujada translúcida.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Hydraulics</source>
+        <translation>Hidráulica</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The pump, the spools and the chamber pressures beside the view.</source>
+        <translation>La bomba, las correderas y las presiones de las cámaras junto a la vista.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>View:</source>
+        <translation>Vista:</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Stop</source>
+        <translation>Detener</translation>
+    </message>
+    <message>
+        <location line="+93" />
+        <source>Goal %1 of %2</source>
+        <translation>Objetivo %1 de %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Distance: %1 m</source>
+        <translation>Distancia: %1 m</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Hold: %1 of %2 s</source>
+        <translation>Mantener: %1 de %2 s</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>All goals done</source>
+        <translation>Todos los objetivos cumplidos</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Time: %1 / %2 s</source>
+        <translation>Tiempo: %1 / %2 s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Penalties: %1</source>
+        <translation>Penalizaciones: %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Load in the claws</source>
+        <translation>Carga en las garras</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</source>
+        <translation>Banco: &lt;b&gt;%1&lt;/b&gt; (%2 de %3)</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Paused by the instructor</source>
+        <translation>En pausa por el instructor</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Overload: a relief valve is open</source>
+        <translation>Sobrecarga: una válvula de alivio está abierta</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Too close to a worker (%1 m)</source>
+        <translation>Demasiado cerca de un trabajador (%1 m)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Clearance %1 m</source>
+        <translation>Holgura %1 m</translation>
+    </message>
+</context>
+<context>
     <name>studio::CalibrationWizard</name>
     <message>
         <location filename="../ide/studio/station/calibration_wizard.cpp" line="+70" />
@@ -6868,11 +6966,206 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
     </message>
 </context>
 <context>
+    <name>studio::CourseScreen</name>
+    <message>
+        <location filename="../ide/studio/train/course_screen.cpp" line="+25" />
+        <source>Training course</source>
+        <translation>Curso de entrenamiento</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>Operator:</source>
+        <translation>Operador:</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>name or number</source>
+        <translation>nombre o número</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Records</source>
+        <translation>Registros</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The trainee records: operators, attempts, progress (for the trainer).</source>
+        <translation>Los registros de aprendices: operadores, intentos, avance (para el instructor).</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>Open</source>
+        <translation>Abrir</translation>
+    </message>
+    <message>
+        <location line="+48" />
+        <source>Level %1 — %2</source>
+        <translation>Nivel %1 — %2</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>(cannot be used)</source>
+        <translation>(no se puede usar)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>This tutorial cannot be loaded.</source>
+        <translation>Este tutorial no se puede cargar.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>(locked: pass the level before)</source>
+        <translation>(bloqueado: apruebe el nivel anterior)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Pass every stage of the level before to unlock this one.</source>
+        <translation>Apruebe todas las etapas del nivel anterior para desbloquear esta.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>best %1 of 100</source>
+        <translation>mejor %1 de 100</translation>
+    </message>
+</context>
+<context>
     <name>studio::CurvePlot</name>
     <message>
         <location filename="../ide/studio/station/curve_plot.cpp" line="+118" />
         <source>raw reading → output (shaded: dead band)</source>
         <translation>lectura en bruto → salida (sombreado: banda muerta)</translation>
+    </message>
+</context>
+<context>
+    <name>studio::DebriefScreen</name>
+    <message>
+        <location filename="../ide/studio/train/debrief_screen.cpp" line="+55" />
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <location line="+76" />
+        <location line="+24" />
+        <source>Pause</source>
+        <translation>Pausa</translation>
+    </message>
+    <message>
+        <location line="-24" />
+        <location line="+24" />
+        <location line="+30" />
+        <location line="+21" />
+        <source>Play</source>
+        <translation>Reproducir</translation>
+    </message>
+    <message>
+        <location line="-74" />
+        <source>Events</source>
+        <translation>Eventos</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>You and the expert</source>
+        <translation>Usted y el experto</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Measure</source>
+        <translation>Medida</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>You</source>
+        <translation>Usted</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Expert</source>
+        <translation>Experto</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Back to the result</source>
+        <translation>Volver al resultado</translation>
+    </message>
+    <message>
+        <location line="+62" />
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location line="+38" />
+        <source>%1 s — %2</source>
+        <translation>%1 s — %2</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>No events.</source>
+        <translation>Sin eventos.</translation>
+    </message>
+    <message>
+        <location line="+43" />
+        <source>Force of %1</source>
+        <translation>Fuerza de %1</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>No drive force</source>
+        <translation>Sin fuerza de accionamiento</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>kN</source>
+        <translation>kN</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>kN·m</source>
+        <translation>kN·m</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Relief valves open</source>
+        <translation>Válvulas de alivio abiertas</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>valves</source>
+        <translation>válvulas</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Time [s]</source>
+        <translation>Tiempo [s]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Path length [m]</source>
+        <translation>Recorrido [m]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Overshoot [m]</source>
+        <translation>Sobrepaso [m]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>RMS jerk [m/s³]</source>
+        <translation>Tirón RMS [m/s³]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Score</source>
+        <translation>Puntaje</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>…</source>
+        <translation>…</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>none</source>
+        <translation>ninguno</translation>
     </message>
 </context>
 <context>
@@ -9613,6 +9906,171 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
     </message>
 </context>
 <context>
+    <name>studio::ResultScreen</name>
+    <message>
+        <location filename="../ide/studio/train/result_screen.cpp" line="+82" />
+        <source>Measure</source>
+        <translation>Medida</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Measured</source>
+        <translation>Medido</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Points</source>
+        <translation>Puntos</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Of</source>
+        <translation>De</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Score</source>
+        <translation>Puntaje</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>What to improve</source>
+        <translation>Qué mejorar</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Course</source>
+        <translation>Curso</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Retry</source>
+        <translation>Reintentar</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Debrief</source>
+        <translation>Análisis del intento</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Next stage</source>
+        <translation>Etapa siguiente</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Save as demonstration…</source>
+        <translation>Guardar como demostración…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Saves the operator's input of this attempt as an input log.</source>
+        <translation>Guarda las entradas del operador en este intento como un registro de entradas.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+23" />
+        <source>Use as this stage's demonstration</source>
+        <translation>Usar como demostración de esta etapa</translation>
+    </message>
+    <message>
+        <location line="-22" />
+        <source>From now on the demonstration, the expert and the comparison of this stage replay this attempt's input instead of the shipped one.</source>
+        <translation>Desde ahora la demostración, el experto y la comparación de esta etapa reproducen las entradas de este intento en lugar de las incluidas.</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <location line="+5" />
+        <source>Save as demonstration</source>
+        <translation>Guardar como demostración</translation>
+    </message>
+    <message>
+        <location line="-3" />
+        <source>Padrob input logs (*.log);;All files (*)</source>
+        <translation>Registros de entradas de Padrob (*.log);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <location line="+37" />
+        <source>PASSED</source>
+        <translation>APROBADO</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>NOT PASSED</source>
+        <translation>NO APROBADO</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The time ran out.</source>
+        <translation>Se acabó el tiempo.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The machine hit the scene too hard.</source>
+        <translation>La máquina golpeó la escena con demasiada fuerza.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The machine touched a worker.</source>
+        <translation>La máquina tocó a un trabajador.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The attempt was stopped.</source>
+        <translation>El intento se detuvo.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The input ended before the goals were done.</source>
+        <translation>Las entradas terminaron antes de cumplir los objetivos.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The simulation failed.</source>
+        <translation>La simulación falló.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Score %1 of 100 in %2 s</source>
+        <translation>Puntaje %1 de 100 en %2 s</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The trainee records could not be written (%1); the attempt is kept and will be added the next time they can.</source>
+        <translation>No se pudieron escribir los registros de aprendices (%1); el intento se guarda y se agregará la próxima vez que se pueda.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>This attempt is now the stage's demonstration.</source>
+        <translation>Este intento es ahora la demostración de la etapa.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 m/s³</source>
+        <translation>%1 m/s³</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 penalty points</source>
+        <translation>%1 puntos de penalización</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Nothing: a clean run.</source>
+        <translation>Nada: un intento limpio.</translation>
+    </message>
+</context>
+<context>
     <name>studio::SceneFile</name>
     <message>
         <location filename="../ide/studio/view/scene_file.cpp" line="+28" />
@@ -9714,6 +10172,79 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <location line="+65" />
         <source>The simulation cannot start: %1</source>
         <translation>La simulación no puede comenzar: %1</translation>
+    </message>
+</context>
+<context>
+    <name>studio::StartScreen</name>
+    <message>
+        <location filename="../ide/studio/train/start_screen.cpp" line="+47" />
+        <source>Watch the demonstration</source>
+        <translation>Ver la demostración</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Start</source>
+        <translation>Iniciar</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Back to the course</source>
+        <translation>Volver al curso</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <location line="+42" />
+        <location line="+73" />
+        <source>Pause</source>
+        <translation>Pausa</translation>
+    </message>
+    <message>
+        <location line="-115" />
+        <location line="+42" />
+        <location line="+103" />
+        <location line="+5" />
+        <source>Play</source>
+        <translation>Reproducir</translation>
+    </message>
+    <message>
+        <location line="-124" />
+        <source>Speed:</source>
+        <translation>Velocidad:</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Expert's camera</source>
+        <translation>Cámara del experto</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Look where the expert looked while recording (untick to move the view yourself).</source>
+        <translation>Mirar hacia donde miraba el experto al grabar (desmarque para mover la vista usted mismo).</translation>
+    </message>
+    <message>
+        <location line="+63" />
+        <source>Time limit: %1 s. Pass mark: %2 of 100.</source>
+        <translation>Tiempo límite: %1 s. Puntaje de aprobación: %2 de 100.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>This tutorial has no demonstration.</source>
+        <translation>Este tutorial no tiene demostración.</translation>
+    </message>
+    <message>
+        <location line="+41" />
+        <source>%1 s of %2 s</source>
+        <translation>%1 s de %2 s</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Done: passed, %1 of 100</source>
+        <translation>Terminado: aprobado, %1 de 100</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Done</source>
+        <translation>Terminado</translation>
     </message>
 </context>
 <context>
@@ -10203,7 +10734,7 @@ Id: %3</translation>
 <context>
     <name>studio::TrainPage</name>
     <message>
-        <location filename="../ide/studio/train/train_page.cpp" line="+225" />
+        <location filename="../ide/studio/train/train_page.cpp" line="+150" />
         <source>Trainee records</source>
         <translation>Registros de aprendices</translation>
     </message>
@@ -10213,149 +10744,7 @@ Id: %3</translation>
         <translation>El PIN del instructor:</translation>
     </message>
     <message>
-        <location line="+334" />
-        <source>This tutorial cannot be loaded.</source>
-        <translation>Este tutorial no se puede cargar.</translation>
-    </message>
-    <message>
-        <location line="-192" />
-        <location line="+721" />
-        <source>Guest</source>
-        <translation>Invitado</translation>
-    </message>
-    <message>
-        <location line="-628" />
-        <source>Training course</source>
-        <translation>Curso de entrenamiento</translation>
-    </message>
-    <message>
-        <location line="+24" />
-        <source>Operator:</source>
-        <translation>Operador:</translation>
-    </message>
-    <message>
-        <location line="+8" />
-        <source>name or number</source>
-        <translation>nombre o número</translation>
-    </message>
-    <message>
-        <location line="+15" />
-        <source>Records</source>
-        <translation>Registros</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>The trainee records: operators, attempts, progress (for the trainer).</source>
-        <translation>Los registros de aprendices: operadores, intentos, avance (para el instructor).</translation>
-    </message>
-    <message>
-        <location line="+12" />
-        <source>Open</source>
-        <translation>Abrir</translation>
-    </message>
-    <message>
-        <location line="+33" />
-        <source>Level %1 — %2</source>
-        <translation>Nivel %1 — %2</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>(cannot be used)</source>
-        <translation>(no se puede usar)</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>(locked: pass the level before)</source>
-        <translation>(bloqueado: apruebe el nivel anterior)</translation>
-    </message>
-    <message>
         <location line="+2" />
-        <source>Pass every stage of the level before to unlock this one.</source>
-        <translation>Apruebe todas las etapas del nivel anterior para desbloquear esta.</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>best %1 of 100</source>
-        <translation>mejor %1 de 100</translation>
-    </message>
-    <message>
-        <location line="+73" />
-        <source>Time limit: %1 s. Pass mark: %2 of 100.</source>
-        <translation>Tiempo límite: %1 s. Puntaje de aprobación: %2 de 100.</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>This tutorial has no demonstration.</source>
-        <translation>Este tutorial no tiene demostración.</translation>
-    </message>
-    <message>
-        <location line="-18" />
-        <source>The demonstration chosen for this stage (%1) cannot be read: %2. The shipped demonstration is used.</source>
-        <translation>No se puede leer la demostración elegida para esta etapa (%1): %2. Se usa la demostración incluida.</translation>
-    </message>
-    <message>
-        <location line="+83" />
-        <source>There is no recorded input: only an attempt with the operator's controls is recorded.</source>
-        <translation>No hay entradas grabadas: solo se graba un intento con los mandos del operador.</translation>
-    </message>
-    <message>
-        <location line="+7" />
-        <source>Cannot write %1.</source>
-        <translation>No se puede escribir %1.</translation>
-    </message>
-    <message>
-        <location line="+103" />
-        <source>Watch the demonstration</source>
-        <translation>Ver la demostración</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Start</source>
-        <translation>Iniciar</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Back to the course</source>
-        <translation>Volver al curso</translation>
-    </message>
-    <message>
-        <location line="+19" />
-        <location line="+43" />
-        <location line="+32" />
-        <location line="+724" />
-        <location line="+23" />
-        <source>Pause</source>
-        <translation>Pausa</translation>
-    </message>
-    <message>
-        <location line="-795" />
-        <source>Speed:</source>
-        <translation>Velocidad:</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Expert's camera</source>
-        <translation>Cámara del experto</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Look where the expert looked while recording (untick to move the view yourself).</source>
-        <translation>Mirar hacia donde miraba el experto al grabar (desmarque para mover la vista usted mismo).</translation>
-    </message>
-    <message>
-        <location line="-29" />
-        <location line="+43" />
-        <location line="+352" />
-        <location line="+19" />
-        <location line="+120" />
-        <location line="+265" />
-        <location line="+23" />
-        <location line="+77" />
-        <source>Play</source>
-        <translation>Reproducir</translation>
-    </message>
-    <message>
-        <location line="-1513" />
         <source>OK</source>
         <translation>Aceptar</translation>
     </message>
@@ -10365,42 +10754,7 @@ Id: %3</translation>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location line="+817" />
-        <source>Esc or Stop ends the attempt.</source>
-        <translation>Esc o Detener termina el intento.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Show the expert</source>
-        <translation>Mostrar al experto</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>The demonstration runs beside the attempt, drawn translucent.</source>
-        <translation>La demostración corre junto al intento, dibujada translúcida.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Hydraulics</source>
-        <translation>Hidráulica</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>The pump, the spools and the chamber pressures beside the view.</source>
-        <translation>La bomba, las correderas y las presiones de las cámaras junto a la vista.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>View:</source>
-        <translation>Vista:</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>Stop</source>
-        <translation>Detener</translation>
-    </message>
-    <message>
-        <location line="+90" />
+        <location line="+222" />
         <source>On the centre's network as %1</source>
         <translation>En la red del centro como %1</translation>
     </message>
@@ -10414,351 +10768,11 @@ Id: %3</translation>
         <source>Not on the centre's network: %1</source>
         <translation>Fuera de la red del centro: %1</translation>
     </message>
-    <message>
-        <location line="+132" />
-        <source>%1 s of %2 s</source>
-        <translation>%1 s de %2 s</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Done: passed, %1 of 100</source>
-        <translation>Terminado: aprobado, %1 de 100</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Done</source>
-        <translation>Terminado</translation>
-    </message>
-    <message>
-        <location line="+31" />
-        <source>Goal %1 of %2</source>
-        <translation>Objetivo %1 de %2</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Distance: %1 m</source>
-        <translation>Distancia: %1 m</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>Hold: %1 of %2 s</source>
-        <translation>Mantener: %1 de %2 s</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>All goals done</source>
-        <translation>Todos los objetivos cumplidos</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>Time: %1 / %2 s</source>
-        <translation>Tiempo: %1 / %2 s</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Penalties: %1</source>
-        <translation>Penalizaciones: %1</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Load in the claws</source>
-        <translation>Carga en las garras</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</source>
-        <translation>Banco: &lt;b&gt;%1&lt;/b&gt; (%2 de %3)</translation>
-    </message>
-    <message>
-        <location line="+8" />
-        <source>Paused by the instructor</source>
-        <translation>En pausa por el instructor</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Overload: a relief valve is open</source>
-        <translation>Sobrecarga: una válvula de alivio está abierta</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Too close to a worker (%1 m)</source>
-        <translation>Demasiado cerca de un trabajador (%1 m)</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Clearance %1 m</source>
-        <translation>Holgura %1 m</translation>
-    </message>
-    <message>
-        <location line="+193" />
-        <source>The trainee records could not be written (%1); the attempt is kept and will be added the next time they can.</source>
-        <translation>No se pudieron escribir los registros de aprendices (%1); el intento se guarda y se agregará la próxima vez que se pueda.</translation>
-    </message>
-    <message>
-        <location line="-72" />
-        <location line="+177" />
-        <source>Measure</source>
-        <translation>Medida</translation>
-    </message>
-    <message>
-        <location line="-177" />
-        <source>Measured</source>
-        <translation>Medido</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>Points</source>
-        <translation>Puntos</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>Of</source>
-        <translation>De</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <location line="+393" />
-        <source>Score</source>
-        <translation>Puntaje</translation>
-    </message>
-    <message>
-        <location line="-392" />
-        <source>What to improve</source>
-        <translation>Qué mejorar</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Course</source>
-        <translation>Curso</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Retry</source>
-        <translation>Reintentar</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Debrief</source>
-        <translation>Análisis del intento</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Next stage</source>
-        <translation>Etapa siguiente</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Save as demonstration…</source>
-        <translation>Guardar como demostración…</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Saves the operator's input of this attempt as an input log.</source>
-        <translation>Guarda las entradas del operador en este intento como un registro de entradas.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <location line="+22" />
-        <source>Use as this stage's demonstration</source>
-        <translation>Usar como demostración de esta etapa</translation>
-    </message>
-    <message>
-        <location line="-21" />
-        <source>From now on the demonstration, the expert and the comparison of this stage replay this attempt's input instead of the shipped one.</source>
-        <translation>Desde ahora la demostración, el experto y la comparación de esta etapa reproducen las entradas de este intento en lugar de las incluidas.</translation>
-    </message>
-    <message>
-        <location line="+9" />
-        <location line="+4" />
-        <source>Save as demonstration</source>
-        <translation>Guardar como demostración</translation>
-    </message>
-    <message>
-        <location line="-3" />
-        <source>Padrob input logs (*.log);;All files (*)</source>
-        <translation>Registros de entradas de Padrob (*.log);;Todos los archivos (*)</translation>
-    </message>
-    <message>
-        <location line="+55" />
-        <source>This attempt is now the stage's demonstration.</source>
-        <translation>Este intento es ahora la demostración de la etapa.</translation>
-    </message>
-    <message>
-        <location line="-18" />
-        <source>PASSED</source>
-        <translation>APROBADO</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>NOT PASSED</source>
-        <translation>NO APROBADO</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>The time ran out.</source>
-        <translation>Se acabó el tiempo.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>The machine hit the scene too hard.</source>
-        <translation>La máquina golpeó la escena con demasiada fuerza.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>The machine touched a worker.</source>
-        <translation>La máquina tocó a un trabajador.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>The attempt was stopped.</source>
-        <translation>El intento se detuvo.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>The input ended before the goals were done.</source>
-        <translation>Las entradas terminaron antes de cumplir los objetivos.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>The simulation failed.</source>
-        <translation>La simulación falló.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Score %1 of 100 in %2 s</source>
-        <translation>Puntaje %1 de 100 en %2 s</translation>
-    </message>
-    <message>
-        <location line="+13" />
-        <location line="+142" />
-        <source>%1 s</source>
-        <translation>%1 s</translation>
-    </message>
-    <message>
-        <location line="-141" />
-        <source>%1 %</source>
-        <translation>%1 %</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>%1 m/s³</source>
-        <translation>%1 m/s³</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>%1 penalty points</source>
-        <translation>%1 puntos de penalización</translation>
-    </message>
-    <message>
-        <location line="+10" />
-        <source>Nothing: a clean run.</source>
-        <translation>Nada: un intento limpio.</translation>
-    </message>
-    <message>
-        <location line="+81" />
-        <source>Events</source>
-        <translation>Eventos</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>You and the expert</source>
-        <translation>Usted y el experto</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>You</source>
-        <translation>Usted</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>Expert</source>
-        <translation>Experto</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Back to the result</source>
-        <translation>Volver al resultado</translation>
-    </message>
-    <message>
-        <location line="+114" />
-        <source>%1 s — %2</source>
-        <translation>%1 s — %2</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>No events.</source>
-        <translation>Sin eventos.</translation>
-    </message>
-    <message>
-        <location line="-45" />
-        <source>t [s]</source>
-        <translation>t [s]</translation>
-    </message>
-    <message>
-        <location line="+86" />
-        <source>Force of %1</source>
-        <translation>Fuerza de %1</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>No drive force</source>
-        <translation>Sin fuerza de accionamiento</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>kN</source>
-        <translation>kN</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>kN·m</source>
-        <translation>kN·m</translation>
-    </message>
-    <message>
-        <location line="+10" />
-        <source>Relief valves open</source>
-        <translation>Válvulas de alivio abiertas</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>valves</source>
-        <translation>válvulas</translation>
-    </message>
-    <message>
-        <location line="+42" />
-        <source>Time [s]</source>
-        <translation>Tiempo [s]</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Path length [m]</source>
-        <translation>Recorrido [m]</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Overshoot [m]</source>
-        <translation>Sobrepaso [m]</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>RMS jerk [m/s³]</source>
-        <translation>Tirón RMS [m/s³]</translation>
-    </message>
-    <message>
-        <location line="+8" />
-        <source>…</source>
-        <translation>…</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>none</source>
-        <translation>ninguno</translation>
-    </message>
 </context>
 <context>
     <name>studio::TrainStation</name>
     <message>
-        <location filename="../ide/studio/centre/train_station.cpp" line="+94" />
+        <location filename="../ide/studio/centre/train_station.cpp" line="+93" />
         <source>no key file was given (--centre-key)</source>
         <translation>no se indicó un archivo de clave (--centre-key)</translation>
     </message>
@@ -10766,6 +10780,30 @@ Id: %3</translation>
         <location line="+16" />
         <source>DDS refused to join the domain</source>
         <translation>DDS no permitió entrar al dominio</translation>
+    </message>
+</context>
+<context>
+    <name>studio::TrainingController</name>
+    <message>
+        <location filename="../ide/studio/train/training_controller.cpp" line="+205" />
+        <location line="+241" />
+        <source>Guest</source>
+        <translation>Invitado</translation>
+    </message>
+    <message>
+        <location line="-156" />
+        <source>The demonstration chosen for this stage (%1) cannot be read: %2. The shipped demonstration is used.</source>
+        <translation>No se puede leer la demostración elegida para esta etapa (%1): %2. Se usa la demostración incluida.</translation>
+    </message>
+    <message>
+        <location line="+52" />
+        <source>There is no recorded input: only an attempt with the operator's controls is recorded.</source>
+        <translation>No hay entradas grabadas: solo se graba un intento con los mandos del operador.</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Cannot write %1.</source>
+        <translation>No se puede escribir %1.</translation>
     </message>
 </context>
 <context>

@@ -1,0 +1,94 @@
+#pragma once
+// AttemptScreen: the attempt. One 3D view (the operator's seat inside a scene, else
+// from where the target shows) with a HUD big enough to read from the seat: the goal,
+// goal n of m, the distance, the hold with its bar, the time and its limit, penalties,
+// the load in the claws and the station's bank; warnings (the station's, overload,
+// a worker too close, clearance, paused by the instructor) at the top right and the
+// stage's hints at the bottom. The HUD is drawn into the view's frames
+// (Viewport::addOverlay). A model with pumps gets the hydraulics (HydraulicPanel)
+// beside the view, never over the target, which "Hydraulics" folds away (remembered:
+// "trainer/showHydraulics"). "Show the expert" (remembered: "trainer/showExpert") runs
+// the demonstration beside the attempt and draws it translucent (Viewport::setGhost).
+// Below: the training centre's indicator, the camera and Stop; Esc also ends it.
+
+#include "ide/i18n/texts.h"
+
+#include <QWidget>
+
+#include <memory>
+
+class QCheckBox;
+class QComboBox;
+class QFrame;
+class QLabel;
+class QProgressBar;
+
+namespace trainer {
+struct Tutorial;
+}
+
+namespace studio {
+
+class HydraulicPanel;
+class TrainingController;
+class Viewport;
+struct TrainFrame;
+
+class AttemptScreen : public QWidget {
+    Q_OBJECT
+public:
+    explicit AttemptScreen(TrainingController* training, QWidget* parent = nullptr);
+
+    /// An attempt began (TrainingController::beginAttempt): the expert, the HUD and the
+    /// hydraulics from its first frame, before the screen shows.
+    void prepare();
+    /// Once shown: the camera (the seat turned towards the first goal in a scene, else
+    /// the model and targets framed) and the keyboard focus on the view.
+    void aim();
+    /// The runner's frame of the attempt: the view, the hydraulics, the ghost and the HUD.
+    void showFrame(const TrainFrame& f);
+    /// The attempt is left: no ghost, the expert box inert.
+    void leave();
+    /// Every text in the UI's language; the HUD at the next frame.
+    void retranslate();
+
+    Viewport* view() const { return m_view; }
+    QLabel* hud() const { return m_hud; }
+    QCheckBox* expertBox() const { return m_expertBox; }
+    HydraulicPanel* hydraulicPanel() const { return m_hydraulics; }
+    QCheckBox* hydraulicsBox() const { return m_hydraulicsBox; }
+    /// The training centre's indicator (TrainPage::setCentreLink fills it).
+    QLabel* centreLabel() const { return m_centre; }
+
+signals:
+    /// Esc or Stop.
+    void stopRequested();
+
+protected:
+    /// Esc in the 3D view (which has the keyboard focus) ends the attempt.
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+    void updateHud(const TrainFrame& f);
+    /// A scene's attempt: turns the seat towards the first goal when it is out of view.
+    void aimSeatAtFirstGoal(const trainer::Tutorial& t);
+
+    TrainingController* m_training;
+    i18n::Texts m_texts;
+    bool m_on = false;  ///< between prepare() and leave()
+    long m_shownStep = -1;
+    Viewport* m_view = nullptr;
+    QComboBox* m_cameraBox = nullptr;
+    QCheckBox* m_expertBox = nullptr;
+    HydraulicPanel* m_hydraulics = nullptr;
+    QCheckBox* m_hydraulicsBox = nullptr;
+    QFrame* m_hudPanel = nullptr;
+    QLabel* m_hud = nullptr;
+    QProgressBar* m_dwellBar = nullptr;
+    QLabel* m_hintLabel = nullptr;
+    QLabel* m_warningLabel = nullptr;
+    QLabel* m_centre = nullptr;
+    QString m_hudText, m_hintText, m_warningText;  ///< as shown (set again only when they change)
+};
+
+}  // namespace studio
