@@ -195,6 +195,10 @@ protected:
     void changeEvent(QEvent* event) override;
 
 private:
+    // item data roles: the profiles' list, the devices' list
+    static constexpr int kNameRole = Qt::UserRole;
+    static constexpr int kStoredRole = Qt::UserRole + 1;  ///< false: the unsaved profile's item
+    static constexpr int kReplayRole = Qt::UserRole + 1;  ///< the devices' list: a replay
     void retranslate();
     void buildProfileBar(QVBoxLayout* layout);
     QWidget* buildDevices(QWidget* parent);
