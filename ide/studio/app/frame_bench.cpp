@@ -132,7 +132,7 @@ QString fmt(double v, int decimals = 1)
     return QString::number(v, 'f', decimals);
 }
 
-/// Frame times of the screens of a ViewportLayout: every paintGL's duration, per screen.
+/// Frame times of the screens of a ViewportLayout: every frame's drawing time (Viewport::frameTimed), per screen.
 class FrameLog : public QObject {
 public:
     explicit FrameLog(ViewportLayout* layout) : m_layout(layout)
@@ -157,7 +157,7 @@ public:
         for (const auto& v : m_ms) n = std::min(n, v.size());
         return n;
     }
-    /// Time to draw frame k: its paintGL durations summed over the screens [ms].
+    /// Time to draw frame k: its drawing times summed over the screens [ms].
     std::vector<double> renderMillis() const
     {
         std::vector<double> out(frames(), 0.0);
