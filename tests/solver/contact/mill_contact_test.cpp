@@ -49,9 +49,10 @@ void expectRealContacts(const Simulation& sim, double deepest = 0)
         EXPECT_TRUE(c.point.allFinite());
         EXPECT_TRUE(c.force.allFinite());
         EXPECT_GE(c.depth, 0.0);
-        if (deepest > 0)
+        if (deepest > 0) {
             EXPECT_LT(c.depth, deepest) << "G " << sim.model().contact->geometry->shapes[c.shapeA].graphicId << " / G "
-                                    << sim.model().contact->geometry->shapes[c.shapeB].graphicId;
+                                        << sim.model().contact->geometry->shapes[c.shapeB].graphicId;
+        }
     }
 }
 
@@ -60,12 +61,12 @@ CompiledModel linerInTheMill()
 {
     std::string text = readFile(test::modelPath("liner_mill_fluid.pad"));
     const std::size_t fluid = text.find("\nFLUID");
-    if (fluid == std::string::npos) return {};
-    if (text.find("\nCONTACT") == std::string::npos) text.insert(fluid + 1, "CONTACT\n");
-    const CompiledModel scene = compileFile(std::string(PADROB_SOURCE_DIR) + "/resources/scenes/sag_mill.pad");
-    if (!scene.ok()) return {};
+    if (fluid == std::string::npos) ADD_FAILURE() << "liner_mill_fluid.pad has no FLUID line to put CONTACT before";
+    else if (text.find("\nCONTACT") == std::string::npos) text.insert(fluid + 1, "CONTACT\n");
+    CompiledModel scene = compileFile(std::string(PADROB_SOURCE_DIR) + "/resources/scenes/sag_mill.pad");
+    if (!scene.ok()) return scene;  // (the caller's ok() check fails, with these diagnostics)
     CompiledModel parsed = compileText(text, test::modelPath("liner_mill_fluid.pad"));
-    if (!parsed.ok()) return {};
+    if (!parsed.ok()) return parsed;
     return compileSpec(parsed.spec, &scene.spec);
 }
 
