@@ -215,6 +215,10 @@ TEST(TutorialSession, AReachGoalNeedsItsDwellAndTheScoreFollowsTheRun)
     for (int k = 0; k < 800 && !s.ended(); ++k) {
         drive(s, {{3, 1.0}}, 0.01);
         if (entered < 0 && s.progress().withinTolerance) entered = s.time();
+        // the running score (what the stations publish) is the result's, at every moment
+        if (k % 50 == 0) {
+            ASSERT_EQ(s.score(), s.result().score) << "at t = " << s.time();
+        }
     }
     ASSERT_GT(entered, 0);
     ASSERT_TRUE(s.ended());
@@ -234,6 +238,7 @@ TEST(TutorialSession, AReachGoalNeedsItsDwellAndTheScoreFollowsTheRun)
     double sum = 0;
     for (const ScoreItem& i : r.breakdown) sum += i.points;
     EXPECT_NEAR(r.score, sum, 1e-9);
+    EXPECT_EQ(s.score(), r.score);
 }
 
 TEST(TutorialSession, DisabledDrivesStayClosed)

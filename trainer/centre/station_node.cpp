@@ -165,7 +165,6 @@ void StationNode::noticeRecords()
 void StationNode::publishState(double /*nowS*/)
 {
     const solver::Simulation& sim = m_session->simulation();
-    const TutorialResult r = m_session->result();
     const std::vector<Fault> faults = m_session->activeFaults();
     StationSituation x;
     x.station = m_o.name;
@@ -177,8 +176,8 @@ void StationNode::publishState(double /*nowS*/)
     x.commands = std::span<const double>(sim.state().u.data(), static_cast<std::size_t>(sim.state().u.size()));
     x.progress = m_session->progress();
     x.progress.t = m_session->time();
-    x.score = r.score;
-    x.endReason = r.endReason;
+    x.score = m_session->score();
+    x.endReason = m_session->endReason();
     x.faults = faults;
     x.recordsOffline = m_records && m_records->offline();
     x.recordsRefused = !m_recordsProblem.isEmpty();

@@ -68,7 +68,7 @@ struct StationSituation {
     std::span<const double> q;         ///< θ per tree joint
     std::span<const double> commands;  ///< the valve openings applied, per tree joint
     SessionProgress progress;
-    /// The score as it stands (TutorialSession::result().score: while the attempt runs,
+    /// The score as it stands (TutorialSession::score(), the result's score: while the attempt runs,
     /// what it would score now; its result once ended).
     double score = 0;
     std::string endReason;

@@ -765,12 +765,33 @@ void TutorialSession::end(const std::string& reason, bool completed)
 TutorialResult TutorialSession::result() const
 {
     TutorialResult r = m_result;
-    const Scoring& sc = m_tutorial->scoring();
     r.time = time();
     r.finalPoint = trackPoint();
     if (m_tutorial->trackBody >= 0) r.finalAxes = m_sim->data().X_wb[std::size_t(m_tutorial->trackBody)].linear();
     if (m_tutorial->loadBody >= 0) r.finalLoad = solver::comPosition(*m_tutorial->model, m_sim->data(), m_tutorial->loadBody);
     r.rmsJerk = m_jerkCount > 0 ? std::sqrt(m_jerkSquares / double(m_jerkCount)) : 0.0;
+    scoreInto(r);
+    return r;
+}
+
+double TutorialSession::score() const
+{
+    // the measures the score is made of, and nothing else (not the events)
+    TutorialResult r;
+    r.completed = m_result.completed;
+    r.endReason = m_result.endReason;
+    r.pathLength = m_result.pathLength;
+    r.idealLength = m_result.idealLength;
+    r.penalties = m_result.penalties;
+    r.time = time();
+    r.rmsJerk = m_jerkCount > 0 ? std::sqrt(m_jerkSquares / double(m_jerkCount)) : 0.0;
+    scoreInto(r);
+    return r.score;
+}
+
+void TutorialSession::scoreInto(TutorialResult& r) const
+{
+    const Scoring& sc = m_tutorial->scoring();
     const bool completed = r.completed;
     ScoreItem time{"time", r.time, 0.0, sc.wTime};
     if (completed) {
@@ -791,7 +812,6 @@ TutorialResult TutorialSession::result() const
         const double third = (100.0 - sc.pass) / 3.0;
         r.stars = r.score >= sc.pass + 2 * third ? 3 : r.score >= sc.pass + third ? 2 : 1;
     }
-    return r;
 }
 
 int TutorialSession::partOf(int shape) const

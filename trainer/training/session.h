@@ -160,11 +160,15 @@ public:
     void stop(TutorialEvent::Kind why);
 
     bool ended() const { return m_result.ended; }
+    /// Why it ended ("" while it runs; TutorialResult::endReason).
+    const std::string& endReason() const { return m_result.endReason; }
     const SessionProgress& progress() const { return m_progress; }
     const std::vector<TutorialEvent>& events() const { return m_result.events; }
     const std::vector<SessionSample>& samples() const { return m_samples; }
     /// The result so far (final once ended()).
     TutorialResult result() const;
+    /// result().score, without copying the events (a running score for every frame).
+    double score() const;
     /// Where the tracked point is now (TRACK, else the GRIP's tool point…) [m].
     Eigen::Vector3d trackPoint() const;
 
@@ -205,6 +209,9 @@ public:
     Eigen::Vector3d workerPosition(int worker) const;
 
 private:
+    /// The breakdown, score, pass and stars of `r` from its measures (completed, end
+    /// reason, time, path and ideal lengths, RMS jerk, penalties).
+    void scoreInto(TutorialResult& r) const;
     void handleSolverEvents(const std::vector<solver::SimulationEvent>& events, const std::vector<double>& qdBefore);
     void checkGrip();
     void checkGoal();

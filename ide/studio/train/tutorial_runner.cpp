@@ -140,7 +140,7 @@ struct TutorialRunner::Run {
         f->ended = session->ended();
         f->faults = session->activeFaults();
         if (ghost) f->ghost = captureSnapshot(ghost->session->simulation(), bundle);
-        if (!f->ended) f->score = session->result().score;
+        if (!f->ended) f->score = session->score();
         if (f->ended) {
             if (!output) {
                 auto o = std::make_shared<trainer::RunOutput>();

@@ -58,7 +58,7 @@ struct TrainFrame {
     std::shared_ptr<const Snapshot> ghost;
     /// The faults the instructor injected that are active now (TutorialSession::activeFaults).
     std::vector<trainer::Fault> faults;
-    /// The score as it stands (TutorialSession::result().score): what the attempt would
+    /// The score as it stands (TutorialSession::score(), the result's score): what the attempt would
     /// score now while it runs, its result once ended.
     double score = 0.0;
 };
