@@ -3265,7 +3265,7 @@
         <translation>Instructor: the power was cut; every valve closed</translation>
     </message>
     <message>
-        <location line="+700"/>
+        <location line="+720"/>
         <source>There is no drive &quot;%1&quot;: this machine has no hydraulic drives</source>
         <translation>There is no drive &quot;%1&quot;: this machine has no hydraulic drives</translation>
     </message>
@@ -6504,7 +6504,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::AttemptScreen</name>
     <message>
-        <location filename="../ide/studio/train/attempt_screen.cpp" line="+154"/>
+        <location filename="../ide/studio/train/attempt_screen.cpp" line="+155"/>
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc or Stop ends the attempt.</translation>
     </message>
@@ -6564,7 +6564,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Time: %1 / %2 s</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Penalties: %1</source>
         <translation>Penalties: %1</translation>
     </message>
@@ -6968,7 +6968,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Open</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+47"/>
         <source>Level %1 — %2</source>
         <translation>Level %1 — %2</translation>
     </message>
@@ -7009,7 +7009,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::DebriefScreen</name>
     <message>
-        <location filename="../ide/studio/train/debrief_screen.cpp" line="+55"/>
+        <location filename="../ide/studio/train/debrief_screen.cpp" line="+57"/>
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
@@ -7073,7 +7073,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>No events.</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>Force of %1</source>
         <translation>Force of %1</translation>
     </message>
@@ -7128,7 +7128,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Score</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>…</source>
         <translation>…</translation>
     </message>
@@ -9949,8 +9949,8 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>From now on the demonstration, the expert and the comparison of this stage replay this attempt&apos;s input instead of the shipped one.</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <location line="+5"/>
+        <location line="+8"/>
+        <location line="+6"/>
         <source>Save as demonstration</source>
         <translation>Save as demonstration</translation>
     </message>
@@ -10164,20 +10164,20 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
     <message>
         <location line="+18"/>
         <location line="+42"/>
-        <location line="+67"/>
+        <location line="+70"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location line="-109"/>
+        <location line="-112"/>
         <location line="+42"/>
-        <location line="+97"/>
-        <location line="+5"/>
+        <location line="+102"/>
+        <location line="+6"/>
         <source>Play</source>
         <translation>Play</translation>
     </message>
     <message>
-        <location line="-118"/>
+        <location line="-124"/>
         <source>Speed:</source>
         <translation>Speed:</translation>
     </message>
@@ -10192,12 +10192,12 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>Look where the expert looked while recording (untick to move the view yourself).</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+59"/>
         <source>Time limit: %1 s. Pass mark: %2 of 100.</source>
         <translation>Time limit: %1 s. Pass mark: %2 of 100.</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>This tutorial has no demonstration.</source>
         <translation>This tutorial has no demonstration.</translation>
     </message>
@@ -10755,13 +10755,13 @@ Id: %3</translation>
 <context>
     <name>studio::TrainingController</name>
     <message>
-        <location filename="../ide/studio/train/training_controller.cpp" line="+205"/>
-        <location line="+241"/>
+        <location filename="../ide/studio/train/training_controller.cpp" line="+211"/>
+        <location line="+242"/>
         <source>Guest</source>
         <translation>Guest</translation>
     </message>
     <message>
-        <location line="-156"/>
+        <location line="-157"/>
         <source>The demonstration chosen for this stage (%1) cannot be read: %2. The shipped demonstration is used.</source>
         <translation>The demonstration chosen for this stage (%1) cannot be read: %2. The shipped demonstration is used.</translation>
     </message>

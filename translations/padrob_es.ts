@@ -3265,7 +3265,7 @@
         <translation>Instructor: se cortó la energía; todas las válvulas se cerraron</translation>
     </message>
     <message>
-        <location line="+700"/>
+        <location line="+720"/>
         <source>There is no drive &quot;%1&quot;: this machine has no hydraulic drives</source>
         <translation>No hay un accionamiento &quot;%1&quot;: esta máquina no tiene accionamientos hidráulicos</translation>
     </message>
@@ -6534,7 +6534,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::AttemptScreen</name>
     <message>
-        <location filename="../ide/studio/train/attempt_screen.cpp" line="+154"/>
+        <location filename="../ide/studio/train/attempt_screen.cpp" line="+155"/>
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc o Detener termina el intento.</translation>
     </message>
@@ -6594,7 +6594,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Tiempo: %1 / %2 s</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Penalties: %1</source>
         <translation>Penalizaciones: %1</translation>
     </message>
@@ -6998,7 +6998,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Abrir</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+47"/>
         <source>Level %1 — %2</source>
         <translation>Nivel %1 — %2</translation>
     </message>
@@ -7039,7 +7039,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::DebriefScreen</name>
     <message>
-        <location filename="../ide/studio/train/debrief_screen.cpp" line="+55"/>
+        <location filename="../ide/studio/train/debrief_screen.cpp" line="+57"/>
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
@@ -7103,7 +7103,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Sin eventos.</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>Force of %1</source>
         <translation>Fuerza de %1</translation>
     </message>
@@ -7158,7 +7158,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Puntaje</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>…</source>
         <translation>…</translation>
     </message>
@@ -9979,8 +9979,8 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>Desde ahora la demostración, el experto y la comparación de esta etapa reproducen las entradas de este intento en lugar de las incluidas.</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <location line="+5"/>
+        <location line="+8"/>
+        <location line="+6"/>
         <source>Save as demonstration</source>
         <translation>Guardar como demostración</translation>
     </message>
@@ -10194,20 +10194,20 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
     <message>
         <location line="+18"/>
         <location line="+42"/>
-        <location line="+67"/>
+        <location line="+70"/>
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
     <message>
-        <location line="-109"/>
+        <location line="-112"/>
         <location line="+42"/>
-        <location line="+97"/>
-        <location line="+5"/>
+        <location line="+102"/>
+        <location line="+6"/>
         <source>Play</source>
         <translation>Reproducir</translation>
     </message>
     <message>
-        <location line="-118"/>
+        <location line="-124"/>
         <source>Speed:</source>
         <translation>Velocidad:</translation>
     </message>
@@ -10222,12 +10222,12 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>Mirar hacia donde miraba el experto al grabar (desmarque para mover la vista usted mismo).</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+59"/>
         <source>Time limit: %1 s. Pass mark: %2 of 100.</source>
         <translation>Tiempo límite: %1 s. Puntaje de aprobación: %2 de 100.</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>This tutorial has no demonstration.</source>
         <translation>Este tutorial no tiene demostración.</translation>
     </message>
@@ -10785,13 +10785,13 @@ Id: %3</translation>
 <context>
     <name>studio::TrainingController</name>
     <message>
-        <location filename="../ide/studio/train/training_controller.cpp" line="+205"/>
-        <location line="+241"/>
+        <location filename="../ide/studio/train/training_controller.cpp" line="+211"/>
+        <location line="+242"/>
         <source>Guest</source>
         <translation>Invitado</translation>
     </message>
     <message>
-        <location line="-156"/>
+        <location line="-157"/>
         <source>The demonstration chosen for this stage (%1) cannot be read: %2. The shipped demonstration is used.</source>
         <translation>No se puede leer la demostración elegida para esta etapa (%1): %2. Se usa la demostración incluida.</translation>
     </message>

@@ -144,7 +144,8 @@ AttemptScreen::AttemptScreen(TrainingController* training, QWidget* parent) : QW
     bar->addWidget(m_cameraBox);
     connect(m_cameraBox, &QComboBox::activated, this, [this](int i) {
         m_view->setCamera(m_cameraBox->itemData(i).toString());
-        if (m_cameraBox->itemData(i).toString() != QLatin1String("Operator seat")) trainui::frameModelAndTargets(m_view);
+        if (m_cameraBox->itemData(i).toString() != QLatin1String("Operator seat"))
+            trainui::frameModelAndTargets(m_view);
         m_view->setFocus();
     });
     auto* stop = new QPushButton;
@@ -258,7 +259,8 @@ void AttemptScreen::updateHud(const TrainFrame& f)
         m_dwellBar->hide();
     }
     lines << tr("Time: %1 / %2 s").arg(num(p.t, 1), num(t->scoring().timeLimit, 0));
-    if (p.penalties > 0) lines << "<span style='color:#ff8a80'>" + tr("Penalties: %1").arg(num(p.penalties, 0)) + "</span>";
+    if (p.penalties > 0)
+        lines << "<span style='color:#ff8a80'>" + tr("Penalties: %1").arg(num(p.penalties, 0)) + "</span>";
     if (p.grasped) lines << tr("Load in the claws");
     // the station: bank and its warnings
     const bool live = m_training->attemptLive();
@@ -285,7 +287,8 @@ void AttemptScreen::updateHud(const TrainFrame& f)
         m_hud->setText(text);
     }
     QString w;
-    for (const QString& s : warnings) w += (w.isEmpty() ? "" : "<br>") + QStringLiteral("<span style='color:#ffc04d'>⚠ %1</span>").arg(s);
+    for (const QString& s : warnings)
+        w += (w.isEmpty() ? "" : "<br>") + QStringLiteral("<span style='color:#ffc04d'>⚠ %1</span>").arg(s);
     if (w != m_warningText) {
         m_warningText = w;
         m_warningLabel->setText(w);
@@ -327,8 +330,9 @@ void AttemptScreen::aimSeatAtFirstGoal(const trainer::Tutorial& t)
         return true;
     };
     Eigen::Vector3d tool;
-    const bool hasTool = g.kind == trainer::Goal::Kind::Reach ? worldPoint(g.bodyId, g.point, tool)
-                                                              : worldPoint(t.spec.grip.toolBodyId, t.spec.grip.toolPoint, tool);
+    const bool hasTool = g.kind == trainer::Goal::Kind::Reach
+                             ? worldPoint(g.bodyId, g.point, tool)
+                             : worldPoint(t.spec.grip.toolBodyId, t.spec.grip.toolPoint, tool);
     // when the goal is outside the middle of the view, the seat turns (the operator turns
     // their head) to see the goal and the tool, or at least the goal; its place and
     // pitch stay

@@ -91,9 +91,8 @@ CourseScreen::CourseScreen(TrainingController* training, QWidget* parent) : QWid
     };
     connect(m_openButton, &QPushButton::clicked, this, open);
     connect(m_courseList, &QListWidget::itemActivated, this, open);
-    connect(m_courseList, &QListWidget::currentItemChanged, this, [this](QListWidgetItem* it) {
-        m_openButton->setEnabled(it && (it->flags() & Qt::ItemIsEnabled));
-    });
+    connect(m_courseList, &QListWidget::currentItemChanged, this,
+            [this](QListWidgetItem* it) { m_openButton->setEnabled(it && (it->flags() & Qt::ItemIsEnabled)); });
 }
 
 QPushButton* CourseScreen::languageButton(const QString& code) const

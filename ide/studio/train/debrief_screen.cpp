@@ -18,8 +18,8 @@
 #include <QSplitter>
 #include <QTableWidget>
 #include <QTimer>
-#include <QValueAxis>
 #include <QVBoxLayout>
+#include <QValueAxis>
 
 #include <algorithm>
 #include <cmath>
@@ -36,13 +36,15 @@ void decimalsForTicks(QValueAxis* axis)
 {
     const double step = axis->tickCount() > 1 ? (axis->max() - axis->min()) / (axis->tickCount() - 1) : 1.0;
     int decimals = 0;
-    while (decimals < 3 && std::abs(step * std::pow(10.0, decimals) - std::round(step * std::pow(10.0, decimals))) > 1e-6)
+    while (decimals < 3 &&
+           std::abs(step * std::pow(10.0, decimals) - std::round(step * std::pow(10.0, decimals))) > 1e-6)
         ++decimals;
     axis->setLabelFormat(QStringLiteral("%.%1f").arg(decimals));
 }
 
 /// A chart of one series against the time, its numbers in the locale's format.
-QChart* makeChart(const QString& title, QLineSeries* series, const QString& yTitle, double yMin, double yMax, double tMax)
+QChart* makeChart(const QString& title, QLineSeries* series, const QString& yTitle, double yMin, double yMax,
+                  double tMax)
 {
     auto* chart = new QChart;
     chart->setAnimationOptions(QChart::NoAnimation);
@@ -270,7 +272,8 @@ void DebriefScreen::fillCharts()
     QString name;
     if (joint >= 0) {
         name = QStringLiteral("C %1").arg(m.jointId[std::size_t(joint)]);
-        if (!m.jointName[std::size_t(joint)].empty()) name += ' ' + QString::fromStdString(m.jointName[std::size_t(joint)]);
+        if (!m.jointName[std::size_t(joint)].empty())
+            name += ' ' + QString::fromStdString(m.jointName[std::size_t(joint)]);
     }
     QChart* old = m_forceChart->chart();
     m_forceChart->setChart(makeChart(joint >= 0 ? tr("Force of %1").arg(name) : tr("No drive force"), force,
@@ -309,8 +312,9 @@ void DebriefScreen::fillComparison()
     for (int i = 0; i < 5; ++i) {
         m_comparison->setItem(i, 0, new QTableWidgetItem(rows[i].label));
         m_comparison->setItem(i, 1, new QTableWidgetItem(num(rows[i].a, rows[i].decimals)));
-        m_comparison->setItem(i, 2, new QTableWidgetItem(expert ? num(rows[i].b, rows[i].decimals)
-                                                                : (m_training->demoLog() ? tr("…") : tr("none"))));
+        m_comparison->setItem(i, 2,
+                              new QTableWidgetItem(expert ? num(rows[i].b, rows[i].decimals)
+                                                          : (m_training->demoLog() ? tr("…") : tr("none"))));
     }
 }
 

@@ -97,10 +97,10 @@ ResultScreen::ResultScreen(TrainingController* training, QWidget* parent) : QWid
     connect(m_saveDemoButton, &QPushButton::clicked, this, [this] {
         const auto t = m_training->tutorial();
         if (!t) return;
-        const QString path = QFileDialog::getSaveFileName(
-            this, tr("Save as demonstration"),
-            TrainingController::userDemonstrationPath(QString::fromStdString(t->spec.id)),
-            tr("Padrob input logs (*.log);;All files (*)"));
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save as demonstration"),
+                                                          TrainingController::userDemonstrationPath(
+                                                              QString::fromStdString(t->spec.id)),
+                                                          tr("Padrob input logs (*.log);;All files (*)"));
         QString error;
         if (!path.isEmpty() && !m_training->saveDemonstration(path, &error))
             QMessageBox::warning(this, tr("Save as demonstration"), error);
@@ -138,8 +138,8 @@ void ResultScreen::fill(bool kiosk)
     if (!run) return;
     const trainer::TutorialResult& r = run->result;
     m_heading->setText(r.passed ? tr("PASSED") : tr("NOT PASSED"));
-    m_heading->setStyleSheet(QStringLiteral("font-size: 40px; font-weight: bold; color: %1;")
-                                 .arg(r.passed ? "#2e9d4a" : "#c0392b"));
+    m_heading->setStyleSheet(
+        QStringLiteral("font-size: 40px; font-weight: bold; color: %1;").arg(r.passed ? "#2e9d4a" : "#c0392b"));
     m_stars->setText(trainui::stars(r.stars));
     QString why;
     if (r.endReason == "time-up") why = tr("The time ran out.");
@@ -153,9 +153,9 @@ void ResultScreen::fill(bool kiosk)
     QString note;
     if (m_training->notRecorded())
         note = tr("The trainee records could not be written (%1); the attempt is kept and will be added the next "
-                  "time they can.").arg(m_training->unwritten());
-    else if (m_training->madeDemonstration())
-        note = tr("This attempt is now the stage's demonstration.");
+                  "time they can.")
+                   .arg(m_training->unwritten());
+    else if (m_training->madeDemonstration()) note = tr("This attempt is now the stage's demonstration.");
     m_note->setText(note);
     m_breakdown->setRowCount(int(r.breakdown.size()));
     for (int i = 0; i < int(r.breakdown.size()); ++i) {

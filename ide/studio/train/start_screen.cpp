@@ -148,9 +148,12 @@ void StartScreen::fill()
     const std::string lang = TrainingController::language().toStdString();
     m_title->setText(QString::fromStdString(t->title(lang)));
     QString intro;
-    for (const trainer::LocalText& p : t->spec.intro) intro += "<p>" + QString::fromStdString(p.in(lang)).toHtmlEscaped() + "</p>";
-    intro += "<p>" + tr("Time limit: %1 s. Pass mark: %2 of 100.")
-                         .arg(trainui::num(t->scoring().timeLimit, 0), trainui::num(t->scoring().pass, 0)) + "</p>";
+    for (const trainer::LocalText& p : t->spec.intro)
+        intro += "<p>" + QString::fromStdString(p.in(lang)).toHtmlEscaped() + "</p>";
+    intro += "<p>" +
+             tr("Time limit: %1 s. Pass mark: %2 of 100.")
+                 .arg(trainui::num(t->scoring().timeLimit, 0), trainui::num(t->scoring().pass, 0)) +
+             "</p>";
     m_intro->setText(intro);
     const QString warning = m_training->demoWarning();
     m_note->setText(warning);
@@ -203,7 +206,10 @@ void StartScreen::showFrame(const TrainFrame& f)
     m_time->setText(text);
 }
 
-void StartScreen::demoFinished() { m_play->setText(tr("Play")); }
+void StartScreen::demoFinished()
+{
+    m_play->setText(tr("Play"));
+}
 
 void StartScreen::leave()
 {

@@ -16,7 +16,10 @@ QString stars(int n)
     return s;
 }
 
-QString num(double v, int decimals) { return QLocale().toString(v, 'f', decimals); }
+QString num(double v, int decimals)
+{
+    return QLocale().toString(v, 'f', decimals);
+}
 
 QLabel* wrapped(const QString& text)
 {

@@ -26,12 +26,15 @@ constexpr qint64 kLogEveryMs = 500;  // events to the records this often during 
 constexpr int kKeptRecordings = 20;  // older recordings are deleted
 
 /// The station profile saved beside an input log.
-QString profileBeside(const QString& log) { return log + QStringLiteral(".profile.json"); }
+QString profileBeside(const QString& log)
+{
+    return log + QStringLiteral(".profile.json");
+}
 
 QString settingsKey(const QString& op, const QString& id, const char* what)
 {
-    return QStringLiteral("trainer/progress/%1/%2/%3").arg(op.isEmpty() ? QStringLiteral("-") : op, id,
-                                                          QLatin1String(what));
+    return QStringLiteral("trainer/progress/%1/%2/%3")
+        .arg(op.isEmpty() ? QStringLiteral("-") : op, id, QLatin1String(what));
 }
 
 }  // namespace
@@ -75,7 +78,10 @@ TrainingController::~TrainingController()
     m_attemptLog.reset();  // before the records close
 }
 
-QString TrainingController::language() { return i18n::current(); }
+QString TrainingController::language()
+{
+    return i18n::current();
+}
 
 QString TrainingController::operatorCode(const QString& id)
 {
@@ -105,8 +111,8 @@ void TrainingController::setTutorialsDir(const QString& dir)
             QFile file(e.path);
             solver::Diagnostics ignored(e.path.toStdString());
             if (file.open(QIODevice::ReadOnly)) {
-                const trainer::TutorialSpec spec =
-                    trainer::parseTutorial(file.readAll().toStdString(), e.path.toStdString(), ignored);
+                const trainer::TutorialSpec spec = trainer::parseTutorial(file.readAll().toStdString(),
+                                                                          e.path.toStdString(), ignored);
                 e.id = QString::fromStdString(spec.id);
                 e.level = spec.level;
                 e.titleText = spec.title;
@@ -392,9 +398,9 @@ bool TrainingController::startRecording(const trainer::Tutorial& t)
         QFile::remove(old[i].absoluteFilePath());
         QFile::remove(profileBeside(old[i].absoluteFilePath()));
     }
-    const QString file = dir.filePath(QStringLiteral("%1-%2.log")
-                                          .arg(QString::fromStdString(t.spec.id),
-                                               QDateTime::currentDateTime().toString("yyyyMMdd-HHmmss-zzz")));
+    const QString file = dir.filePath(
+        QStringLiteral("%1-%2.log")
+            .arg(QString::fromStdString(t.spec.id), QDateTime::currentDateTime().toString("yyyyMMdd-HHmmss-zzz")));
     auto recorder = std::make_unique<trainer::InputRecorder>();
     QString error;
     trainer::StationProfile profile;
@@ -415,7 +421,8 @@ void TrainingController::stopRecording()
     const bool ok = m_station ? m_station->stopRecording(*m_recorder, &error) : m_recorder->stop(&error);
     m_recorder.reset();
     if (!ok) {
-        qWarning("Train: the attempt's input log %s may be incomplete: %s", qPrintable(m_recordingFile), qPrintable(error));
+        qWarning("Train: the attempt's input log %s may be incomplete: %s", qPrintable(m_recordingFile),
+                 qPrintable(error));
         return;
     }
     QFile json(profileBeside(m_recordingFile));
@@ -514,14 +521,17 @@ void TrainingController::computeExpert()
         QString error;
         const bool ok = trainer::runTutorialWithLog(t, log, profile, *out, &error, TutorialRunner::kGrace);
         // back in the GUI thread, where the controller may have gone meanwhile
-        QMetaObject::invokeMethod(qApp, [self, out, ok, id] {
-            if (!self) return;
-            self->m_expertBusy = false;
-            if (!ok) return;
-            self->m_expert = out;
-            self->m_expertFor = id;
-            emit self->expertReady();
-        }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            qApp,
+            [self, out, ok, id] {
+                if (!self) return;
+                self->m_expertBusy = false;
+                if (!ok) return;
+                self->m_expert = out;
+                self->m_expertFor = id;
+                emit self->expertReady();
+            },
+            Qt::QueuedConnection);
     });
     connect(worker, &QThread::finished, worker, &QObject::deleteLater);
     worker->start(QThread::LowPriority);

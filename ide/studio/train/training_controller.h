@@ -42,7 +42,7 @@
 namespace trainer {
 class AttemptLog;
 class Station;
-}
+}  // namespace trainer
 
 namespace studio {
 
