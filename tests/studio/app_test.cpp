@@ -678,6 +678,65 @@ private slots:
         QTest::keyRelease(v, Qt::Key_S);
     }
 
+    // No shortcut of the window is a valve key (View > Fit All was F, the wrist's R/F
+    // pair: with the view focused F moved the wrist and never fitted); Fit All is Home,
+    // and Keyboard Controls says the shortcuts beside the valve keys.
+    void noShortcutIsAValveKeyAndHomeFitsTheView()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(openAndWait(w, modelPath("liner_manipulator.pad")));
+        constexpr Qt::KeyboardModifiers chords = Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier;
+        for (QAction* a : w.findChildren<QAction*>()) {
+            for (const QKeySequence& k : a->shortcuts()) {
+                if (k.isEmpty() || (k[0].keyboardModifiers() & chords)) continue;
+                QVERIFY2(!KeyboardInput::isValveKey(k[0].key()),
+                         qPrintable(a->text() + " has the valve key " + k.toString()));
+            }
+        }
+        QTRY_VERIFY(w.station()->latest() && w.station()->latest()->drives.size() == 9 &&
+                    w.station()->latest()->profileName == "Gamepad");
+        // (a window's shortcuts act in the active window only)
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        Viewport* v = w.viewports()->viewport(0);
+        v->setFocus();
+        v->fitAll();
+        const double fitted = v->cameraState().distance;
+        Camera far = v->cameraState();
+        far.distance = 5 * fitted;
+        v->setCameraState(far);
+        // F: the wrist (C 4, the fourth pair's second key), the view stays
+        const int wrist = w.bundle()->model->jointIndex(4);
+        QTest::keyPress(v, Qt::Key_F);
+        QTRY_COMPARE(w.runner()->commands()[static_cast<std::size_t>(wrist)], -1.0);
+        QTest::keyRelease(v, Qt::Key_F);
+        QTRY_COMPARE(w.runner()->commands()[static_cast<std::size_t>(wrist)], 0.0);
+        QCOMPARE(v->cameraState().distance, 5 * fitted);
+        // Home: Fit All (the wrist moved a little: about the distance fitted before)
+        QTest::keyClick(v, Qt::Key_Home);
+        QTRY_VERIFY(std::abs(v->cameraState().distance - fitted) < 0.2 * fitted);
+        // Keyboard Controls: the valve keys and the shortcuts
+        w.findChild<QAction*>("KeyboardControlsAction")->trigger();
+        QMessageBox* box = nullptr;
+        QTRY_VERIFY((box = w.findChild<QMessageBox*>("KeyboardControlsBox")) && box->isVisible());
+        QVERIFY(box->text().contains(QKeySequence(Qt::Key_Home).toString(QKeySequence::NativeText) + "</b> Fit All"));
+        QVERIFY(box->text().contains("F5</b>"));
+        QVERIFY(box->text().contains("R / F"));
+        QVERIFY(box->grab().save(screenshotPath("app_keyboard_controls_en.png")));
+        box->close();
+        // and in Spanish
+        chooseLanguage(w, "es");
+        w.findChild<QAction*>("KeyboardControlsAction")->trigger();
+        QTRY_VERIFY((box = w.findChild<QMessageBox*>("KeyboardControlsBox")) && box->isVisible());
+        QVERIFY(box->text().contains("Atajos (ninguno abre una válvula):"));
+        QVERIFY(box->text().contains("</b> Encuadrar todo"));
+        QVERIFY(box->grab().save(screenshotPath("app_keyboard_controls_es.png")));
+        box->close();
+        chooseLanguage(w, "en");
+    }
+
     // The Station workspace: the liner's Gamepad profile is chosen at the first start,
     // the HUD shows the active bank, a profile's unsaved edits survive re-applying the
     // model, and the profile chosen is remembered for the next start.

@@ -92,7 +92,9 @@ void MainWindow::buildMenus()
     for (const QString& name : Viewport::cameraNames()) {
         m.cameras.emplace_back(m.camera->addAction(QString(), this, [this, name] { m_viewports->setCamera(name); }), name);
     }
-    m.fitAll = m.view->addAction(QString(), QKeySequence(Qt::Key_F), this, [this] { m_viewports->fitAll(); });
+    // (Home, as in most 3D tools: F, the letter many use, is a valve key, KeyboardInput::isValveKey)
+    m.fitAll = m.view->addAction(QString(), QKeySequence(Qt::Key_Home), this, [this] { m_viewports->fitAll(); });
+    m.fitAll->setObjectName("FitAllAction");
     m.scene = m.view->addMenu(QString());
     m.scene->setObjectName("SceneMenu");
     m.loadScene = m.scene->addAction(QString(), this, [this] {
@@ -148,6 +150,7 @@ void MainWindow::buildMenus()
     }
     m.simulation->addSeparator();
     m.keyboard = m.simulation->addAction(QString(), this, &MainWindow::showKeyboardControls);
+    m.keyboard->setObjectName("KeyboardControlsAction");
 
     // Settings ▸ Language: each language by its own name; the choice is remembered
     // (i18n::switchTo) and every window changes language at once (retranslate())
@@ -318,13 +321,23 @@ void MainWindow::showKeyboardControls()
         }
     }
     text += "</table>";
-    QMessageBox::information(
-        this, tr("Keyboard Controls"),
-        QStringLiteral("<p>%1</p>%2<p>%3</p>")
-            .arg(tr("With the 3D view focused, hold a key to open a valve:"), text,
+    // the view's and the simulation's shortcuts, none of them a valve key
+    QStringList shortcuts;
+    for (QAction* a : {m_items->fitAll, m_runAction, m_pauseAction, m_stepAction, m_resetAction}) {
+        shortcuts << QStringLiteral("<b>%1</b> %2").arg(a->shortcut().toString(QKeySequence::NativeText).toHtmlEscaped(),
+                                                       QString(a->text()).remove(QLatin1Char('&')).toHtmlEscaped());
+    }
+    auto* box = new QMessageBox(QMessageBox::Information, tr("Keyboard Controls"),
+                                QStringLiteral("<p>%1</p>%2<p>%3<br>%4</p><p>%5</p>")
+                                    .arg(tr("With the 3D view focused, hold a key to open a valve:"), text,
+                                         tr("Shortcuts (none of them opens a valve):"), shortcuts.join(QStringLiteral(" · ")),
                  tr("Mouse in the 3D view: left drag orbits, middle drag or Shift + left drag pans, the wheel "
                     "zooms, a double click frames the model. Ctrl + left drag on a body pushes it while the "
-                    "simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go.")));
+                    "simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go.")),
+                                QMessageBox::Ok, this);
+    box->setObjectName("KeyboardControlsBox");
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
 }
 
 void MainWindow::showLanguageReference()

@@ -56,6 +56,13 @@ QStringList KeyboardInput::pairNames()
     return names;
 }
 
+bool KeyboardInput::isValveKey(int key)
+{
+    return std::any_of(kPairs.begin(), kPairs.end(), [key](const auto& pair) {
+        return pair.first == key || pair.second == key;
+    });
+}
+
 void KeyboardInput::setDevice(std::shared_ptr<trainer::KeyboardDevice> device)
 {
     releaseAll();

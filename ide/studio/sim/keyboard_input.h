@@ -56,6 +56,10 @@ public:
 
     /// The nine pairs as shown, "Q / A" … "O / L" (the keyboard device's channels).
     static QStringList pairNames();
+    /// `key` (a Qt::Key, no modifiers) opens a valve: a key of one of the pairs. No
+    /// shortcut of the application may be one (they would never reach the valves, or
+    /// the valves would take them).
+    static bool isValveKey(int key);
     /// From now on the keys go to `device` (channel k = pair k), not to the runner;
     /// nullptr: back to the runner. Every key is released.
     void setDevice(std::shared_ptr<trainer::KeyboardDevice> device);
