@@ -31,11 +31,16 @@ struct Run {
     bool finished = false;
 };
 
-/// Runs padrob-studio with `args`, with settings and data in `home` (never the user's).
-Run runStudio(const QStringList& args, const QString& home, int timeoutMs = 300000)
+/// Runs padrob-studio with `args`, with settings and data in `home` (never the user's);
+/// `noDisplay`: with no X or Wayland display to open (xcb would abort without one).
+Run runStudio(const QStringList& args, const QString& home, int timeoutMs = 300000, bool noDisplay = false)
 {
     QProcess p;
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    if (noDisplay) {
+        env.remove(QStringLiteral("DISPLAY"));
+        env.remove(QStringLiteral("WAYLAND_DISPLAY"));
+    }
     env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("xcb"));
     env.insert(QStringLiteral("XDG_CONFIG_HOME"), home + QStringLiteral("/config"));
     env.insert(QStringLiteral("XDG_DATA_HOME"), home + QStringLiteral("/data"));
@@ -94,6 +99,34 @@ private slots:
         QCOMPARE(r.exitCode, 0);
         for (const char* option : {"--scene", "--bench-frames", "--views", "--json", "--lighting", "[MODEL]"})
             QVERIFY2(r.out.contains(option), option);
+    }
+
+    // --help and --version print their text without a display (issue 25, item 4), and
+    // --help in Spanish is Spanish throughout (Qt's own "Options:" and its help options
+    // are not all in Debian's qtbase_es)
+    void helpAndVersionNeedNoDisplayAndSpeakSpanish()
+    {
+        QTemporaryDir home;
+        const Run version = runStudio({QStringLiteral("--version")}, home.path(), 60000, true);
+        QVERIFY(version.finished);
+        QCOMPARE(version.exitCode, 0);
+        QCOMPARE(version.out.trimmed(), QByteArray("padrob-studio " PADROB_VERSION));
+        const Run english = runStudio({"--lang", "en", "--help"}, home.path(), 60000, true);
+        QVERIFY(english.finished);
+        QCOMPARE(english.exitCode, 0);
+        QVERIFY(english.out.contains("Options:"));
+        QVERIFY(english.out.contains("Show this help and quit."));
+        const Run spanish = runStudio({"--lang", "es", "--help"}, home.path(), 60000, true);
+        QVERIFY(spanish.finished);
+        QCOMPARE(spanish.exitCode, 0);
+        const QString out = QString::fromUtf8(spanish.out);
+        QVERIFY2(out.startsWith(QStringLiteral("Uso: ")), qPrintable(out.left(80)));
+        QVERIFY(out.contains(QStringLiteral("Opciones:")));
+        QVERIFY(out.contains(QStringLiteral("Mostrar esta ayuda y salir.")));
+        QVERIFY(out.contains(QStringLiteral("Mostrar la versión y salir.")));
+        QVERIFY(out.contains(QStringLiteral("[MODELO]")));
+        for (const char* english : {"Usage:", "Options:", "Arguments:", "Displays", "Show this help", "The model file"})
+            QVERIFY2(!out.contains(QLatin1String(english)), english);
     }
 
     void badBenchArgumentsAreRefused()
