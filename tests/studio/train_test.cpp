@@ -28,6 +28,8 @@
 #include "trainer/training/runner.h"
 #include "trainer/training/tutorial.h"
 
+#include <algorithm>
+
 #include <QApplication>
 #include <QChart>
 #include <QChartView>
@@ -574,6 +576,25 @@ private slots:
         if (page()->courseList()->count() > 1) QVERIFY(!(page()->courseList()->item(1)->flags() & Qt::ItemIsEnabled));
         page()->setOperator(QString());
         QVERIFY(page()->progressOf("T0").passed);
+    }
+
+    // A page whose first attempt ends after a change of language shows the result's and
+    // the debrief's own texts in the new language (they are set at the change, not only
+    // when a result is there to fill them)
+    void aLanguageChangeBeforeAnyAttemptReachesTheResultAndDebrief()
+    {
+        TutorialRunner runner;
+        TrainPage fresh(&runner, nullptr);
+        auto* retry = fresh.findChild<QPushButton*>("RetryButton");
+        QVERIFY(retry && !fresh.lastRun());
+        QCOMPARE(retry->text(), QString("Retry"));
+        i18n::switchTo("es");
+        QTRY_COMPARE(retry->text(), QString("Reintentar"));
+        const QList<QPushButton*> buttons = fresh.findChildren<QPushButton*>();
+        QVERIFY(std::any_of(buttons.begin(), buttons.end(),
+                            [](const QPushButton* b) { return b->text() == QString("Volver al resultado"); }));
+        i18n::switchTo("en");
+        QTRY_COMPARE(retry->text(), QString("Retry"));
     }
 
     void languageSwitchesAtRunTime()

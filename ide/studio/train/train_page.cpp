@@ -217,10 +217,9 @@ void TrainPage::retranslate()
     showCentreLink();
     // the HUD and the demonstration's clock now, even paused
     if (m_screen == Screen::Attempt || m_screen == Screen::Start) poll();
-    if (m_training->lastRun()) {
-        m_result->retranslate(m_kiosk);
-        m_debrief->retranslate();
-    }
+    // (their fixed texts too when no attempt has ended yet: they show after one)
+    m_result->retranslate(m_kiosk);
+    m_debrief->retranslate();
     giveRecordsTheTutorials();  // the titles in the new language, before the view shows them again
 }
 
