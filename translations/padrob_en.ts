@@ -6504,7 +6504,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::AttemptScreen</name>
     <message>
-        <location filename="../ide/studio/train/attempt_screen.cpp" line="+155" />
+        <location filename="../ide/studio/train/attempt_screen.cpp" line="+156" />
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc or Stop ends the attempt.</translation>
     </message>
@@ -6512,6 +6512,11 @@ never the .key files of the CAs; then run it with --security DIR.
         <location line="+1" />
         <source>Show the expert</source>
         <translation>Show the expert</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Your trainer chooses whether the expert is shown.</source>
+        <translation>Your trainer chooses whether the expert is shown.</translation>
     </message>
     <message>
         <location line="+1" />
@@ -6539,7 +6544,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Stop</translation>
     </message>
     <message>
-        <location line="+87" />
+        <location line="+102" />
         <source>Goal %1 of %2</source>
         <translation>Goal %1 of %2</translation>
     </message>
@@ -7510,7 +7515,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::InertiaDialog</name>
     <message>
-        <location filename="../ide/studio/dialogs/inertia_dialog.cpp" line="+65" />
+        <location filename="../ide/studio/dialogs/inertia_dialog.cpp" line="+72" />
         <source>n/a (file: 0)</source>
         <translation>n/a (file: 0)</translation>
     </message>
@@ -7701,7 +7706,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>MASS [kg]</translation>
     </message>
     <message>
-        <location line="+142" />
+        <location line="+159" />
         <source>Error: %1</source>
         <translation>Error: %1</translation>
     </message>
@@ -8376,7 +8381,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::MainWindow</name>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+150" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+151" />
         <source>Export</source>
         <translation>Export</translation>
     </message>
@@ -8417,12 +8422,12 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Station</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+173" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+169" />
         <source>Leave Trainer Mode</source>
         <translation>Leave Trainer Mode</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>Trainer's PIN:</source>
         <translation>Trainer's PIN:</translation>
     </message>
@@ -8532,7 +8537,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>&amp;Load…</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+38" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+36" />
         <location filename="../ide/studio/app/main_window_menus.cpp" line="-147" />
         <source>Load Scene</source>
         <translation>Load Scene</translation>
@@ -8651,7 +8656,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Padrob models (*.pad);;All files (*)</translation>
     </message>
     <message numerus="yes">
-        <location line="-247" />
+        <location line="-240" />
         <source>%n attempt(s) kept while the trainee records could not be written were added to them.</source>
         <translation>
             <numerusform>%n attempt kept while the trainee records could not be written was added to them.</numerusform>
@@ -8736,7 +8741,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Mouse in the 3D view: left drag orbits, middle drag or Shift + left drag pans, the wheel zooms, a double click frames the model. Ctrl + left drag on a body pushes it while the simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go.</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+188" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+181" />
         <source>%1
 
 The 3D view goes on without this scene.</source>
@@ -9413,6 +9418,34 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
     </message>
 </context>
 <context>
+    <name>studio::PinDialog</name>
+    <message>
+        <location filename="../ide/studio/train/pin_dialog.cpp" line="+37" />
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <location line="+33" />
+        <source>That is not the trainer's PIN. Try again.</source>
+        <translation>That is not the trainer's PIN. Try again.</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Type the trainer's PIN.</source>
+        <translation>Type the trainer's PIN.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+8" />
+        <source>Too many wrong PINs: wait %n s.</source>
+        <translation><numerusform>Too many wrong PINs: wait %n s.</numerusform><numerusform>Too many wrong PINs: wait %n s.</numerusform></translation>
+    </message>
+</context>
+<context>
     <name>studio::PlotPanel</name>
     <message>
         <location filename="../ide/studio/plots/plot_panel.cpp" line="+144" />
@@ -9651,7 +9684,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
 <context>
     <name>studio::RecordsView</name>
     <message>
-        <location filename="../ide/studio/train/records_view.cpp" line="+48" />
+        <location filename="../ide/studio/train/records_view.cpp" line="+55" />
         <source>running</source>
         <translation>running</translation>
     </message>
@@ -9717,12 +9750,12 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
     </message>
     <message>
         <location line="+1" />
-        <location line="+27" />
+        <location line="+46" />
         <source>Add operator</source>
         <translation>Add operator</translation>
     </message>
     <message>
-        <location line="-26" />
+        <location line="-45" />
         <source>Attempts (newest first)</source>
         <translation>Attempts (newest first)</translation>
     </message>
@@ -9797,7 +9830,17 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>Export CSV…</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+12" />
+        <source>Trainees see the expert in Trainer Mode</source>
+        <translation>Trainees see the expert in Trainer Mode</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>In Trainer Mode the trainee cannot change this: the expert's translucent machine runs beside each attempt only when it is on.</source>
+        <translation>In Trainer Mode the trainee cannot change this: the expert's translucent machine runs beside each attempt only when it is on.</translation>
+    </message>
+    <message>
+        <location line="+31" />
         <location line="+4" />
         <source>Export CSV</source>
         <translation>Export CSV</translation>
@@ -9878,6 +9921,11 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <location line="+27" />
         <source>Type the operator's code (badge number…).</source>
         <translation>Type the operator's code (badge number…).</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+18" />
+        <source>Wrote %n attempt(s) to %1.</source>
+        <translation><numerusform>Wrote %n attempt to %1.</numerusform><numerusform>Wrote %n attempts to %1.</numerusform></translation>
     </message>
 </context>
 <context>
@@ -10709,27 +10757,17 @@ Id: %3</translation>
 <context>
     <name>studio::TrainPage</name>
     <message>
-        <location filename="../ide/studio/train/train_page.cpp" line="+151" />
+        <location filename="../ide/studio/train/train_page.cpp" line="+149" />
         <source>Trainee records</source>
         <translation>Trainee records</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>The trainer's PIN:</source>
         <translation>The trainer's PIN:</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>OK</source>
-        <translation>OK</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Cancel</source>
-        <translation>Cancel</translation>
-    </message>
-    <message>
-        <location line="+221" />
+        <location line="+218" />
         <source>On the centre's network as %1</source>
         <translation>On the centre's network as %1</translation>
     </message>
@@ -11756,18 +11794,18 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+224" />
-        <location line="+451" />
+        <location line="+469" />
         <source>cannot add the operator “%1”</source>
         <translation>cannot add the operator “%1”</translation>
     </message>
     <message>
-        <location line="-449" />
-        <location line="+451" />
+        <location line="-467" />
+        <location line="+469" />
         <source>an operator needs an id</source>
         <translation>an operator needs an id</translation>
     </message>
     <message>
-        <location line="-445" />
+        <location line="-463" />
         <source>the id is taken already, by “%1”</source>
         <translation>the id is taken already, by “%1”</translation>
     </message>
@@ -11810,12 +11848,12 @@ Id: %3</translation>
     <message>
         <location line="+5" />
         <location line="+54" />
-        <location line="+256" />
+        <location line="+274" />
         <source>there is no attempt %1</source>
         <translation>there is no attempt %1</translation>
     </message>
     <message>
-        <location line="-281" />
+        <location line="-299" />
         <source>cannot record the attempt's result</source>
         <translation>cannot record the attempt's result</translation>
     </message>
@@ -11856,18 +11894,18 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+7" />
-        <location line="+78" />
+        <location line="+96" />
         <location line="+82" />
         <source>cannot read the attempt</source>
         <translation>cannot read the attempt</translation>
     </message>
     <message>
-        <location line="-148" />
+        <location line="-165" />
         <source>cannot export the records to %1</source>
         <translation>cannot export the records to %1</translation>
     </message>
     <message>
-        <location line="-189" />
+        <location line="-190" />
         <source>there is an attempt with the id %1 already</source>
         <translation>there is an attempt with the id %1 already</translation>
     </message>
@@ -11877,7 +11915,7 @@ Id: %3</translation>
         <translation>an attempt ends finished, aborted or interrupted, not %1</translation>
     </message>
     <message>
-        <location line="+207" />
+        <location line="+225" />
         <source>cannot read what the centre's server lacks</source>
         <translation>cannot read what the centre's server lacks</translation>
     </message>

@@ -6534,7 +6534,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::AttemptScreen</name>
     <message>
-        <location filename="../ide/studio/train/attempt_screen.cpp" line="+155" />
+        <location filename="../ide/studio/train/attempt_screen.cpp" line="+156" />
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc o Detener termina el intento.</translation>
     </message>
@@ -6542,6 +6542,11 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <location line="+1" />
         <source>Show the expert</source>
         <translation>Mostrar al experto</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Your trainer chooses whether the expert is shown.</source>
+        <translation>Su instructor decide si se muestra al experto.</translation>
     </message>
     <message>
         <location line="+1" />
@@ -6569,7 +6574,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Detener</translation>
     </message>
     <message>
-        <location line="+87" />
+        <location line="+102" />
         <source>Goal %1 of %2</source>
         <translation>Objetivo %1 de %2</translation>
     </message>
@@ -7540,7 +7545,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::InertiaDialog</name>
     <message>
-        <location filename="../ide/studio/dialogs/inertia_dialog.cpp" line="+65" />
+        <location filename="../ide/studio/dialogs/inertia_dialog.cpp" line="+72" />
         <source>n/a (file: 0)</source>
         <translation>n/d (archivo: 0)</translation>
     </message>
@@ -7731,7 +7736,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>MASS [kg]</translation>
     </message>
     <message>
-        <location line="+142" />
+        <location line="+159" />
         <source>Error: %1</source>
         <translation>Error: %1</translation>
     </message>
@@ -8406,7 +8411,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::MainWindow</name>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+150" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+151" />
         <source>Export</source>
         <translation>Exportar</translation>
     </message>
@@ -8447,12 +8452,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Puesto</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+173" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+169" />
         <source>Leave Trainer Mode</source>
         <translation>Salir del modo quiosco</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>Trainer's PIN:</source>
         <translation>PIN del instructor:</translation>
     </message>
@@ -8562,7 +8567,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>&amp;Cargar…</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+38" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+36" />
         <location filename="../ide/studio/app/main_window_menus.cpp" line="-147" />
         <source>Load Scene</source>
         <translation>Cargar escena</translation>
@@ -8681,7 +8686,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Modelos Padrob (*.pad);;Todos los archivos (*)</translation>
     </message>
     <message numerus="yes">
-        <location line="-247" />
+        <location line="-240" />
         <source>%n attempt(s) kept while the trainee records could not be written were added to them.</source>
         <translation>
             <numerusform>Se agregó a los registros de los aprendices %n intento guardado mientras no se podían escribir.</numerusform>
@@ -8766,7 +8771,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Ratón en la vista 3D: arrastrar con el botón izquierdo hace girar la vista, arrastrar con el botón central o con Mayús + botón izquierdo la desplaza, la rueda acerca o aleja, un doble clic encuadra el modelo. Ctrl + arrastrar con el botón izquierdo sobre un cuerpo lo empuja mientras corre la simulación (un resorte tira del punto tomado hacia el cursor); suelte el botón para soltarlo.</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+188" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+181" />
         <source>%1
 
 The 3D view goes on without this scene.</source>
@@ -9443,6 +9448,34 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
     </message>
 </context>
 <context>
+    <name>studio::PinDialog</name>
+    <message>
+        <location filename="../ide/studio/train/pin_dialog.cpp" line="+37" />
+        <source>OK</source>
+        <translation>Aceptar</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <location line="+33" />
+        <source>That is not the trainer's PIN. Try again.</source>
+        <translation>Ese no es el PIN del instructor. Inténtelo de nuevo.</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Type the trainer's PIN.</source>
+        <translation>Escriba el PIN del instructor.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+8" />
+        <source>Too many wrong PINs: wait %n s.</source>
+        <translation><numerusform>Demasiados PIN equivocados: espere %n s.</numerusform><numerusform>Demasiados PIN equivocados: espere %n s.</numerusform></translation>
+    </message>
+</context>
+<context>
     <name>studio::PlotPanel</name>
     <message>
         <location filename="../ide/studio/plots/plot_panel.cpp" line="+144" />
@@ -9681,7 +9714,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
 <context>
     <name>studio::RecordsView</name>
     <message>
-        <location filename="../ide/studio/train/records_view.cpp" line="+48" />
+        <location filename="../ide/studio/train/records_view.cpp" line="+55" />
         <source>running</source>
         <translation>en curso</translation>
     </message>
@@ -9747,12 +9780,12 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
     </message>
     <message>
         <location line="+1" />
-        <location line="+27" />
+        <location line="+46" />
         <source>Add operator</source>
         <translation>Agregar operador</translation>
     </message>
     <message>
-        <location line="-26" />
+        <location line="-45" />
         <source>Attempts (newest first)</source>
         <translation>Intentos (el más reciente primero)</translation>
     </message>
@@ -9827,7 +9860,17 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>Exportar CSV…</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+12" />
+        <source>Trainees see the expert in Trainer Mode</source>
+        <translation>Los aprendices ven al experto en el modo quiosco</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>In Trainer Mode the trainee cannot change this: the expert's translucent machine runs beside each attempt only when it is on.</source>
+        <translation>En el modo quiosco el aprendiz no puede cambiarlo: la máquina translúcida del experto acompaña cada intento solo si está activado.</translation>
+    </message>
+    <message>
+        <location line="+31" />
         <location line="+4" />
         <source>Export CSV</source>
         <translation>Exportar CSV</translation>
@@ -9908,6 +9951,11 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <location line="+27" />
         <source>Type the operator's code (badge number…).</source>
         <translation>Escriba el código del operador (número de credencial…).</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+18" />
+        <source>Wrote %n attempt(s) to %1.</source>
+        <translation><numerusform>Se escribió %n intento en %1.</numerusform><numerusform>Se escribieron %n intentos en %1.</numerusform></translation>
     </message>
 </context>
 <context>
@@ -10739,27 +10787,17 @@ Id: %3</translation>
 <context>
     <name>studio::TrainPage</name>
     <message>
-        <location filename="../ide/studio/train/train_page.cpp" line="+151" />
+        <location filename="../ide/studio/train/train_page.cpp" line="+149" />
         <source>Trainee records</source>
         <translation>Registros de aprendices</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>The trainer's PIN:</source>
         <translation>El PIN del instructor:</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>OK</source>
-        <translation>Aceptar</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Cancel</source>
-        <translation>Cancelar</translation>
-    </message>
-    <message>
-        <location line="+221" />
+        <location line="+218" />
         <source>On the centre's network as %1</source>
         <translation>En la red del centro como %1</translation>
     </message>
@@ -11786,18 +11824,18 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+224" />
-        <location line="+451" />
+        <location line="+469" />
         <source>cannot add the operator “%1”</source>
         <translation>no se puede agregar al operador “%1”</translation>
     </message>
     <message>
-        <location line="-449" />
-        <location line="+451" />
+        <location line="-467" />
+        <location line="+469" />
         <source>an operator needs an id</source>
         <translation>un operador necesita un id</translation>
     </message>
     <message>
-        <location line="-445" />
+        <location line="-463" />
         <source>the id is taken already, by “%1”</source>
         <translation>el id ya está en uso, por “%1”</translation>
     </message>
@@ -11840,12 +11878,12 @@ Id: %3</translation>
     <message>
         <location line="+5" />
         <location line="+54" />
-        <location line="+256" />
+        <location line="+274" />
         <source>there is no attempt %1</source>
         <translation>no existe el intento %1</translation>
     </message>
     <message>
-        <location line="-281" />
+        <location line="-299" />
         <source>cannot record the attempt's result</source>
         <translation>no se puede registrar el resultado del intento</translation>
     </message>
@@ -11886,18 +11924,18 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+7" />
-        <location line="+78" />
+        <location line="+96" />
         <location line="+82" />
         <source>cannot read the attempt</source>
         <translation>no se puede leer el intento</translation>
     </message>
     <message>
-        <location line="-148" />
+        <location line="-165" />
         <source>cannot export the records to %1</source>
         <translation>no se pueden exportar los registros a %1</translation>
     </message>
     <message>
-        <location line="-189" />
+        <location line="-190" />
         <source>there is an attempt with the id %1 already</source>
         <translation>ya hay un intento con el identificador %1</translation>
     </message>
@@ -11907,7 +11945,7 @@ Id: %3</translation>
         <translation>un intento termina finalizado, abortado o interrumpido, no %1</translation>
     </message>
     <message>
-        <location line="+207" />
+        <location line="+225" />
         <source>cannot read what the centre's server lacks</source>
         <translation>no se puede leer lo que le falta al servidor del centro</translation>
     </message>

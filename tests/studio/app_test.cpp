@@ -42,6 +42,8 @@
 #include <QTest>
 #include <QRegularExpression>
 #include <QSignalSpy>
+#include <QLocale>
+#include <QTableWidget>
 #include <QTextBlock>
 #include <QTextCursor>
 #include <QTimer>
@@ -215,12 +217,25 @@ private slots:
         QTRY_VERIFY((dialog = w.findChild<InertiaDialog*>()) && dialog->isVisible());
         QCOMPARE(dialog->windowTitle(), QStringLiteral("Calculadora de inercia"));
         QVERIFY(dialog->result());
+        const QString before = dialog->computedBLine();
+        // twice the first solid's density or mass: a B line other than the file's
+        QTableWidgetItem* value = dialog->solidsTable()->item(0, InertiaDialog::ValueColumn);
+        value->setText(QLocale().toString(QLocale().toDouble(value->text()) * 2));
+        QTRY_VERIFY(dialog->result() && dialog->computedBLine() != before);
         const QString bLine = dialog->computedBLine();
         QVERIFY2(bLine.contains('.') && !bLine.section(" NAME", 0, 0).contains(','), qPrintable(bLine));
         QVERIFY(dialog->grab().save(screenshotPath("app_inertia_dialog_es.png")));
         const int line = dialog->bStatementLine();
+        QVERIFY2(dialog->fileBLine() != bLine.trimmed(), qPrintable(dialog->fileBLine()));
         dialog->replaceButton()->click();
         QCOMPARE(w.editor()->editor()->document()->findBlockByNumber(line - 1).text().trimmed(), bLine.trimmed());
+        // "In the file" follows the editor: the line just written, then a later edit
+        QTRY_COMPARE(dialog->fileBLine(), bLine.trimmed());
+        QTextCursor edit(w.editor()->editor()->document()->findBlockByNumber(line - 1));
+        edit.movePosition(QTextCursor::EndOfBlock);
+        edit.insertText("  // checked");
+        QTRY_COMPARE(dialog->fileBLine(), bLine.trimmed() + "  // checked");
+        w.editor()->undo();
         dialog->close();
         QTRY_VERIFY_WITH_TIMEOUT(!w.editor()->isChecking(), 10000);
         QCOMPARE(w.editor()->errorCount(), 0);

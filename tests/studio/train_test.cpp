@@ -19,6 +19,7 @@
 #include "ide/paths/paths.h"
 #include "ide/i18n/language.h"
 #include "ide/studio/app/main_window.h"
+#include "ide/studio/train/pin_dialog.h"
 #include "ide/studio/train/records_view.h"
 #include "ide/studio/train/train_page.h"
 #include "ide/studio/train/tutorial_runner.h"
@@ -36,8 +37,8 @@
 #include <QCheckBox>
 #include <QDir>
 #include <QFile>
-#include <QInputDialog>
 #include <QLabel>
+#include <QLineEdit>
 #include <QLineSeries>
 #include <QListWidget>
 #include <QMenuBar>
@@ -381,6 +382,18 @@ private slots:
         QVERIFY(file.open(QIODevice::ReadOnly));
         const QStringList lines = QString::fromUtf8(file.readAll()).split("\r\n", Qt::SkipEmptyParts);
         QCOMPARE(lines.size(), 1 + guestAttempts);  // only the guest has attempts
+        // said where it went; the status as the studio names it; one title per tutorial,
+        // in the studio's language
+        QVERIFY(view->exportStatus()->isVisible());
+        QVERIFY2(view->exportStatus()->text().contains(QString("Wrote %1 attempts to").arg(guestAttempts)),
+                 qPrintable(view->exportStatus()->text()));
+        QVERIFY(view->exportStatus()->text().contains(QDir::toNativeSeparators(csv)));
+        const QString all = lines.join('\n');
+        QVERIFY2(all.contains(",stopped,") && !all.contains(",aborted,"), qPrintable(all));
+        for (const QString& line : lines.mid(1)) QVERIFY2(line.contains(",T0,Reach a target,"), qPrintable(line));
+        // dates with the year's four digits
+        const QString year = QString::number(QDate::currentDate().year());
+        QVERIFY2(attempts->item(0, 0)->text().contains(year), qPrintable(attempts->item(0, 0)->text()));
         view->selectOperator("guest");
         settle();
         QVERIFY(m_window->grab().save(screenshotPath("train_records_en.png")));
@@ -548,23 +561,102 @@ private slots:
         QTRY_VERIFY(!m_window->isKioskMode());
         QVERIFY(m_window->findChild<QToolBar*>("WorkspaceBar")->isVisible());
         QVERIFY(m_window->menuBar()->isVisible());
-        // a PIN: asked, a wrong one keeps the kiosk, the right one leaves
+        // a PIN: asked; a wrong one keeps the kiosk and says so, the dialog stays for
+        // another try, and the right one leaves
         QSettings().setValue("trainer/pin", "4711");
         m_window->setKioskMode(true);
         settle();
         QTest::keyClick(page(), Qt::Key_F12, Qt::ControlModifier | Qt::ShiftModifier);
-        QInputDialog* dialog = nullptr;
-        QTRY_VERIFY((dialog = m_window->findChild<QInputDialog*>("KioskPinDialog")) != nullptr);
-        dialog->setTextValue("1234");
-        dialog->accept();
+        PinDialog* dialog = nullptr;
+        QTRY_VERIFY((dialog = m_window->findChild<PinDialog*>("KioskPinDialog")) != nullptr);
+        QVERIFY(!dialog->message()->isVisible());
+        QTest::keyClicks(dialog->field(), "1234");
+        QTest::keyClick(dialog->field(), Qt::Key_Return);
         settle();
         QVERIFY(m_window->isKioskMode());
-        QTest::keyClick(page(), Qt::Key_F12, Qt::ControlModifier | Qt::ShiftModifier);
-        QTRY_VERIFY((dialog = m_window->findChild<QInputDialog*>("KioskPinDialog")) != nullptr);
-        dialog->setTextValue("4711");
-        dialog->accept();
+        QVERIFY(dialog->isVisible());
+        QVERIFY(dialog->message()->isVisible());
+        QVERIFY2(dialog->message()->text().contains("not the trainer's PIN"), qPrintable(dialog->message()->text()));
+        QVERIFY(dialog->field()->text().isEmpty());
+        QVERIFY(dialog->grab().save(screenshotPath("train_kiosk_wrong_pin_en.png")));
+        QTest::keyClicks(dialog->field(), "4711");
+        QTest::keyClick(dialog->field(), Qt::Key_Return);
         QTRY_VERIFY(!m_window->isKioskMode());
+        // five wrong PINs in a row lock the dialog for a while, the right one too
+        m_window->setKioskMode(true);
+        settle();
+        QTest::keyClick(page(), Qt::Key_F12, Qt::ControlModifier | Qt::ShiftModifier);
+        QTRY_VERIFY((dialog = m_window->findChild<PinDialog*>("KioskPinDialog")) != nullptr);
+        for (int i = 0; i < PinDialog::kMaxWrong; ++i) {
+            dialog->field()->setText("0000");
+            dialog->submit();
+        }
+        QVERIFY(dialog->isLocked());
+        QVERIFY(!dialog->field()->isEnabled());
+        QVERIFY2(dialog->message()->text().contains("wait 30 s"), qPrintable(dialog->message()->text()));
+        dialog->field()->setText("4711");
+        dialog->submit();
+        settle();
+        QVERIFY(m_window->isKioskMode());
+        dialog->reject();
+        QTRY_VERIFY(!m_window->findChild<PinDialog*>("KioskPinDialog"));
+        // the records ask the same way
+        QVERIFY(page()->recordsButton()->isVisible());
+        page()->recordsButton()->click();
+        QTRY_VERIFY((dialog = page()->findChild<PinDialog*>("RecordsPinDialog")) != nullptr);
+        dialog->field()->setText("1");
+        dialog->submit();
+        QVERIFY(dialog->message()->isVisible());
+        QVERIFY(page()->screen() != TrainPage::Screen::Records);
+        dialog->field()->setText("4711");
+        dialog->submit();
+        QTRY_COMPARE(page()->screen(), TrainPage::Screen::Records);
+        page()->showCourse();
+        m_window->setKioskMode(false);
         QSettings().remove("trainer/pin");
+    }
+
+    // In Trainer Mode the expert's ghost is the trainer's choice (the records' box), not
+    // what the studio's last session left, and the trainee cannot toggle it
+    void kioskExpertIsTheTrainersChoice()
+    {
+        QSettings().setValue("trainer/showExpert", true);  // the trainer's own session
+        QSettings().setValue("trainer/kioskShowExpert", false);
+        m_window->setKioskMode(true);
+        settle();
+        TutorialRunner* runner = m_window->tutorialRunner();
+        const auto attempt = [&](bool ghost) {
+            QVERIFY(page()->openTutorial("T0"));
+            page()->startAttempt();
+            QCOMPARE(page()->screen(), TrainPage::Screen::Attempt);
+            QCOMPARE(page()->expertBox()->isChecked(), ghost);
+            QVERIFY(!page()->expertBox()->isEnabled());
+            QCOMPARE(runner->hasGhost(), ghost);
+            QTest::mouseClick(page()->expertBox(), Qt::LeftButton);  // a trainee's click does nothing
+            QCOMPARE(page()->expertBox()->isChecked(), ghost);
+            QCOMPARE(runner->hasGhost(), ghost);
+            page()->stopAttempt();
+            QTRY_VERIFY_WITH_TIMEOUT(page()->screen() == TrainPage::Screen::Result, 5000);
+        };
+        attempt(false);
+        // the trainer turns it on in the records (outside the kiosk here: no PIN needed)
+        m_window->setKioskMode(false);
+        page()->showCourse();
+        page()->recordsButton()->click();
+        auto* choice = page()->recordsView()->findChild<QCheckBox*>("KioskShowExpert");
+        QVERIFY(choice && choice->isVisible() && !choice->isChecked());
+        choice->click();
+        QVERIFY(QSettings().value("trainer/kioskShowExpert").toBool());
+        page()->showCourse();
+        m_window->setKioskMode(true);
+        settle();
+        attempt(true);
+        QVERIFY(QSettings().value("trainer/showExpert").toBool());  // the studio's own, untouched
+        m_window->setKioskMode(false);
+        page()->showCourse();
+        QSettings().remove("trainer/kioskShowExpert");
+        QSettings().remove("trainer/showExpert");
+        QVERIFY(page()->expertBox()->isEnabled() || !page()->expertBox()->isChecked());
     }
 
     void operatorsAreKeptApart()

@@ -247,18 +247,21 @@ void expectProgress(RecordsDb& db, const Sample& s)
 }
 
 /// The sample as CSV, attempt 3 with `status3`.
-QByteArray expectedCsv(const QString& status3)
+/// The sample as CSV. Attempts 1 and 2 of liner.basics were recorded in Spanish and in
+/// English with different titles: the file gives one, the newest attempt's, unless the
+/// exporting program gives `basicsTitle`. Attempt 2, aborted, is "stopped".
+QByteArray expectedCsv(const QString& status3, const QString& basicsTitle = QStringLiteral("Liner: the basics"))
 {
     return QStringLiteral(
                "attempt,operator_code,operator_name,tutorial_id,tutorial_title,started_utc,duration_s,score,stars,"
                "passed,status,language,breakdown\r\n"
-               "1,A-17,Ana Pérez,liner.basics,Liner: basics,2025-03-01T09:30:00.250Z,95.5,87.5,3,1,finished,es,"
+               "1,A-17,Ana Pérez,liner.basics,%2,2025-03-01T09:30:00.250Z,95.5,87.5,3,1,finished,es,"
                "time=40/50; safety=-12.5; goals=60/60\r\n"
-               "2,A-17,Ana Pérez,liner.basics,Liner: the basics,2025-03-02T14:00:05.000Z,12,20,0,0,aborted,en,"
+               "2,A-17,Ana Pérez,liner.basics,%2,2025-03-02T14:00:05.000Z,12,20,0,0,stopped,en,"
                "time=20\r\n"
                "3,B-02,\"José \"\"Pepe\"\" Núñez, jr.\",liner.grip,\"Grip,\nthen lift\",2025-03-01T10:00:00.001Z,"
                "0,0,0,0,%1,en,\r\n")
-        .arg(status3)
+        .arg(status3, basicsTitle)
         .toUtf8();
 }
 
@@ -333,9 +336,14 @@ TEST(Records, CsvExportIsRfc4180)
     EXPECT_FALSE(db.exportCsv(csv, &error));  // no such folder
     EXPECT_TRUE(error.contains("cannot export")) << str(error);
     ASSERT_TRUE(QDir().mkpath(dir.filePath("out")));
-    ASSERT_TRUE(db.exportCsv(csv, &error)) << str(error);
+    int rows = -1;
+    ASSERT_TRUE(db.exportCsv(csv, &error, {}, &rows)) << str(error);
+    EXPECT_EQ(rows, 3);
     EXPECT_EQ(bytesOf(csv), expectedCsv("running"));
     EXPECT_EQ(QDir(dir.filePath("out")).entryList(QDir::Files), QStringList{"records.csv"});  // no temporary left
+    // the exporting program's titles (its language) for the tutorials it knows
+    ASSERT_TRUE(db.exportCsv(csv, &error, {{"liner.basics", "Coraza: lo básico"}}, &rows)) << str(error);
+    EXPECT_EQ(bytesOf(csv), expectedCsv("running", "Coraza: lo básico"));
 }
 
 TEST(Records, MigratesANewOrEmptyFileAndReopensWithoutChange)

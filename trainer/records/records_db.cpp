@@ -1089,8 +1089,9 @@ bool RecordsDb::attempt(qint64 attemptId, Attempt& out, QString* error) const
     return true;
 }
 
-bool RecordsDb::exportCsv(const QString& path, QString* error) const
+bool RecordsDb::exportCsv(const QString& path, QString* error, const QHash<QString, QString>& titles, int* rows) const
 {
+    if (rows) *rows = 0;
     const QString what = Tr::tr("cannot export the records to %1").arg(QDir::toNativeSeparators(path));
     if (!d->usable(false, what, error)) return false;
 
@@ -1111,34 +1112,45 @@ bool RecordsDb::exportCsv(const QString& path, QString* error) const
         QString code;
         QDateTime started;
         qint64 id;
-        QString line;
+        QString tutorial;
+        QStringList fields;
     };
-    QList<Row> rows;
+    QList<Row> list;
+    // one title per tutorial in the whole file: the caller's (the export's language), else
+    // the one its newest attempt was recorded with
+    QHash<QString, QString> title = titles;
+    QHash<QString, QDateTime> titleFrom;
     if (!run(q, "SELECT a.id, o.code, o.name, a.tutorial, a.tutorial_title, a.started, a.duration_s, a.score,"
                 " a.stars, a.passed, a.status, a.language FROM attempts a JOIN operators o ON o.id = a.operator_id"))
         return d->fail(error, what, q.lastError());
     while (q.next()) {
         const qint64 id = q.value(0).toLongLong();
         const QDateTime started = fromDb(q.value(5));
+        const QString tutorial = q.value(3).toString();
+        if (!titles.contains(tutorial) && (!titleFrom.contains(tutorial) || started > titleFrom.value(tutorial))) {
+            title[tutorial] = q.value(4).toString();
+            titleFrom[tutorial] = started;
+        }
+        // the status as the studio names it: an attempt aborted (stopped) is "stopped"
+        const QString status = q.value(10).toString() == QLatin1String("aborted") ? QStringLiteral("stopped")
+                                                                                   : q.value(10).toString();
         const QStringList fields = {QString::number(id),
                                     q.value(1).toString(),
                                     q.value(2).toString(),
-                                    q.value(3).toString(),
-                                    q.value(4).toString(),
+                                    tutorial,
+                                    QString(),  // the title, below
                                     toDb(started),
                                     number(q.value(6).toDouble()),
                                     number(q.value(7).toDouble()),
                                     QString::number(q.value(8).toInt()),
                                     q.value(9).toInt() != 0 ? QStringLiteral("1") : QStringLiteral("0"),
-                                    q.value(10).toString(),
+                                    status,
                                     q.value(11).toString(),
                                     breakdowns.value(id).join("; ")};
-        QStringList quoted;
-        for (const QString& f : fields) quoted << csvField(f);
-        rows.append({q.value(1).toString(), started, id, quoted.join(',')});
+        list.append({q.value(1).toString(), started, id, tutorial, fields});
     }
     if (q.lastError().isValid()) return d->fail(error, what, q.lastError());
-    std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) {
+    std::sort(list.begin(), list.end(), [](const Row& a, const Row& b) {
         if (a.code != b.code) return a.code < b.code;
         if (a.started != b.started) return a.started < b.started;
         return a.id < b.id;
@@ -1146,12 +1158,18 @@ bool RecordsDb::exportCsv(const QString& path, QString* error) const
 
     QByteArray text = "attempt,operator_code,operator_name,tutorial_id,tutorial_title,started_utc,duration_s,"
                       "score,stars,passed,status,language,breakdown\r\n";
-    for (const Row& r : rows) text += r.line.toUtf8() + "\r\n";
+    for (Row& r : list) {
+        r.fields[4] = title.value(r.tutorial);
+        QStringList quoted;
+        for (const QString& f : r.fields) quoted << csvField(f);
+        text += quoted.join(',').toUtf8() + "\r\n";
+    }
     // durably (fsynced, then renamed over the old file), never over the records file itself
     solver::Text werr;
     if (!solver::writeWholeFile(QFile::encodeName(path).toStdString(), std::string_view(text.constData(), std::size_t(text.size())),
                                 {QFile::encodeName(d->sqlitePath).toStdString()}, werr))
         return d->fail(error, what, translated(werr));
+    if (rows) *rows = int(list.size());
     return true;
 }
 

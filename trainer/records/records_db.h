@@ -25,6 +25,7 @@
 // Several may be open in one process, one per thread, on the same database.
 
 #include <QDateTime>
+#include <QHash>
 #include <QList>
 #include <QString>
 
@@ -276,8 +277,12 @@ public:
     bool attempt(qint64 attemptId, Attempt& out, QString* error = nullptr) const;
     /// Writes every attempt (by operator code, then start) to a CSV file: a header,
     /// one row per attempt, RFC 4180 (comma, CRLF, "quoted" where needed, UTF-8),
-    /// replacing `path` only once it is complete (QSaveFile).
-    bool exportCsv(const QString& path, QString* error = nullptr) const;
+    /// replacing `path` only once it is complete (QSaveFile). Each tutorial has one
+    /// title in the whole file: `titles[tutorial id]` (the exporting program's language)
+    /// when given, else the title its newest attempt was recorded with. An aborted
+    /// attempt's status is "stopped", as the studio names it. `rows`: how many attempts.
+    bool exportCsv(const QString& path, QString* error = nullptr, const QHash<QString, QString>& titles = {},
+                   int* rows = nullptr) const;
 
 private:
     friend class SharedRecords;

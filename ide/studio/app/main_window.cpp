@@ -8,6 +8,7 @@
 #include "ide/studio/sim/hydraulic_panel.h"
 #include "ide/studio/sim/keyboard_input.h"
 #include "ide/studio/station/station_page.h"
+#include "ide/studio/train/pin_dialog.h"
 #include "ide/studio/train/train_page.h"
 #include "ide/studio/train/tutorial_runner.h"
 #include "trainer/input/keyboard_device.h"
@@ -34,7 +35,6 @@
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QInputDialog>
 #include <QLineEdit>
 #include <QLabel>
 #include <QLocale>
@@ -46,6 +46,7 @@
 #include <QStackedWidget>
 #include <QStatusBar>
 #include <QTextBrowser>
+#include <QTextDocument>
 #include <QTimer>
 #include <QToolBar>
 #include <QVBoxLayout>
@@ -314,18 +315,11 @@ void MainWindow::setKioskMode(bool on)
 void MainWindow::requestLeaveKiosk()
 {
     if (!m_kiosk) return;
-    const QString pin = QSettings().value("trainer/pin").toString();
-    if (pin.isEmpty()) return setKioskMode(false);
-    if (findChild<QInputDialog*>("KioskPinDialog")) return;  // already asking
-    auto* dialog = new QInputDialog(this);
+    if (PinDialog::trainerPin().isEmpty()) return setKioskMode(false);
+    if (findChild<PinDialog*>("KioskPinDialog")) return;  // already asking
+    auto* dialog = new PinDialog(tr("Leave Trainer Mode"), tr("Trainer's PIN:"), this);
     dialog->setObjectName("KioskPinDialog");
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    dialog->setWindowTitle(tr("Leave Trainer Mode"));
-    dialog->setLabelText(tr("Trainer's PIN:"));
-    dialog->setTextEchoMode(QLineEdit::Password);
-    connect(dialog, &QInputDialog::textValueSelected, this, [this, pin](const QString& typed) {
-        if (typed == pin) setKioskMode(false);
-    });
+    connect(dialog, &PinDialog::unlocked, this, [this] { setKioskMode(false); });
     dialog->open();
 }
 
@@ -679,6 +673,12 @@ void MainWindow::showInertiaDialog()
     connect(dialog, &InertiaDialog::bLineReady, this, [this](int, const QString& line, int existingLine) {
         InertiaDialog::applyBLine(m_editor->editor(), existingLine, line);
     });
+    // "In the file" follows the editor (a Replace, an edit), a moment after the typing
+    auto* follow = new QTimer(dialog);
+    follow->setSingleShot(true);
+    follow->setInterval(250);
+    connect(follow, &QTimer::timeout, dialog, [this, dialog] { dialog->setSourceText(m_editor->text()); });
+    connect(m_editor->editor()->document(), &QTextDocument::contentsChanged, follow, qOverload<>(&QTimer::start));
     dialog->show();
 }
 

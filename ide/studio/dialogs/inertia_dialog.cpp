@@ -34,6 +34,13 @@ namespace studio {
 
 namespace {
 
+/// A B statement's start, its body id captured: "B 3 …", "b 3 // …".
+const QRegularExpression& bStatementPattern()
+{
+    static const QRegularExpression re(QStringLiteral("^\\s*[Bb][ \\t]+(\\d+)(?=[ \\t]|$|//|#)"));
+    return re;
+}
+
 // numbers in the table's model text and in B lines are the model language's ('.'); the
 // results a person reads are in the current locale (shown())
 QString num(double v) { return QString::fromStdString(solver::parse::formatNumber(v)); }
@@ -290,6 +297,23 @@ QString InertiaDialog::sourceLine(int line) const
     return m_sourceLines[line - 1];
 }
 
+int InertiaDialog::bodyLine(const solver::BodySpec& body) const
+{
+    // the model's line, unless the text changed under it (a Replace added a B line, an
+    // edit moved it): then the body's B statement wherever it is now
+    const QRegularExpression& bStatement = bStatementPattern();
+    const auto isOwn = [&](const QString& text) {
+        const QRegularExpressionMatch m = bStatement.match(text);
+        return m.hasMatch() && m.captured(1).toInt() == body.id;
+    };
+    const int line = body.src.pos.valid() ? body.src.pos.line : -1;
+    if (!m_haveSource || isOwn(sourceLine(line))) return line;
+    for (int i = 0; i < m_sourceLines.size(); ++i) {
+        if (isOwn(m_sourceLines[i])) return i + 1;
+    }
+    return line;
+}
+
 void InertiaDialog::fillBodies()
 {
     const QSignalBlocker block(m_body);
@@ -319,7 +343,7 @@ int InertiaDialog::bodyId() const { return m_body->currentIndex() >= 0 ? m_body-
 int InertiaDialog::bStatementLine() const
 {
     const solver::BodySpec* b = m_spec->body(bodyId());
-    return b && b->src.pos.valid() ? b->src.pos.line : -1;
+    return b ? bodyLine(*b) : -1;
 }
 
 void InertiaDialog::loadSolids()
@@ -374,7 +398,7 @@ void InertiaDialog::recompute()
     m_bLine.clear();
     const int id = bodyId();
     const solver::BodySpec* body = m_spec->body(id);
-    m_fileLine = body ? sourceLine(body->src.pos.line).trimmed() : QString();
+    m_fileLine = body ? sourceLine(bodyLine(*body)).trimmed() : QString();
     if (body && m_fileLine.isEmpty()) m_fileLine = bstatement::fromSpec(*body);
 
     // the table as G statements, checked by the solver's parser and checks: line 1 is
@@ -443,7 +467,7 @@ void InertiaDialog::recompute()
 
     if (m_result) {
         m_statement = bstatement::format(id, *m_result);
-        const QString line = body ? sourceLine(body->src.pos.line) : QString();
+        const QString line = body ? sourceLine(bodyLine(*body)) : QString();
         m_bLine = line.isEmpty() ? QString() : bstatement::replaceInLine(line, m_statement);
         if (m_bLine.isEmpty()) {
             const QString name = body ? bstatement::nameToken(body->name) : QString();
@@ -504,7 +528,7 @@ void InertiaDialog::applyBLine(QPlainTextEdit* editor, int line, const QString& 
     QTextDocument* doc = editor->document();
     // the body's id, to check that `line` still holds its B statement (the text may have
     // changed since the model was loaded)
-    static const QRegularExpression bStatement(QStringLiteral("^\\s*[Bb][ \\t]+(\\d+)(?=[ \\t]|$|//|#)"));
+    const QRegularExpression& bStatement = bStatementPattern();
     const QRegularExpressionMatch own = bStatement.match(text);
     const QString id = own.hasMatch() ? own.captured(1) : QString();
     const auto isOwn = [&](const QTextBlock& b) {

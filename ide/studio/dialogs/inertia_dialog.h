@@ -98,6 +98,8 @@ private:
     void recompute();
     void showResult();
     QString sourceLine(int line) const;
+    /// The line of `body`'s B statement in the source text now (-1: none).
+    int bodyLine(const solver::BodySpec& body) const;
 
     std::shared_ptr<const ModelBundle> m_bundle;
     std::shared_ptr<const solver::ModelSpec> m_spec;

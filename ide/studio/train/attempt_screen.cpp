@@ -112,7 +112,8 @@ AttemptScreen::AttemptScreen(TrainingController* training, QWidget* parent) : QW
     m_expertBox->setObjectName("ShowExpert");
     m_expertBox->setChecked(QSettings().value("trainer/showExpert", false).toBool());
     connect(m_expertBox, &QCheckBox::toggled, this, [this](bool on) {
-        QSettings().setValue("trainer/showExpert", on);
+        // the studio's own choice; Trainer Mode's is the trainer's (setKiosk)
+        if (!m_kiosk) QSettings().setValue("trainer/showExpert", on);
         TutorialRunner* runner = m_training->runner();
         if (m_on && runner->isActive() && !(runner->latest() && runner->latest()->ended))
             runner->setGhost(on ? m_training->demoLog() : nullptr, m_training->demoProfile());
@@ -154,7 +155,8 @@ AttemptScreen::AttemptScreen(TrainingController* training, QWidget* parent) : QW
     m_texts.add([this, keys, viewLabel, stop] {
         keys->setText(tr("Esc or Stop ends the attempt."));
         m_expertBox->setText(tr("Show the expert"));
-        m_expertBox->setToolTip(tr("The demonstration runs beside the attempt, drawn translucent."));
+        m_expertBox->setToolTip(m_kiosk ? tr("Your trainer chooses whether the expert is shown.")
+                                        : tr("The demonstration runs beside the attempt, drawn translucent."));
         m_hydraulicsBox->setText(tr("Hydraulics"));
         m_hydraulicsBox->setToolTip(tr("The pump, the spools and the chamber pressures beside the view."));
         viewLabel->setText(tr("View:"));
@@ -169,12 +171,27 @@ AttemptScreen::AttemptScreen(TrainingController* training, QWidget* parent) : QW
     connect(esc, &QShortcut::activated, this, &AttemptScreen::stopRequested);
 }
 
+void AttemptScreen::setKiosk(bool kiosk)
+{
+    m_kiosk = kiosk;
+    // (toggled: an attempt under way gets or loses its ghost at once)
+    m_expertBox->setChecked(
+        QSettings().value(kiosk ? "trainer/kioskShowExpert" : "trainer/showExpert", false).toBool());
+    m_expertBox->setEnabled(!kiosk && m_on && m_training->demoLog() != nullptr);
+    m_texts.apply();
+}
+
 void AttemptScreen::prepare()
 {
     m_on = true;
     TutorialRunner* runner = m_training->runner();
     const auto demo = m_training->demoLog();
-    m_expertBox->setEnabled(demo != nullptr);
+    if (m_kiosk) {
+        // the trainer's choice, read anew for each attempt (set in the records, after the PIN)
+        const QSignalBlocker block(m_expertBox);
+        m_expertBox->setChecked(QSettings().value("trainer/kioskShowExpert", false).toBool());
+    }
+    m_expertBox->setEnabled(demo != nullptr && !m_kiosk);
     if (demo && m_expertBox->isChecked()) runner->setGhost(demo, m_training->demoProfile());
     m_view->clearGhost();
     m_shownStep = -1;

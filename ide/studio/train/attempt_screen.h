@@ -47,6 +47,10 @@ public:
     void aim();
     /// The runner's frame of the attempt: the view, the hydraulics, the ghost and the HUD.
     void showFrame(const TrainFrame& f);
+    /// Trainer Mode (kiosk): the expert box shows the trainer's choice
+    /// ("trainer/kioskShowExpert", set in the records) and the trainee cannot change it.
+    /// Outside it, the box is the studio's own ("trainer/showExpert").
+    void setKiosk(bool kiosk);
     /// The attempt is left: no ghost, the expert box inert.
     void leave();
     /// Every text in the UI's language; the HUD at the next frame.
@@ -76,6 +80,7 @@ private:
     TrainingController* m_training;
     i18n::Texts m_texts;
     bool m_on = false;  ///< between prepare() and leave()
+    bool m_kiosk = false;
     long m_shownStep = -1;
     Viewport* m_view = nullptr;
     QComboBox* m_cameraBox = nullptr;

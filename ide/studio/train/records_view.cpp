@@ -6,6 +6,8 @@
 
 #include <QChart>
 #include <QChartView>
+#include <QCheckBox>
+#include <QDir>
 #include <QEvent>
 #include <QFileDialog>
 #include <QHBoxLayout>
@@ -20,6 +22,7 @@
 #include <QPen>
 #include <QPushButton>
 #include <QScatterSeries>
+#include <QSettings>
 #include <QSplitter>
 #include <QStandardPaths>
 #include <QTableWidget>
@@ -39,7 +42,11 @@ QString num(double v, int decimals) { return QLocale().toString(v, 'f', decimals
 
 QString when(const QDateTime& utc)
 {
-    return utc.isValid() ? QLocale().toString(utc.toLocalTime(), QLocale::ShortFormat) : QStringLiteral("—");
+    if (!utc.isValid()) return QStringLiteral("—");
+    // the locale's short form, with the year's four digits (28/11/2026 16:30, not 28/11/26)
+    QString format = QLocale().dateTimeFormat(QLocale::ShortFormat);
+    if (!format.contains(QLatin1String("yyyy"))) format.replace(QLatin1String("yy"), QLatin1String("yyyy"));
+    return QLocale().toString(utc.toLocalTime(), format);
 }
 
 QString statusText(rec::AttemptStatus s)
@@ -188,8 +195,27 @@ RecordsView::RecordsView(QWidget* parent) : QWidget(parent)
         reload->setText(tr("Refresh"));
         m_export->setText(tr("Export CSV…"));
     });
+    // the trainer's choice for Trainer Mode (kiosk): whether trainees may watch the expert
+    m_kioskExpert = new QCheckBox;
+    m_kioskExpert->setObjectName("KioskShowExpert");
+    m_kioskExpert->setChecked(QSettings().value("trainer/kioskShowExpert", false).toBool());
+    connect(m_kioskExpert, &QCheckBox::toggled, this, [](bool on) { QSettings().setValue("trainer/kioskShowExpert", on); });
+    m_exported = new QLabel;
+    m_exported->setObjectName("ExportStatus");
+    m_exported->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_exported->hide();
+    m_texts.add([this] {
+        m_kioskExpert->setText(tr("Trainees see the expert in Trainer Mode"));
+        m_kioskExpert->setToolTip(tr("In Trainer Mode the trainee cannot change this: the expert's translucent "
+                                     "machine runs beside each attempt only when it is on."));
+        m_exported->clear();
+        m_exported->hide();
+    });
     buttons->addWidget(back);
+    buttons->addSpacing(12);
+    buttons->addWidget(m_kioskExpert);
     buttons->addStretch();
+    buttons->addWidget(m_exported);
     buttons->addWidget(reload);
     buttons->addWidget(m_export);
     layout->addLayout(buttons);
@@ -472,7 +498,11 @@ bool RecordsView::exportCsv(const QString& path, QString* error)
         if (error) *error = m_problem.isEmpty() ? tr("There are no trainee records.") : m_problem;
         return false;
     }
-    return m_db->exportCsv(path, error);
+    int rows = 0;
+    if (!m_db->exportCsv(path, error, m_titles, &rows)) return false;
+    m_exported->setText(tr("Wrote %n attempt(s) to %1.", nullptr, rows).arg(QDir::toNativeSeparators(path)));
+    m_exported->show();
+    return true;
 }
 
 }  // namespace studio

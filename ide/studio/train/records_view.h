@@ -28,6 +28,7 @@
 #include <vector>
 
 class QChartView;
+class QCheckBox;
 class QLabel;
 class QLineEdit;
 class QListWidget;
@@ -63,6 +64,8 @@ public:
 
     // parts, for tests
     QLabel* message() const { return m_message; }
+    /// What the last export wrote, and where (hidden before one).
+    QLabel* exportStatus() const { return m_exported; }
     QTableWidget* operatorsTable() const { return m_operators; }
     QTableWidget* attemptsTable() const { return m_attempts; }
     QTableWidget* breakdownTable() const { return m_breakdown; }
@@ -100,6 +103,8 @@ private:
     QLineEdit* m_newName = nullptr;
     QPushButton* m_add = nullptr;
     QPushButton* m_export = nullptr;
+    QLabel* m_exported = nullptr;
+    QCheckBox* m_kioskExpert = nullptr;
     QTableWidget* m_attempts = nullptr;
     QTableWidget* m_breakdown = nullptr;
     QListWidget* m_events = nullptr;

@@ -4,6 +4,7 @@
 #include "ide/studio/train/attempt_screen.h"
 #include "ide/studio/train/course_screen.h"
 #include "ide/studio/train/debrief_screen.h"
+#include "ide/studio/train/pin_dialog.h"
 #include "ide/studio/train/records_view.h"
 #include "ide/studio/train/result_screen.h"
 #include "ide/studio/train/start_screen.h"
@@ -12,7 +13,6 @@
 
 #include <QCheckBox>
 #include <QEvent>
-#include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -130,8 +130,9 @@ bool TrainPage::openRecordsAt(const QString& path)
 void TrainPage::setKiosk(bool kiosk)
 {
     m_kiosk = kiosk;
+    m_attempt->setKiosk(kiosk);
     // in kiosk mode only a trainer with the PIN sees the records; without a PIN, nobody
-    m_course->recordsButton()->setVisible(!kiosk || !QSettings().value("trainer/pin").toString().isEmpty());
+    m_course->recordsButton()->setVisible(!kiosk || !PinDialog::trainerPin().isEmpty());
     if (kiosk && m_screen == Screen::Records) showCourse();
 }
 
@@ -143,20 +144,11 @@ void TrainPage::setAllUnlocked(bool unlocked)
 
 void TrainPage::askRecordsPin()
 {
-    const QString pin = QSettings().value("trainer/pin").toString();
     if (!m_kiosk) return showRecords();
-    if (pin.isEmpty() || findChild<QInputDialog*>("RecordsPinDialog")) return;
-    auto* dialog = new QInputDialog(this);
+    if (PinDialog::trainerPin().isEmpty() || findChild<PinDialog*>("RecordsPinDialog")) return;
+    auto* dialog = new PinDialog(tr("Trainee records"), tr("The trainer's PIN:"), this);
     dialog->setObjectName("RecordsPinDialog");
-    dialog->setWindowTitle(tr("Trainee records"));
-    dialog->setLabelText(tr("The trainer's PIN:"));
-    dialog->setTextEchoMode(QLineEdit::Password);
-    dialog->setOkButtonText(tr("OK"));
-    dialog->setCancelButtonText(tr("Cancel"));
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    connect(dialog, &QInputDialog::textValueSelected, this, [this, pin](const QString& typed) {
-        if (typed == pin) showRecords();
-    });
+    connect(dialog, &PinDialog::unlocked, this, &TrainPage::showRecords);
     dialog->open();
 }
 
