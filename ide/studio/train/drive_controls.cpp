@@ -1,12 +1,16 @@
 #include "ide/studio/train/drive_controls.h"
 
 #include "ide/studio/sim/keyboard_input.h"
+#include "solver/core/data.h"
+#include "solver/core/state.h"
+#include "solver/kinematics/kinematics.h"
 #include "trainer/station/station_engine.h"
 #include "trainer/training/tutorial.h"
 
 #include <QCoreApplication>
 
 #include <algorithm>
+#include <cmath>
 
 namespace studio {
 
@@ -39,6 +43,45 @@ QString gamepadAxis(int axis, int sign)
     return Tr::tr("gamepad axis %1").arg(axis + 1);
 }
 
+/// Which way a positive command moves the machine at the stage's start: a claw (CLAW)
+/// closes or opens; else the tracked point (the claws' tip; when the drive does not move
+/// it, the drive's own body) goes up or down, out or in (from the vertical axis through
+/// the world origin), right or left (looking out from that axis). "" when neither moves
+/// (the head's roll).
+QString directionOf(const trainer::Tutorial& t, int treeJoint, const solver::Model& m, solver::Data& d,
+                    const Eigen::VectorXd& q)
+{
+    for (std::size_t k = 0; k < t.gripClose.size() && k < t.gripOpen.size(); ++k)
+        if (t.gripClose[k].joint == treeJoint)
+            return t.gripClose[k].value > t.gripOpen[k].value ? Tr::tr("+ closes / − opens")
+                                                              : Tr::tr("+ opens / − closes");
+    if (t.trackBody < 0) return {};
+    // + makes the drive's coordinate grow: θ̇ of the sign of dcoordinate/dθ
+    Eigen::VectorXd qd = Eigen::VectorXd::Zero(m.nb);
+    const double rate = m.coordinateRate(treeJoint, q[treeJoint]);
+    if (!(std::abs(rate) > 0)) return {};
+    qd[treeJoint] = rate > 0 ? 1.0 : -1.0;
+    solver::velocityKinematics(m, qd, d);
+    Eigen::Vector3d p = solver::bodyPointPosition(d, t.trackBody, t.trackPoint);
+    Eigen::Vector3d v = solver::bodyPointVelocity(d, t.trackBody, t.trackPoint);
+    // per unit of θ̇: a point that moves less than 1 cm per radian or per metre does not
+    // move with the drive; then the drive's own body (a claw), else it only turns
+    if (v.norm() < 0.01) {
+        p = solver::bodyPointPosition(d, treeJoint, Eigen::Vector3d::Zero());
+        v = solver::bodyPointVelocity(d, treeJoint, Eigen::Vector3d::Zero());
+    }
+    if (v.norm() < 0.01) return {};
+    if (std::abs(v.z()) >= 0.6 * v.norm()) return v.z() > 0 ? Tr::tr("+ up / − down") : Tr::tr("+ down / − up");
+    Eigen::Vector3d out(p.x(), p.y(), 0.0);
+    if (out.norm() < 1e-6) return {};
+    out.normalize();
+    const Eigen::Vector3d horizontal(v.x(), v.y(), 0.0);
+    const double radial = horizontal.dot(out);
+    if (std::abs(radial) >= 0.6 * horizontal.norm()) return radial > 0 ? Tr::tr("+ out / − in") : Tr::tr("+ in / − out");
+    const double right = horizontal.dot(out.cross(Eigen::Vector3d::UnitZ()));
+    return right > 0 ? Tr::tr("+ right / − left") : Tr::tr("+ left / − right");
+}
+
 }  // namespace
 
 QString controlText(const trainer::Mapping& m, const QString& bank)
@@ -62,7 +105,9 @@ QString controlText(const trainer::Mapping& m, const QString& bank)
 
 QString DriveControls::text() const
 {
-    return Tr::tr("%1: %2").arg(drive.label(), controls.isEmpty() ? Tr::tr("no control") : controls.join(QStringLiteral(" · ")));
+    const QString name = direction.isEmpty() ? drive.label() : Tr::tr("%1 (%2)", "a drive and which way + moves it")
+                                                                   .arg(drive.label(), direction);
+    return Tr::tr("%1: %2").arg(name, controls.isEmpty() ? Tr::tr("no control") : controls.join(QStringLiteral(" · ")));
 }
 
 QList<DriveControls> driveControls(const trainer::Tutorial& t, const trainer::StationProfile& profile,
@@ -80,10 +125,16 @@ QList<DriveControls> driveControls(const trainer::Tutorial& t, const trainer::St
     if (!keyboardMapped)
         for (int k = 0; k < drives.size() && k < trainer::StationEngine::kKeyboardPairs; ++k)
             mappings.append({trainer::Mapping{QStringLiteral("keyboard"), k, drives[k].jointId, 1.0, 1}, QString()});
+    // the machine at the stage's start, for which way each drive moves it
+    const solver::Model& model = *t.model;
+    solver::State start = solver::makeState(model);
+    for (const auto& [j, theta] : t.initialTheta) start.q[j] = theta;
+    solver::Data data(model);
+    solver::forwardKinematics(model, start, data);
     QList<DriveControls> out;
     for (const trainer::DriveInfo& d : drives) {
         if (std::size_t(d.treeJoint) >= t.enabled.size() || !t.enabled[std::size_t(d.treeJoint)]) continue;
-        DriveControls c{d, {}};
+        DriveControls c{d, {}, directionOf(t, d.treeJoint, model, data, start.q)};
         // the keyboard first (every station has one), then the profile's devices
         for (const bool keys : {true, false})
             for (const auto& [m, bank] : mappings)

@@ -8,7 +8,9 @@
 //    with their bank when they are in one.
 // Which way: the key or the direction of a stick that gives the drive a positive
 // command (+: the drive's coordinate grows: a cylinder extends, a joint turns its
-// positive way) and the one that gives a negative one. A control is named by one
+// positive way) and the one that gives a negative one; and what + and − do to the
+// machine at the stage's start (the claws' tip goes up or down, out or in, right or
+// left; a claw closes or opens), from its kinematics. A control is named by one
 // function, controlText(), so that the station's names of gamepad controls can take
 // its place in one spot.
 
@@ -27,7 +29,11 @@ namespace studio {
 struct DriveControls {
     trainer::DriveInfo drive;
     QStringList controls;  ///< controlText() of every control that moves it
-    /// "C 2 LEVANTE PLUMA: W + / S − · lever 2"
+    /// Which way + and − move the machine at the stage's start ("+ up / − down", "+ out /
+    /// − in", "+ right / − left" for the claws' tip, "+ closes / − opens" for a claw;
+    /// "" when the tip hardly moves: the head's roll), translated.
+    QString direction;
+    /// "C 2 LEVANTE PLUMA (+ up / − down): W + / S − · lever 2"
     QString text() const;
 };
 
