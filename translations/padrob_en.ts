@@ -2813,6 +2813,161 @@
     </message>
 </context>
 <context>
+    <name>DriveControls</name>
+    <message>
+        <location filename="../ide/studio/train/drive_controls.cpp" line="+35" />
+        <source>left stick right + / left −</source>
+        <translation>left stick right + / left −</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>left stick left + / right −</source>
+        <translation>left stick left + / right −</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>left stick up + / down −</source>
+        <translation>left stick up + / down −</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>left stick down + / up −</source>
+        <translation>left stick down + / up −</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>right stick right + / left −</source>
+        <translation>right stick right + / left −</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>right stick left + / right −</source>
+        <translation>right stick left + / right −</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>right stick up + / down −</source>
+        <translation>right stick up + / down −</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>right stick down + / up −</source>
+        <translation>right stick down + / up −</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>left trigger +</source>
+        <translation>left trigger +</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>left trigger −</source>
+        <translation>left trigger −</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>right trigger +</source>
+        <translation>right trigger +</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>right trigger −</source>
+        <translation>right trigger −</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>gamepad axis %1</source>
+        <translation>gamepad axis %1</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>+ closes / − opens</source>
+        <translation>+ closes / − opens</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>+ opens / − closes</source>
+        <translation>+ opens / − closes</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>+ up / − down</source>
+        <translation>+ up / − down</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>+ down / − up</source>
+        <translation>+ down / − up</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>+ out / − in</source>
+        <translation>+ out / − in</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>+ in / − out</source>
+        <translation>+ in / − out</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>+ right / − left</source>
+        <translation>+ right / − left</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>+ left / − right</source>
+        <translation>+ left / − right</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>%1 + / %2 −</source>
+        <comment>the key giving the drive +, the one giving −</comment>
+        <translation>%1 + / %2 −</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>joystick axis %1</source>
+        <translation>joystick axis %1</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>joystick axis %1 reversed</source>
+        <translation>joystick axis %1 reversed</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>lever %1</source>
+        <translation>lever %1</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>lever %1 reversed</source>
+        <translation>lever %1 reversed</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 (bank %2)</source>
+        <translation>%1 (bank %2)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1 (%2)</source>
+        <comment>a drive and which way + moves it</comment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>no control</source>
+        <translation>no control</translation>
+    </message>
+</context>
+<context>
     <name>StationNode</name>
     <message>
         <location filename="../trainer/centre/station_node.cpp" line="+41" />
@@ -3030,7 +3185,7 @@
         <translation>Stopped</translation>
     </message>
     <message>
-        <location line="+73" />
+        <location line="+75" />
         <source>Goal done: %1</source>
         <translation>Goal done: %1</translation>
     </message>
@@ -3170,7 +3325,7 @@
         <translation>Safety</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+8" />
         <source>Work faster: move several valves together once you are sure of the way.</source>
         <translation>Work faster: move several valves together once you are sure of the way.</translation>
     </message>
@@ -3190,12 +3345,17 @@
         <translation>Keep clear of the mill, the cart and the people, do not force the cylinders against their relief valves and do not run into the end stops.</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+17" />
+        <source>Nothing was done towards the goals: drive the machine towards the first one (the start screen names the keys and levers of each drive).</source>
+        <translation>Nothing was done towards the goals: drive the machine towards the first one (the start screen names the keys and levers of each drive).</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>Complete every goal: the stage is passed only when all are done.</source>
         <translation>Complete every goal: the stage is passed only when all are done.</translation>
     </message>
     <message>
-        <location line="-143" />
+        <location line="-150" />
         <source>Fault injected</source>
         <translation>Fault injected</translation>
     </message>
@@ -3225,7 +3385,7 @@
         <translation>Power cut</translation>
     </message>
     <message>
-        <location filename="../trainer/training/session.cpp" line="+39" />
+        <location filename="../trainer/training/session.cpp" line="+41" />
         <source>Instructor: the hose of %1 was repaired</source>
         <translation>Instructor: the hose of %1 was repaired</translation>
     </message>
@@ -3265,7 +3425,7 @@
         <translation>Instructor: the power was cut; every valve closed</translation>
     </message>
     <message>
-        <location line="+720" />
+        <location line="+767" />
         <source>There is no drive "%1": this machine has no hydraulic drives</source>
         <translation>There is no drive "%1": this machine has no hydraulic drives</translation>
     </message>
@@ -6504,7 +6664,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::AttemptScreen</name>
     <message>
-        <location filename="../ide/studio/train/attempt_screen.cpp" line="+155" />
+        <location filename="../ide/studio/train/attempt_screen.cpp" line="+164" />
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc or Stop ends the attempt.</translation>
     </message>
@@ -6539,22 +6699,67 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Stop</translation>
     </message>
     <message>
-        <location line="+87" />
+        <location line="+51" />
+        <source>Controls:</source>
+        <translation>Controls:</translation>
+    </message>
+    <message>
+        <location line="+48" />
         <source>Goal %1 of %2</source>
         <translation>Goal %1 of %2</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+61" />
         <source>Distance: %1 m</source>
         <translation>Distance: %1 m</translation>
     </message>
     <message>
         <location line="+4" />
-        <source>Hold: %1 of %2 s</source>
-        <translation>Hold: %1 of %2 s</translation>
+        <source>Angle: %1° off (within %2°)</source>
+        <translation>Angle: %1° off (within %2°)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Hold: %1 s more</source>
+        <translation>Hold: %1 s more</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>come within %1 m</source>
+        <translation>come within %1 m</translation>
     </message>
     <message>
         <location line="+2" />
+        <source>align the load: %1° off</source>
+        <translation>align the load: %1° off</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>align the head: %1° off</source>
+        <translation>align the head: %1° off</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>hold the load in the claws</source>
+        <translation>hold the load in the claws</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Hold %1 s</source>
+        <translation>Hold %1 s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Hold %1 s once you %2</source>
+        <translation>Hold %1 s once you %2</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source> and </source>
+        <translation> and </translation>
+    </message>
+    <message>
+        <location line="-75" />
         <source>All goals done</source>
         <translation>All goals done</translation>
     </message>
@@ -7329,6 +7534,54 @@ never the .key files of the CAs; then run it with --security DIR.
         <location line="+4" />
         <source>%1 drawn; the window saved to %2.</source>
         <translation>%1 drawn; the window saved to %2.</translation>
+    </message>
+</context>
+<context>
+    <name>studio::GettingStarted</name>
+    <message>
+        <location filename="../ide/studio/app/getting_started.cpp" line="+57" />
+        <source>Getting started</source>
+        <translation>Getting started</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Run and pause</source>
+        <translation>Run and pause</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Simulation ▸ Run (%1) starts the machine, Pause (%2) holds it; Reset puts it back at the start.</source>
+        <translation>Simulation ▸ Run (%1) starts the machine, Pause (%2) holds it; Reset puts it back at the start.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Keys</source>
+        <translation>Keys</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Click the 3D view, then hold a key to open a valve: the first key of a pair (%1, %2, …) drives one way, the second the other. Simulation ▸ Keyboard Controls lists which drive each pair moves; in Train, the start screen and the attempt name the keys and levers of each stage.</source>
+        <translation>Click the 3D view, then hold a key to open a valve: the first key of a pair (%1, %2, …) drives one way, the second the other. Simulation ▸ Keyboard Controls lists which drive each pair moves; in Train, the start screen and the attempt name the keys and levers of each stage.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Mouse in the 3D view</source>
+        <translation>Mouse in the 3D view</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Left drag orbits, middle drag or Shift + left drag pans, the wheel zooms, a double click frames the model.</source>
+        <translation>Left drag orbits, middle drag or Shift + left drag pans, the wheel zooms, a double click frames the model.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Help ▸ Getting Started shows this again.</source>
+        <translation>Help ▸ Getting Started shows this again.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Got it</source>
+        <translation>Got it</translation>
     </message>
 </context>
 <context>
@@ -8381,7 +8634,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Export</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+214" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+228" />
         <location line="+2" />
         <source>Model</source>
         <translation>Model</translation>
@@ -8533,12 +8786,12 @@ never the .key files of the CAs; then run it with --security DIR.
     </message>
     <message>
         <location filename="../ide/studio/app/main_window.cpp" line="+38" />
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="-147" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="-160" />
         <source>Load Scene</source>
         <translation>Load Scene</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+148" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+161" />
         <source>&amp;None</source>
         <translation>&amp;None</translation>
     </message>
@@ -8601,7 +8854,12 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>&amp;Keyboard Controls…</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+17" />
+        <source>&amp;Getting Started</source>
+        <translation>&amp;Getting Started</translation>
+    </message>
+    <message>
+        <location line="+25" />
         <location line="+11" />
         <source>C %1</source>
         <translation>C %1</translation>
@@ -8617,7 +8875,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>With the 3D view focused, hold a key to open a valve:</translation>
     </message>
     <message>
-        <location line="-52" />
+        <location line="-53" />
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
@@ -8627,7 +8885,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Model &amp;Language Reference</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>&amp;About Padrob Studio</source>
         <translation>&amp;About Padrob Studio</translation>
     </message>
@@ -8646,7 +8904,7 @@ never the .key files of the CAs; then run it with --security DIR.
     </message>
     <message>
         <location line="+74" />
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="-179" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="-193" />
         <source>Padrob models (*.pad);;All files (*)</source>
         <translation>Padrob models (*.pad);;All files (*)</translation>
     </message>
@@ -8664,7 +8922,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>The trainee records cannot be opened: %1</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+117" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+130" />
         <source>Hydraulics</source>
         <translation>Hydraulics</translation>
     </message>
@@ -8709,7 +8967,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>At the &amp;vertices (faster)</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+35" />
         <source>%1 (%2)</source>
         <comment>a drive and its bank</comment>
         <translation>%1 (%2)</translation>
@@ -10010,6 +10268,11 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>Score %1 of 100 in %2 s</translation>
     </message>
     <message>
+        <location line="+2" />
+        <source>Work done: %1 % of the stage</source>
+        <translation>Work done: %1 % of the stage</translation>
+    </message>
+    <message>
         <location line="+4" />
         <source>The trainee records could not be written (%1); the attempt is kept and will be added the next time they can.</source>
         <translation>The trainee records could not be written (%1); the attempt is kept and will be added the next time they can.</translation>
@@ -10152,7 +10415,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
 <context>
     <name>studio::StartScreen</name>
     <message>
-        <location filename="../ide/studio/train/start_screen.cpp" line="+47" />
+        <location filename="../ide/studio/train/start_screen.cpp" line="+56" />
         <source>Watch the demonstration</source>
         <translation>Watch the demonstration</translation>
     </message>
@@ -10167,22 +10430,22 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>Back to the course</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+26" />
         <location line="+42" />
-        <location line="+70" />
+        <location line="+73" />
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location line="-112" />
+        <location line="-115" />
         <location line="+42" />
-        <location line="+102" />
-        <location line="+6" />
+        <location line="+106" />
+        <location line="+20" />
         <source>Play</source>
         <translation>Play</translation>
     </message>
     <message>
-        <location line="-124" />
+        <location line="-142" />
         <source>Speed:</source>
         <translation>Speed:</translation>
     </message>
@@ -10202,12 +10465,17 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>Time limit: %1 s. Pass mark: %2 of 100.</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+4" />
+        <source>How to drive (%1):</source>
+        <translation>How to drive (%1):</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>This tutorial has no demonstration.</source>
         <translation>This tutorial has no demonstration.</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+43" />
         <source>%1 s of %2 s</source>
         <translation>%1 s of %2 s</translation>
     </message>
@@ -10729,7 +10997,7 @@ Id: %3</translation>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location line="+221" />
+        <location line="+220" />
         <source>On the centre's network as %1</source>
         <translation>On the centre's network as %1</translation>
     </message>
@@ -11756,18 +12024,18 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+224" />
-        <location line="+451" />
+        <location line="+452" />
         <source>cannot add the operator “%1”</source>
         <translation>cannot add the operator “%1”</translation>
     </message>
     <message>
-        <location line="-449" />
-        <location line="+451" />
+        <location line="-450" />
+        <location line="+452" />
         <source>an operator needs an id</source>
         <translation>an operator needs an id</translation>
     </message>
     <message>
-        <location line="-445" />
+        <location line="-446" />
         <source>the id is taken already, by “%1”</source>
         <translation>the id is taken already, by “%1”</translation>
     </message>
@@ -11810,12 +12078,12 @@ Id: %3</translation>
     <message>
         <location line="+5" />
         <location line="+54" />
-        <location line="+256" />
+        <location line="+257" />
         <source>there is no attempt %1</source>
         <translation>there is no attempt %1</translation>
     </message>
     <message>
-        <location line="-281" />
+        <location line="-282" />
         <source>cannot record the attempt's result</source>
         <translation>cannot record the attempt's result</translation>
     </message>
@@ -11850,7 +12118,7 @@ Id: %3</translation>
         <translation>cannot read the operators' progress</translation>
     </message>
     <message>
-        <location line="+58" />
+        <location line="+59" />
         <source>cannot read the operator's attempts</source>
         <translation>cannot read the operator's attempts</translation>
     </message>
@@ -11867,7 +12135,7 @@ Id: %3</translation>
         <translation>cannot export the records to %1</translation>
     </message>
     <message>
-        <location line="-189" />
+        <location line="-190" />
         <source>there is an attempt with the id %1 already</source>
         <translation>there is an attempt with the id %1 already</translation>
     </message>
@@ -11877,7 +12145,7 @@ Id: %3</translation>
         <translation>an attempt ends finished, aborted or interrupted, not %1</translation>
     </message>
     <message>
-        <location line="+207" />
+        <location line="+208" />
         <source>cannot read what the centre's server lacks</source>
         <translation>cannot read what the centre's server lacks</translation>
     </message>

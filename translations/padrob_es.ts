@@ -2813,6 +2813,161 @@
     </message>
 </context>
 <context>
+    <name>DriveControls</name>
+    <message>
+        <location filename="../ide/studio/train/drive_controls.cpp" line="+35" />
+        <source>left stick right + / left −</source>
+        <translation>stick izquierdo a la derecha + / a la izquierda −</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>left stick left + / right −</source>
+        <translation>stick izquierdo a la izquierda + / a la derecha −</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>left stick up + / down −</source>
+        <translation>stick izquierdo arriba + / abajo −</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>left stick down + / up −</source>
+        <translation>stick izquierdo abajo + / arriba −</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>right stick right + / left −</source>
+        <translation>stick derecho a la derecha + / a la izquierda −</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>right stick left + / right −</source>
+        <translation>stick derecho a la izquierda + / a la derecha −</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>right stick up + / down −</source>
+        <translation>stick derecho arriba + / abajo −</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>right stick down + / up −</source>
+        <translation>stick derecho abajo + / arriba −</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>left trigger +</source>
+        <translation>gatillo izquierdo +</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>left trigger −</source>
+        <translation>gatillo izquierdo −</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>right trigger +</source>
+        <translation>gatillo derecho +</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>right trigger −</source>
+        <translation>gatillo derecho −</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>gamepad axis %1</source>
+        <translation>eje %1 del mando</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>+ closes / − opens</source>
+        <translation>+ cierra / − abre</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>+ opens / − closes</source>
+        <translation>+ abre / − cierra</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>+ up / − down</source>
+        <translation>+ sube / − baja</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>+ down / − up</source>
+        <translation>+ baja / − sube</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>+ out / − in</source>
+        <translation>+ sale / − entra</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>+ in / − out</source>
+        <translation>+ entra / − sale</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>+ right / − left</source>
+        <translation>+ a la derecha / − a la izquierda</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>+ left / − right</source>
+        <translation>+ a la izquierda / − a la derecha</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>%1 + / %2 −</source>
+        <comment>the key giving the drive +, the one giving −</comment>
+        <translation>%1 + / %2 −</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>joystick axis %1</source>
+        <translation>eje %1 del joystick</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>joystick axis %1 reversed</source>
+        <translation>eje %1 del joystick, invertido</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>lever %1</source>
+        <translation>palanca %1</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>lever %1 reversed</source>
+        <translation>palanca %1 invertida</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 (bank %2)</source>
+        <translation>%1 (banco %2)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1 (%2)</source>
+        <comment>a drive and which way + moves it</comment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>no control</source>
+        <translation>ningún mando</translation>
+    </message>
+</context>
+<context>
     <name>StationNode</name>
     <message>
         <location filename="../trainer/centre/station_node.cpp" line="+41" />
@@ -3030,7 +3185,7 @@
         <translation>Detenido</translation>
     </message>
     <message>
-        <location line="+73" />
+        <location line="+75" />
         <source>Goal done: %1</source>
         <translation>Objetivo cumplido: %1</translation>
     </message>
@@ -3170,7 +3325,7 @@
         <translation>Seguridad</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+8" />
         <source>Work faster: move several valves together once you are sure of the way.</source>
         <translation>Trabaje más rápido: mueva varias válvulas a la vez cuando esté seguro del camino.</translation>
     </message>
@@ -3190,12 +3345,17 @@
         <translation>Manténgase lejos del molino, del carro y de las personas, no fuerce los cilindros contra sus válvulas de alivio y no choque contra los topes.</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+17" />
+        <source>Nothing was done towards the goals: drive the machine towards the first one (the start screen names the keys and levers of each drive).</source>
+        <translation>No se hizo nada hacia los objetivos: lleve la máquina hacia el primero (la pantalla de inicio indica las teclas y palancas de cada accionamiento).</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>Complete every goal: the stage is passed only when all are done.</source>
         <translation>Cumpla todos los objetivos: la etapa se aprueba solo cuando están todos cumplidos.</translation>
     </message>
     <message>
-        <location line="-143" />
+        <location line="-150" />
         <source>Fault injected</source>
         <translation>Falla introducida</translation>
     </message>
@@ -3225,7 +3385,7 @@
         <translation>Corte de energía</translation>
     </message>
     <message>
-        <location filename="../trainer/training/session.cpp" line="+39" />
+        <location filename="../trainer/training/session.cpp" line="+41" />
         <source>Instructor: the hose of %1 was repaired</source>
         <translation>Instructor: se reparó la manguera de %1</translation>
     </message>
@@ -3265,7 +3425,7 @@
         <translation>Instructor: se cortó la energía; todas las válvulas se cerraron</translation>
     </message>
     <message>
-        <location line="+720" />
+        <location line="+767" />
         <source>There is no drive "%1": this machine has no hydraulic drives</source>
         <translation>No hay un accionamiento "%1": esta máquina no tiene accionamientos hidráulicos</translation>
     </message>
@@ -6534,7 +6694,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::AttemptScreen</name>
     <message>
-        <location filename="../ide/studio/train/attempt_screen.cpp" line="+155" />
+        <location filename="../ide/studio/train/attempt_screen.cpp" line="+164" />
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc o Detener termina el intento.</translation>
     </message>
@@ -6569,22 +6729,67 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Detener</translation>
     </message>
     <message>
-        <location line="+87" />
+        <location line="+51" />
+        <source>Controls:</source>
+        <translation>Mandos:</translation>
+    </message>
+    <message>
+        <location line="+48" />
         <source>Goal %1 of %2</source>
         <translation>Objetivo %1 de %2</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+61" />
         <source>Distance: %1 m</source>
         <translation>Distancia: %1 m</translation>
     </message>
     <message>
         <location line="+4" />
-        <source>Hold: %1 of %2 s</source>
-        <translation>Mantener: %1 de %2 s</translation>
+        <source>Angle: %1° off (within %2°)</source>
+        <translation>Ángulo: %1° de desvío (tolerancia %2°)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Hold: %1 s more</source>
+        <translation>Mantener: %1 s más</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>come within %1 m</source>
+        <translation>se acerque a menos de %1 m</translation>
     </message>
     <message>
         <location line="+2" />
+        <source>align the load: %1° off</source>
+        <translation>alinee la carga: %1° de desvío</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>align the head: %1° off</source>
+        <translation>alinee el cabezal: %1° de desvío</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>hold the load in the claws</source>
+        <translation>tenga la carga en las garras</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Hold %1 s</source>
+        <translation>Mantenga %1 s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Hold %1 s once you %2</source>
+        <translation>Mantenga %1 s cuando %2</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source> and </source>
+        <translation> y </translation>
+    </message>
+    <message>
+        <location line="-75" />
         <source>All goals done</source>
         <translation>Todos los objetivos cumplidos</translation>
     </message>
@@ -7359,6 +7564,54 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <location line="+4" />
         <source>%1 drawn; the window saved to %2.</source>
         <translation>%1 dibujado; la ventana se guardó en %2.</translation>
+    </message>
+</context>
+<context>
+    <name>studio::GettingStarted</name>
+    <message>
+        <location filename="../ide/studio/app/getting_started.cpp" line="+57" />
+        <source>Getting started</source>
+        <translation>Primeros pasos</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Run and pause</source>
+        <translation>Marcha y pausa</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Simulation ▸ Run (%1) starts the machine, Pause (%2) holds it; Reset puts it back at the start.</source>
+        <translation>Simulación ▸ Iniciar (%1) pone la máquina en marcha, Pausar (%2) la detiene; Reiniciar la devuelve al inicio.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Keys</source>
+        <translation>Teclas</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Click the 3D view, then hold a key to open a valve: the first key of a pair (%1, %2, …) drives one way, the second the other. Simulation ▸ Keyboard Controls lists which drive each pair moves; in Train, the start screen and the attempt name the keys and levers of each stage.</source>
+        <translation>Haga clic en la vista 3D y mantenga pulsada una tecla para abrir una válvula: la primera tecla de un par (%1, %2, …) mueve en un sentido y la segunda en el otro. Simulación ▸ Controles de teclado indica qué accionamiento mueve cada par; en Entrenamiento, la pantalla de inicio y el intento indican las teclas y palancas de cada etapa.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Mouse in the 3D view</source>
+        <translation>Ratón en la vista 3D</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Left drag orbits, middle drag or Shift + left drag pans, the wheel zooms, a double click frames the model.</source>
+        <translation>Arrastrar con el botón izquierdo orbita, con el central o Mayús + izquierdo desplaza, la rueda acerca y aleja, y un doble clic encuadra el modelo.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Help ▸ Getting Started shows this again.</source>
+        <translation>Ayuda ▸ Primeros pasos lo vuelve a mostrar.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Got it</source>
+        <translation>Entendido</translation>
     </message>
 </context>
 <context>
@@ -8411,7 +8664,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Exportar</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+214" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+228" />
         <location line="+2" />
         <source>Model</source>
         <translation>Modelo</translation>
@@ -8563,12 +8816,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
     </message>
     <message>
         <location filename="../ide/studio/app/main_window.cpp" line="+38" />
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="-147" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="-160" />
         <source>Load Scene</source>
         <translation>Cargar escena</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+148" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+161" />
         <source>&amp;None</source>
         <translation>&amp;Ninguna</translation>
     </message>
@@ -8631,7 +8884,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>&amp;Controles de teclado…</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+17" />
+        <source>&amp;Getting Started</source>
+        <translation>&amp;Primeros pasos</translation>
+    </message>
+    <message>
+        <location line="+25" />
         <location line="+11" />
         <source>C %1</source>
         <translation>C %1</translation>
@@ -8647,7 +8905,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Con la vista 3D activa, mantenga presionada una tecla para abrir una válvula:</translation>
     </message>
     <message>
-        <location line="-52" />
+        <location line="-53" />
         <source>&amp;Help</source>
         <translation>Ay&amp;uda</translation>
     </message>
@@ -8657,7 +8915,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>&amp;Referencia del lenguaje de modelos</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>&amp;About Padrob Studio</source>
         <translation>&amp;Acerca de Padrob Studio</translation>
     </message>
@@ -8676,7 +8934,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
     </message>
     <message>
         <location line="+74" />
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="-179" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="-193" />
         <source>Padrob models (*.pad);;All files (*)</source>
         <translation>Modelos Padrob (*.pad);;Todos los archivos (*)</translation>
     </message>
@@ -8694,7 +8952,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>No se pueden abrir los registros de los aprendices: %1</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+117" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+130" />
         <source>Hydraulics</source>
         <translation>Hidráulica</translation>
     </message>
@@ -8739,7 +8997,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>En los &amp;vértices (más rápida)</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+35" />
         <source>%1 (%2)</source>
         <comment>a drive and its bank</comment>
         <translation>%1 (%2)</translation>
@@ -10040,6 +10298,11 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>Puntaje %1 de 100 en %2 s</translation>
     </message>
     <message>
+        <location line="+2" />
+        <source>Work done: %1 % of the stage</source>
+        <translation>Trabajo hecho: %1 % de la etapa</translation>
+    </message>
+    <message>
         <location line="+4" />
         <source>The trainee records could not be written (%1); the attempt is kept and will be added the next time they can.</source>
         <translation>No se pudieron escribir los registros de aprendices (%1); el intento se guarda y se agregará la próxima vez que se pueda.</translation>
@@ -10182,7 +10445,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
 <context>
     <name>studio::StartScreen</name>
     <message>
-        <location filename="../ide/studio/train/start_screen.cpp" line="+47" />
+        <location filename="../ide/studio/train/start_screen.cpp" line="+56" />
         <source>Watch the demonstration</source>
         <translation>Ver la demostración</translation>
     </message>
@@ -10197,22 +10460,22 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>Volver al curso</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+26" />
         <location line="+42" />
-        <location line="+70" />
+        <location line="+73" />
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
     <message>
-        <location line="-112" />
+        <location line="-115" />
         <location line="+42" />
-        <location line="+102" />
-        <location line="+6" />
+        <location line="+106" />
+        <location line="+20" />
         <source>Play</source>
         <translation>Reproducir</translation>
     </message>
     <message>
-        <location line="-124" />
+        <location line="-142" />
         <source>Speed:</source>
         <translation>Velocidad:</translation>
     </message>
@@ -10232,12 +10495,17 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>Tiempo límite: %1 s. Puntaje de aprobación: %2 de 100.</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+4" />
+        <source>How to drive (%1):</source>
+        <translation>Cómo manejar la máquina (%1):</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>This tutorial has no demonstration.</source>
         <translation>Este tutorial no tiene demostración.</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+43" />
         <source>%1 s of %2 s</source>
         <translation>%1 s de %2 s</translation>
     </message>
@@ -10759,7 +11027,7 @@ Id: %3</translation>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location line="+221" />
+        <location line="+220" />
         <source>On the centre's network as %1</source>
         <translation>En la red del centro como %1</translation>
     </message>
@@ -11786,18 +12054,18 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+224" />
-        <location line="+451" />
+        <location line="+452" />
         <source>cannot add the operator “%1”</source>
         <translation>no se puede agregar al operador “%1”</translation>
     </message>
     <message>
-        <location line="-449" />
-        <location line="+451" />
+        <location line="-450" />
+        <location line="+452" />
         <source>an operator needs an id</source>
         <translation>un operador necesita un id</translation>
     </message>
     <message>
-        <location line="-445" />
+        <location line="-446" />
         <source>the id is taken already, by “%1”</source>
         <translation>el id ya está en uso, por “%1”</translation>
     </message>
@@ -11840,12 +12108,12 @@ Id: %3</translation>
     <message>
         <location line="+5" />
         <location line="+54" />
-        <location line="+256" />
+        <location line="+257" />
         <source>there is no attempt %1</source>
         <translation>no existe el intento %1</translation>
     </message>
     <message>
-        <location line="-281" />
+        <location line="-282" />
         <source>cannot record the attempt's result</source>
         <translation>no se puede registrar el resultado del intento</translation>
     </message>
@@ -11880,7 +12148,7 @@ Id: %3</translation>
         <translation>no se puede leer el avance de los operadores</translation>
     </message>
     <message>
-        <location line="+58" />
+        <location line="+59" />
         <source>cannot read the operator's attempts</source>
         <translation>no se pueden leer los intentos del operador</translation>
     </message>
@@ -11897,7 +12165,7 @@ Id: %3</translation>
         <translation>no se pueden exportar los registros a %1</translation>
     </message>
     <message>
-        <location line="-189" />
+        <location line="-190" />
         <source>there is an attempt with the id %1 already</source>
         <translation>ya hay un intento con el identificador %1</translation>
     </message>
@@ -11907,7 +12175,7 @@ Id: %3</translation>
         <translation>un intento termina finalizado, abortado o interrumpido, no %1</translation>
     </message>
     <message>
-        <location line="+207" />
+        <location line="+208" />
         <source>cannot read what the centre's server lacks</source>
         <translation>no se puede leer lo que le falta al servidor del centro</translation>
     </message>
