@@ -317,6 +317,8 @@ int main(int argc, char** argv)
     if (parser.isSet(trainerMode)) window.setKioskMode(true);  // shows it full screen
     else window.show();
     if (parser.isSet(screenshot)) return studio::saveScreenshot(window, parser.value(screenshot));
+    // the first run: how to run, drive and look around (not in kiosk mode: no Help menu there)
+    if (!parser.isSet(trainerMode)) window.showGettingStartedOnce();
 #ifdef PADROB_HAVE_DDS
     // the Train workspace as a station of the centre (destroyed before the window: it withdraws)
     std::unique_ptr<studio::TrainStation> trainStation;

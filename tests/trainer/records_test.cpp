@@ -227,7 +227,7 @@ void expectProgress(RecordsDb& db, const Sample& s)
     EXPECT_EQ(t.tutorialId, "liner.basics");
     EXPECT_EQ(t.tutorialTitle, "Liner: the basics");  // the latest attempt's
     EXPECT_EQ(t.attempts, 2);
-    EXPECT_EQ(t.bestScore, 87.5);  // the aborted attempt's 20 does not count, nor its
+    EXPECT_EQ(t.bestScore, 87.5);  // better than the stopped attempt's 20; stopped, it cannot pass
     EXPECT_EQ(t.bestStars, 3);
     EXPECT_TRUE(t.passed);
     EXPECT_EQ(t.lastAttempt, utc(2025, 3, 2, 14, 0, 5, 0));
@@ -322,6 +322,37 @@ TEST(Records, ProgressPerOperatorAndTutorial)
     ASSERT_TRUE(db.openSqlite(dir.filePath("r.sqlite"), false, &error)) << str(error);
     ASSERT_NO_FATAL_FAILURE(writeAndReadBack(db, s));
     expectProgress(db, s);
+}
+
+TEST(Records, TheBestScoreIsOfEveryAttemptWithAScoreAsTheRecordsListThem)
+{
+    // issue 25: two stopped attempts (38 and 50) listed with their scores while the
+    // course said "best 0 of 100"
+    QTemporaryDir dir;
+    RecordsDb db;
+    QString error;
+    ASSERT_TRUE(db.openSqlite(dir.filePath("r.sqlite"), false, &error)) << str(error);
+    const qint64 op = db.addOperator("guest", "Guest", &error);
+    ASSERT_GT(op, 0) << str(error);
+    for (const double score : {38.0, 50.0}) {
+        const qint64 a = db.beginAttempt({op, "T0", "Reach", "en", QDateTime::currentDateTimeUtc()}, &error);
+        ASSERT_GT(a, 0) << str(error);
+        ASSERT_TRUE(db.finishAttempt(a, {AttemptStatus::Aborted, 10, score, 0, false, {}}, &error)) << str(error);
+    }
+    ASSERT_GT(db.beginAttempt({op, "T0", "Reach", "en", QDateTime::currentDateTimeUtc()}, &error), 0);  // running
+    QList<Attempt> list;
+    ASSERT_TRUE(db.attemptsOf(op, list, false, &error)) << str(error);
+    double listed = 0;
+    for (const Attempt& a : list)
+        if (hasScore(a.status)) listed = std::max(listed, a.score);
+    QList<OperatorProgress> p;
+    ASSERT_TRUE(db.progress(p, &error)) << str(error);
+    ASSERT_EQ(p.size(), 1);
+    ASSERT_EQ(p[0].tutorials.size(), 1);
+    EXPECT_EQ(p[0].tutorials[0].attempts, 3);
+    EXPECT_EQ(p[0].tutorials[0].bestScore, 50.0);
+    EXPECT_EQ(p[0].tutorials[0].bestScore, listed);
+    EXPECT_FALSE(p[0].tutorials[0].passed);
 }
 
 TEST(Records, CsvExportIsRfc4180)

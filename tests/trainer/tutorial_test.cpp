@@ -289,14 +289,20 @@ std::string graspStation(const std::string& goals, const std::string& extra = {}
            goals;
 }
 
+/// On liner_station: take the liner, then lift it.
+std::shared_ptr<const Tutorial> takeAndLift(solver::Diagnostics& d)
+{
+    return load(graspStation("GOAL take GRASP\n NAME ES \"Tome la lainera\" EN \"Take the liner\"\n"
+                             "GOAL up PLACE AT 4.1378 0 0.5 TOL 0.1\n NAME ES \"Súbala\" EN \"Lift it\"\n"),
+                d);
+}
+
 }  // namespace
 
 TEST(TutorialSession, ClosingTheClawsOnTheGripGraspsTheLinerWhichThenRisesWithTheArm)
 {
     solver::Diagnostics d;
-    auto t = load(graspStation("GOAL take GRASP\n NAME ES \"Tome la lainera\" EN \"Take the liner\"\n"
-                               "GOAL up PLACE AT 4.1378 0 0.5 TOL 0.1\n NAME ES \"Súbala\" EN \"Lift it\"\n"),
-                  d);
+    auto t = takeAndLift(d);
     ASSERT_TRUE(t) << dump(d);
     TutorialSession s(t);
     const solver::Model& m = *t->model;
@@ -317,6 +323,105 @@ TEST(TutorialSession, ClosingTheClawsOnTheGripGraspsTheLinerWhichThenRisesWithTh
     EXPECT_GT(s.simulation().data().driveForce[lift] - forceBefore, 6e5);
     // held there until within tolerance of the target, then released: placed
     EXPECT_FALSE(s.ended());
+}
+
+namespace {
+
+const ScoreItem& item(const TutorialResult& r, const std::string& key)
+{
+    for (const ScoreItem& i : r.breakdown)
+        if (i.key == key) return i;
+    static const ScoreItem none;
+    ADD_FAILURE() << "no score item " << key;
+    return none;
+}
+
+/// Path, smoothness and safety of `r` are their quality × weight × the work done (closed form).
+void expectEarnedInProportion(const TutorialResult& r, const Scoring& sc, double work)
+{
+    EXPECT_NEAR(r.work, work, 1e-12);
+    const double efficiency = item(r, "path").value / 100.0;
+    EXPECT_NEAR(item(r, "path").points, sc.wPath * efficiency * work, 1e-9);
+    EXPECT_NEAR(item(r, "smooth").points, sc.wSmooth * std::clamp(1.0 - r.rmsJerk / sc.jerkReference, 0.0, 1.0) * work,
+                1e-9);
+    EXPECT_NEAR(item(r, "safety").points, sc.wSafety * std::max(0.0, 1.0 - r.penalties / sc.wSafety) * work, 1e-9);
+    for (const char* key : {"path", "smooth", "safety"}) EXPECT_NEAR(item(r, key).earnable, item(r, key).max * work, 1e-9);
+    EXPECT_EQ(item(r, "time").points, 0.0);  // not complete
+    EXPECT_EQ(item(r, "time").earnable, 0.0);
+}
+
+}  // namespace
+
+TEST(TutorialSession, AnAttemptStoppedBeforeAnythingMovedScoresNothingAndIsNotToldToWorkFaster)
+{
+    solver::Diagnostics d;
+    auto t = load(header(kManipulator, "DRIVES 1 2 3\nTIME LIMIT 60 PAR 30\n") + kReachGoal, d);
+    ASSERT_TRUE(t) << dump(d);
+    TutorialSession s(t);
+    drive(s, {}, 2.0);  // no lever touched
+    s.stop(TutorialEvent::Kind::Aborted);
+    const TutorialResult r = s.result();
+    EXPECT_EQ(r.endReason, "aborted");
+    expectEarnedInProportion(r, t->scoring(), 0.0);
+    EXPECT_EQ(r.score, 0.0);  // was 50: smoothness 15 and safety 35 of nothing
+    EXPECT_EQ(s.score(), 0.0);
+    EXPECT_EQ(item(r, "path").value, 0.0);  // no "Path 100 %" for a path never taken
+    const QStringList advice = r.improvements();
+    ASSERT_EQ(advice.size(), 1) << advice.join(" | ").toStdString();
+    EXPECT_TRUE(advice[0].startsWith("Nothing was done towards the goals")) << advice[0].toStdString();
+    for (const ScoreItem& i : r.breakdown) EXPECT_TRUE(i.advice().isEmpty()) << i.key;  // not "Work faster"
+}
+
+TEST(TutorialSession, HalfTheGoalsDoneEarnHalfThePathSmoothnessAndSafety)
+{
+    solver::Diagnostics d;
+    auto t = takeAndLift(d);
+    ASSERT_TRUE(t) << dump(d);
+    TutorialSession s(t);
+    std::vector<double> cmd(std::size_t(t->model->nb), 0.0);
+    cmd[std::size_t(t->model->jointIndex(8))] = -1.0;
+    cmd[std::size_t(t->model->jointIndex(9))] = 1.0;
+    s.setCommands(cmd);
+    // stopped in the very step the grasp is done: the second goal has not begun to be worked on
+    while (s.progress().goal < 1 && s.time() < 6.0) s.step();
+    ASSERT_EQ(s.progress().goal, 1);
+    s.stop(TutorialEvent::Kind::Aborted);
+    const TutorialResult r = s.result();
+    expectEarnedInProportion(r, t->scoring(), 0.5);
+    EXPECT_GT(r.score, 0.0);
+    EXPECT_NEAR(s.score(), r.score, 1e-12);
+    EXPECT_TRUE(r.improvements().value(0).startsWith("Complete every goal")) << r.improvements().join(" | ").toStdString();
+}
+
+TEST(TutorialSession, TheWayMadeTowardsTheGoalUnderWayCountsAsWorkAndTheHudKnowsTheAngleError)
+{
+    solver::Diagnostics d;
+    // the reach goal of T1 with its ALIGN: the head must point like the arrow
+    const char* aligned = "GOAL g REACH BODY 6 POINT 0 0.48 0 AT -2.10 3.08 1.32 TOL 0.15\n"
+                          "  ALIGN 0 1 0 WITH -0.575 0.589 -0.567 ANGTOL 8 DEG\n"
+                          "  DWELL 1\n"
+                          "  NAME ES \"Objetivo\" EN \"Target\"\n";
+    auto t = load(header(kManipulator, "DRIVES 1 2 3 4 5\nTIME LIMIT 60 PAR 30\n") + aligned, d);
+    ASSERT_TRUE(t) << dump(d);
+    TutorialSession s(t);
+    s.step();
+    const double d0 = s.progress().distance;
+    ASSERT_GT(d0, 0.5);
+    // the HUD's angle error: the head's axis against the arrow, with its tolerance
+    const solver::Data& data = s.simulation().data();
+    const Eigen::Vector3d head = data.X_wb[std::size_t(t->model->bodyIndex(6))].linear() * Eigen::Vector3d::UnitY();
+    const double expected = std::acos(std::clamp(head.dot(Eigen::Vector3d(-0.575, 0.589, -0.567).normalized()), -1.0, 1.0));
+    EXPECT_NEAR(s.progress().angleError, expected, 1e-6);
+    EXPECT_NEAR(s.progress().angleTolerance, 8.0 * std::numbers::pi / 180.0, 1e-12);
+    EXPECT_FALSE(s.progress().positioned);
+    // slew towards the target: part of the way
+    drive(s, {{1, 1.0}}, 0.6 / 0.131);
+    const double dNow = s.progress().distance;
+    ASSERT_LT(dNow, d0);
+    s.stop(TutorialEvent::Kind::Aborted);
+    const TutorialResult r = s.result();
+    // the way made past the first centimetre, over the way to the tolerance
+    expectEarnedInProportion(r, t->scoring(), (d0 - dNow - 0.01) / (d0 - 0.15 - 0.01));
 }
 
 TEST(TutorialSession, ClawsClosedAwayFromTheGripMissAndReleasingOutOfPlaceIsADrop)

@@ -1034,11 +1034,12 @@ bool RecordsDb::progress(QList<OperatorProgress>& out, QString* error) const
     });
     for (qsizetype i = 0; i < list.size(); ++i) index.insert(list[i].op.id, i);
 
-    // per operator and tutorial; scores of finished attempts only
+    // per operator and tutorial; the best of the attempts with a score (finished or
+    // stopped: what the Records view lists with one), passed only by a finished one
     if (!run(q,
              "SELECT a.operator_id, a.tutorial, COUNT(*),"
-             " MAX(CASE WHEN a.status = 'finished' THEN a.score ELSE 0 END),"
-             " MAX(CASE WHEN a.status = 'finished' THEN a.stars ELSE 0 END),"
+             " MAX(CASE WHEN a.status IN ('finished', 'aborted') THEN a.score ELSE 0 END),"
+             " MAX(CASE WHEN a.status IN ('finished', 'aborted') THEN a.stars ELSE 0 END),"
              " MAX(CASE WHEN a.status = 'finished' THEN a.passed ELSE 0 END),"
              " MAX(a.started),"
              " (SELECT b.tutorial_title FROM attempts b WHERE b.operator_id = a.operator_id"

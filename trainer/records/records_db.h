@@ -130,7 +130,15 @@ struct Attempt {
     QList<AttemptEvent> events;  ///< in the order appended (by seq)
 };
 
-/// One tutorial in an operator's progress: scores are of finished attempts only.
+/// Whether an attempt of that status has a score (finished, or stopped by the operator or
+/// the trainer); running and interrupted ones have none.
+inline bool hasScore(AttemptStatus s)
+{
+    return s == AttemptStatus::Finished || s == AttemptStatus::Aborted;
+}
+
+/// One tutorial in an operator's progress: the best of the attempts that have a score
+/// (hasScore: the Train course shows it, and it is the best the Records view lists).
 struct TutorialProgress {
     QString tutorialId;
     QString tutorialTitle;  ///< the title of the latest attempt

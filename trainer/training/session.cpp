@@ -109,6 +109,8 @@ constexpr double kRestSpeed = 0.005;   // [m/s]
 constexpr double kRestTurn = 0.01;     // [rad/s]
 constexpr double kSettleStill = 0.5;   // [s]
 constexpr double kSettleLimit = 10.0;  // [s]
+// the way made towards a goal's target counts as work past this (TutorialResult::work)
+constexpr double kWayDeadBand = 0.01;  // [m]
 
 /// A fault event's sentence from its detail ("hose-burst LEVANTE PLUMA"…): the drive as
 /// the model names it, the person in `language` (by `subject`, else by the English name).
@@ -214,7 +216,8 @@ QString ScoreItem::label() const
 
 QString ScoreItem::advice() const
 {
-    if (max <= 0 || points >= max - 1e-9) return {};
+    // only what the work done could have earned and did not (nothing done: nothing lost)
+    if (max <= 0 || points >= std::min(earnable, max) - 1e-9) return {};
     if (key == "time") return Tr::tr("Work faster: move several valves together once you are sure of the way.");
     if (key == "path") return Tr::tr("Take a straighter way: plan the movement before you start, and avoid going back and forth.");
     if (key == "smooth") return Tr::tr("Move the levers gently: open and close the valves gradually so the load does not jerk.");
@@ -234,7 +237,11 @@ QStringList TutorialResult::improvements() const
     std::sort(items.begin(), items.end(),
               [](const ScoreItem* a, const ScoreItem* b) { return a->max - a->points > b->max - b->points; });
     QStringList out;
-    if (!completed) out << Tr::tr("Complete every goal: the stage is passed only when all are done.");
+    if (!completed && work <= 0.0)
+        out << Tr::tr("Nothing was done towards the goals: drive the machine towards the first one (the start "
+                      "screen names the keys and levers of each drive).");
+    else if (!completed)
+        out << Tr::tr("Complete every goal: the stage is passed only when all are done.");
     for (const ScoreItem* i : items) {
         if (!i->advice().isEmpty()) out << i->advice();
     }
@@ -464,19 +471,32 @@ void TutorialSession::checkGoal()
     const solver::State& s = m_sim->state();
     bool within = false;
     m_progress.distance = -1.0;
+    m_progress.positioned = false;
+    m_progress.angleError = -1.0;
+    m_progress.angleTolerance = 0.0;
     auto aligned = [&](int body) {
+        // every ALIGN within its ANGTOL; the HUD shows the one furthest out
+        bool all = true;
+        double worst = -std::numeric_limits<double>::infinity();
         for (const Alignment& a : g.align) {
             const Eigen::Vector3d w = d.X_wb[std::size_t(body)].linear() * a.local;
-            if (angleBetween(w, a.world) > a.tolerance) return false;
+            const double error = angleBetween(w, a.world);
+            all = all && error <= a.tolerance;
+            if (error - a.tolerance > worst) {
+                worst = error - a.tolerance;
+                m_progress.angleError = error;
+                m_progress.angleTolerance = a.tolerance;
+            }
         }
-        return true;
+        return all;
     };
     switch (g.kind) {
     case Goal::Kind::Reach: {
         const int b = t.goalBody[k];
         const double dist = (solver::bodyPointPosition(d, b, g.point) - g.target).norm();
         m_progress.distance = dist;
-        within = dist <= g.tolerance && aligned(b);
+        m_progress.positioned = dist <= g.tolerance;
+        within = aligned(b) && m_progress.positioned;
         if (m_enteredGoal) m_result.overshoot = std::max(m_result.overshoot, dist - g.tolerance);
         break;
     }
@@ -495,7 +515,8 @@ void TutorialSession::checkGoal()
     case Goal::Kind::Place: {
         const double dist = (solver::comPosition(m, d, t.loadBody) - g.target).norm();
         m_progress.distance = dist;
-        within = (m_grasped || m_settling) && dist <= g.tolerance && aligned(t.loadBody);
+        m_progress.positioned = dist <= g.tolerance;
+        within = aligned(t.loadBody) && (m_grasped || m_settling) && m_progress.positioned;
         if (m_enteredGoal) m_result.overshoot = std::max(m_result.overshoot, dist - g.tolerance);
         if (m_settling) {
             // released under CONTACT: placed once it rests within tolerance (FIX: then
@@ -522,6 +543,7 @@ void TutorialSession::checkGoal()
         break;  // done when released within tolerance (checkGrip) or rested there (above)
     }
     }
+    if (m_goalStartDistance < 0 && m_progress.distance >= 0) m_goalStartDistance = m_progress.distance;
     m_progress.withinTolerance = within;
     if (within) m_enteredGoal = true;
     if (g.kind == Goal::Kind::Reach || g.kind == Goal::Kind::Joint) {
@@ -544,6 +566,7 @@ void TutorialSession::goalDone()
     m_progress.withinTolerance = false;
     m_enteredGoal = false;
     m_goalStart = time();
+    m_goalStartDistance = -1.0;
     if (m_progress.goal >= int(goals.size())) end("completed", true);
 }
 
@@ -789,19 +812,45 @@ double TutorialSession::score() const
     return r.score;
 }
 
+double TutorialSession::workDone(double* approach) const
+{
+    if (approach) *approach = 0.0;
+    const std::vector<Goal>& goals = m_tutorial->spec.goals;
+    const int n = int(goals.size());
+    if (m_result.completed || m_progress.goal >= n) return 1.0;
+    // the current goal: the way made from where it began towards its tolerance
+    double partial = 0.0;
+    const Goal& g = goals[std::size_t(m_progress.goal)];
+    if (m_goalStartDistance >= 0 && m_progress.distance >= 0) {
+        // less a centimetre: a machine settling on its oil has done no work
+        const double made = std::max(0.0, m_goalStartDistance - m_progress.distance - kWayDeadBand);
+        const double span = m_goalStartDistance - g.tolerance - kWayDeadBand;
+        partial = span > 1e-9 ? std::min(1.0, made / span) : 0.0;
+        if (approach) *approach = made;
+    }
+    return (double(m_progress.goal) + partial) / double(n);
+}
+
 void TutorialSession::scoreInto(TutorialResult& r) const
 {
     const Scoring& sc = m_tutorial->scoring();
     const bool completed = r.completed;
-    ScoreItem time{"time", r.time, 0.0, sc.wTime};
+    double approach = 0.0;
+    r.work = completed ? 1.0 : workDone(&approach);
+    const double work = r.work;
+    ScoreItem time{"time", r.time, 0.0, sc.wTime, completed ? sc.wTime : 0.0};
     if (completed) {
         const double span = std::max(sc.timeLimit - sc.parTime, 1e-9);
         time.points = sc.wTime * std::clamp((sc.timeLimit - r.time) / span, 0.0, 1.0);
     }
-    const double efficiency = r.pathLength > 1e-6 ? std::min(1.0, r.idealLength / r.pathLength) : 1.0;
-    ScoreItem path{"path", 100.0 * efficiency, completed ? sc.wPath * efficiency : 0.0, sc.wPath};
-    ScoreItem smooth{"smooth", r.rmsJerk, sc.wSmooth * std::clamp(1.0 - r.rmsJerk / sc.jerkReference, 0.0, 1.0), sc.wSmooth};
-    ScoreItem safety{"safety", r.penalties, std::max(0.0, sc.wSafety - r.penalties), sc.wSafety};
+    // path, smoothness and safety: their quality (0–1) × their weight × the work done
+    const double ideal = r.idealLength + approach;
+    const double efficiency = r.pathLength > 1e-6 ? std::min(1.0, ideal / r.pathLength) : work > 0 ? 1.0 : 0.0;
+    const double gentle = std::clamp(1.0 - r.rmsJerk / sc.jerkReference, 0.0, 1.0);
+    const double safe = sc.wSafety > 0 ? std::max(0.0, 1.0 - r.penalties / sc.wSafety) : 1.0;
+    ScoreItem path{"path", 100.0 * efficiency, sc.wPath * efficiency * work, sc.wPath, sc.wPath * work};
+    ScoreItem smooth{"smooth", r.rmsJerk, sc.wSmooth * gentle * work, sc.wSmooth, sc.wSmooth * work};
+    ScoreItem safety{"safety", r.penalties, sc.wSafety * safe * work, sc.wSafety, sc.wSafety * work};
     const double overflow = std::max(0.0, r.penalties - sc.wSafety);
     r.breakdown = {time, path, smooth, safety};
     r.score = std::clamp(time.points + path.points + smooth.points + safety.points - overflow, 0.0, 100.0);

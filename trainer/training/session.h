@@ -76,8 +76,11 @@ struct ScoreItem {
     double value = 0.0;  ///< the measure (s, %, m/s³, penalty points)
     double points = 0.0;
     double max = 0.0;
+    /// What the work done made earnable: max × the share of the work done (time: max once
+    /// every goal is done, else 0). Points short of it are what the operator lost.
+    double earnable = 0.0;
     QString label() const;   ///< translated
-    QString advice() const;  ///< what to improve, translated ("" when full marks)
+    QString advice() const;  ///< what to improve, translated ("" when nothing earnable was lost)
 };
 
 struct TutorialResult {
@@ -89,6 +92,11 @@ struct TutorialResult {
     double score = 0.0;      ///< 0–100
     int stars = 0;           ///< 0–3
     int goalsDone = 0;
+    /// The share of the stage's work done, 0–1: the goals done, and of the current goal
+    /// the way made towards its target (from where it started to its tolerance), over the
+    /// number of goals. 1 when completed. Path, smoothness and safety earn their points
+    /// in this proportion: an attempt that did nothing scores 0.
+    double work = 0.0;
     std::vector<ScoreItem> breakdown;
     std::vector<TutorialEvent> events;
     // measures, for the debrief's comparison with the expert
@@ -130,6 +138,12 @@ struct SessionProgress {
     double distance = -1.0;    ///< to the current goal's target [m] (−1: not positional)
     double dwell = 0.0;        ///< time held within tolerance so far [s]
     bool withinTolerance = false;
+    /// REACH and PLACE: the distance is within the goal's TOL (the ALIGNs may not be).
+    bool positioned = false;
+    /// The current goal's ALIGN furthest from its direction: its error and its ANGTOL
+    /// [rad] (−1, 0: the goal has no ALIGN).
+    double angleError = -1.0;
+    double angleTolerance = 0.0;
     bool grasped = false;
     double clearance = -1.0;   ///< to the scene [m] (−1: not checked)
     double workerDistance = -1.0;  ///< to the nearest person [m] (−1: none)
@@ -210,8 +224,12 @@ public:
 
 private:
     /// The breakdown, score, pass and stars of `r` from its measures (completed, end
-    /// reason, time, path and ideal lengths, RMS jerk, penalties).
+    /// reason, time, path and ideal lengths, RMS jerk, penalties) and the work done now
+    /// (r.work, workDone()).
     void scoreInto(TutorialResult& r) const;
+    /// The share of the work done now (TutorialResult::work); `approach`: the way made
+    /// towards the current goal's target [m] (0 when it has none).
+    double workDone(double* approach = nullptr) const;
     void handleSolverEvents(const std::vector<solver::SimulationEvent>& events, const std::vector<double>& qdBefore);
     void checkGrip();
     void checkGoal();
@@ -252,6 +270,7 @@ private:
     double m_settleStart = 0.0, m_stillSince = -1.0;
     // goal
     double m_goalStart = 0.0;
+    double m_goalStartDistance = -1.0;  // to the current goal's target when it began [m] (−1: not yet, or none)
     bool m_enteredGoal = false;
     // collisions: an episode lasts while touching (re-armed when clear)
     bool m_touching = false, m_near = false;

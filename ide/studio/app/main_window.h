@@ -52,6 +52,7 @@ struct StationProfile;
 namespace studio {
 
 class EditorPanel;
+class GettingStarted;
 class HydraulicPanel;
 class InertiaDialog;
 class JointSliders;
@@ -117,6 +118,12 @@ public:
     enum class Workspace { Model, Station, Train };
     void setWorkspace(Workspace w);
     Workspace workspace() const;
+
+    /// The first-run overlay (GettingStarted): shown unless it was dismissed once
+    /// (padrob-studio's main() asks, not kiosk mode); Help ▸ Getting Started opens it again.
+    void showGettingStartedOnce();
+    void showGettingStarted();
+    GettingStarted* gettingStarted() const { return m_gettingStarted; }
 
     /// The simulation menu's actions.
     void run();
@@ -204,6 +211,7 @@ private:
     QList<QAction*> m_workspaceActions;
 
     QMenu* m_recentMenu = nullptr;
+    GettingStarted* m_gettingStarted = nullptr;
     QAction* m_runAction = nullptr;
     QAction* m_pauseAction = nullptr;
     QAction* m_stepAction = nullptr;

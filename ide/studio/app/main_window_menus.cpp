@@ -9,6 +9,7 @@
 #include "ide/studio/app/menu_items.h"
 #include "ide/studio/editor/editor_panel.h"
 #include "ide/studio/plots/plot_panel.h"
+#include "ide/studio/app/getting_started.h"
 #include "ide/studio/sim/keyboard_input.h"
 #include "ide/studio/sim/simulation_runner.h"
 #include "ide/studio/station/station_page.h"
@@ -193,7 +194,20 @@ void MainWindow::buildMenus()
     // Help
     m.help = menuBar()->addMenu(QString());
     m.reference = m.help->addAction(QString(), QKeySequence::HelpContents, this, &MainWindow::showLanguageReference);
+    m.gettingStarted = m.help->addAction(QString(), this, &MainWindow::showGettingStarted);
+    m.gettingStarted->setObjectName("GettingStartedAction");
     m.about = m.help->addAction(QString(), this, &MainWindow::showAbout);
+}
+
+void MainWindow::showGettingStarted()
+{
+    if (!m_gettingStarted) m_gettingStarted = new GettingStarted(this, m_runAction, m_pauseAction);
+    m_gettingStarted->open();
+}
+
+void MainWindow::showGettingStartedOnce()
+{
+    if (!GettingStarted::wasShown()) showGettingStarted();
 }
 
 void MainWindow::changeEvent(QEvent* event)
@@ -279,6 +293,7 @@ void MainWindow::retranslate()
     for (const auto& [action, code] : m.languages) action->setChecked(code == i18n::current());
     m.help->setTitle(tr("&Help"));
     m.reference->setText(tr("Model &Language Reference"));
+    m.gettingStarted->setText(tr("&Getting Started"));
     m.about->setText(tr("&About Padrob Studio"));
 
     // the status bar and the title (a passing message in the old language goes)

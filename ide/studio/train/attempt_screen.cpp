@@ -1,6 +1,7 @@
 #include "ide/studio/train/attempt_screen.h"
 
 #include "ide/studio/sim/hydraulic_panel.h"
+#include "ide/studio/train/drive_controls.h"
 #include "ide/studio/train/train_ui.h"
 #include "ide/studio/train/training_controller.h"
 #include "ide/studio/train/tutorial_runner.h"
@@ -97,6 +98,14 @@ AttemptScreen::AttemptScreen(TrainingController* training, QWidget* parent) : QW
     m_hydraulics->hide();
     row->addWidget(m_hydraulics);
     layout->addLayout(row, 1);
+    // how to drive, below the view (never over the target): the profile's keys and levers
+    m_controls = new QLabel;
+    m_controls->setObjectName("AttemptControls");
+    m_controls->setWordWrap(true);
+    m_controls->setTextFormat(Qt::RichText);
+    m_controls->setContentsMargins(12, 4, 12, 0);
+    m_controls->setStyleSheet("font-size: 11pt;");
+    layout->addWidget(m_controls);
 
     auto* bar = new QHBoxLayout;
     bar->setContentsMargins(12, 6, 12, 6);
@@ -196,6 +205,7 @@ void AttemptScreen::prepare()
     m_view->clearGhost();
     m_shownStep = -1;
     m_hudText.clear();
+    showControls();
     // the hydraulics (a model with pumps) beside the view before the view is framed
     if (const auto f = runner->latest()) m_hydraulics->setSnapshot(f->snapshot);
 }
@@ -220,9 +230,20 @@ void AttemptScreen::leave()
     m_view->clearGhost();
 }
 
+void AttemptScreen::showControls()
+{
+    const auto t = m_training->tutorial();
+    if (!t) return;
+    // one line: the drives side by side
+    QStringList drives;
+    for (const DriveControls& c : driveControls(*t, m_training->profile())) drives << c.text().toHtmlEscaped();
+    m_controls->setText("<b>" + tr("Controls:") + "</b> " + drives.join(QStringLiteral(" &nbsp;|&nbsp; ")));
+}
+
 void AttemptScreen::retranslate()
 {
     m_texts.apply();
+    showControls();
     // the HUD, the hints and the warnings at the next frame
     m_shownStep = -1;
     m_hudText.clear();
@@ -265,12 +286,9 @@ void AttemptScreen::updateHud(const TrainFrame& f)
         lines << "<span style='font-size:26px; font-weight:bold'>" +
                      QString::fromStdString(g.name.in(lang)).toHtmlEscaped() + "</span>";
         if (goals.size() > 1) lines << tr("Goal %1 of %2").arg(p.goal + 1).arg(goals.size());
-        if (p.distance >= 0)
-            lines << tr("Distance: %1 m").arg(num(p.distance, 2)) +
-                         (p.withinTolerance ? " <span style='color:#4cd964'>✔</span>" : QString());
+        lines << goalLines(g, p);
         m_dwellBar->setVisible(g.dwell > 0);
         m_dwellBar->setValue(g.dwell > 0 ? int(std::clamp(p.dwell / g.dwell, 0.0, 1.0) * 1000) : 0);
-        if (g.dwell > 0) lines << tr("Hold: %1 of %2 s").arg(num(p.dwell, 1), num(g.dwell, 1));
     } else {
         lines << "<span style='font-size:26px; font-weight:bold'>" + tr("All goals done") + "</span>";
         m_dwellBar->hide();
@@ -321,6 +339,34 @@ void AttemptScreen::updateHud(const TrainFrame& f)
         m_hintLabel->setText(hint);
         m_hintLabel->setVisible(!hint.isEmpty());
     }
+}
+
+QStringList AttemptScreen::goalLines(const trainer::Goal& g, const trainer::SessionProgress& p)
+{
+    const QString ok = QStringLiteral(" <span style='color:#4cd964'>✔</span>");
+    const auto degrees = [](double rad) { return num(rad * 180.0 / M_PI, 0); };
+    QStringList lines;
+    if (p.distance >= 0) lines << tr("Distance: %1 m").arg(num(p.distance, 2)) + (p.positioned ? ok : QString());
+    // a goal with ALIGN (the head pointing like the arrow): how far it is turned from it
+    const bool aligned = p.angleError < 0 || p.angleError <= p.angleTolerance;
+    if (p.angleError >= 0)
+        lines << tr("Angle: %1° off (within %2°)").arg(degrees(p.angleError), degrees(p.angleTolerance)) +
+                     (aligned ? ok : QString());
+    if (g.dwell <= 0) return lines;
+    // the hold: how much longer, or what it waits for
+    if (p.withinTolerance) {
+        lines << tr("Hold: %1 s more").arg(num(std::max(0.0, g.dwell - p.dwell), 1));
+        return lines;
+    }
+    QStringList waiting;
+    if (p.distance >= 0 && !p.positioned) waiting << tr("come within %1 m").arg(num(g.tolerance, 2));
+    if (!aligned)
+        waiting << (g.kind == trainer::Goal::Kind::Place ? tr("align the load: %1° off") : tr("align the head: %1° off"))
+                       .arg(degrees(p.angleError));
+    if (g.kind == trainer::Goal::Kind::Place && !p.grasped) waiting << tr("hold the load in the claws");
+    lines << (waiting.isEmpty() ? tr("Hold %1 s").arg(num(g.dwell, 1))
+                                : tr("Hold %1 s once you %2").arg(num(g.dwell, 1), waiting.join(tr(" and "))));
+    return lines;
 }
 
 void AttemptScreen::aimSeatAtFirstGoal(const trainer::Tutorial& t)

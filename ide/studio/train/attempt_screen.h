@@ -1,7 +1,8 @@
 #pragma once
 // AttemptScreen: the attempt. One 3D view (the operator's seat inside a scene, else
 // from where the target shows) with a HUD big enough to read from the seat: the goal,
-// goal n of m, the distance, the hold with its bar, the time and its limit, penalties,
+// goal n of m, the distance, the angle off an ALIGN, the hold with its bar and what it
+// waits for, the time and its limit, penalties,
 // the load in the claws and the station's bank; warnings (the station's, overload,
 // a worker too close, clearance, paused by the instructor) at the top right and the
 // stage's hints at the bottom. The HUD is drawn into the view's frames
@@ -9,7 +10,8 @@
 // beside the view, never over the target, which "Hydraulics" folds away (remembered:
 // "trainer/showHydraulics"). "Show the expert" (remembered: "trainer/showExpert") runs
 // the demonstration beside the attempt and draws it translucent (Viewport::setGhost).
-// Below: the training centre's indicator, the camera and Stop; Esc also ends it.
+// Below the view, the controls of the stage's drives (drive_controls.h); below that the
+// training centre's indicator, the camera and Stop; Esc also ends it.
 
 #include "ide/i18n/texts.h"
 
@@ -24,8 +26,10 @@ class QLabel;
 class QProgressBar;
 
 namespace trainer {
+struct Goal;
+struct SessionProgress;
 struct Tutorial;
-}
+}  // namespace trainer
 
 namespace studio {
 
@@ -58,6 +62,8 @@ public:
 
     Viewport* view() const { return m_view; }
     QLabel* hud() const { return m_hud; }
+    /// How to drive, below the view: the profile's keys and levers for the stage's drives.
+    QLabel* controls() const { return m_controls; }
     QCheckBox* expertBox() const { return m_expertBox; }
     HydraulicPanel* hydraulicPanel() const { return m_hydraulics; }
     QCheckBox* hydraulicsBox() const { return m_hydraulicsBox; }
@@ -72,8 +78,15 @@ protected:
     /// Esc in the 3D view (which has the keyboard focus) ends the attempt.
     bool eventFilter(QObject* watched, QEvent* event) override;
 
+    /// The HUD's lines for goal `g` under way: the distance, the angle off an ALIGN (in
+    /// degrees, with its tolerance), and the hold: how much longer, or what it waits for
+    /// ("Hold 2 s once you come within 0.12 m and align the head: 14° off").
+    static QStringList goalLines(const trainer::Goal& g, const trainer::SessionProgress& p);
+
 private:
     void updateHud(const TrainFrame& f);
+    /// The controls line for the open tutorial and its profile (drive_controls.h).
+    void showControls();
     /// A scene's attempt: turns the seat towards the first goal when it is out of view.
     void aimSeatAtFirstGoal(const trainer::Tutorial& t);
 
@@ -93,6 +106,7 @@ private:
     QLabel* m_hintLabel = nullptr;
     QLabel* m_warningLabel = nullptr;
     QLabel* m_centre = nullptr;
+    QLabel* m_controls = nullptr;
     QString m_hudText, m_hintText, m_warningText;  ///< as shown (set again only when they change)
 };
 

@@ -367,7 +367,7 @@ void RecordsView::showOperator(int row)
     m_attempts->setRowCount(int(m_list.size()));
     for (int i = 0; i < m_list.size(); ++i) {
         const rec::Attempt& a = m_list[i];
-        const bool scored = a.status == rec::AttemptStatus::Finished || a.status == rec::AttemptStatus::Aborted;
+        const bool scored = rec::hasScore(a.status);
         // a finished attempt by its outcome (the column stays narrow enough for Spanish)
         QString status = statusText(a.status);
         if (a.status == rec::AttemptStatus::Finished) status = a.passed ? tr("passed") : tr("not passed");
@@ -434,7 +434,7 @@ void RecordsView::fillChart(const QList<trainer::records::Attempt>& attempts)
     const int n = int(attempts.size());
     for (int k = n - 1; k >= 0; --k) {
         const rec::Attempt& a = attempts[k];
-        if (a.status != rec::AttemptStatus::Finished && a.status != rec::AttemptStatus::Aborted) continue;
+        if (!rec::hasScore(a.status)) continue;
         QLineSeries*& s = byTutorial[a.tutorialId];
         if (!s) {
             s = new QLineSeries;

@@ -148,7 +148,9 @@ void ResultScreen::fill(bool kiosk)
     else if (r.endReason == "aborted") why = tr("The attempt was stopped.");
     else if (r.endReason == "input-ended") why = tr("The input ended before the goals were done.");
     else if (r.endReason == "solver-error") why = tr("The simulation failed.");
-    const QString score = tr("Score %1 of 100 in %2 s").arg(num(r.score, 0), num(r.time, 1));
+    QString score = tr("Score %1 of 100 in %2 s").arg(num(r.score, 0), num(r.time, 1));
+    // unfinished: how much of the stage was done (what path, smoothness and safety were earned on)
+    if (!r.completed) score += QLatin1Char('\n') + tr("Work done: %1 % of the stage").arg(num(100.0 * r.work, 0));
     m_score->setText(why.isEmpty() ? score : score + QLatin1Char('\n') + why);
     QString note;
     if (m_training->notRecorded())

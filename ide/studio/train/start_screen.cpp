@@ -1,5 +1,7 @@
 #include "ide/studio/train/start_screen.h"
 
+#include "ide/studio/train/drive_controls.h"
+#include "ide/studio/train/lever_bars.h"
 #include "ide/studio/train/train_ui.h"
 #include "ide/studio/train/training_controller.h"
 #include "ide/studio/train/tutorial_runner.h"
@@ -7,6 +9,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
@@ -36,8 +39,14 @@ StartScreen::StartScreen(TrainingController* training, QWidget* parent) : QWidge
     m_intro->setTextFormat(Qt::RichText);
     m_intro->setStyleSheet("font-size: 15pt;");
     m_intro->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    // how to drive: the keys and levers of the profile for this stage's drives
+    m_controls = trainui::wrapped();
+    m_controls->setObjectName("StartControls");
+    m_controls->setTextFormat(Qt::RichText);
+    m_controls->setStyleSheet("font-size: 12pt;");
     left->addWidget(m_title);
     left->addWidget(m_intro, 1);
+    left->addWidget(m_controls);
     m_watchButton = new QPushButton;
     m_startButton = new QPushButton;
     m_startButton->setObjectName("StartButton");
@@ -60,7 +69,15 @@ StartScreen::StartScreen(TrainingController* training, QWidget* parent) : QWidge
     auto* right = new QVBoxLayout;
     m_view = new Viewport;
     m_view->setMinimumSize(480, 360);
-    right->addWidget(m_view, 1);
+    // the expert's levers over the replay (drawn into the view's frames)
+    auto* viewBox = new QWidget;
+    auto* grid = new QGridLayout(viewBox);
+    grid->setContentsMargins(0, 0, 0, 0);
+    grid->addWidget(m_view, 0, 0);
+    m_bars = new LeverBars;
+    grid->addWidget(m_bars, 0, 0, Qt::AlignTop | Qt::AlignRight);
+    m_view->addOverlay(m_bars);
+    right->addWidget(viewBox, 1);
     auto* controls = new QHBoxLayout;
     m_play = new QPushButton;
     m_play->setEnabled(false);
@@ -155,6 +172,8 @@ void StartScreen::fill()
                  .arg(trainui::num(t->scoring().timeLimit, 0), trainui::num(t->scoring().pass, 0)) +
              "</p>";
     m_intro->setText(intro);
+    m_controls->setText("<b>" + tr("How to drive (%1):").arg(m_training->profile().name.toHtmlEscaped()) + "</b><br>" +
+                        driveControlsHtml(driveControls(*t, m_training->profile())));
     const QString warning = m_training->demoWarning();
     m_note->setText(warning);
     m_note->setVisible(!warning.isEmpty());
@@ -175,6 +194,7 @@ void StartScreen::watchDemonstration()
     }
     m_demoRunning = true;
     m_shownStep = -1;
+    showLevers();
     m_play->setEnabled(true);
     m_play->setText(tr("Pause"));
 }
@@ -184,6 +204,7 @@ void StartScreen::showFrame(const TrainFrame& f)
     if (!m_demoRunning || f.snapshot->step == m_shownStep) return;
     m_shownStep = f.snapshot->step;
     m_view->setSnapshot(f.snapshot);
+    m_bars->setCommands(f.snapshot->u);
     const trainer::CameraPath& path = m_training->demoCamera();
     if (!path.empty() && m_follow->isChecked()) {
         const trainer::CameraKey k = path.at(f.snapshot->t);
@@ -211,9 +232,23 @@ void StartScreen::demoFinished()
     m_play->setText(tr("Play"));
 }
 
+void StartScreen::showLevers()
+{
+    const auto t = m_training->tutorial();
+    const auto log = m_training->demoLog();
+    if (!t || !log) return;
+    // the controls of the devices the expert's input was recorded from, through the
+    // profile it is replayed with
+    QStringList devices;
+    for (const trainer::DeviceInfo& d : log->devices) devices << d.id << trainer::kindKey(d.kind);
+    m_bars->setDrives(driveControls(*t, m_training->demoProfile(), &devices));
+    m_bars->show();
+}
+
 void StartScreen::leave()
 {
     m_demoRunning = false;
+    m_bars->hide();
     m_play->setText(tr("Play"));
     m_play->setEnabled(m_training->demoLog() != nullptr);
 }
@@ -222,6 +257,7 @@ void StartScreen::retranslate()
 {
     m_texts.apply();
     fill();
+    if (m_demoRunning) showLevers();
     m_shownStep = -1;  // the clock at the next frame, even paused
 }
 

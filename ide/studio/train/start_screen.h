@@ -3,7 +3,9 @@
 // pass mark, "Watch the demonstration", Start and Back to the course; on the right the
 // demonstration: the stage's input log replayed by the TutorialRunner in a 3D view,
 // with play/pause, speed 0.25×–4×, a scrub slider (a release seeks exactly) and, for a
-// shipped demonstration with a camera path, the expert's camera.
+// shipped demonstration with a camera path, the expert's camera; over the replay, the
+// levers the expert moves (LeverBars). Under the intro, how to drive: the keys and
+// levers of the stage's profile for its drives (drive_controls.h).
 
 #include "ide/i18n/texts.h"
 
@@ -19,6 +21,7 @@ class QSlider;
 
 namespace studio {
 
+class LeverBars;
 class TrainingController;
 class Viewport;
 struct TrainFrame;
@@ -47,6 +50,10 @@ public:
     QLabel* title() const { return m_title; }
     Viewport* view() const { return m_view; }
     QSlider* slider() const { return m_slider; }
+    /// How to drive: the keys and levers of the profile for the stage's drives.
+    QLabel* controls() const { return m_controls; }
+    /// The expert's levers over the replay (shown while the demonstration runs).
+    LeverBars* leverBars() const { return m_bars; }
 
 signals:
     void startRequested();
@@ -56,11 +63,14 @@ private:
     /// The open tutorial's title, intro and pass mark, and the demonstration's note.
     void fill();
     void seekSlider();
+    /// The lever bars for the demonstration's log and profile, shown.
+    void showLevers();
 
     TrainingController* m_training;
     i18n::Texts m_texts;
     QLabel* m_title = nullptr;
     QLabel* m_intro = nullptr;
+    QLabel* m_controls = nullptr;  ///< how to drive (drive_controls.h)
     QPushButton* m_watchButton = nullptr;
     QPushButton* m_startButton = nullptr;
     Viewport* m_view = nullptr;
@@ -70,6 +80,7 @@ private:
     QLabel* m_time = nullptr;
     QLabel* m_note = nullptr;
     QCheckBox* m_follow = nullptr;  ///< follow the demonstration's camera
+    LeverBars* m_bars = nullptr;
     bool m_demoRunning = false;
     long m_shownStep = -1;
 };
