@@ -6504,7 +6504,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::AttemptScreen</name>
     <message>
-        <location filename="../ide/studio/train/attempt_screen.cpp" line="+155" />
+        <location filename="../ide/studio/train/attempt_screen.cpp" line="+156" />
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc or Stop ends the attempt.</translation>
     </message>
@@ -6574,12 +6574,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Load in the claws</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</source>
-        <translation>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</translation>
-    </message>
-    <message>
-        <location line="+8" />
+        <location line="+11" />
         <source>Paused by the instructor</source>
         <translation>Paused by the instructor</translation>
     </message>
@@ -6860,7 +6855,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::ChannelPanel</name>
     <message>
-        <location filename="../ide/studio/station/channel_bars.cpp" line="+218" />
+        <location filename="../ide/studio/station/channel_bars.cpp" line="+228" />
         <location line="+23" />
         <source>No device selected</source>
         <translation>No device selected</translation>
@@ -6871,7 +6866,12 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Buttons</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="-2" />
+        <source>Keys are digital: a key gives its drive the full command (−1, 0 or +1) at once, so there is nothing to calibrate. A ramp eases each key's command in and out instead.</source>
+        <translation>Keys are digital: a key gives its drive the full command (−1, 0 or +1) at once, so there is nothing to calibrate. A ramp eases each key's command in and out instead.</translation>
+    </message>
+    <message>
+        <location line="+36" />
         <source>%1: no channels (yet)</source>
         <translation>%1: no channels (yet)</translation>
     </message>
@@ -6899,13 +6899,33 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Calibrated</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>Ramp</source>
+        <translation>Ramp</translation>
+    </message>
+    <message>
         <location line="+29" />
-        <location line="+60" />
+        <location line="+91" />
         <source>not calibrated</source>
         <translation>not calibrated</translation>
     </message>
     <message>
-        <location line="-59" />
+        <location line="-84" />
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>at once</source>
+        <translation>at once</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>How long a key takes to open its valve fully (and to close it again): 0 gives the full command at once</source>
+        <translation>How long a key takes to open its valve fully (and to close it again): 0 gives the full command at once</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>Calibrate…</source>
         <translation>Calibrate…</translation>
     </message>
@@ -6915,12 +6935,12 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Capture this channel's centre and travel, and set its dead band and curve</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+17" />
         <source>Button %1: %2</source>
         <translation>Button %1: %2</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+52" />
         <source>out of range</source>
         <translation>out of range</translation>
     </message>
@@ -8376,7 +8396,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::MainWindow</name>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+150" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+152" />
         <source>Export</source>
         <translation>Export</translation>
     </message>
@@ -8861,31 +8881,23 @@ Use Save As to choose another place.</translation>
         <source>t = %1 s</source>
         <translation>t = %1 s</translation>
     </message>
-    <message numerus="yes">
-        <location line="+1" />
-        <source>real time ×%1, %2 µs/step, %n overrun(s)</source>
-        <translation>
-            <numerusform>real time ×%1, %2 µs/step, %n overrun</numerusform>
-            <numerusform>real time ×%1, %2 µs/step, %n overruns</numerusform>
-        </translation>
+    <message>
+        <location line="+3" />
+        <source>real time ×%1, %2 µs/step</source>
+        <translation>real time ×%1, %2 µs/step</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+3" />
         <source>paused</source>
         <translation>paused</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>frame %1 ms</source>
         <translation>frame %1 ms</translation>
     </message>
     <message>
-        <location line="+11" />
-        <source>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</source>
-        <translation>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</translation>
-    </message>
-    <message>
-        <location line="+45" />
+        <location line="+52" />
         <source>Simulation Stopped</source>
         <translation>Simulation Stopped</translation>
     </message>
@@ -8922,7 +8934,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
 <context>
     <name>studio::MappingTable</name>
     <message>
-        <location filename="../ide/studio/station/mapping_table.cpp" line="+50" />
+        <location filename="../ide/studio/station/mapping_table.cpp" line="+52" />
         <source>none</source>
         <translation>none</translation>
     </message>
@@ -9043,28 +9055,29 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>The device whose button steps to the next bank</translation>
     </message>
     <message>
-        <location line="+90" />
+        <location line="+91" />
         <source>Always</source>
         <translation>Always</translation>
     </message>
     <message>
         <location line="+2" />
-        <location line="+394" />
+        <location line="+422" />
         <source>Bank %1</source>
         <translation>Bank %1</translation>
     </message>
     <message>
-        <location line="-384" />
+        <location line="-412" />
         <source>The first connected device of this kind</source>
         <translation>The first connected device of this kind</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+19" />
+        <location line="+8" />
         <source>Axis %1</source>
         <translation>Axis %1</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+27" />
         <source>C %1 (not in this model)</source>
         <translation>C %1 (not in this model)</translation>
     </message>
@@ -9082,7 +9095,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         </translation>
     </message>
     <message>
-        <location line="+160" />
+        <location line="+163" />
         <source>ignored</source>
         <translation>ignored</translation>
     </message>
@@ -9410,6 +9423,22 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <location line="+1" />
         <source>Dependent (%1)</source>
         <translation>Dependent (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>studio::OverrunMeter</name>
+    <message>
+        <location filename="../ide/studio/sim/overrun_meter.cpp" line="+29" />
+        <source>%1 % of steps late</source>
+        <translation>%1 % of steps late</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5" />
+        <source>An overrun is a solver step that took longer to compute than the real time it simulates: the simulation falls behind the wall clock. The share shown is that of the last %1 s (%n overrun(s) since Run).
+A few are harmless. If the share stays high, this computer cannot keep up: lower the speed (Simulation ▸ Speed), close other programs, choose Settings ▸ Lighting ▸ At the vertices, or simplify the model.</source>
+        <translation><numerusform>An overrun is a solver step that took longer to compute than the real time it simulates: the simulation falls behind the wall clock. The share shown is that of the last %1 s (%n overrun since Run).
+A few are harmless. If the share stays high, this computer cannot keep up: lower the speed (Simulation ▸ Speed), close other programs, choose Settings ▸ Lighting ▸ At the vertices, or simplify the model.</numerusform><numerusform>An overrun is a solver step that took longer to compute than the real time it simulates: the simulation falls behind the wall clock. The share shown is that of the last %1 s (%n overruns since Run).
+A few are harmless. If the share stays high, this computer cannot keep up: lower the speed (Simulation ▸ Speed), close other programs, choose Settings ▸ Lighting ▸ At the vertices, or simplify the model.</numerusform></translation>
     </message>
 </context>
 <context>
@@ -10223,9 +10252,17 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
     </message>
 </context>
 <context>
+    <name>studio::StationHud</name>
+    <message>
+        <location filename="../ide/studio/station/live_state.cpp" line="+26" />
+        <source>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</source>
+        <translation>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</translation>
+    </message>
+</context>
+<context>
     <name>studio::StationPage</name>
     <message>
-        <location filename="../ide/studio/station/live_state.cpp" line="+51" />
+        <location line="+44" />
         <source>Connected</source>
         <translation>Connected</translation>
     </message>
@@ -10260,7 +10297,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>Remove bank</translation>
     </message>
     <message>
-        <location line="+50" />
+        <location line="+51" />
         <source>Profile:</source>
         <translation>Profile:</translation>
     </message>
@@ -10381,23 +10418,23 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
     </message>
     <message>
         <location line="-6" />
-        <location line="+455" />
+        <location line="+456" />
         <source>Record input…</source>
         <translation>Record input…</translation>
     </message>
     <message>
-        <location line="-447" />
+        <location line="-448" />
         <source>Write everything the devices read to an input log</source>
         <translation>Write everything the devices read to an input log</translation>
     </message>
     <message>
         <location line="-7" />
-        <location line="+456" />
+        <location line="+457" />
         <source>Replay a log…</source>
         <translation>Replay a log…</translation>
     </message>
     <message>
-        <location line="-448" />
+        <location line="-449" />
         <source>Play a recorded input log: it drives the machine instead of the operator</source>
         <translation>Play a recorded input log: it drives the machine instead of the operator</translation>
     </message>
@@ -10641,7 +10678,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>Bank: %1</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+7" />
         <source>Replaying %1: the operator's devices are ignored</source>
         <translation>Replaying %1: the operator's devices are ignored</translation>
     </message>
@@ -10729,7 +10766,7 @@ Id: %3</translation>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location line="+221" />
+        <location line="+220" />
         <source>On the centre's network as %1</source>
         <translation>On the centre's network as %1</translation>
     </message>
@@ -11140,6 +11177,143 @@ Id: %3</translation>
     </message>
 </context>
 <context>
+    <name>trainer::Gamepad</name>
+    <message>
+        <location filename="../trainer/station/control_names.cpp" line="+21" />
+        <source>Left stick X</source>
+        <translation>Left stick X</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Left stick Y</source>
+        <translation>Left stick Y</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Right stick X</source>
+        <translation>Right stick X</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Right stick Y</source>
+        <translation>Right stick Y</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Left trigger</source>
+        <translation>Left trigger</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Right trigger</source>
+        <translation>Right trigger</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Back</source>
+        <translation>Back</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Guide</source>
+        <translation>Guide</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Left stick press</source>
+        <translation>Left stick press</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Right stick press</source>
+        <translation>Right stick press</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Left shoulder</source>
+        <translation>Left shoulder</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Right shoulder</source>
+        <translation>Right shoulder</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>D-pad up</source>
+        <translation>D-pad up</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>D-pad down</source>
+        <translation>D-pad down</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>D-pad left</source>
+        <translation>D-pad left</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>D-pad right</source>
+        <translation>D-pad right</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Misc</source>
+        <translation>Misc</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Paddle %1</source>
+        <translation>Paddle %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Touchpad</source>
+        <translation>Touchpad</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>LS</source>
+        <comment>left stick pressed, on a small lamp</comment>
+        <translation>LS</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>RS</source>
+        <comment>right stick pressed, on a small lamp</comment>
+        <translation>RS</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>LB</source>
+        <comment>left shoulder button, on a small lamp</comment>
+        <translation>LB</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>RB</source>
+        <comment>right shoulder button, on a small lamp</comment>
+        <translation>RB</translation>
+    </message>
+    <message>
+        <location line="+25" />
+        <source>Axis %1</source>
+        <translation>Axis %1</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Button %1</source>
+        <translation>Button %1</translation>
+    </message>
+</context>
+<context>
     <name>trainer::InputDevice</name>
     <message>
         <location filename="../trainer/input/input_device.cpp" line="+10" />
@@ -11440,17 +11614,27 @@ Id: %3</translation>
 <context>
     <name>trainer::StationEngine</name>
     <message>
-        <location filename="../trainer/station/station_engine.cpp" line="+409" />
+        <location filename="../trainer/station/station_engine.cpp" line="+440" />
         <source>not connected</source>
         <translation>not connected</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>%1: %2 — valves closed, holding %3</source>
-        <translation>%1: %2 — valves closed, holding %3</translation>
+        <location line="-12" />
+        <source>valves closed, holding %1</source>
+        <translation>valves closed, holding %1</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+1" />
+        <source>the keyboard drives %1 instead</source>
+        <translation>the keyboard drives %1 instead</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>%1: %2 — %3</source>
+        <translation>%1: %2 — %3</translation>
+    </message>
+    <message>
+        <location line="+14" />
         <source>%1, %2: device fault, it reads %3 where it can read only %4…%5 — valve closed%6</source>
         <translation>%1, %2: device fault, it reads %3 where it can read only %4…%5 — valve closed%6</translation>
     </message>
@@ -11460,12 +11644,37 @@ Id: %3</translation>
         <translation>, holding %1</translation>
     </message>
     <message>
-        <location line="+10" />
-        <source>No %1 found: its drives hold</source>
-        <translation>No %1 found: its drives hold</translation>
+        <location line="+16" />
+        <source>No %1 found — %2</source>
+        <translation>No %1 found — %2</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>the keyboard drives instead</source>
+        <translation>the keyboard drives instead</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>its valves are closed, the machine holds</source>
+        <translation>its valves are closed, the machine holds</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1" />
+        <source>the keyboard drives %1 of its %n drive(s), the rest hold</source>
+        <translation><numerusform>the keyboard drives %1 of its %n drive, the rest hold</numerusform><numerusform>the keyboard drives %1 of its %n drives, the rest hold</numerusform></translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 missing — %2</source>
+        <translation>%1 missing — %2</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>%1: next bank</source>
+        <translation>%1: next bank</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>Calibrating: every valve is held closed</source>
         <translation>Calibrating: every valve is held closed</translation>
     </message>

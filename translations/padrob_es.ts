@@ -6534,7 +6534,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::AttemptScreen</name>
     <message>
-        <location filename="../ide/studio/train/attempt_screen.cpp" line="+155" />
+        <location filename="../ide/studio/train/attempt_screen.cpp" line="+156" />
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc o Detener termina el intento.</translation>
     </message>
@@ -6604,12 +6604,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Carga en las garras</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</source>
-        <translation>Banco: &lt;b&gt;%1&lt;/b&gt; (%2 de %3)</translation>
-    </message>
-    <message>
-        <location line="+8" />
+        <location line="+11" />
         <source>Paused by the instructor</source>
         <translation>En pausa por el instructor</translation>
     </message>
@@ -6890,7 +6885,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::ChannelPanel</name>
     <message>
-        <location filename="../ide/studio/station/channel_bars.cpp" line="+218" />
+        <location filename="../ide/studio/station/channel_bars.cpp" line="+228" />
         <location line="+23" />
         <source>No device selected</source>
         <translation>Ningún dispositivo seleccionado</translation>
@@ -6901,7 +6896,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Botones</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="-2" />
+        <source>Keys are digital: a key gives its drive the full command (−1, 0 or +1) at once, so there is nothing to calibrate. A ramp eases each key's command in and out instead.</source>
+        <translation>Las teclas son digitales: una tecla da a su accionamiento la orden completa (−1, 0 o +1) al instante, así que no hay nada que calibrar. En su lugar, una rampa suaviza la orden de cada tecla al subir y al bajar.</translation>
+    </message>
+    <message>
+        <location line="+36" />
         <source>%1: no channels (yet)</source>
         <translation>%1: sin canales (todavía)</translation>
     </message>
@@ -6929,13 +6929,33 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Calibrado</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>Ramp</source>
+        <translation>Rampa</translation>
+    </message>
+    <message>
         <location line="+29" />
-        <location line="+60" />
+        <location line="+91" />
         <source>not calibrated</source>
         <translation>sin calibrar</translation>
     </message>
     <message>
-        <location line="-59" />
+        <location line="-84" />
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>at once</source>
+        <translation>al instante</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>How long a key takes to open its valve fully (and to close it again): 0 gives the full command at once</source>
+        <translation>Cuánto tarda una tecla en abrir del todo su válvula (y en volver a cerrarla): 0 da la orden completa al instante</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>Calibrate…</source>
         <translation>Calibrar…</translation>
     </message>
@@ -6945,12 +6965,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Capturar el centro y el recorrido de este canal, y ajustar su banda muerta y su curva</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+17" />
         <source>Button %1: %2</source>
         <translation>Botón %1: %2</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+52" />
         <source>out of range</source>
         <translation>fuera de rango</translation>
     </message>
@@ -8406,7 +8426,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::MainWindow</name>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+150" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+152" />
         <source>Export</source>
         <translation>Exportar</translation>
     </message>
@@ -8891,31 +8911,23 @@ Use Guardar como para elegir otro lugar.</translation>
         <source>t = %1 s</source>
         <translation>t = %1 s</translation>
     </message>
-    <message numerus="yes">
-        <location line="+1" />
-        <source>real time ×%1, %2 µs/step, %n overrun(s)</source>
-        <translation>
-            <numerusform>tiempo real ×%1; %2 µs/paso; %n paso atrasado</numerusform>
-            <numerusform>tiempo real ×%1; %2 µs/paso; %n pasos atrasados</numerusform>
-        </translation>
+    <message>
+        <location line="+3" />
+        <source>real time ×%1, %2 µs/step</source>
+        <translation>tiempo real ×%1; %2 µs/paso</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+3" />
         <source>paused</source>
         <translation>en pausa</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>frame %1 ms</source>
         <translation>cuadro %1 ms</translation>
     </message>
     <message>
-        <location line="+11" />
-        <source>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</source>
-        <translation>Banco: &lt;b&gt;%1&lt;/b&gt; (%2 de %3)</translation>
-    </message>
-    <message>
-        <location line="+45" />
+        <location line="+52" />
         <source>Simulation Stopped</source>
         <translation>Simulación detenida</translation>
     </message>
@@ -8952,7 +8964,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
 <context>
     <name>studio::MappingTable</name>
     <message>
-        <location filename="../ide/studio/station/mapping_table.cpp" line="+50" />
+        <location filename="../ide/studio/station/mapping_table.cpp" line="+52" />
         <source>none</source>
         <translation>ninguno</translation>
     </message>
@@ -9073,28 +9085,29 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>El dispositivo cuyo botón pasa al banco siguiente</translation>
     </message>
     <message>
-        <location line="+90" />
+        <location line="+91" />
         <source>Always</source>
         <translation>Siempre</translation>
     </message>
     <message>
         <location line="+2" />
-        <location line="+394" />
+        <location line="+422" />
         <source>Bank %1</source>
         <translation>Banco %1</translation>
     </message>
     <message>
-        <location line="-384" />
+        <location line="-412" />
         <source>The first connected device of this kind</source>
         <translation>El primer dispositivo conectado de este tipo</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+19" />
+        <location line="+8" />
         <source>Axis %1</source>
         <translation>Eje %1</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+27" />
         <source>C %1 (not in this model)</source>
         <translation>C %1 (no está en este modelo)</translation>
     </message>
@@ -9112,7 +9125,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         </translation>
     </message>
     <message>
-        <location line="+160" />
+        <location line="+163" />
         <source>ignored</source>
         <translation>ignorada</translation>
     </message>
@@ -9440,6 +9453,22 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <location line="+1" />
         <source>Dependent (%1)</source>
         <translation>Dependientes (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>studio::OverrunMeter</name>
+    <message>
+        <location filename="../ide/studio/sim/overrun_meter.cpp" line="+29" />
+        <source>%1 % of steps late</source>
+        <translation>%1 % de pasos atrasados</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5" />
+        <source>An overrun is a solver step that took longer to compute than the real time it simulates: the simulation falls behind the wall clock. The share shown is that of the last %1 s (%n overrun(s) since Run).
+A few are harmless. If the share stays high, this computer cannot keep up: lower the speed (Simulation ▸ Speed), close other programs, choose Settings ▸ Lighting ▸ At the vertices, or simplify the model.</source>
+        <translation><numerusform>Un paso atrasado es un paso del solver que tardó más en calcularse que el tiempo real que simula: la simulación se queda atrás del reloj. La proporción mostrada es la de los últimos %1 s (%n paso atrasado desde Ejecutar).
+Algunos no hacen daño. Si la proporción sigue alta, este ordenador no da abasto: baje la velocidad (Simulación ▸ Velocidad), cierre otros programas, elija Configuración ▸ Iluminación ▸ En los vértices o simplifique el modelo.</numerusform><numerusform>Un paso atrasado es un paso del solver que tardó más en calcularse que el tiempo real que simula: la simulación se queda atrás del reloj. La proporción mostrada es la de los últimos %1 s (%n pasos atrasados desde Ejecutar).
+Algunos no hacen daño. Si la proporción sigue alta, este ordenador no da abasto: baje la velocidad (Simulación ▸ Velocidad), cierre otros programas, elija Configuración ▸ Iluminación ▸ En los vértices o simplifique el modelo.</numerusform></translation>
     </message>
 </context>
 <context>
@@ -10253,9 +10282,17 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
     </message>
 </context>
 <context>
+    <name>studio::StationHud</name>
+    <message>
+        <location filename="../ide/studio/station/live_state.cpp" line="+26" />
+        <source>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</source>
+        <translation>Banco: &lt;b&gt;%1&lt;/b&gt; (%2 de %3)</translation>
+    </message>
+</context>
+<context>
     <name>studio::StationPage</name>
     <message>
-        <location filename="../ide/studio/station/live_state.cpp" line="+51" />
+        <location line="+44" />
         <source>Connected</source>
         <translation>Conectado</translation>
     </message>
@@ -10290,7 +10327,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>Quitar banco</translation>
     </message>
     <message>
-        <location line="+50" />
+        <location line="+51" />
         <source>Profile:</source>
         <translation>Perfil:</translation>
     </message>
@@ -10411,23 +10448,23 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
     </message>
     <message>
         <location line="-6" />
-        <location line="+455" />
+        <location line="+456" />
         <source>Record input…</source>
         <translation>Grabar entradas…</translation>
     </message>
     <message>
-        <location line="-447" />
+        <location line="-448" />
         <source>Write everything the devices read to an input log</source>
         <translation>Escribir todo lo que leen los dispositivos en un registro de entradas</translation>
     </message>
     <message>
         <location line="-7" />
-        <location line="+456" />
+        <location line="+457" />
         <source>Replay a log…</source>
         <translation>Reproducir registro…</translation>
     </message>
     <message>
-        <location line="-448" />
+        <location line="-449" />
         <source>Play a recorded input log: it drives the machine instead of the operator</source>
         <translation>Reproducir un registro de entradas grabado: mueve la máquina en lugar del operador</translation>
     </message>
@@ -10671,7 +10708,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>Banco: %1</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+7" />
         <source>Replaying %1: the operator's devices are ignored</source>
         <translation>Reproduciendo %1: se ignoran los dispositivos del operador</translation>
     </message>
@@ -10759,7 +10796,7 @@ Id: %3</translation>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location line="+221" />
+        <location line="+220" />
         <source>On the centre's network as %1</source>
         <translation>En la red del centro como %1</translation>
     </message>
@@ -11170,6 +11207,143 @@ Id: %3</translation>
     </message>
 </context>
 <context>
+    <name>trainer::Gamepad</name>
+    <message>
+        <location filename="../trainer/station/control_names.cpp" line="+21" />
+        <source>Left stick X</source>
+        <translation>Stick izquierdo X</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Left stick Y</source>
+        <translation>Stick izquierdo Y</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Right stick X</source>
+        <translation>Stick derecho X</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Right stick Y</source>
+        <translation>Stick derecho Y</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Left trigger</source>
+        <translation>Gatillo izquierdo</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Right trigger</source>
+        <translation>Gatillo derecho</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Back</source>
+        <translation>Atrás</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Guide</source>
+        <translation>Guía</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Start</source>
+        <translation>Inicio</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Left stick press</source>
+        <translation>Pulsar stick izquierdo</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Right stick press</source>
+        <translation>Pulsar stick derecho</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Left shoulder</source>
+        <translation>Hombro izquierdo</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Right shoulder</source>
+        <translation>Hombro derecho</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>D-pad up</source>
+        <translation>Cruceta arriba</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>D-pad down</source>
+        <translation>Cruceta abajo</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>D-pad left</source>
+        <translation>Cruceta izquierda</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>D-pad right</source>
+        <translation>Cruceta derecha</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Misc</source>
+        <translation>Otro</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Paddle %1</source>
+        <translation>Paleta %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Touchpad</source>
+        <translation>Panel táctil</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>LS</source>
+        <comment>left stick pressed, on a small lamp</comment>
+        <translation>LS</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>RS</source>
+        <comment>right stick pressed, on a small lamp</comment>
+        <translation>RS</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>LB</source>
+        <comment>left shoulder button, on a small lamp</comment>
+        <translation>LB</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>RB</source>
+        <comment>right shoulder button, on a small lamp</comment>
+        <translation>RB</translation>
+    </message>
+    <message>
+        <location line="+25" />
+        <source>Axis %1</source>
+        <translation>Eje %1</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Button %1</source>
+        <translation>Botón %1</translation>
+    </message>
+</context>
+<context>
     <name>trainer::InputDevice</name>
     <message>
         <location filename="../trainer/input/input_device.cpp" line="+10" />
@@ -11470,17 +11644,27 @@ Id: %3</translation>
 <context>
     <name>trainer::StationEngine</name>
     <message>
-        <location filename="../trainer/station/station_engine.cpp" line="+409" />
+        <location filename="../trainer/station/station_engine.cpp" line="+440" />
         <source>not connected</source>
         <translation>no conectado</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>%1: %2 — valves closed, holding %3</source>
-        <translation>%1: %2 — válvulas cerradas, se mantienen %3</translation>
+        <location line="-12" />
+        <source>valves closed, holding %1</source>
+        <translation>válvulas cerradas, se mantienen %1</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+1" />
+        <source>the keyboard drives %1 instead</source>
+        <translation>el teclado mueve %1 en su lugar</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>%1: %2 — %3</source>
+        <translation>%1: %2 — %3</translation>
+    </message>
+    <message>
+        <location line="+14" />
         <source>%1, %2: device fault, it reads %3 where it can read only %4…%5 — valve closed%6</source>
         <translation>%1, %2: falla del dispositivo, lee %3 donde solo puede leer %4…%5 — válvula cerrada%6</translation>
     </message>
@@ -11490,12 +11674,37 @@ Id: %3</translation>
         <translation>, sosteniendo %1</translation>
     </message>
     <message>
-        <location line="+10" />
-        <source>No %1 found: its drives hold</source>
-        <translation>No se encontró %1: sus accionamientos se mantienen</translation>
+        <location line="+16" />
+        <source>No %1 found — %2</source>
+        <translation>No se encontró %1 — %2</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>the keyboard drives instead</source>
+        <translation>el teclado las mueve en su lugar</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>its valves are closed, the machine holds</source>
+        <translation>sus válvulas están cerradas, la máquina se mantiene</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1" />
+        <source>the keyboard drives %1 of its %n drive(s), the rest hold</source>
+        <translation><numerusform>el teclado mueve %1 de su %n accionamiento, el resto se mantiene</numerusform><numerusform>el teclado mueve %1 de sus %n accionamientos, el resto se mantiene</numerusform></translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 missing — %2</source>
+        <translation>Falta %1 — %2</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>%1: next bank</source>
+        <translation>%1: banco siguiente</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>Calibrating: every valve is held closed</source>
         <translation>Calibrando: todas las válvulas se mantienen cerradas</translation>
     </message>
