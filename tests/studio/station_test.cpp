@@ -758,7 +758,8 @@ void StationTest::keyboardChannelsOfferARampNotTheWizard()
         QVERIFY(panel->keyboardNote()->isVisibleTo(rig.page.get()));
         QVERIFY2(panel->keyboardNote()->text().contains(lang == "en" ? "Keys are digital" : "Las teclas son digitales"),
                  qPrintable(panel->keyboardNote()->text()));
-        QVERIFY(panel->rampSpin(0) && panel->rampSpin(0)->isVisibleTo(rig.page.get()));
+        QVERIFY(panel->rampSpin(0));
+        QTRY_VERIFY(panel->rampSpin(0)->isVisibleTo(rig.page.get()));
         QCOMPARE(panel->rampSpin(0)->value(), 0.0);  // at once by default
         // a ramp of 0.5 s: kept in the profile as the channel's low-pass, and the key's
         // command rises to 95 % in about that time instead of at once
@@ -824,10 +825,12 @@ void StationTest::gamepadControlsAreNamed()
         QCOMPARE(table->axisCombo(leftY)->currentText(), en ? QStringLiteral("Left stick Y") : QStringLiteral("Stick izquierdo Y"));
         QCOMPARE(table->axisCombo(leftY)->count(), 6);
         QCOMPARE(table->selectButtonSpin(0)->text(), en ? QStringLiteral("none") : QStringLiteral("ninguno"));
+        table->selectDeviceCombo(0)->setCurrentText("gamepad");
         table->selectButtonSpin(0)->setValue(trainer::gamepad::LeftShoulder);
         QCOMPARE(table->selectButtonSpin(0)->text(), en ? QStringLiteral("Left shoulder") : QStringLiteral("Hombro izquierdo"));
         QCOMPARE(table->nextBankButtonSpin()->text(), en ? QStringLiteral("Right shoulder") : QStringLiteral("Hombro derecho"));
         // typed by name, kept as SDL's index
+        table->selectDeviceCombo(1)->setCurrentText("gamepad");
         table->selectButtonSpin(1)->selectAll();
         QTest::keyClicks(table->selectButtonSpin(1), "Y");
         table->selectButtonSpin(1)->interpretText();

@@ -234,7 +234,8 @@ TEST(StationEngine, MappingToAMissingDriveOrDeviceIsIgnoredWithAWarning)
     const auto& u = r.step();
     EXPECT_EQ(u[3], 0.0);
     EXPECT_EQ(u[0], 1.0);  // the rest works
-    EXPECT_TRUE(r.engine.state().setupWarnings.join("\n").contains("joystick"));
+    EXPECT_TRUE(r.engine.state().setupWarnings.join("\n").contains("No Joystick found — valves closed, holding C 4 MUÑECA"))
+        << r.engine.state().setupWarnings.join("\n").toStdString();
 }
 
 TEST(StationEngine, KeyboardPairsDriveOneToOne)
@@ -379,11 +380,12 @@ TEST(StationEngine, TheKeyboardDrivesInOrderUnlessTheProfileMapsIt)
     // no gamepad here: the banner and the HUD say that the keyboard drives instead
     // (issue 25, item 5: never "valves closed" while the keys drive them)
     const StationState st = e.state();
-    EXPECT_TRUE(st.setupWarnings.join("").contains("No Gamepad found — the keyboard drives C 1 GIRO, C 3 EXT, C 4 MUÑECA instead"))
+    // (three key pairs: the fourth drive, C 5, has no key and holds)
+    EXPECT_TRUE(st.setupWarnings.join("").contains(
+        "No Gamepad found — valves closed, holding C 5 ROT; the keyboard drives C 1 GIRO, C 3 EXT instead"))
         << st.setupWarnings.join("\n").toStdString();
-    EXPECT_FALSE(st.setupWarnings.join("").contains("valves closed"));
     EXPECT_FALSE(st.setupWarnings.join("").contains("No Keyboard"));
-    EXPECT_EQ(st.devicesMissing, "Gamepad missing — the keyboard drives instead");
+    EXPECT_EQ(st.devicesMissing, "Gamepad missing — the keyboard drives 2 of its 3 drives, the rest hold");
     EXPECT_FALSE(st.bankSwitchConnected);  // nothing can switch banks: the HUD shows none
     EXPECT_TRUE(st.bankSwitchHint.isEmpty());
     EXPECT_TRUE(st.warnings.isEmpty());
@@ -395,6 +397,10 @@ TEST(StationEngine, TheKeyboardDrivesInOrderUnlessTheProfileMapsIt)
     e.update(0.004);
     EXPECT_EQ(e.commands()[2], 0.0);   // pair 2 no longer mapped
     EXPECT_EQ(e.commands()[4], -1.0);  // pair 1 as the profile says
+    // the profile's own keys count too: C 5 follows them, the rest of the pad's hold
+    EXPECT_TRUE(e.state().setupWarnings.join("").contains(
+        "No Gamepad found — valves closed, holding C 1 GIRO, C 3 EXT; the keyboard drives C 5 ROT instead"))
+        << e.state().setupWarnings.join("\n").toStdString();
 }
 
 TEST(StationEngine, BanksAreWorthShowingOnlyWithTheDeviceThatSwitchesThem)
@@ -413,7 +419,8 @@ TEST(StationEngine, BanksAreWorthShowingOnlyWithTheDeviceThatSwitchesThem)
     EXPECT_FALSE(st.bankSwitchConnected);
     EXPECT_TRUE(st.bankSwitchHint.isEmpty());
     EXPECT_TRUE(st.devicesMissing.isEmpty());  // lost, not missing: the warnings say it
-    EXPECT_TRUE(st.warnings.join("").contains("valves closed, holding C 1 GIRO")) << st.warnings.join("\n").toStdString();
+    EXPECT_TRUE(st.warnings.join("").contains("Fake sdl:pad1: unplugged — valves closed, holding C 5 ROT, C 1 GIRO, C 3 EXT"))
+        << st.warnings.join("\n").toStdString();
 }
 
 TEST(StationEngine, DevicesTheProfileListsAreOpenedAndClosedWithIt)

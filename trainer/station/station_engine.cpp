@@ -413,13 +413,17 @@ StationState StationEngine::state() const
         held.removeDuplicates();
         return held;
     };
-    // the drives the keyboard drives by itself (a laptop always works): they do not
-    // hold when the profile's device is missing, and the warnings say so
+    // the drives a key pair drives now (the keyboard's own mappings — a laptop always
+    // works — or the profile's): they do not hold when the profile's device is
+    // missing, and the warnings say so
     QStringList byKeys;
-    for (const Live& l : m_live)
-        if (isImplicitKeyboard(l) && l.treeJoint >= 0 && l.device >= 0 && isConnected(*m_devices[std::size_t(l.device)]) &&
-            !ignored(*m_devices[std::size_t(l.device)]))
+    for (const Live& l : m_live) {
+        if (l.treeJoint < 0 || l.device < 0 || (l.bank >= 0 && l.bank != m_activeBank)) continue;
+        const InputDevice& d = *m_devices[std::size_t(l.device)];
+        if (d.info().kind == DeviceKind::Keyboard && isConnected(d) && !ignored(d) &&
+            std::size_t(l.mapping.axis) < m_state[std::size_t(l.device)].channels.size())  // a key pair there is
             byKeys.append(driveLabel(l.treeJoint));
+    }
     // what the drives of a missing device do: hold, or follow the keyboard
     const auto instead = [&](const QStringList& held) {
         QStringList closed, keys;
