@@ -14,6 +14,7 @@
 #include "ide/studio/editor/editor_panel.h"
 #include "ide/studio/sim/keyboard_input.h"
 #include "ide/studio/station/station_page.h"
+#include "tests/studio/virtual_pad.h"
 #include "trainer/station/profile_store.h"
 #include "trainer/station/station.h"
 #include "ide/studio/sim/simulation_runner.h"
@@ -752,6 +753,83 @@ private slots:
         chooseLanguage(w, "en");
     }
 
+    // Issue 25, item 5: the Console profile with no console. The banner says what
+    // happens — the keyboard drives the console's valves instead (never "valves closed"
+    // while a key moves them) — a valve key does move the machine, and the Model
+    // workspace's HUD says that the profile's console is missing (a Train attempt's HUD
+    // shows the same lines: TrainTest::liveAttemptTakesTheKeyboardAndShowsTheHud).
+    void theConsoleProfileWithoutAConsoleSaysTheKeyboardDrives()
+    {
+        QSettings().remove("station");
+        MainWindow w;
+        w.resize(1600, 900);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(openAndWait(w, modelPath("liner_manipulator.pad")));
+        StationPage* page = w.stationPage();
+        for (const QString& lang : QStringList{"en", "es"}) {
+            if (lang == "es") chooseLanguage(w, "es");
+            const bool en = lang == "en";
+            QVERIFY(page->loadProfile("Console (8 levers)"));
+            w.setWorkspace(MainWindow::Workspace::Station);
+            const QString drives = en ? "the keyboard drives C 1 GIRO PLUMA" : "el teclado mueve C 1 GIRO PLUMA";
+            QTRY_VERIFY2(page->warningsLabel()->text().contains(drives), qPrintable(page->warningsLabel()->text()));
+            QVERIFY2(page->warningsLabel()->text().contains("C 9 GARRA INFERIOR"), qPrintable(page->warningsLabel()->text()));
+            QVERIFY2(!page->warningsLabel()->text().contains(en ? "valves closed" : "válvulas cerradas"),
+                     qPrintable(page->warningsLabel()->text()));
+            QTest::qWait(50);
+            QVERIFY(w.grab().save(screenshotPath("app_console_missing_station_" + lang + ".png")));
+
+            // the machine does what the banner says: W opens the lift's valve
+            w.setWorkspace(MainWindow::Workspace::Model);
+            w.activateWindow();
+            QVERIFY(QTest::qWaitForWindowActive(&w));
+            const auto lift = static_cast<std::size_t>(w.bundle()->model->jointIndex(2));
+            Viewport* v = w.viewports()->viewport(0);
+            v->setFocus();
+            QTest::keyPress(v, Qt::Key_W);
+            QTRY_COMPARE(w.runner()->commands()[lift], 1.0);
+            QTest::keyRelease(v, Qt::Key_W);
+            QTRY_COMPARE(w.runner()->commands()[lift], 0.0);
+            const QString missing = en ? "DAQ console on /dev/ttyUSB0 missing — the keyboard drives instead"
+                                       : "Falta Consola DAQ en /dev/ttyUSB0 — el teclado las mueve en su lugar";
+            QTRY_VERIFY2(w.hud()->isVisible() && w.hud()->text().contains(missing), qPrintable(w.hud()->text()));
+            QVERIFY(w.grab().save(screenshotPath("app_console_missing_hud_" + lang + ".png")));
+        }
+        chooseLanguage(w, "en");
+        QSettings().remove("station");
+    }
+
+    // Issue 25, item 10: a model too heavy for real time. The status bar shows the
+    // share of late steps over the last seconds (not an ever-growing count) and says
+    // in its tooltip what an overrun is and what to do.
+    void overrunsAreARateWithAnExplanation()
+    {
+        MainWindow w;
+        w.resize(1280, 720);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(openAndWait(w, modelPath("excavator.pad")));
+        auto* label = w.findChild<QLabel*>("RealTimeLabel");
+        QVERIFY(label);
+        w.runner()->setTimeStep(1e-5);  // 400,000 steps a second at ×4: more than one core does
+        w.setSpeed(4);
+        w.run();
+        for (const QString& lang : QStringList{"en", "es"}) {
+            if (lang == "es") chooseLanguage(w, "es");
+            const QRegularExpression late(lang == "en" ? "\\d+ % of steps late" : "\\d+ % de pasos atrasados");
+            QTRY_VERIFY2_WITH_TIMEOUT(label->text().contains(late), qPrintable(label->text()), 5000);
+            QVERIFY2(!label->text().contains(QRegularExpression(lang == "en" ? "\\d overruns?$" : "\\d pasos? atrasados?$")),
+                     qPrintable(label->text()));  // not an ever-growing count
+            QVERIFY2(label->toolTip().contains(lang == "en" ? "took longer to compute than the real time it simulates"
+                                                            : "tardó más en calcularse que el tiempo real que simula"),
+                     qPrintable(label->toolTip()));
+            QVERIFY(w.grab().save(screenshotPath("app_overruns_" + lang + ".png")));
+        }
+        w.pause();
+        chooseLanguage(w, "en");
+    }
+
     // The Station workspace: the liner's Gamepad profile is chosen at the first start,
     // the HUD shows the active bank, a profile's unsaved edits survive re-applying the
     // model, and the profile chosen is remembered for the next start.
@@ -768,10 +846,25 @@ private slots:
             QVERIFY(page);
             QCOMPARE(page->profile().name, QStringLiteral("Gamepad"));
             QVERIFY(page->isShippedProfile());
-            QTRY_VERIFY(w.hud()->isVisible() && w.hud()->text().contains("Boom"));
-            w.station()->post([](trainer::StationEngine& e) { e.selectBank(1); });
-            QTRY_VERIFY(w.hud()->text().contains("Wrist"));
-            QVERIFY(w.grab().save(screenshotPath("app_hud_bank.png")));
+            // no gamepad: the HUD says so and what drives instead, and shows no bank the
+            // operator could not switch (issue 25, items 5 and 10)
+            QTRY_VERIFY2(w.hud()->isVisible() && w.hud()->text().contains("Gamepad missing — the keyboard drives instead"),
+                         qPrintable(w.hud()->text()));
+            QVERIFY2(!w.hud()->text().contains("Bank"), qPrintable(w.hud()->text()));
+            {
+                // a gamepad plugged in: the bank, and how to switch by the pad's button names
+                studio::test::VirtualPad pad;
+                QVERIFY2(pad.pad, SDL_GetError());
+                QTRY_VERIFY2(w.hud()->text().contains("Bank: <b>Boom</b> (1 of 2) · Y: next bank · Left shoulder: Boom · "
+                                                       "Right shoulder: Wrist"),
+                             qPrintable(w.hud()->text()));
+                QVERIFY(!w.hud()->text().contains("missing"));
+                w.station()->post([](trainer::StationEngine& e) { e.selectBank(1); });
+                QTRY_VERIFY(w.hud()->text().contains("Wrist</b> (2 of 2)"));
+                QVERIFY(w.grab().save(screenshotPath("app_hud_bank.png")));
+                pad.unplug();
+                QTRY_VERIFY2(!w.hud()->text().contains("Bank"), qPrintable(w.hud()->text()));
+            }
             w.setWorkspace(MainWindow::Workspace::Station);
             QTest::qWait(100);
             QVERIFY(w.grab().save(screenshotPath("app_station_workspace.png")));

@@ -12,6 +12,8 @@
 #include "trainer/station/profile_store.h"
 #include "trainer/station/station.h"
 
+#include "tests/studio/virtual_pad.h"
+
 #include <SDL.h>
 
 #include <QDir>
@@ -38,39 +40,7 @@ using studio::Snapshot;
 
 namespace {
 
-/// A gamepad made with SDL's virtual joystick API: the test's own share of SDL (the
-/// station's SdlJoysticks counts on top of it), a device and the test's handle on it.
-struct VirtualPad {
-    SDL_Joystick* pad = nullptr;
-    int index = -1;
-    bool sdl = false;
-
-    VirtualPad()
-    {
-        sdl = SDL_InitSubSystem(SDL_INIT_JOYSTICK | SDL_INIT_GAMECONTROLLER) == 0;
-        if (!sdl) return;
-        SDL_VirtualJoystickDesc desc{};
-        desc.version = SDL_VIRTUAL_JOYSTICK_DESC_VERSION;
-        desc.type = SDL_JOYSTICK_TYPE_GAMECONTROLLER;
-        desc.naxes = SDL_CONTROLLER_AXIS_MAX;
-        desc.nbuttons = SDL_CONTROLLER_BUTTON_MAX;
-        desc.name = "Padrob test gamepad";
-        index = SDL_JoystickAttachVirtualEx(&desc);
-        if (index >= 0) pad = SDL_JoystickOpen(index);
-    }
-    void unplug()
-    {
-        if (pad) SDL_JoystickClose(pad);
-        if (index >= 0) SDL_JoystickDetachVirtual(index);
-        pad = nullptr;
-        index = -1;
-    }
-    ~VirtualPad()
-    {
-        unplug();
-        if (sdl) SDL_QuitSubSystem(SDL_INIT_JOYSTICK | SDL_INIT_GAMECONTROLLER);
-    }
-};
+using studio::test::VirtualPad;
 
 QString modelText(const QString& name)
 {

@@ -22,6 +22,8 @@
 #include "ide/studio/station/serial_console_dialog.h"
 #include "ide/studio/station/station_page.h"
 #include "trainer/input/input_device.h"
+#include "trainer/input/keyboard_device.h"
+#include "trainer/station/control_names.h"
 #include "trainer/station/profile_store.h"
 #include "trainer/station/station.h"
 
@@ -33,6 +35,7 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QProgressBar>
 #include <QPushButton>
@@ -45,6 +48,7 @@
 #include <QTreeWidget>
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 
@@ -215,6 +219,8 @@ private slots:
     void channelBarsFollowTheAxis();
     void wizardCapturesAndFinishes();
     void wizardOnATrigger();
+    void keyboardChannelsOfferARampNotTheWizard();
+    void gamepadControlsAreNamed();
     void mappingTableDrivesTheCommand();
     void mappingToAMissingDriveShowsItsIssue();
     void bankBannerFollowsABankSwitch();
@@ -728,6 +734,127 @@ void StationTest::wizardOnATrigger()
     QVERIFY(wizard.grab().save(screenshotPath("station_wizard_trigger_en.png")));
 }
 
+// Issue 25, item 3: keys are digital and their presses never reach a wizard (it is
+// modal, the keys go to the 3D view): a keyboard channel offers no calibration but says
+// why, and offers the ramp that shapes a key's command; a gamepad's channel still
+// calibrates, from live readings.
+void StationTest::keyboardChannelsOfferARampNotTheWizard()
+{
+    for (const QString& lang : QStringList{"en", "es"}) {
+        QVERIFY(i18n::install(lang));
+        Rig rig;
+        auto keys = std::make_shared<trainer::KeyboardDevice>(QStringList{"Q / A", "W / S"});
+        rig.station.post([keys](trainer::StationEngine& e) { e.addDevice(keys); });
+        rig.page->resize(1280, 720);
+        rig.page->show();
+        QVERIFY(QTest::qWaitForWindowExposed(rig.page.get()));
+        rig.step();
+        rig.page->selectDevice("keyboard");
+        rig.step();
+        studio::ChannelPanel* panel = rig.page->channelPanel();
+        QCOMPARE(panel->channelCount(), 2);
+        QVERIFY(!panel->calibrateButton(0) && !panel->calibrateButton(1));
+        QVERIFY(!rig.page->calibrate(0));  // no wizard for a key
+        QVERIFY(panel->keyboardNote()->isVisibleTo(rig.page.get()));
+        QVERIFY2(panel->keyboardNote()->text().contains(lang == "en" ? "Keys are digital" : "Las teclas son digitales"),
+                 qPrintable(panel->keyboardNote()->text()));
+        QVERIFY(panel->rampSpin(0));
+        QTRY_VERIFY(panel->rampSpin(0)->isVisibleTo(rig.page.get()));
+        QCOMPARE(panel->rampSpin(0)->value(), 0.0);  // at once by default
+        // a ramp of 0.5 s: kept in the profile as the channel's low-pass, and the key's
+        // command rises to 95 % in about that time instead of at once
+        panel->rampSpin(0)->setValue(0.5);
+        const trainer::ChannelCalibration* c = rig.page->profile().calibration("keyboard", 0);
+        QVERIFY(c);
+        QCOMPARE(c->filterHz, studio::ChannelPanel::rampFilterHz(0.5));
+        QVERIFY(rig.page->isDirty());
+        rig.step(5);
+        keys->setKeys(0, true, false);
+        rig.step(100);
+        const double early = panel->valueBar(0)->value();
+        QVERIFY2(early > 0.2 && early < 0.6, qPrintable(QString::number(early)));
+        rig.step(400);
+        QVERIFY2(panel->valueBar(0)->value() > 0.94, qPrintable(QString::number(panel->valueBar(0)->value())));
+        QTest::qWait(50);
+        QVERIFY(rig.page->grab().save(screenshotPath("station_keyboard_ramp_" + lang + ".png")));
+        keys->setKeys(0, false, false);
+
+        // the gamepad's channels calibrate as before: the wizard takes live readings
+        rig.page->selectDevice("sdl:0300fake");
+        rig.step();
+        QVERIFY(!panel->keyboardNote()->isVisibleTo(rig.page.get()));
+        QVERIFY(panel->calibrateButton(0) && !panel->rampSpin(0));
+        panel->calibrateButton(0)->click();
+        QTRY_VERIFY(rig.page->findChild<CalibrationWizard*>());
+        CalibrationWizard* wizard = rig.page->findChild<CalibrationWizard*>();
+        QVERIFY(wizard->liveInput());
+        wizard->setRestReadings(3);
+        QAbstractButton* next = wizard->button(QWizard::NextButton);
+        QTRY_VERIFY(next->isEnabled());  // the lever at rest, read from the station
+        wizard->next();
+        for (int raw : {60, 100, -90, 0}) {
+            rig.pad->setAxis(0, raw);
+            rig.step();
+            QTRY_COMPARE(wizard->lastReading(), double(raw));
+        }
+        QTRY_VERIFY(next->isEnabled());
+        wizard->reject();
+    }
+    QVERIFY(i18n::install("en"));
+}
+
+// Issue 25, item 10: a gamepad's axes and buttons are read by SDL's game-controller
+// names, translated, in the mapping table, the banks and the channel lamps — not "Axis
+// 0" and "9" — whether the pad is connected or not.
+void StationTest::gamepadControlsAreNamed()
+{
+    for (const QString& lang : QStringList{"en", "es"}) {
+        QVERIFY(i18n::install(lang));
+        const bool en = lang == "en";
+        Rig rig(true, 6, 15, true);  // a gamepad as SDL shows it
+        QVERIFY(rig.page->loadProfile("Gamepad"));
+        rig.page->resize(1500, 900);
+        rig.page->show();
+        QVERIFY(QTest::qWaitForWindowExposed(rig.page.get()));
+        rig.step();
+        MappingTable* table = rig.page->mappingTable();
+        int leftY = -1;
+        for (int r = 0; r < table->rowCount(); ++r)
+            if (table->mapping(r).axis == trainer::gamepad::LeftY && table->bankOf(r) == 0) leftY = r;
+        QVERIFY(leftY >= 0);
+        QCOMPARE(table->axisCombo(leftY)->currentText(), en ? QStringLiteral("Left stick Y") : QStringLiteral("Stick izquierdo Y"));
+        QCOMPARE(table->axisCombo(leftY)->count(), 6);
+        QCOMPARE(table->selectButtonSpin(0)->text(), en ? QStringLiteral("none") : QStringLiteral("ninguno"));
+        table->selectDeviceCombo(0)->setCurrentText("gamepad");
+        table->selectButtonSpin(0)->setValue(trainer::gamepad::LeftShoulder);
+        QCOMPARE(table->selectButtonSpin(0)->text(), en ? QStringLiteral("Left shoulder") : QStringLiteral("Hombro izquierdo"));
+        QCOMPARE(table->nextBankButtonSpin()->text(), en ? QStringLiteral("Right shoulder") : QStringLiteral("Hombro derecho"));
+        // typed by name, kept as SDL's index
+        table->selectDeviceCombo(1)->setCurrentText("gamepad");
+        table->selectButtonSpin(1)->selectAll();
+        QTest::keyClicks(table->selectButtonSpin(1), "Y");
+        table->selectButtonSpin(1)->interpretText();
+        QCOMPARE(table->selectButtonSpin(1)->value(), int(trainer::gamepad::Y));
+        QCOMPARE(rig.page->profile().banks[1].select.value(0).button, int(trainer::gamepad::Y));
+        // the channels and lamps
+        studio::ChannelPanel* panel = rig.page->channelPanel();
+        QVERIFY2(panel->lamp(trainer::gamepad::LeftShoulder)->toolTip().endsWith(": " + trainer::gamepadButtonName(9)),
+                 qPrintable(panel->lamp(trainer::gamepad::LeftShoulder)->toolTip()));
+        const QList<QLabel*> labels = panel->findChildren<QLabel*>();
+        QVERIFY(std::any_of(labels.begin(), labels.end(), [](QLabel* l) {
+            return l->text() == trainer::gamepadAxisName(trainer::gamepad::RightTrigger);
+        }));
+        QTest::qWait(50);
+        QVERIFY(rig.page->grab().save(screenshotPath("station_gamepad_names_" + lang + ".png")));
+        // unplugged: still by name (the profile's "gamepad")
+        rig.pad->setStatus(trainer::DeviceStatus::Disconnected);
+        rig.step();
+        QCOMPARE(table->selectButtonSpin(0)->text(), trainer::gamepadButtonName(trainer::gamepad::LeftShoulder));
+        QCOMPARE(table->axisCombo(leftY)->currentText(), trainer::gamepadAxisName(trainer::gamepad::LeftY));
+    }
+    QVERIFY(i18n::install("en"));
+}
+
 // ---- mapping and banks -------------------------------------------------------------
 
 void StationTest::mappingTableDrivesTheCommand()
@@ -743,8 +870,8 @@ void StationTest::mappingTableDrivesTheCommand()
     QCOMPARE(table->mapping(0).device, QStringLiteral("gamepad"));  // the pad present
     QCOMPARE(table->driveCombo(0)->count(), 9);
     QCOMPARE(table->driveCombo(0)->itemText(1), QStringLiteral("C 2 LEVANTE PLUMA"));
-    QCOMPARE(table->axisCombo(0)->count(), 4);
-    QCOMPARE(table->axisCombo(0)->itemText(1), QStringLiteral("1: Axis 2"));
+    QCOMPARE(table->axisCombo(0)->count(), 6);  // a gamepad's axes, by SDL's names
+    QCOMPARE(table->axisCombo(0)->itemText(1), QStringLiteral("Left stick Y"));
 
     table->axisCombo(0)->setCurrentIndex(1);
     table->driveCombo(0)->setCurrentIndex(table->driveCombo(0)->findData(3));
@@ -856,10 +983,12 @@ void StationTest::bankBannerFollowsABankSwitch()
     QCOMPARE(rig.engineProfile().banks[1].mappings.size(), 1);
 
     rig.step();
-    QCOMPARE(rig.page->bankLabel()->text(), QStringLiteral("Bank: Boom (1 of 2)"));
+    // with how the connected pad switches them, its buttons by name
+    const QString hint = QStringLiteral("\nGuide: next bank · A: Boom · B: Wrist");
+    QCOMPARE(rig.page->bankLabel()->text(), QStringLiteral("Bank: Boom (1 of 2)") + hint);
     QCOMPARE(table->liveText(1), QStringLiteral("bank not active"));
     rig.press(1);
-    QCOMPARE(rig.page->bankLabel()->text(), QStringLiteral("Bank: Wrist (2 of 2)"));
+    QCOMPARE(rig.page->bankLabel()->text(), QStringLiteral("Bank: Wrist (2 of 2)") + hint);
     QCOMPARE(table->liveText(0), QStringLiteral("bank not active"));
     rig.pad->setAxis(0, 100);
     rig.step();
@@ -868,10 +997,10 @@ void StationTest::bankBannerFollowsABankSwitch()
     // an edit keeps the active bank
     table->gainSpin(1)->setValue(0.5);
     rig.step();
-    QCOMPARE(rig.page->bankLabel()->text(), QStringLiteral("Bank: Wrist (2 of 2)"));
+    QCOMPARE(rig.page->bankLabel()->text(), QStringLiteral("Bank: Wrist (2 of 2)") + hint);
     rig.pad->setAxis(0, 0);
     rig.press(5);  // next bank: round to the first
-    QCOMPARE(rig.page->bankLabel()->text(), QStringLiteral("Bank: Boom (1 of 2)"));
+    QCOMPARE(rig.page->bankLabel()->text(), QStringLiteral("Bank: Boom (1 of 2)") + hint);
 
     // removing a bank with mappings asks
     rig.page->answers = {false};

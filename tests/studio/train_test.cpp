@@ -253,6 +253,12 @@ private slots:
         QVERIFY2(hud.contains("Time:") && hud.contains("/ 120 s"), qPrintable(hud));
         QVERIFY2(hud.contains("Distance:"), qPrintable(hud));
         QVERIFY(page()->hud()->font().pixelSize() >= 20 || page()->hud()->fontInfo().pixelSize() >= 20);
+        // the station's profile (Gamepad) has no gamepad here: the attempt's HUD says so
+        // and what drives instead (issue 25, item 5)
+        auto* warnings = page()->findChild<QLabel*>("TrainWarnings");
+        QVERIFY(warnings);
+        QTRY_VERIFY2(warnings->isVisible() && warnings->text().contains("Gamepad missing — the keyboard drives instead"),
+                     qPrintable(warnings->text()));
         QVERIFY(m_window->grab().save(screenshotPath("train_hud_en.png")));
         // Esc ends it: a result, not passed
         QTest::keyClick(view, Qt::Key_Escape);

@@ -234,7 +234,8 @@ TEST(StationEngine, MappingToAMissingDriveOrDeviceIsIgnoredWithAWarning)
     const auto& u = r.step();
     EXPECT_EQ(u[3], 0.0);
     EXPECT_EQ(u[0], 1.0);  // the rest works
-    EXPECT_TRUE(r.engine.state().setupWarnings.join("\n").contains("joystick"));
+    EXPECT_TRUE(r.engine.state().setupWarnings.join("\n").contains("No Joystick found — valves closed, holding C 4 MUÑECA"))
+        << r.engine.state().setupWarnings.join("\n").toStdString();
 }
 
 TEST(StationEngine, KeyboardPairsDriveOneToOne)
@@ -376,9 +377,18 @@ TEST(StationEngine, TheKeyboardDrivesInOrderUnlessTheProfileMapsIt)
     e.update(0.002);
     EXPECT_EQ(e.commands()[2], -1.0);  // second pair → second drive (C 3, tree joint 2)
     EXPECT_EQ(e.state().mappings.size(), 4);  // the profile's own only
-    EXPECT_TRUE(e.state().setupWarnings.join("").contains("gamepad"));  // no gamepad here
-    EXPECT_FALSE(e.state().setupWarnings.join("").contains("keyboard"));
-    EXPECT_TRUE(e.state().warnings.isEmpty());
+    // no gamepad here: the banner and the HUD say that the keyboard drives instead
+    // (issue 25, item 5: never "valves closed" while the keys drive them)
+    const StationState st = e.state();
+    // (three key pairs: the fourth drive, C 5, has no key and holds)
+    EXPECT_TRUE(st.setupWarnings.join("").contains(
+        "No Gamepad found — valves closed, holding C 5 ROT; the keyboard drives C 1 GIRO, C 3 EXT instead"))
+        << st.setupWarnings.join("\n").toStdString();
+    EXPECT_FALSE(st.setupWarnings.join("").contains("No Keyboard"));
+    EXPECT_EQ(st.devicesMissing, "Gamepad missing — the keyboard drives 2 of its 3 drives, the rest hold");
+    EXPECT_FALSE(st.bankSwitchConnected);  // nothing can switch banks: the HUD shows none
+    EXPECT_TRUE(st.bankSwitchHint.isEmpty());
+    EXPECT_TRUE(st.warnings.isEmpty());
     StationProfile p = twoBanks();
     p.always.append({"keyboard", 0, 5, 1.0, -1});
     e.setProfile(p);
@@ -387,6 +397,30 @@ TEST(StationEngine, TheKeyboardDrivesInOrderUnlessTheProfileMapsIt)
     e.update(0.004);
     EXPECT_EQ(e.commands()[2], 0.0);   // pair 2 no longer mapped
     EXPECT_EQ(e.commands()[4], -1.0);  // pair 1 as the profile says
+    // the profile's own keys count too: C 5 follows them, the rest of the pad's hold
+    EXPECT_TRUE(e.state().setupWarnings.join("").contains(
+        "No Gamepad found — valves closed, holding C 1 GIRO, C 3 EXT; the keyboard drives C 5 ROT instead"))
+        << e.state().setupWarnings.join("\n").toStdString();
+}
+
+TEST(StationEngine, BanksAreWorthShowingOnlyWithTheDeviceThatSwitchesThem)
+{
+    Rig r;
+    r.engine.setProfile(twoBanks());
+    r.step();
+    StationState st = r.engine.state();
+    EXPECT_TRUE(st.bankSwitchConnected);
+    // a gamepad's buttons by their names: next bank 5 = "Guide", A = 0, B = 1
+    EXPECT_EQ(st.bankSwitchHint, "Guide: next bank · A: A · B: B");
+    EXPECT_TRUE(st.devicesMissing.isEmpty());
+    r.pad->setStatus(DeviceStatus::Disconnected);
+    r.step();
+    st = r.engine.state();
+    EXPECT_FALSE(st.bankSwitchConnected);
+    EXPECT_TRUE(st.bankSwitchHint.isEmpty());
+    EXPECT_TRUE(st.devicesMissing.isEmpty());  // lost, not missing: the warnings say it
+    EXPECT_TRUE(st.warnings.join("").contains("Fake sdl:pad1: unplugged — valves closed, holding C 5 ROT, C 1 GIRO, C 3 EXT"))
+        << st.warnings.join("\n").toStdString();
 }
 
 TEST(StationEngine, DevicesTheProfileListsAreOpenedAndClosedWithIt)
@@ -414,7 +448,10 @@ TEST(StationEngine, DevicesTheProfileListsAreOpenedAndClosedWithIt)
     EXPECT_TRUE(e.devices()[0]->statusText().contains("/dev/padrob-no-such-port"));
     const StationState st = e.state();
     EXPECT_TRUE(st.warnings.isEmpty());  // never connected: a set-up matter, not the operator's
-    EXPECT_TRUE(st.setupWarnings.join("\n").contains("C 1")) << st.setupWarnings.join("\n").toStdString();
+    EXPECT_TRUE(st.setupWarnings.join("\n").contains("valves closed, holding C 1")) << st.setupWarnings.join("\n").toStdString();
+    // no keyboard either: the machine holds, and the operator's line says so
+    EXPECT_TRUE(st.devicesMissing.endsWith("missing — its valves are closed, the machine holds"))
+        << st.devicesMissing.toStdString();
     // a profile without them closes them
     e.setProfile(twoBanks());
     EXPECT_TRUE(e.devices().empty());

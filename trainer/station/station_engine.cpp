@@ -1,6 +1,7 @@
 #include "trainer/station/station_engine.h"
 
 #include "trainer/input/input_log.h"
+#include "trainer/station/control_names.h"
 #include "trainer/station/device_factory.h"
 
 #include <QCoreApplication>
@@ -116,6 +117,19 @@ void StationEngine::setReplayOnly(bool replayOnly)
     if (m_replayOnly == replayOnly) return;
     m_replayOnly = replayOnly;
     rebuildLive();
+}
+
+bool StationEngine::isImplicitKeyboard(const Live& l) const
+{
+    return m_implicitKeyboard >= 0 && &l - m_live.data() >= m_implicitKeyboard;
+}
+
+QString StationEngine::deviceName(const QString& match)
+{
+    for (DeviceKind k : {DeviceKind::Gamepad, DeviceKind::Joystick, DeviceKind::SerialDaq, DeviceKind::Comedi,
+                         DeviceKind::Keyboard})
+        if (kindKey(k) == match) return kindName(k);
+    return match;
 }
 
 bool StationEngine::ignored(const InputDevice& d) const
@@ -373,7 +387,7 @@ StationState StationEngine::state() const
     };
     QStringList waiting;
     for (const Live& l : m_live) {
-        if (m_implicitKeyboard >= 0 && &l - m_live.data() >= m_implicitKeyboard) break;  // not the profile's
+        if (isImplicitKeyboard(l)) break;  // not the profile's
         MappingState ms;
         ms.mapping = l.mapping;
         ms.bank = l.bank;
@@ -394,11 +408,32 @@ StationState StationEngine::state() const
         QStringList held;
         for (const Live& l : m_live)
             if (l.device == int(i) && (axis < 0 || l.mapping.axis == axis) && l.treeJoint >= 0 &&
-                (l.bank < 0 || l.bank == m_activeBank))
+                (l.bank < 0 || l.bank == m_activeBank) && !isImplicitKeyboard(l))
                 held.append(driveLabel(l.treeJoint));
         held.removeDuplicates();
         return held;
     };
+    // the drives a key pair drives now (the keyboard's own mappings — a laptop always
+    // works — or the profile's): they do not hold when the profile's device is
+    // missing, and the warnings say so
+    QStringList byKeys;
+    for (const Live& l : m_live) {
+        if (l.treeJoint < 0 || l.device < 0 || (l.bank >= 0 && l.bank != m_activeBank)) continue;
+        const InputDevice& d = *m_devices[std::size_t(l.device)];
+        if (d.info().kind == DeviceKind::Keyboard && isConnected(d) && !ignored(d) &&
+            std::size_t(l.mapping.axis) < m_state[std::size_t(l.device)].channels.size())  // a key pair there is
+            byKeys.append(driveLabel(l.treeJoint));
+    }
+    // what the drives of a missing device do: hold, or follow the keyboard
+    const auto instead = [&](const QStringList& held) {
+        QStringList closed, keys;
+        for (const QString& d : held) (byKeys.contains(d) ? keys : closed).append(d);
+        QStringList parts;
+        if (!closed.isEmpty()) parts << Tr::tr("valves closed, holding %1").arg(closed.join(", "));
+        if (!keys.isEmpty()) parts << Tr::tr("the keyboard drives %1 instead").arg(keys.join(", "));
+        return parts.join(QStringLiteral("; "));
+    };
+    QStringList missingNames, missingHeld;
     for (std::size_t i = 0; i < m_devices.size(); ++i) {
         const InputDevice& d = *m_devices[i];
         if (ignored(d)) continue;
@@ -408,7 +443,11 @@ StationState StationEngine::state() const
             if (held.isEmpty()) continue;
             const QString why = d.statusText().isEmpty() ? Tr::tr("not connected") : d.statusText();
             (m_state[i].everConnected ? st.warnings : st.setupWarnings)
-                .append(Tr::tr("%1: %2 — valves closed, holding %3").arg(d.info().name, why, held.join(", ")));
+                .append(Tr::tr("%1: %2 — %3").arg(d.info().name, why, instead(held)));
+            if (!m_state[i].everConnected) {
+                missingNames.append(d.info().name);
+                missingHeld += held;
+            }
             continue;
         }
         // channels whose readings cannot be: a device fault, their valves closed
@@ -427,11 +466,48 @@ StationState StationEngine::state() const
     // mappings whose device is not there at all
     QStringList missing;
     for (const Live& l : m_live)
-        if (l.device < 0 && l.treeJoint >= 0 && (l.bank < 0 || l.bank == m_activeBank) &&
-            (m_implicitKeyboard < 0 || &l - m_live.data() < m_implicitKeyboard))
+        if (l.device < 0 && l.treeJoint >= 0 && (l.bank < 0 || l.bank == m_activeBank) && !isImplicitKeyboard(l))
             missing.append(l.mapping.device);
     missing.removeDuplicates();
-    for (const QString& m : missing) st.setupWarnings.append(Tr::tr("No %1 found: its drives hold").arg(m));
+    for (const QString& m : missing) {
+        QStringList held;
+        for (const Live& l : m_live)
+            if (l.device < 0 && l.treeJoint >= 0 && (l.bank < 0 || l.bank == m_activeBank) && l.mapping.device == m)
+                held.append(driveLabel(l.treeJoint));
+        held.removeDuplicates();
+        const QString name = deviceName(m);
+        st.setupWarnings.append(Tr::tr("No %1 found — %2").arg(name, instead(held)));
+        missingNames.append(name);
+        missingHeld += held;
+    }
+    // the operator's line: what is missing and what drives instead
+    missingHeld.removeDuplicates();
+    if (!missingNames.isEmpty()) {
+        const auto keys = std::count_if(missingHeld.begin(), missingHeld.end(),
+                                        [&](const QString& d) { return byKeys.contains(d); });
+        const QString what = keys == missingHeld.size() ? Tr::tr("the keyboard drives instead")
+                             : keys == 0              ? Tr::tr("its valves are closed, the machine holds")
+                                                      : Tr::tr("the keyboard drives %1 of its %n drive(s), the rest hold",
+                                                               nullptr, int(missingHeld.size()))
+                                                            .arg(keys);
+        st.devicesMissing = Tr::tr("%1 missing — %2").arg(missingNames.join(", "), what);
+    }
+    // banks: worth showing when a device that switches them is connected
+    const auto connectedButton = [&](const ButtonRef& r) -> const InputDevice* {
+        if (!r.isSet()) return nullptr;
+        const int i = indexOf(r.device);
+        return i >= 0 && isConnected(*m_devices[std::size_t(i)]) ? m_devices[std::size_t(i)].get() : nullptr;
+    };
+    QStringList hints;
+    if (m_profile.banks.size() > 1) {
+        if (const InputDevice* d = connectedButton(m_profile.nextBank))
+            hints << Tr::tr("%1: next bank").arg(buttonName(d->info(), m_profile.nextBank.button));
+        for (const Bank& b : m_profile.banks)
+            for (const ButtonRef& r : b.select)
+                if (const InputDevice* d = connectedButton(r)) hints << QStringLiteral("%1: %2").arg(buttonName(d->info(), r.button), b.name);
+    }
+    st.bankSwitchConnected = !hints.isEmpty();
+    st.bankSwitchHint = hints.join(QStringLiteral(" · "));
     if (m_holding) st.warnings.append(Tr::tr("Calibrating: every valve is held closed"));
     waiting.removeDuplicates();
     if (!waiting.isEmpty())

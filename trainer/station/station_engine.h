@@ -86,8 +86,19 @@ struct StationState {
     /// with the drives they hold, levers waiting for the centre, providers that failed.
     QStringList warnings;
     /// For the trainer setting up (the Station workspace): devices the profile uses
-    /// that have not been connected yet (no gamepad, a port that cannot be opened).
+    /// that have not been connected yet (no gamepad, a port that cannot be opened),
+    /// with what their drives do instead (the keyboard drives them, or they hold).
     QStringList setupWarnings;
+    /// For the operator (the HUDs): the profile's devices that have never been
+    /// connected, in one line with what drives instead ("" when all are there):
+    /// "Serial DAQ console missing — the keyboard drives instead".
+    QString devicesMissing;
+    /// A device whose buttons switch banks (a bank's select button, the next-bank
+    /// button) is connected: the bank is worth showing to the operator.
+    bool bankSwitchConnected = false;
+    /// How the operator switches banks with what is connected ("Y: next bank · Left
+    /// shoulder: Boom"), "" when nothing can.
+    QString bankSwitchHint;
 };
 
 class StationEngine {
@@ -177,6 +188,11 @@ private:
     void refreshCalibrations();
     void disarmBank(int bank);
     bool ignored(const InputDevice& d) const;
+    /// `l` is one of the keyboard's own mappings (not the profile's).
+    bool isImplicitKeyboard(const Live& l) const;
+    /// A profile's device name for a person: a kind key as the kind's name ("Gamepad"),
+    /// an id as it is.
+    static QString deviceName(const QString& match);
 
     std::vector<std::unique_ptr<DeviceProvider>> m_providers;
     std::vector<std::shared_ptr<InputDevice>> m_devices;

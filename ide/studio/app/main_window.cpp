@@ -7,6 +7,7 @@
 #include "ide/studio/plots/plot_panel.h"
 #include "ide/studio/sim/hydraulic_panel.h"
 #include "ide/studio/sim/keyboard_input.h"
+#include "ide/studio/station/live_state.h"
 #include "ide/studio/station/station_page.h"
 #include "ide/studio/train/pin_dialog.h"
 #include "ide/studio/train/train_page.h"
@@ -86,6 +87,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_timeLabel->setObjectName("TimeLabel");
     m_rtLabel = new QLabel;
     m_rtLabel->setObjectName("RealTimeLabel");
+    m_wallClock.start();
     m_frameLabel = new QLabel;
     m_frameLabel->setObjectName("FrameLabel");
     m_modelLabel = new QLabel;
@@ -588,11 +590,13 @@ void MainWindow::poll()
         m_labelStep = s->step;
         m_labelRunning = s->running;
         m_timeLabel->setText(tr("t = %1 s").arg(QLocale().toString(s->t, 'f', 3)));
-        m_rtLabel->setText(s->running ? tr("real time ×%1, %2 µs/step, %n overrun(s)", nullptr,
-                                           static_cast<int>(s->overruns))
-                                            .arg(QLocale().toString(s->realTimeFactor, 'f', 2),
-                                                 QLocale().toString(s->stepMicros, 'f', 0))
+        if (s->running) m_overruns.add(m_wallClock.elapsed() * 1e-3, s->step, s->overruns);
+        const QString late = m_overruns.text();
+        m_rtLabel->setText(s->running ? tr("real time ×%1, %2 µs/step").arg(QLocale().toString(s->realTimeFactor, 'f', 2),
+                                                                           QLocale().toString(s->stepMicros, 'f', 0)) +
+                                            (late.isEmpty() ? QString() : QStringLiteral(", ") + late)
                                       : tr("paused"));
+        m_rtLabel->setToolTip(m_overruns.toolTip());
     }
     if (labels) {
         m_labelClock.start();
@@ -606,12 +610,8 @@ void MainWindow::updateHud()
     const std::shared_ptr<const trainer::StationState> st = m_station->latest();
     QStringList lines;
     if (st) {
-        if (st->bankNames.size() > 1)
-            lines << tr("Bank: <b>%1</b> (%2 of %3)")
-                         .arg(st->bankNames.value(st->activeBank).toHtmlEscaped())
-                         .arg(st->activeBank + 1)
-                         .arg(st->bankNames.size());
-        for (const QString& w : st->warnings)
+        if (const QString bank = hudBankLine(*st); !bank.isEmpty()) lines << bank;
+        for (const QString& w : hudWarnings(*st))
             lines << QStringLiteral("<span style='color:#ffc04d'>⚠ %1</span>").arg(w.toHtmlEscaped());
     }
     const QString text = lines.join("<br>");

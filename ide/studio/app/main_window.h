@@ -26,6 +26,7 @@
 // 60 Hz timer draws the newest snapshot of the solver thread (never blocking it).
 
 #include "ide/studio/model/model_bundle.h"
+#include "ide/studio/sim/overrun_meter.h"
 
 #include <QElapsedTimer>
 #include <QMainWindow>
@@ -230,6 +231,8 @@ private:
     QElapsedTimer m_labelClock;  ///< since the status bar's figures were last set
     long m_labelStep = -1;       ///< the step they show
     bool m_labelRunning = false;
+    OverrunMeter m_overruns;    ///< the late steps of the last seconds, for the status bar
+    QElapsedTimer m_wallClock;  ///< its clock
 };
 
 }  // namespace studio

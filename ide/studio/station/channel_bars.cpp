@@ -1,7 +1,9 @@
 #include "ide/studio/station/channel_bars.h"
 
 #include "ide/studio/station/live_state.h"
+#include "trainer/station/control_names.h"
 
+#include <QDoubleSpinBox>
 #include <QEvent>
 #include <QFontDatabase>
 #include <QGridLayout>
@@ -12,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace studio {
 
@@ -191,6 +194,11 @@ ChannelPanel::ChannelPanel(QWidget* parent) : QWidget(parent)
     m_title = new QLabel(this);
     m_title->setWordWrap(true);
     layout->addWidget(m_title);
+    m_keyboardNote = new QLabel(this);
+    m_keyboardNote->setObjectName(QStringLiteral("keyboardNote"));
+    m_keyboardNote->setWordWrap(true);
+    m_keyboardNote->hide();
+    layout->addWidget(m_keyboardNote);
 
     m_body = new QWidget(this);
     m_grid = new QGridLayout(m_body);
@@ -214,6 +222,8 @@ ChannelPanel::ChannelPanel(QWidget* parent) : QWidget(parent)
 
 void ChannelPanel::retranslate()
 {
+    m_keyboardNote->setText(tr("Keys are digital: a key gives its drive the full command (−1, 0 or +1) at once, so "
+                               "there is nothing to calibrate. A ramp eases each key's command in and out instead."));
     m_buttonsTitle->setText(tr("Buttons"));
     if (m_key.isEmpty()) m_title->setText(tr("No device selected"));
 }
@@ -240,14 +250,19 @@ void ChannelPanel::rebuild(const trainer::DeviceState* device)
     if (!device) {
         m_title->setText(tr("No device selected"));
         m_buttonsTitle->hide();
+        m_keyboardNote->hide();
         return;
     }
 
+    // keys are digital: nothing to calibrate, a ramp instead
+    const bool keys = device->info.kind == trainer::DeviceKind::Keyboard;
+    m_keyboardNote->setVisible(keys);
     if (device->info.axes.isEmpty()) {
         m_title->setText(tr("%1: no channels (yet)").arg(device->info.name));
     } else {
         m_title->setText(tr("%1: %n channel(s)", nullptr, int(device->info.axes.size())).arg(device->info.name));
-        const QStringList headers{tr("Channel"), tr("Raw reading"), QString(), tr("Calibrated"), QString(), QString()};
+        const QStringList headers{tr("Channel"), tr("Raw reading"), QString(), tr("Calibrated"), QString(), QString(),
+                                  keys ? tr("Ramp") : QString()};
         for (int c = 0; c < headers.size(); ++c) {
             if (headers[c].isEmpty()) continue;
             auto* h = new QLabel(headers[c], m_body);
@@ -261,7 +276,7 @@ void ChannelPanel::rebuild(const trainer::DeviceState* device)
     const int numberWidth = QFontMetrics(mono).horizontalAdvance(QStringLiteral("−00000")) + 4;
     for (int a = 0; a < device->info.axes.size(); ++a) {
         Row row;
-        row.name = new QLabel(device->info.axes[a].name, m_body);
+        row.name = new QLabel(trainer::axisName(device->info, a), m_body);
         row.raw = new LevelBar(m_body);
         row.raw->setFillColor(QColor(0x78, 0x90, 0x9c));
         row.rawText = new QLabel(m_body);
@@ -277,29 +292,55 @@ void ChannelPanel::rebuild(const trainer::DeviceState* device)
         row.flag = new QLabel(m_body);
         row.flag->setAlignment(Qt::AlignCenter);
         row.flag->setMinimumWidth(fontMetrics().horizontalAdvance(tr("not calibrated")) + 14);
-        row.calibrate = new QPushButton(tr("Calibrate…"), m_body);
-        row.calibrate->setToolTip(tr("Capture this channel's centre and travel, and set its dead band and curve"));
-        connect(row.calibrate, &QPushButton::clicked, this, [this, a] { emit calibrateRequested(a); });
         const int r = a + 1;
+        if (keys) {
+            row.ramp = new QDoubleSpinBox(m_body);
+            row.ramp->setRange(0.0, kMaxRamp);
+            row.ramp->setSingleStep(0.05);
+            row.ramp->setDecimals(2);
+            row.ramp->setSuffix(tr(" s"));
+            row.ramp->setSpecialValueText(tr("at once"));
+            row.ramp->setToolTip(tr("How long a key takes to open its valve fully (and to close it again): "
+                                    "0 gives the full command at once"));
+            connect(row.ramp, &QDoubleSpinBox::valueChanged, this, [this, a](double seconds) {
+                if (!m_filling) emit rampChanged(a, seconds);
+            });
+            m_grid->addWidget(row.ramp, r, 6);
+        } else {
+            row.calibrate = new QPushButton(tr("Calibrate…"), m_body);
+            row.calibrate->setToolTip(tr("Capture this channel's centre and travel, and set its dead band and curve"));
+            connect(row.calibrate, &QPushButton::clicked, this, [this, a] { emit calibrateRequested(a); });
+            m_grid->addWidget(row.calibrate, r, 6);
+        }
         m_grid->addWidget(row.name, r, 0);
         m_grid->addWidget(row.raw, r, 1);
         m_grid->addWidget(row.rawText, r, 2);
         m_grid->addWidget(row.value, r, 3);
         m_grid->addWidget(row.valueText, r, 4);
         m_grid->addWidget(row.flag, r, 5);
-        m_grid->addWidget(row.calibrate, r, 6);
         m_rows.append(row);
     }
 
     const int perRow = 12;
     for (int b = 0; b < device->info.buttons.size(); ++b) {
-        auto* lamp = new ButtonLamp(QString::number(b), this);
-        lamp->setToolTip(tr("Button %1: %2").arg(b).arg(device->info.buttons[b]));
+        const QString label = device->info.kind == trainer::DeviceKind::Gamepad ? trainer::gamepadButtonLabel(b) : QString();
+        auto* lamp = new ButtonLamp(label.isEmpty() ? QString::number(b) : label, this);
+        lamp->setToolTip(tr("Button %1: %2").arg(b).arg(trainer::buttonName(device->info, b)));
         m_lampGrid->addWidget(lamp, b / perRow, b % perRow);
         m_lamps.append(lamp);
     }
     m_lampGrid->setColumnStretch(perRow, 1);
     m_buttonsTitle->setVisible(!m_lamps.isEmpty());
+}
+
+double ChannelPanel::rampSeconds(double filterHz)
+{
+    return filterHz > 0.0 ? kRampTimeConstants / (2.0 * std::numbers::pi * filterHz) : 0.0;
+}
+
+double ChannelPanel::rampFilterHz(double seconds)
+{
+    return seconds > 0.0 ? kRampTimeConstants / (2.0 * std::numbers::pi * seconds) : 0.0;
 }
 
 void ChannelPanel::setDevice(const trainer::DeviceState* device, const trainer::StationProfile& profile)
@@ -328,6 +369,11 @@ void ChannelPanel::setDevice(const trainer::DeviceState* device, const trainer::
         row.value->setValue(ch.value);
         row.value->setFillColor(live ? QColor(0x1e, 0x88, 0xe5) : QColor(0xb0, 0xbe, 0xc5));
         row.valueText->setText(formatValue(ch.value));
+        if (row.ramp && !row.ramp->hasFocus()) {
+            m_filling = true;
+            row.ramp->setValue(rampSeconds(c.filterHz));
+            m_filling = false;
+        }
         QString flag, tip;
         QColor color;
         if (ch.outOfRange) {

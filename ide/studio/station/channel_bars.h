@@ -6,9 +6,12 @@
 //    optional marks (the extremes seen while calibrating) and a shaded band (the dead
 //    band);
 //  - ButtonLamp: a small round lamp that lights while a button is pressed;
-//  - ChannelPanel: one row per axis of a device — name, raw bar, raw number,
-//    calibrated bar, value, a flag ("not calibrated" amber, "out of range" red) and
-//    "Calibrate…" — then the device's buttons as lamps.
+//  - ChannelPanel: one row per axis of a device — name (a gamepad's by SDL's names,
+//    "Left stick X"), raw bar, raw number, calibrated bar, value, a flag ("not
+//    calibrated" amber, "out of range" red) and "Calibrate…" — then the device's
+//    buttons as lamps (a gamepad's labelled "A", "LB", …). The keyboard is digital:
+//    its rows have no "Calibrate…" but a note saying why and a ramp (seconds to full
+//    command: the low-pass of its channel's calibration, rampFilterHz()).
 
 #include "trainer/station/station_engine.h"
 
@@ -18,6 +21,7 @@
 
 #include <limits>
 
+class QDoubleSpinBox;
 class QGridLayout;
 class QLabel;
 class QPushButton;
@@ -94,13 +98,26 @@ public:
     QLabel* rawLabel(int axis) const { return m_rows.value(axis).rawText; }
     QLabel* valueLabel(int axis) const { return m_rows.value(axis).valueText; }
     QLabel* flagLabel(int axis) const { return m_rows.value(axis).flag; }
+    /// nullptr for a keyboard's channel (keys are not calibrated).
     QPushButton* calibrateButton(int axis) const { return m_rows.value(axis).calibrate; }
+    /// A keyboard channel's ramp [s] (nullptr for other devices).
+    QDoubleSpinBox* rampSpin(int axis) const { return m_rows.value(axis).ramp; }
+    /// Why a keyboard has no calibration (shown for the keyboard only).
+    QLabel* keyboardNote() const { return m_keyboardNote; }
+
+    /// A key's ramp: the time to 95 % of the command (three time constants of the
+    /// first-order low-pass) ↔ the low-pass cutoff. 0 ↔ 0 (no filter: at once).
+    static double rampSeconds(double filterHz);
+    static double rampFilterHz(double seconds);
+    static constexpr double kMaxRamp = 3.0;  ///< [s]
     int buttonCount() const { return int(m_lamps.size()); }
     ButtonLamp* lamp(int button) const { return m_lamps.value(button); }
 
 signals:
     /// "Calibrate…" of channel `axis` was pressed.
     void calibrateRequested(int axis);
+    /// The ramp of keyboard channel `axis` was set to `seconds`.
+    void rampChanged(int axis, double seconds);
 
 protected:
     /// QEvent::LanguageChange: the titles again; the rows at the next setDevice().
@@ -116,11 +133,15 @@ private:
         QLabel* valueText = nullptr;
         QLabel* flag = nullptr;
         QPushButton* calibrate = nullptr;
+        QDoubleSpinBox* ramp = nullptr;
     };
+    static constexpr double kRampTimeConstants = 3.0;  ///< 95 % of a step
     void rebuild(const trainer::DeviceState* device);
 
     QString m_key;  ///< id, axes and buttons of the device shown
     QLabel* m_title = nullptr;
+    QLabel* m_keyboardNote = nullptr;
+    bool m_filling = false;
     QWidget* m_body = nullptr;
     QGridLayout* m_grid = nullptr;
     QLabel* m_buttonsTitle = nullptr;

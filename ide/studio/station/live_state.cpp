@@ -20,6 +20,25 @@ const trainer::DeviceState* findDevice(const trainer::StationState& state, const
     return nullptr;
 }
 
+QString hudBankLine(const trainer::StationState& state)
+{
+    if (state.bankNames.size() < 2 || !state.bankSwitchConnected) return {};
+    QString line = QCoreApplication::translate("studio::StationHud", "Bank: <b>%1</b> (%2 of %3)")
+                       .arg(state.bankNames.value(state.activeBank).toHtmlEscaped())
+                       .arg(state.activeBank + 1)
+                       .arg(state.bankNames.size());
+    if (!state.bankSwitchHint.isEmpty()) line += QStringLiteral(" · ") + state.bankSwitchHint.toHtmlEscaped();
+    return line;
+}
+
+QStringList hudWarnings(const trainer::StationState& state)
+{
+    QStringList lines;
+    if (!state.devicesMissing.isEmpty()) lines << state.devicesMissing;
+    lines += state.warnings;
+    return lines;
+}
+
 QString calibrationKey(const trainer::StationProfile& profile, const trainer::DeviceInfo& device, int axis)
 {
     if (const auto* c = profile.calibration(device.id, axis); c && c->isValid()) return device.id;

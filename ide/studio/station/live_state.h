@@ -30,6 +30,14 @@ QString calibrationKey(const trainer::StationProfile& profile, const trainer::De
 trainer::ChannelCalibration channelCalibration(const trainer::StationProfile& profile,
                                                const trainer::DeviceInfo& device, int axis);
 
+/// The HUDs' bank line (HTML): "Bank: <b>Boom</b> (1 of 2) · Y: next bank", how to
+/// switch with what is connected; "" when the profile has one bank or no device that
+/// switches banks is connected (a bank the operator cannot change is noise).
+QString hudBankLine(const trainer::StationState& state);
+/// The HUDs' station warnings (plain text): the profile's devices that are missing and
+/// what drives instead, then the operator's warnings (devices lost, levers to centre…).
+QStringList hudWarnings(const trainer::StationState& state);
+
 /// "Connected", "Disconnected", "Stalled", "Failed" (translated).
 QString statusName(trainer::DeviceStatus status);
 /// Green, grey, amber, red.

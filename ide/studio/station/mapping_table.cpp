@@ -1,7 +1,9 @@
 #include "ide/studio/station/mapping_table.h"
 
+#include "ide/studio/station/button_spin.h"
 #include "ide/studio/station/channel_bars.h"
 #include "ide/studio/station/live_state.h"
+#include "trainer/station/control_names.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -53,7 +55,7 @@ void setButtonSpinTexts(QSpinBox* s)
 
 QSpinBox* buttonSpin(QWidget* parent)
 {
-    auto* s = new QSpinBox(parent);
+    auto* s = new ButtonSpin(parent);
     s->setRange(-1, kMaxButton);
     setButtonSpinTexts(s);
     return s;
@@ -179,6 +181,7 @@ MappingTable::MappingTable(QWidget* parent) : QWidget(parent)
         if (m_filling) return;
         const trainer::ButtonRef ref{m_nextDevice->currentText().trimmed(), m_nextButton->value()};
         m_nextBank = ref.isSet() ? ref : trainer::ButtonRef{};
+        refreshButtonNames();
         changed();
     };
     connect(m_nextDevice, &QComboBox::currentTextChanged, this, nextChanged);
@@ -286,12 +289,37 @@ void MappingTable::fillAxisCombo(QComboBox* combo, const QString& device, int ax
     const QSignalBlocker block(combo);
     combo->clear();
     const DeviceChoice* d = resolve(device);
+    if (isGamepad(device)) {
+        // SDL's game-controller axes, by name: the index means nothing to a person
+        for (int a = 0; !trainer::gamepadAxisName(a).isEmpty() || a <= axis; ++a) {
+            const QString name = trainer::gamepadAxisName(a);
+            combo->addItem(name.isEmpty() ? tr("Axis %1").arg(a) : name, a);
+        }
+        combo->setCurrentIndex(std::max(0, combo->findData(axis)));
+        return;
+    }
     const int count = std::max(d ? int(d->axes.size()) : kGenericAxes, axis + 1);
     for (int a = 0; a < count; ++a) {
         const QString name = d && a < d->axes.size() ? d->axes[a] : QString();
         combo->addItem(name.isEmpty() ? tr("Axis %1").arg(a) : QStringLiteral("%1: %2").arg(a).arg(name), a);
     }
     combo->setCurrentIndex(std::max(0, combo->findData(axis)));
+}
+
+bool MappingTable::isGamepad(const QString& device) const
+{
+    const DeviceChoice* d = resolve(device);
+    const QString pad = trainer::kindKey(trainer::DeviceKind::Gamepad);
+    return device.trimmed() == pad || (d && d->kind == pad);
+}
+
+void MappingTable::refreshButtonNames()
+{
+    const auto name = [this](QSpinBox* spin, const QComboBox* device) {
+        if (auto* s = qobject_cast<ButtonSpin*>(spin); s && device) s->setGamepad(isGamepad(device->currentText()));
+    };
+    for (int b = 0; b < m_banksTable->rowCount(); ++b) name(selectButtonSpin(b), selectDeviceCombo(b));
+    name(m_nextButton, m_nextDevice);
 }
 
 void MappingTable::fillDriveCombo(QComboBox* combo, int drive) const
@@ -438,6 +466,7 @@ void MappingTable::rebuildBanks()
             } else if (!select.isEmpty()) {
                 select.removeFirst();
             }
+            refreshButtonNames();
             changed();
         };
         connect(device, &QComboBox::currentTextChanged, this, selectChanged);
@@ -449,6 +478,7 @@ void MappingTable::rebuildBanks()
         m_nextButton->setValue(m_nextBank.isSet() ? m_nextBank.button : -1);
     }
     if (current >= 0 && current < m_banks.size()) m_banksTable->setCurrentCell(current, BankNameColumn);
+    refreshButtonNames();
     m_filling = false;
 }
 
@@ -541,6 +571,7 @@ void MappingTable::showState(const trainer::StationState& state)
         for (int b = 0; b < m_banks.size(); ++b)
             if (QComboBox* c = selectDeviceCombo(b); c && !c->hasFocus()) fillDeviceCombo(c, m_banks[b].select.value(0).device);
         if (!m_nextDevice->hasFocus()) fillDeviceCombo(m_nextDevice, m_nextBank.device);
+        refreshButtonNames();
         m_filling = false;
     }
 

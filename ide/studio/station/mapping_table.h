@@ -115,6 +115,10 @@ private:
     void fillAxisCombo(QComboBox* combo, const QString& device, int axis) const;
     void fillDriveCombo(QComboBox* combo, int drive) const;
     const DeviceChoice* resolve(const QString& device) const;
+    /// `device` (a kind or an id) is a gamepad: its controls are shown by name.
+    bool isGamepad(const QString& device) const;
+    /// The bank buttons' spin boxes name a gamepad's buttons ("Left shoulder").
+    void refreshButtonNames();
     int rowOf(const QWidget* cellWidget, int column) const;
     void refreshIssues();
     void refreshBankCombos();

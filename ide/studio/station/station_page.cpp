@@ -89,6 +89,7 @@ StationPage::StationPage(trainer::Station* station, QWidget* parent) : QWidget(p
     m_mappings->setConfirm([this](const QString& question) { return ask(tr("Remove bank"), question); });
     connect(m_mappings, &MappingTable::edited, this, &StationPage::mappingEdited);
     connect(m_channels, &ChannelPanel::calibrateRequested, this, [this](int axis) { calibrate(axis); });
+    connect(m_channels, &ChannelPanel::rampChanged, this, &StationPage::setKeyRamp);
 
     m_timer = new QTimer(this);
     m_timer->setInterval(1000 / kRefreshHz);
@@ -588,6 +589,7 @@ void StationPage::showBanner(const trainer::StationState& state)
         const QString name = state.bankNames[b].isEmpty() ? tr("Bank %1").arg(b + 1) : state.bankNames[b];
         bank = state.bankNames.size() > 1 ? tr("Bank: %1 (%2 of %3)").arg(name).arg(b + 1).arg(state.bankNames.size())
                                           : tr("Bank: %1").arg(name);
+        if (!state.bankSwitchHint.isEmpty()) bank += QStringLiteral("\n") + state.bankSwitchHint;
     }
     if (m_bank->text() != bank) m_bank->setText(bank);
 

@@ -143,8 +143,12 @@ public:
 
     // ---- calibration
     /// Opens the calibration wizard for `axis` of the selected device (window-modal, not
-    /// blocking); nullptr when there is no such channel.
+    /// blocking); nullptr when there is no such channel, or the device is the keyboard
+    /// (keys are digital: the channel panel offers a ramp instead, setKeyRamp()).
     CalibrationWizard* calibrate(int axis);
+    /// The selected keyboard's channel `axis` reaches its full command in `seconds` (0: at
+    /// once): the low-pass of its calibration, kept in the profile.
+    void setKeyRamp(int axis, double seconds);
     /// Keeps a calibration in the profile (dirty) and gives it to the station.
     void applyCalibration(const QString& deviceMatch, int axis, const trainer::ChannelCalibration& calibration);
 

@@ -154,6 +154,7 @@ CalibrationWizard* StationPage::calibrate(int axis)
     if (!m_state) refresh();
     const trainer::DeviceState* d = m_state ? findDevice(*m_state, m_selectedId, m_selectedReplay) : nullptr;
     if (!d || axis < 0 || axis >= d->info.axes.size()) return nullptr;
+    if (d->info.kind == trainer::DeviceKind::Keyboard) return nullptr;  // digital: a ramp instead (setKeyRamp)
     if (m_wizard) m_wizard->close();
     auto* wizard = new CalibrationWizard(m_station, d->info, d->replay, axis, channelCalibration(m_doc.edit(), d->info, axis),
                                          calibrationKey(m_doc.edit(), d->info, axis), this);
@@ -183,6 +184,16 @@ CalibrationWizard* StationPage::calibrate(int axis)
     m_wizard = wizard;
     wizard->open();
     return wizard;
+}
+
+void StationPage::setKeyRamp(int axis, double seconds)
+{
+    if (!m_state) refresh();
+    const trainer::DeviceState* d = m_state ? findDevice(*m_state, m_selectedId, m_selectedReplay) : nullptr;
+    if (!d || d->info.kind != trainer::DeviceKind::Keyboard || axis < 0 || axis >= d->info.axes.size()) return;
+    trainer::ChannelCalibration c = channelCalibration(m_doc.edit(), d->info, axis);
+    c.filterHz = ChannelPanel::rampFilterHz(seconds);
+    applyCalibration(d->info.id, axis, c);
 }
 
 void StationPage::applyCalibration(const QString& deviceMatch, int axis, const trainer::ChannelCalibration& calibration)

@@ -1,6 +1,7 @@
 #include "ide/studio/train/attempt_screen.h"
 
 #include "ide/studio/sim/hydraulic_panel.h"
+#include "ide/studio/station/live_state.h"
 #include "ide/studio/train/drive_controls.h"
 #include "ide/studio/train/train_ui.h"
 #include "ide/studio/train/training_controller.h"
@@ -302,13 +303,9 @@ void AttemptScreen::updateHud(const TrainFrame& f)
     QStringList warnings;
     if (trainer::Station* station = m_training->station()) {
         if (const auto st = station->latest()) {
-            if (st->bankNames.size() > 1)
-                lines << tr("Bank: <b>%1</b> (%2 of %3)")
-                             .arg(st->bankNames.value(st->activeBank).toHtmlEscaped())
-                             .arg(st->activeBank + 1)
-                             .arg(st->bankNames.size());
+            if (const QString bank = hudBankLine(*st); !bank.isEmpty()) lines << bank;
             if (live)
-                for (const QString& w : st->warnings) warnings << w.toHtmlEscaped();
+                for (const QString& w : hudWarnings(*st)) warnings << w.toHtmlEscaped();
         }
     }
     if (f.paused && live && !f.ended) warnings << tr("Paused by the instructor");
