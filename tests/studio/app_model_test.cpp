@@ -205,16 +205,18 @@ private slots:
         QTRY_VERIFY(slidersShowTheSimulation(w));
         QCOMPARE(w.sliders()->sliderCount(), 1);
         const double from = w.sliders()->coordinates()[crank];
-        w.sliders()->spinBox(0)->setValue((from + 0.5) * 180 / M_PI);  // half a radian on
+        const Eigen::VectorXd before = w.runner()->latest()->theta;
+        w.sliders()->spinBox(0)->setValue((from - 0.5) * 180 / M_PI);  // half a radian back
         QTRY_VERIFY(w.runner()->latest()->poseEdits == 1);
         const auto s = w.runner()->latest();
-        QVERIFY(std::abs(s->q[crank] - (from + 0.5)) < 1e-6);
+        QVERIFY(std::abs(s->q[crank] - (from - 0.5)) < 1e-6);
         const Eigen::VectorXd sliders = w.sliders()->theta();
         for (int j = 0; j < m.nb; ++j) QVERIFY(std::abs(s->theta[j] - sliders[j]) < 1e-6);
-        QVERIFY(std::abs(s->theta[m.jointIndex(3)] - m.theta0[std::size_t(m.jointIndex(3))]) > 1e-3);  // the rocker followed
-        QVERIFY(runFor(w, 0.05));
+        QVERIFY(std::abs(s->theta[m.jointIndex(3)] - before[m.jointIndex(3)]) > 1e-3);  // the rocker followed
+        QVERIFY(runFor(w, 0.02));
         QVERIFY(w.runner()->latest()->error.empty());
-        QVERIFY(w.runner()->latest()->q[crank] > from + 0.5);  // the motor turns it on from there
+        const double now = w.runner()->latest()->q[crank];
+        QVERIFY2(now > from - 0.5 && now < from - 0.2, qPrintable(QString::number(now - from)));  // on from the pose set
     }
 
     // Item 9a: a bar over the 3D view says that the editor's text is not applied, with
@@ -229,9 +231,11 @@ private slots:
         QVERIFY(bar && text);
         QVERIFY(bar->isHidden());
         const QString applied = w.editor()->text();
+        const QString onTheMoon = QString(applied).replace("GRAVITY 0 0 -9.81", "GRAVITY 0 0 -1.62");
+        QVERIFY(onTheMoon != applied);
         CodeEditor* editor = w.editor()->editor();
         editor->moveCursor(QTextCursor::End);
-        QTest::keyClicks(editor, "\nGRAVITY 0 0 -1.62\n");
+        QTest::keyClicks(editor, "// on the moon");
         QTRY_VERIFY(bar->isVisible());
         QVERIFY(text->text().contains("not applied"));
         settle(600);  // (the check is done: the editor's status line is settled)
@@ -246,13 +250,14 @@ private slots:
         w.findChild<QPushButton*>("UnappliedRevert")->click();
         QCOMPARE(w.editor()->text(), applied);
         QTRY_VERIFY(bar->isHidden());
-        // typed and undone back to the applied text: no bar (after the check)
+        // typed and deleted back to the applied text: no bar (after the check)
+        editor->moveCursor(QTextCursor::End);
         QTest::keyClicks(editor, "x");
         QTRY_VERIFY(bar->isVisible());
-        w.editor()->undo();
+        QTest::keyClick(editor, Qt::Key_Backspace);
         QTRY_VERIFY(bar->isHidden());
         // Apply on the bar: the new model runs, no bar
-        QTest::keyClicks(editor, "\nGRAVITY 0 0 -1.62\n");
+        w.editor()->setText(onTheMoon);
         QTRY_VERIFY(bar->isVisible());
         const quint64 before = w.bundle()->serial;
         w.findChild<QPushButton*>("UnappliedApply")->click();
@@ -310,7 +315,7 @@ private slots:
             MainWindow w;
             w.openInitial(QString());
             QVERIFY(w.editor()->filePath().endsWith("four_bar.pad"));
-            QTRY_VERIFY_WITH_TIMEOUT(w.bundle() && w.bundle()->model->nb == 4, 10000);
+            QTRY_VERIFY_WITH_TIMEOUT(w.bundle() && w.bundle()->model->nb == 3, 10000);  // (C 4 closes the loop)
         }
         {
             MainWindow w;
@@ -377,14 +382,14 @@ private slots:
         // unsaved edits: the file changes, the edits stay, a bar offers Reload
         CodeEditor* editor = w.editor()->editor();
         editor->moveCursor(QTextCursor::End);
-        QTest::keyClicks(editor, "// mine\n");
+        QTest::keyClicks(editor, "// mine");
         QVERIFY(w.editor()->isModified());
         const quint64 serial2 = w.bundle()->serial;
         QVERIFY(writeByRename(file, text));
         auto* reloadBar = w.findChild<QWidget*>("ReloadBar");
         QVERIFY(reloadBar);
         QTRY_VERIFY_WITH_TIMEOUT(reloadBar->isVisible(), 5000);
-        QVERIFY(w.editor()->text().endsWith("// mine\n"));
+        QVERIFY(w.editor()->text().endsWith("// mine"));
         QCOMPARE(w.bundle()->serial, serial2);
         QVERIFY(w.grab().save(screenshotPath("app_model_changed_on_disk_en.png")));
         chooseLanguage(w, "es");

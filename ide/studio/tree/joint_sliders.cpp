@@ -360,8 +360,12 @@ void JointSliders::placeAt(const Eigen::VectorXd& theta)
     if (m_setCalls + nb > kRebuildAfter) rebuildSimulation(nullptr);
     for (int j = 0; j < nb; ++j) m_sim->setInitial(j, theta[j], 0);
     m_setCalls += nb;
-    // a step of no time ends the set-up: the joints set are no longer held, so the
-    // next move turns only its own joint (and the loops follow)
+    // with loops, a step of no time ends the set-up: the joints set are no longer held,
+    // so the next move turns only its own joint and the loops follow (not with free
+    // joints: the step would fold their turns into an orientation the solver thread's
+    // simulation does not share)
+    const solver::Model& m = m_sim->model();
+    if (m.cuts.empty() || !m.freeJoints.empty()) return;
     std::vector<solver::SimulationEvent> events;
     std::string error;
     m_sim->advanceTo(m_sim->state().t, events, error);
