@@ -7230,7 +7230,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::EditorPanel</name>
     <message>
-        <location filename="../ide/studio/editor/editor_panel.cpp" line="+89" />
+        <location filename="../ide/studio/editor/editor_panel.cpp" line="+119" />
         <source>Apply</source>
         <translation>Apply</translation>
     </message>
@@ -7239,8 +7239,33 @@ never the .key files of the CAs; then run it with --security DIR.
         <source>Use this model in the 3D view and the simulation</source>
         <translation>Use this model in the 3D view and the simulation</translation>
     </message>
+    <message>
+        <location line="+1" />
+        <source>Reload</source>
+        <translation>Reload</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Read the file again (your unsaved edits stay in Undo)</source>
+        <translation>Read the file again (your unsaved edits stay in Undo)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Keep my text</source>
+        <translation>Keep my text</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Go on with the text in the editor; saving writes it over the file</source>
+        <translation>Go on with the text in the editor; saving writes it over the file</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>“%1” changed on disk, and the editor has unsaved changes.</source>
+        <translation>“%1” changed on disk, and the editor has unsaved changes.</translation>
+    </message>
     <message numerus="yes">
-        <location line="+137" />
+        <location line="+179" />
         <source>%1, %n warning(s)</source>
         <comment>the %1 is "%n error(s)"</comment>
         <translation>
@@ -8376,7 +8401,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::MainWindow</name>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+150" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+152" />
         <source>Export</source>
         <translation>Export</translation>
     </message>
@@ -8417,7 +8442,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Station</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+173" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+205" />
         <source>Leave Trainer Mode</source>
         <translation>Leave Trainer Mode</translation>
     </message>
@@ -8532,7 +8557,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>&amp;Load…</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+38" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+45" />
         <location filename="../ide/studio/app/main_window_menus.cpp" line="-147" />
         <source>Load Scene</source>
         <translation>Load Scene</translation>
@@ -8601,7 +8626,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>&amp;Keyboard Controls…</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+43" />
         <location line="+11" />
         <source>C %1</source>
         <translation>C %1</translation>
@@ -8617,7 +8642,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>With the 3D view focused, hold a key to open a valve:</translation>
     </message>
     <message>
-        <location line="-52" />
+        <location line="-54" />
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
@@ -8633,25 +8658,25 @@ never the .key files of the CAs; then run it with --security DIR.
     </message>
     <message>
         <location filename="../ide/studio/app/main_window.cpp" line="-16" />
-        <location line="+74" />
+        <location line="+79" />
         <source>Open Model</source>
         <translation>Open Model</translation>
     </message>
     <message>
-        <location line="-74" />
+        <location line="-79" />
         <source>Cannot open %1:
 %2</source>
         <translation>Cannot open %1:
 %2</translation>
     </message>
     <message>
-        <location line="+74" />
+        <location line="+79" />
         <location filename="../ide/studio/app/main_window_menus.cpp" line="-179" />
         <source>Padrob models (*.pad);;All files (*)</source>
         <translation>Padrob models (*.pad);;All files (*)</translation>
     </message>
     <message numerus="yes">
-        <location line="-247" />
+        <location line="-291" />
         <source>%n attempt(s) kept while the trainee records could not be written were added to them.</source>
         <translation>
             <numerusform>%n attempt kept while the trainee records could not be written was added to them.</numerusform>
@@ -8709,7 +8734,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>At the &amp;vertices (faster)</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+36" />
         <source>%1 (%2)</source>
         <comment>a drive and its bank</comment>
         <translation>%1 (%2)</translation>
@@ -8736,7 +8761,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Mouse in the 3D view: left drag orbits, middle drag or Shift + left drag pans, the wheel zooms, a double click frames the model. Ctrl + left drag on a body pushes it while the simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go.</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+188" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+227" />
         <source>%1
 
 The 3D view goes on without this scene.</source>
@@ -8760,7 +8785,7 @@ The 3D view goes on without this scene.</translation>
         <translation>The scene used last is not drawn: %1</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+35" />
         <location line="+14" />
         <source>Save Model</source>
         <translation>Save Model</translation>
@@ -8824,32 +8849,47 @@ Use Save As to choose another place.</translation>
         <translation>Padrob Studio was closed with unsaved changes to %1 (recovery copy of %2). Restore them?</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location filename="../ide/studio/app/main_window_reload.cpp" line="+52" />
         <source>%1 was deleted or moved on disk; the text in the editor is kept — save it to write it again.</source>
         <translation>%1 was deleted or moved on disk; the text in the editor is kept — save it to write it again.</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>%1 changed on disk. Reload it and lose your unsaved changes?</source>
-        <translation>%1 changed on disk. Reload it and lose your unsaved changes?</translation>
+        <location line="+31" />
+        <source>%1 changed on disk and was reloaded; the pose is kept.</source>
+        <translation>%1 changed on disk and was reloaded; the pose is kept.</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>%1 changed on disk. Reload it?</source>
-        <translation>%1 changed on disk. Reload it?</translation>
+        <source>%1 changed on disk and was reloaded; its joints changed, so it starts from the initial pose.</source>
+        <translation>%1 changed on disk and was reloaded; its joints changed, so it starts from the initial pose.</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>The editor has changes that are not applied: the 3D view, the tree and the plots show the model applied before. Apply (Ctrl+Return) to use them, or Revert.</source>
+        <translation>The editor has changes that are not applied: the 3D view, the tree and the plots show the model applied before. Apply (Ctrl+Return) to use them, or Revert.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Apply</source>
+        <translation>Apply</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>Model Changed on Disk</source>
-        <translation>Model Changed on Disk</translation>
+        <source>Revert</source>
+        <translation>Revert</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+1" />
+        <source>Put the applied model's text back in the editor (Undo brings the edits back)</source>
+        <translation>Put the applied model's text back in the editor (Undo brings the edits back)</translation>
+    </message>
+    <message>
+        <location filename="../ide/studio/app/main_window.cpp" line="+33" />
         <source>The scene's solids cannot be taken into the model's contacts (a shape that cannot serve): the model runs without touching them</source>
         <translation>The scene's solids cannot be taken into the model's contacts (a shape that cannot serve): the model runs without touching them</translation>
     </message>
     <message numerus="yes">
-        <location line="+13" />
+        <location line="+15" />
         <source>Model applied: %n bodies</source>
         <translation>
             <numerusform>Model applied: %n body</numerusform>
@@ -8857,7 +8897,7 @@ Use Save As to choose another place.</translation>
         </translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+40" />
         <source>t = %1 s</source>
         <translation>t = %1 s</translation>
     </message>
@@ -10139,7 +10179,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
 <context>
     <name>studio::SimulationRunner</name>
     <message>
-        <location filename="../ide/studio/sim/simulation_runner.cpp" line="+439" />
+        <location filename="../ide/studio/sim/simulation_runner.cpp" line="+459" />
         <source>The simulation stopped: %1</source>
         <translation>The simulation stopped: %1</translation>
     </message>
@@ -10729,7 +10769,7 @@ Id: %3</translation>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location line="+221" />
+        <location line="+220" />
         <source>On the centre's network as %1</source>
         <translation>On the centre's network as %1</translation>
     </message>

@@ -7260,7 +7260,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::EditorPanel</name>
     <message>
-        <location filename="../ide/studio/editor/editor_panel.cpp" line="+89" />
+        <location filename="../ide/studio/editor/editor_panel.cpp" line="+119" />
         <source>Apply</source>
         <translation>Aplicar</translation>
     </message>
@@ -7269,8 +7269,33 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <source>Use this model in the 3D view and the simulation</source>
         <translation>Usar este modelo en la vista 3D y en la simulación</translation>
     </message>
+    <message>
+        <location line="+1" />
+        <source>Reload</source>
+        <translation>Recargar</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Read the file again (your unsaved edits stay in Undo)</source>
+        <translation>Volver a leer el archivo (sus ediciones sin guardar quedan en Deshacer)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Keep my text</source>
+        <translation>Conservar mi texto</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Go on with the text in the editor; saving writes it over the file</source>
+        <translation>Seguir con el texto del editor; al guardar se escribe sobre el archivo</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>“%1” changed on disk, and the editor has unsaved changes.</source>
+        <translation>«%1» cambió en el disco, y el editor tiene cambios sin guardar.</translation>
+    </message>
     <message numerus="yes">
-        <location line="+137" />
+        <location line="+179" />
         <source>%1, %n warning(s)</source>
         <comment>the %1 is "%n error(s)"</comment>
         <translation>
@@ -8406,7 +8431,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::MainWindow</name>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+150" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+152" />
         <source>Export</source>
         <translation>Exportar</translation>
     </message>
@@ -8447,7 +8472,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Puesto</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+173" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+205" />
         <source>Leave Trainer Mode</source>
         <translation>Salir del modo quiosco</translation>
     </message>
@@ -8562,7 +8587,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>&amp;Cargar…</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+38" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+45" />
         <location filename="../ide/studio/app/main_window_menus.cpp" line="-147" />
         <source>Load Scene</source>
         <translation>Cargar escena</translation>
@@ -8631,7 +8656,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>&amp;Controles de teclado…</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+43" />
         <location line="+11" />
         <source>C %1</source>
         <translation>C %1</translation>
@@ -8647,7 +8672,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Con la vista 3D activa, mantenga presionada una tecla para abrir una válvula:</translation>
     </message>
     <message>
-        <location line="-52" />
+        <location line="-54" />
         <source>&amp;Help</source>
         <translation>Ay&amp;uda</translation>
     </message>
@@ -8663,25 +8688,25 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
     </message>
     <message>
         <location filename="../ide/studio/app/main_window.cpp" line="-16" />
-        <location line="+74" />
+        <location line="+79" />
         <source>Open Model</source>
         <translation>Abrir modelo</translation>
     </message>
     <message>
-        <location line="-74" />
+        <location line="-79" />
         <source>Cannot open %1:
 %2</source>
         <translation>No se puede abrir %1:
 %2</translation>
     </message>
     <message>
-        <location line="+74" />
+        <location line="+79" />
         <location filename="../ide/studio/app/main_window_menus.cpp" line="-179" />
         <source>Padrob models (*.pad);;All files (*)</source>
         <translation>Modelos Padrob (*.pad);;Todos los archivos (*)</translation>
     </message>
     <message numerus="yes">
-        <location line="-247" />
+        <location line="-291" />
         <source>%n attempt(s) kept while the trainee records could not be written were added to them.</source>
         <translation>
             <numerusform>Se agregó a los registros de los aprendices %n intento guardado mientras no se podían escribir.</numerusform>
@@ -8739,7 +8764,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>En los &amp;vértices (más rápida)</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+36" />
         <source>%1 (%2)</source>
         <comment>a drive and its bank</comment>
         <translation>%1 (%2)</translation>
@@ -8766,7 +8791,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Ratón en la vista 3D: arrastrar con el botón izquierdo hace girar la vista, arrastrar con el botón central o con Mayús + botón izquierdo la desplaza, la rueda acerca o aleja, un doble clic encuadra el modelo. Ctrl + arrastrar con el botón izquierdo sobre un cuerpo lo empuja mientras corre la simulación (un resorte tira del punto tomado hacia el cursor); suelte el botón para soltarlo.</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+188" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+227" />
         <source>%1
 
 The 3D view goes on without this scene.</source>
@@ -8790,7 +8815,7 @@ La vista 3D continúa sin esta escena.</translation>
         <translation>La última escena usada no se dibuja: %1</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+35" />
         <location line="+14" />
         <source>Save Model</source>
         <translation>Guardar modelo</translation>
@@ -8854,32 +8879,47 @@ Use Guardar como para elegir otro lugar.</translation>
         <translation>Padrob Studio se cerró con cambios sin guardar en %1 (copia de recuperación del %2). ¿Restaurarlos?</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location filename="../ide/studio/app/main_window_reload.cpp" line="+52" />
         <source>%1 was deleted or moved on disk; the text in the editor is kept — save it to write it again.</source>
         <translation>%1 se eliminó o se movió en el disco; el texto del editor se conserva: guárdelo para escribirlo de nuevo.</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>%1 changed on disk. Reload it and lose your unsaved changes?</source>
-        <translation>%1 cambió en el disco. ¿Volver a cargarlo y perder los cambios sin guardar?</translation>
+        <location line="+31" />
+        <source>%1 changed on disk and was reloaded; the pose is kept.</source>
+        <translation>%1 cambió en el disco y se volvió a cargar; se conserva la postura.</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>%1 changed on disk. Reload it?</source>
-        <translation>%1 cambió en el disco. ¿Volver a cargarlo?</translation>
+        <source>%1 changed on disk and was reloaded; its joints changed, so it starts from the initial pose.</source>
+        <translation>%1 cambió en el disco y se volvió a cargar; sus articulaciones cambiaron, así que parte de la postura inicial.</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>The editor has changes that are not applied: the 3D view, the tree and the plots show the model applied before. Apply (Ctrl+Return) to use them, or Revert.</source>
+        <translation>El editor tiene cambios no aplicados: la vista 3D, el árbol y los gráficos muestran el modelo aplicado antes. Aplíquelos (Ctrl+Intro) para usarlos, o reviértalos.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Apply</source>
+        <translation>Aplicar</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>Model Changed on Disk</source>
-        <translation>El modelo cambió en el disco</translation>
+        <source>Revert</source>
+        <translation>Revertir</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+1" />
+        <source>Put the applied model's text back in the editor (Undo brings the edits back)</source>
+        <translation>Devolver al editor el texto del modelo aplicado (Deshacer recupera las ediciones)</translation>
+    </message>
+    <message>
+        <location filename="../ide/studio/app/main_window.cpp" line="+33" />
         <source>The scene's solids cannot be taken into the model's contacts (a shape that cannot serve): the model runs without touching them</source>
         <translation>Los sólidos de la escena no pueden incorporarse a los contactos del modelo (una forma que no sirve): el modelo funciona sin tocarlos</translation>
     </message>
     <message numerus="yes">
-        <location line="+13" />
+        <location line="+15" />
         <source>Model applied: %n bodies</source>
         <translation>
             <numerusform>Modelo aplicado: %n cuerpo</numerusform>
@@ -8887,7 +8927,7 @@ Use Guardar como para elegir otro lugar.</translation>
         </translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+40" />
         <source>t = %1 s</source>
         <translation>t = %1 s</translation>
     </message>
@@ -10169,7 +10209,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
 <context>
     <name>studio::SimulationRunner</name>
     <message>
-        <location filename="../ide/studio/sim/simulation_runner.cpp" line="+439" />
+        <location filename="../ide/studio/sim/simulation_runner.cpp" line="+459" />
         <source>The simulation stopped: %1</source>
         <translation>La simulación se detuvo: %1</translation>
     </message>
@@ -10759,7 +10799,7 @@ Id: %3</translation>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location line="+221" />
+        <location line="+220" />
         <source>On the centre's network as %1</source>
         <translation>En la red del centro como %1</translation>
     </message>
