@@ -36,12 +36,14 @@
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QHBoxLayout>
 #include <QLineEdit>
 #include <QLabel>
 #include <QLocale>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QShortcut>
 #include <QStackedWidget>
@@ -208,7 +210,33 @@ void MainWindow::buildWorkspaces()
     m_modelSpace->setObjectName("ModelWorkspace");
     m_modelSpace->setDockNestingEnabled(true);
     m_viewports = new ViewportLayout;
-    m_modelSpace->setCentralWidget(m_viewports);
+    // over the 3D view, the bar that says the editor's text is not applied (updateUnappliedBar)
+    auto* centre = new QWidget;
+    auto* centreLayout = new QVBoxLayout(centre);
+    centreLayout->setContentsMargins(0, 0, 0, 0);
+    centreLayout->setSpacing(0);
+    m_unappliedBar = new QWidget;
+    m_unappliedBar->setObjectName("UnappliedBar");
+    m_unappliedBar->setAttribute(Qt::WA_StyledBackground);
+    m_unappliedBar->setStyleSheet(
+        QStringLiteral("QWidget#UnappliedBar { background: #fff3cd; border-bottom: 1px solid #e0c068; } "
+                       "QWidget#UnappliedBar QLabel { color: #3d2e00; }"));
+    m_unappliedText = new QLabel;
+    m_unappliedText->setObjectName("UnappliedText");
+    m_unappliedText->setWordWrap(true);
+    m_unappliedApply = new QPushButton;
+    m_unappliedApply->setObjectName("UnappliedApply");
+    m_unappliedRevert = new QPushButton;
+    m_unappliedRevert->setObjectName("UnappliedRevert");
+    auto* barLayout = new QHBoxLayout(m_unappliedBar);
+    barLayout->setContentsMargins(8, 4, 8, 4);
+    barLayout->addWidget(m_unappliedText, 1);
+    barLayout->addWidget(m_unappliedApply);
+    barLayout->addWidget(m_unappliedRevert);
+    m_unappliedBar->hide();
+    centreLayout->addWidget(m_unappliedBar);
+    centreLayout->addWidget(m_viewports, 1);
+    m_modelSpace->setCentralWidget(centre);
 
     // (the texts: retranslate())
     auto dock = [this](const QString& name, QWidget* widget, Qt::DockWidgetArea area) {
@@ -266,9 +294,14 @@ void MainWindow::buildWorkspaces()
     connect(m_editor, &EditorPanel::modificationChanged, this, [this](bool) { updateTitle(); });
     connect(m_editor, &EditorPanel::diagnosticsChanged, this, [this](int errors, int warnings) {
         m_problemCounts = {errors, warnings};
+        if (errors > 0) m_keptPose.reset();  // a reload with errors is not applied: no pose to carry
         updateModelLabel();
     });
     connect(m_editor, &EditorPanel::fileChangedOnDisk, this, &MainWindow::onFileChangedOnDisk);
+    connect(m_editor, &EditorPanel::reloadRequested, this, &MainWindow::reloadFromDisk);
+    connect(m_editor, &EditorPanel::unappliedChanged, this, &MainWindow::updateUnappliedBar);
+    connect(m_unappliedApply, &QPushButton::clicked, m_editor, &EditorPanel::apply);
+    connect(m_unappliedRevert, &QPushButton::clicked, m_editor, &EditorPanel::revertToApplied);
     connect(m_tree, &ModelTree::bodySelected, this, [this](int body) { m_viewports->setHighlight(body, -1); });
     connect(m_tree, &ModelTree::jointSelected, this, [this](int joint) { m_viewports->setHighlight(-1, joint); });
     connect(m_tree, &ModelTree::sourceSelected, this, [this](int line) { m_editor->goToLine(line, 1); });
@@ -277,8 +310,9 @@ void MainWindow::buildWorkspaces()
         statusBar()->showMessage(message, 15000);
         m_viewports->setToolTip(message);
     });
-    connect(m_sliders, &JointSliders::posesChanged, this,
-            [this](const std::vector<Eigen::Isometry3d>& poses) { m_viewports->setPoses(poses); });
+    // the sliders are the simulation's state: a pose set by hand goes to the solver thread,
+    // and the view shows the snapshot of it (poll())
+    connect(m_sliders, &JointSliders::poseEdited, this, &MainWindow::sendPose);
 }
 
 void MainWindow::setWorkspace(Workspace w)
@@ -331,8 +365,15 @@ void MainWindow::openInitial(const QString& path)
 {
     offerRecovery();
     if (!m_editor->filePath().isEmpty() || m_editor->isModified()) return;  // a recovered model
-    const QString initial = path.isEmpty() ? paths::defaultModel() : path;
-    if (!openFile(initial)) m_editor->newModel();
+    // the model given, else the file opened last, else the bundled liner manipulator
+    QString initial = path;
+    if (initial.isEmpty()) {
+        const QString last = QSettings().value("recentFiles").toStringList().value(0);
+        initial = !last.isEmpty() && QFileInfo(last).isFile() ? last : paths::defaultModel();
+    }
+    if (openFile(initial)) return;
+    if (path.isEmpty() && initial != paths::defaultModel() && openFile(paths::defaultModel())) return;
+    m_editor->newModel();
 }
 
 bool MainWindow::openFile(const QString& path)
@@ -406,6 +447,11 @@ void MainWindow::newModel()
 {
     if (!maybeSave()) return;
     m_editor->newModel();
+    // a new model is not put in the last model's scene (it comes back at the next start)
+    m_scenePath.clear();
+    m_viewports->setScene(nullptr);
+    m_sceneBundle.reset();
+    if (m_applied && m_applied->model->contact) applyInScene();
     updateTitle();
 }
 
@@ -505,22 +551,6 @@ void MainWindow::offerRecovery()
     }
 }
 
-void MainWindow::onFileChangedOnDisk(const QString& path, bool deleted)
-{
-    if (deleted) {
-        statusBar()->showMessage(tr("%1 was deleted or moved on disk; the text in the editor is kept — save it to "
-                                    "write it again.").arg(QDir::toNativeSeparators(path)));
-        return;
-    }
-    const QString question = m_editor->isModified()
-                                 ? tr("%1 changed on disk. Reload it and lose your unsaved changes?")
-                                 : tr("%1 changed on disk. Reload it?");
-    if (QMessageBox::question(this, tr("Model Changed on Disk"), question.arg(QDir::toNativeSeparators(path))) ==
-        QMessageBox::Yes) {
-        m_editor->reload();
-        m_editor->apply();
-    }
-}
 
 // ---------------------------------------------------------------- the model and the simulation
 
@@ -529,6 +559,7 @@ void MainWindow::applyBundle(std::shared_ptr<const ModelBundle> bundle)
     if (!bundle) return;
     m_applied = std::move(bundle);
     applyInScene();
+    restoreKeptPose();
 }
 
 void MainWindow::applyInScene()
@@ -551,7 +582,9 @@ void MainWindow::applyInScene()
     m_sliders->setBundle(bundle);
     setStationModel(bundle);
     m_shownSerial = bundle->serial;
-    m_shownStep = m_labelStep = -1;
+    m_shown.reset();
+    m_posesSent = 0;
+    m_labelStep = -1;
     m_labelClock.invalidate();
     statusBar()->showMessage(tr("Model applied: %n bodies", nullptr, bundle->model->nb), 4000);
 }
@@ -568,9 +601,10 @@ void MainWindow::step() { m_runner->stepOnce(); }
 
 void MainWindow::reset()
 {
-    m_runner->reset();
-    m_sliders->reset();
-    m_shownStep = m_labelStep = -1;
+    m_runner->reset();  // the sliders follow its snapshot (poll())
+    m_shown.reset();
+    m_posesSent = 0;
+    m_labelStep = -1;
     m_labelClock.invalidate();
 }
 
@@ -582,9 +616,12 @@ void MainWindow::poll()
     // the status bar's figures ten times a second while running: at every frame, the
     // status bar was laid out and painted 60 times a second, on the thread that draws
     const bool labels = !m_labelClock.isValid() || m_labelClock.elapsed() >= 100 || (s && !s->running);
-    if (s && s->bundle == m_bundle && s->step != m_shownStep) {
-        m_shownStep = s->step;
+    if (s && s->bundle == m_bundle && s != m_shown) {
+        m_shown = s;
         m_viewports->setSnapshot(s);
+        // the sliders show the simulated state (paused: each one; running: ten a second),
+        // once it holds every pose they sent (not an older one while a drag goes on)
+        if (s->poseEdits >= m_posesSent && (!s->running || labels)) m_sliders->showState(s->theta);
     }
     if (s && s->bundle == m_bundle && labels && (s->step != m_labelStep || s->running != m_labelRunning)) {
         m_labelStep = s->step;

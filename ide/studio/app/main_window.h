@@ -19,6 +19,19 @@
 // on QEvent::LanguageChange, and this window gives its children the new locale (numbers
 // read 1,5 in Spanish; model text keeps '.').
 //
+// Not applied: while the editor holds text other than the applied model's (an edit, a
+// file opened or File ▸ New not applied yet), a bar over the 3D view says that the view,
+// the tree and the plots show the model applied before, with Apply and Revert.
+//
+// Files: with no model given, the window reopens the file opened last (QSettings
+// "recentFiles"), or the bundled liner manipulator when it is gone. File ▸ New starts
+// without the scene (the scene used last comes back with the next start). When the
+// model's file changes on disk (an external editor; ModelDocument watches it, also
+// when the editor replaces it by a rename) the model is reloaded and applied, keeping
+// the simulation's pose when the new model has the same joints (by name, or id when
+// unnamed, and type) and resuming the run; with unsaved edits the editor offers to
+// reload instead (EditorPanel::offerReload).
+//
 // Data flow: the editor checks the text as it is typed; "Apply" gives a ModelBundle
 // (only a model without errors) to the viewport, the tree, the sliders, the plots and
 // the solver thread (SimulationRunner), which restarts paused at the model's initial
@@ -33,6 +46,7 @@
 #include <QPointer>
 
 #include <memory>
+#include <optional>
 #include <utility>
 
 class QAction;
@@ -40,6 +54,7 @@ class QActionGroup;
 class QDockWidget;
 class QLabel;
 class QMenu;
+class QPushButton;
 class QStackedWidget;
 class QTimer;
 class QToolBar;
@@ -61,6 +76,7 @@ class KeyboardInput;
 class ModelTree;
 class PlotPanel;
 class SimulationRunner;
+struct Snapshot;
 class StationPage;
 class TrainPage;
 class TutorialRunner;
@@ -170,6 +186,14 @@ private:
     void offerRecovery();
     void onSimulationFailed(const QString& message);
     void onFileChangedOnDisk(const QString& path, bool deleted);
+    /// Reads the model's file again and applies it, keeping the pose (see the top).
+    void reloadFromDisk();
+    /// The bar "not applied" over the 3D view: shown or hidden, its texts.
+    void updateUnappliedBar();
+    /// Sends a pose to the simulation (SimulationRunner::setPositions), counted.
+    bool sendPose(const Eigen::VectorXd& theta);
+    /// After a reload's apply: the pose kept for the new model, the run resumed.
+    void restoreKeptPose();
     void restoreLayout();
     void saveLayout();
 
@@ -191,6 +215,18 @@ private:
     bool m_kiosk = false;
     QString m_hudText;
     QString m_scenePath;
+    QWidget* m_unappliedBar = nullptr;
+    QLabel* m_unappliedText = nullptr;
+    QPushButton* m_unappliedApply = nullptr;
+    QPushButton* m_unappliedRevert = nullptr;
+    /// A reload from disk waiting for its apply: the pose and the run to carry over.
+    struct KeptPose {
+        std::shared_ptr<const ModelBundle> bundle;  ///< the model the pose is of
+        Eigen::VectorXd theta;
+        bool running = false;
+        QString file;
+    };
+    std::optional<KeptPose> m_keptPose;
 
     QStackedWidget* m_workspaces = nullptr;
     QMainWindow* m_modelSpace = nullptr;
@@ -227,7 +263,8 @@ private:
     std::pair<int, int> m_problemCounts{-1, 0};  ///< errors and warnings of the last check (−1: none yet)
     QTimer* m_pollTimer = nullptr;
     quint64 m_shownSerial = 0;
-    long m_shownStep = -1;
+    std::shared_ptr<const Snapshot> m_shown;  ///< the snapshot the view shows
+    long m_posesSent = 0;  ///< poses the sliders sent to the runner since its last reset (Snapshot::poseEdits)
     QElapsedTimer m_labelClock;  ///< since the status bar's figures were last set
     long m_labelStep = -1;       ///< the step they show
     bool m_labelRunning = false;

@@ -300,8 +300,10 @@ void MainWindow::retranslate()
     statusBar()->clearMessage();
     if (m_recordsNote) m_recordsNote->setText(recordsNoteText());
     updateModelLabel();
+    updateUnappliedBar();
     // the time and the real-time factor again, in the new language
-    m_shownStep = m_labelStep = -1;
+    m_shown.reset();
+    m_labelStep = -1;
     m_labelClock.invalidate();
     if (m_timeLabel) poll();
     updateTitle();

@@ -6,6 +6,7 @@
 #include "ide/studio/editor/problems_view.h"
 
 #include <QEvent>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -40,6 +41,29 @@ EditorPanel::EditorPanel(QWidget* parent) : QWidget(parent)
     bottomLayout->addLayout(bar);
     bottomLayout->addWidget(m_problems);
 
+    // the file changed on disk under unsaved edits (offerReload)
+    m_reloadBar = new QWidget(this);
+    m_reloadBar->setObjectName("ReloadBar");
+    m_reloadBar->setAutoFillBackground(true);
+    m_reloadBar->setStyleSheet(QStringLiteral("QWidget#ReloadBar { background: #fff3cd; color: #3d2e00; }"));
+    m_reloadText = new QLabel(m_reloadBar);
+    m_reloadText->setWordWrap(true);
+    m_reload = new QPushButton(m_reloadBar);
+    m_reload->setObjectName("ReloadButton");
+    m_keep = new QPushButton(m_reloadBar);
+    m_keep->setObjectName("KeepTextButton");
+    auto* reloadLayout = new QHBoxLayout(m_reloadBar);
+    reloadLayout->setContentsMargins(6, 4, 6, 4);
+    reloadLayout->addWidget(m_reloadText, 1);
+    reloadLayout->addWidget(m_reload);
+    reloadLayout->addWidget(m_keep);
+    m_reloadBar->hide();
+    connect(m_reload, &QPushButton::clicked, this, [this] {
+        hideReloadBar();
+        emit reloadRequested();
+    });
+    connect(m_keep, &QPushButton::clicked, this, &EditorPanel::hideReloadBar);
+
     m_splitter = new QSplitter(Qt::Vertical, this);
     m_splitter->addWidget(m_editor);
     m_splitter->addWidget(bottom);
@@ -48,6 +72,8 @@ EditorPanel::EditorPanel(QWidget* parent) : QWidget(parent)
     m_splitter->setChildrenCollapsible(false);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    layout->addWidget(m_reloadBar);
     layout->addWidget(m_splitter);
 
     m_debounce = new QTimer(this);
@@ -67,7 +93,11 @@ EditorPanel::EditorPanel(QWidget* parent) : QWidget(parent)
     // underlines of the old text go before it does (thousands of live cursors slow a big replace)
     connect(m_document, &ModelDocument::aboutToReplaceText, m_editor, &CodeEditor::clearDiagnostics);
     connect(m_document, &ModelDocument::fileChangedOnDisk, this, &EditorPanel::fileChangedOnDisk);
+    connect(m_document, &ModelDocument::modificationChanged, this, [this](bool modified) {
+        if (!modified) hideReloadBar();  // saved (over the file on disk) or reloaded
+    });
     connect(m_document, &ModelDocument::filePathChanged, this, [this](const QString& path) {
+        hideReloadBar();
         // mesh paths are relative to the file: the same text may check differently
         ++m_revision;
         checkNow();
@@ -88,6 +118,13 @@ void EditorPanel::retranslate()
 {
     m_apply->setText(tr("Apply"));
     m_apply->setToolTip(tr("Use this model in the 3D view and the simulation"));
+    m_reload->setText(tr("Reload"));
+    m_reload->setToolTip(tr("Read the file again (your unsaved edits stay in Undo)"));
+    m_keep->setText(tr("Keep my text"));
+    m_keep->setToolTip(tr("Go on with the text in the editor; saving writes it over the file"));
+    if (!m_reloadPath.isEmpty())
+        m_reloadText->setText(tr("“%1” changed on disk, and the editor has unsaved changes.")
+                                  .arg(QFileInfo(m_reloadPath).fileName()));
     updateStatus();
 }
 
@@ -168,6 +205,7 @@ std::shared_ptr<const ModelBundle> EditorPanel::checkedBundle() const
 void EditorPanel::textChanged()
 {
     ++m_revision;
+    setUnapplied(m_lastGood != nullptr && !m_applyPending);  // (an apply waiting for its check takes this text)
     m_refusedErrors = -1;
     m_debounce->start();
     updateStatus();
@@ -192,6 +230,10 @@ void EditorPanel::onChecked(quint64 revision, std::shared_ptr<const ModelBundle>
     m_warnings = int(diags.warningCount());
     m_editor->setDiagnostics(m_diagnostics);
     m_problems->setDiagnostics(m_diagnostics);
+    if (m_unapplied && m_document->text() == m_appliedText) {  // back to the applied text
+        m_appliedRevision = m_revision;
+        setUnapplied(false);
+    }
     updateStatus();
     emit diagnosticsChanged(m_errors, m_warnings);
     if (std::exchange(m_applyPending, false)) apply();
@@ -203,18 +245,54 @@ void EditorPanel::apply()
 {
     if (m_checkedRevision != m_revision) {
         m_applyPending = true;  // after the check of this text
+        setUnapplied(false);    // (said again if it cannot be applied)
         checkNow();
         return;
     }
     if (!m_checked) {
+        setUnapplied(m_lastGood != nullptr);
         m_refusedErrors = m_errors;
         updateStatus();
         return;
     }
     m_refusedErrors = -1;
     m_lastGood = m_checked;
+    m_appliedText = m_document->text();
+    m_appliedRevision = m_revision;
+    setUnapplied(false);
     updateStatus();
     emit applied(m_lastGood);
+}
+
+// ---- not applied, changed on disk --------------------------------------------------------
+
+void EditorPanel::setUnapplied(bool unapplied)
+{
+    if (unapplied == m_unapplied) return;
+    m_unapplied = unapplied;
+    emit unappliedChanged(unapplied);
+}
+
+void EditorPanel::revertToApplied()
+{
+    if (!m_lastGood || m_document->text() == m_appliedText) return;
+    m_document->setText(m_appliedText);
+    checkNow();
+}
+
+void EditorPanel::offerReload(const QString& path)
+{
+    m_reloadPath = path;
+    retranslate();
+    m_reloadBar->show();
+}
+
+bool EditorPanel::isOfferingReload() const { return !m_reloadBar->isHidden(); }
+
+void EditorPanel::hideReloadBar()
+{
+    m_reloadPath.clear();
+    m_reloadBar->hide();
 }
 
 // ---- status -------------------------------------------------------------------------------

@@ -12,6 +12,16 @@
 // explains instead; nothing is emitted and lastGood() stays the last applied
 // model. Applying text not yet checked waits for its check.
 //
+// Not applied: after an apply, any text other than the applied one (an edit, a file
+// opened or made with New that is not applied yet) makes hasUnappliedChanges() true
+// and emits unappliedChanged(true); applying, or the text coming back to the applied
+// one (undo, revertToApplied()), makes it false. The main window says so over the 3D
+// view, the tree and the plots, which show the applied model.
+//
+// Changed on disk: when the file changed on disk while the text has unsaved edits,
+// offerReload() shows a bar over the editor ("… changed on disk", Reload, Keep my
+// text) instead of replacing the edits; Reload emits reloadRequested().
+//
 // Documents: newModel/open/save/saveAs/reload and the modified flag are the
 // ModelDocument's (see there: QSaveFile, the file watcher, recovery copies); the
 // main window asks before closing a modified model (isModified()).
@@ -96,6 +106,20 @@ public:
     /// "2 errors, 1 warning", "1 warning", "No problems" in the current language.
     static QString problemCounts(int errors, int warnings);
 
+    // ---- not applied, changed on disk ------------------------------------------------
+    /// A model was applied and the text is another one (see above).
+    bool hasUnappliedChanges() const { return m_unapplied; }
+    /// The text of the model last applied ("" before the first apply).
+    QString appliedText() const { return m_appliedText; }
+    /// Back to the applied text, as one undoable edit.
+    void revertToApplied();
+    /// The bar over the editor that offers to reload `path`, changed on disk (the
+    /// unsaved edits stay until Reload is pressed); hidden by Reload, Keep my text,
+    /// another file or a save.
+    void offerReload(const QString& path);
+    /// The bar above is shown.
+    bool isOfferingReload() const;
+
 public slots:
     /// Emits applied() for the current text if it has no errors (after its check
     /// if it is not checked yet); otherwise says why and emits nothing.
@@ -114,6 +138,10 @@ signals:
     void filePathChanged(const QString& path);
     /// Another program changed or deleted the open file: offer reload().
     void fileChangedOnDisk(const QString& path, bool deleted);
+    /// hasUnappliedChanges() changed.
+    void unappliedChanged(bool unapplied);
+    /// Reload was pressed on the bar of offerReload().
+    void reloadRequested();
 
 protected:
     /// A language change: the button and the status line again.
@@ -125,6 +153,8 @@ private:
     void onChecked(quint64 revision, std::shared_ptr<const ModelBundle> bundle, const solver::Diagnostics& diags);
     void updateStatus();
     void setStatus(const QString& text, const QColor& color);
+    void setUnapplied(bool unapplied);
+    void hideReloadBar();
 
     CodeEditor* m_editor = nullptr;
     ProblemsView* m_problems = nullptr;
@@ -134,6 +164,11 @@ private:
     QLabel* m_status = nullptr;
     QSplitter* m_splitter = nullptr;
     QTimer* m_debounce = nullptr;
+    QWidget* m_reloadBar = nullptr;
+    QLabel* m_reloadText = nullptr;
+    QPushButton* m_reload = nullptr;
+    QPushButton* m_keep = nullptr;
+    QString m_reloadPath;  // the file the bar is about
 
     quint64 m_revision = 1;         // counts text changes
     quint64 m_checkedRevision = 0;  // the revision of the last result shown
@@ -143,6 +178,9 @@ private:
     std::vector<solver::Diagnostic> m_diagnostics;
     std::shared_ptr<const ModelBundle> m_checked;
     std::shared_ptr<const ModelBundle> m_lastGood;
+    QString m_appliedText;
+    quint64 m_appliedRevision = 0;  // the revision applied last (or found equal to its text)
+    bool m_unapplied = false;
     int m_refusedErrors = -1;  // the last apply() did nothing: the errors it found (0: not compiled), −1: not refused
 };
 

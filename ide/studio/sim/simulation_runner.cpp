@@ -70,6 +70,8 @@ struct SimulationRunner::Shared {
     std::shared_ptr<const ModelBundle> pendingBundle;
     double pendingStep = kDefaultTimeStep;
     long pendingGeneration = 0;
+    bool posePending = false;  // setPositions(): a pose for the solver to take
+    Eigen::VectorXd pose;
 
     // commands: the newest input snapshot
     std::mutex commandMutex;
@@ -121,6 +123,8 @@ public:
         std::unique_lock lock(m_shared.control);
         while (!m_shared.stop) {
             if (m_shared.pending) adopt();
+            const bool setPose = std::exchange(m_shared.posePending, false);
+            if (setPose) m_pose.swap(m_shared.pose);
             const bool wantRun = m_shared.running && m_sim && !m_failed;
             const int steps = std::exchange(m_shared.stepRequests, 0);
             const double speed = m_shared.speed;
@@ -129,6 +133,7 @@ public:
             m_retired.reset();  // a replaced simulation is freed outside the lock
 
             Clock::time_point wakeAt = Clock::time_point::max();
+            if (setPose && m_sim && !m_failed) applyPose();
             if (m_sim && !m_failed) {
                 if (wantRun) {
                     if (!m_running) beginRun(speed);
@@ -177,6 +182,8 @@ private:
     long m_generation = 0;
     double m_h = kDefaultTimeStep;
     long m_step = 0;
+    long m_poseEdits = 0;
+    Eigen::VectorXd m_pose;  // the pose setPositions() sent
     bool m_failed = false;
     bool m_running = false;
     bool m_pullCommands = true;
@@ -225,6 +232,7 @@ private:
         m_generation = m_shared.pendingGeneration;
         m_shared.pending = false;
         m_step = 0;
+        m_poseEdits = 0;
         m_failed = false;
         m_running = false;
         m_pullCommands = true;
@@ -245,6 +253,17 @@ private:
         m_lastStepEnd = -1;
         m_rates.clear();
         m_lastStats = -1e9;
+    }
+
+    /// The pose setPositions() sent becomes the state (at rest; the loops close around
+    /// it), published at once.
+    void applyPose()
+    {
+        const int nb = m_sim->model().nb;
+        if (m_pose.size() < nb) return;
+        for (int j = 0; j < nb; ++j) m_sim->setInitial(j, m_pose[j], 0.0);
+        ++m_poseEdits;
+        publish();
     }
 
     /// From paused to running: simulated time starts following the wall clock from here.
@@ -381,6 +400,7 @@ private:
     {
         auto snap = captureSnapshot(*m_sim, m_bundle);
         snap->step = m_step;
+        snap->poseEdits = m_poseEdits;
         snap->timeStep = m_h;
         if (!m_events.empty()) {
             auto log = std::make_shared<std::vector<solver::SimulationEvent>>();
@@ -526,6 +546,7 @@ bool SimulationRunner::install(bool keepCommands)
         m_shared->running = false;
         m_shared->failed = false;
         m_shared->stepRequests = 0;
+        m_shared->posePending = false;  // a pose of the simulation replaced
         m_shared->pending = true;
         m_shared->pendingSimulation = std::move(sim);
         m_shared->pendingBundle = snap ? m_bundle : nullptr;
@@ -584,6 +605,20 @@ void SimulationRunner::stepOnce()
         m_shared->bump();
     }
     m_shared->wake.notify_all();
+}
+
+bool SimulationRunner::setPositions(const Eigen::VectorXd& theta)
+{
+    if (!m_bundle || theta.size() < m_bundle->model->nb) return false;
+    {
+        std::lock_guard lock(m_shared->control);
+        if (!m_shared->hasSimulation || m_shared->failed || m_shared->running) return false;
+        m_shared->pose = theta;
+        m_shared->posePending = true;
+        m_shared->bump();
+    }
+    m_shared->wake.notify_all();
+    return true;
 }
 
 void SimulationRunner::reset()

@@ -121,6 +121,16 @@ public:
     void pause();
     /// While paused: one more step (queued: several calls give as many steps).
     void stepOnce();
+    /// While paused: the state's coordinates become `theta` (θ per tree joint, dim nb or
+    /// nq — a free joint's base orientation is kept), at rest (θ̇ = 0), as the joint
+    /// sliders set them (a pose whose loops close: JointSliders makes it; the loops are
+    /// closed again around it). Sent like the commands: the solver thread takes it
+    /// before its next step (Simulation::setInitial) and publishes a snapshot with
+    /// poseEdits one higher; time and commands are kept, and run() continues from there.
+    /// Returns false, sending nothing, while running, without a model, after a failure
+    /// or when `theta` is too short; a new model or reset() drops a pose not yet taken.
+    bool setPositions(const Eigen::VectorXd& theta);
+
     /// Back to the model's initial state (a new Simulation), paused; keeps the commands
     /// and the speed. Emits restarted(), and stateChanged(false) when it was running.
     void reset();

@@ -58,6 +58,7 @@ struct Snapshot {
     std::shared_ptr<const ModelBundle> bundle;  ///< the model these values belong to
     double t = 0;                               ///< simulated time [s]
     long step = 0;                              ///< steps taken since the last reset (t = step · timeStep)
+    long poseEdits = 0;                         ///< poses set by hand since the last reset (SimulationRunner::setPositions)
     double timeStep = 0;                        ///< the fixed step [s]
     std::vector<Eigen::Isometry3d> bodyPoses;   ///< X_wb per body, by tree index
     Eigen::VectorXd theta;                      ///< θ per tree joint (the state)

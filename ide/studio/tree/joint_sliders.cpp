@@ -327,7 +327,7 @@ bool JointSliders::moveRow(int k, double q)
     }
     m_status->setVisible(!ok);
     showValues();
-    publish();
+    publish(true);
     return ok;
 }
 
@@ -340,7 +340,35 @@ void JointSliders::reset()
     setStatus({});
     m_status->hide();
     showValues();
-    publish();
+    publish(true);
+}
+
+void JointSliders::showState(const Eigen::VectorXd& theta)
+{
+    if (!m_sim) return;
+    const int nb = m_sim->model().nb;
+    if (theta.size() < nb || theta.head(nb) == m_sim->state().q.head(nb)) return;
+    placeAt(theta);
+    setStatus({});
+    m_status->hide();
+    showValues();
+}
+
+void JointSliders::placeAt(const Eigen::VectorXd& theta)
+{
+    const int nb = m_sim->model().nb;
+    if (m_setCalls + nb > kRebuildAfter) rebuildSimulation(nullptr);
+    for (int j = 0; j < nb; ++j) m_sim->setInitial(j, theta[j], 0);
+    m_setCalls += nb;
+    // with loops, a step of no time ends the set-up: the joints set are no longer held,
+    // so the next move turns only its own joint and the loops follow (not with free
+    // joints: the step would fold their turns into an orientation the solver thread's
+    // simulation does not share)
+    const solver::Model& m = m_sim->model();
+    if (m.cuts.empty() || !m.freeJoints.empty()) return;
+    std::vector<solver::SimulationEvent> events;
+    std::string error;
+    m_sim->advanceTo(m_sim->state().t, events, error);
 }
 
 void JointSliders::showValues()
@@ -356,10 +384,11 @@ void JointSliders::showValues()
     }
 }
 
-void JointSliders::publish()
+void JointSliders::publish(bool edited)
 {
     emit posesChanged(m_sim->data().X_wb);
     emit coordinatesChanged(coordinates());
+    if (edited) emit poseEdited(m_sim->state().q.head(m_sim->model().nb));
 }
 
 int JointSliders::sliderJoint(int k) const { return m_rows.at(static_cast<std::size_t>(k)).joint; }

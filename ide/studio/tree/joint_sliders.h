@@ -12,6 +12,13 @@
 // line says so. Only meant while the simulation is paused (the main window disables
 // the widget while it runs). Every pose is published with posesChanged (X_wb per body,
 // tree index) and coordinatesChanged (the modeler's coordinate of every tree joint).
+//
+// The sliders are the simulation's state, as MuJoCo's simulate's are: the main window
+// gives them every state the solver thread publishes (showState: paused, each one;
+// running, ten a second), and a move by the modeler (a slider, a spin box, Reset pose)
+// emits poseEdited with the whole closed pose, which the main window sends to the
+// solver thread (SimulationRunner::setPositions); the 3D view then shows the
+// simulation's snapshot of it, and Run continues from it.
 
 #include "ide/studio/model/model_bundle.h"
 
@@ -47,8 +54,14 @@ public:
     void setBundle(std::shared_ptr<const ModelBundle> bundle);
     std::shared_ptr<const ModelBundle> bundle() const { return m_bundle; }
 
-    /// Back to the model's initial state; emits posesChanged and coordinatesChanged.
+    /// Back to the model's initial state; emits posesChanged, coordinatesChanged and
+    /// poseEdited.
     void reset();
+
+    /// Shows the state θ of the simulation (per tree joint; dim nb or nq, a free joint's
+    /// base orientation aside): the sliders and spin boxes move there, and the next move
+    /// starts from it. Emits nothing (the pose is the simulation's already).
+    void showState(const Eigen::VectorXd& theta);
 
     /// Moves slider `k`'s joint to coordinate `q` (SI: rad, or m for T 1 / T 2) as a
     /// drag would, emitting the signals. Returns false when the loops could not close
@@ -77,6 +90,9 @@ signals:
     void posesChanged(const std::vector<Eigen::Isometry3d>& X_wb);
     /// The modeler's coordinate of every tree joint (rad or m; T 1: the length).
     void coordinatesChanged(const Eigen::VectorXd& q);
+    /// The modeler moved the pose (a slider, a spin box, Reset pose): θ of every tree
+    /// joint (dim nb), a pose whose loops close, for the simulation to take.
+    void poseEdited(const Eigen::VectorXd& theta);
 
 protected:
     /// A language change: every label, tooltip, unit and the status line again.
@@ -104,7 +120,10 @@ private:
     bool closed(int joint, double theta) const;
     bool moveRow(int k, double q);
     void showValues();
-    void publish();
+    /// Emits posesChanged and coordinatesChanged; with `edited` also poseEdited.
+    void publish(bool edited);
+    /// The private simulation at θ (every tree joint set; the loops close around it).
+    void placeAt(const Eigen::VectorXd& theta);
     double displayValue(const Row& row, double q) const;
 
     std::shared_ptr<const ModelBundle> m_bundle;
