@@ -314,9 +314,9 @@ void StationPage::fillCombo()
         current = 0;
     }
     for (const trainer::StoredProfile& s : m_doc.stored()) {
-        QString text = s.name;
-        if (!s.readable) text = tr("%1 (unreadable)").arg(s.name);
-        else if (s.shipped) text = tr("%1 (shipped)").arg(s.name);
+        QString text = s.label;
+        if (!s.readable) text = tr("%1 (unreadable)").arg(s.label);
+        else if (s.shipped) text = tr("%1 (shipped)").arg(s.label);
         const bool isCurrent = !unsaved && s.readable && s.name == m_doc.storedName();
         if (isCurrent) text += star;
         const int i = m_profiles->count();
@@ -347,7 +347,7 @@ void StationPage::showCurrent(bool wasDirty)
 {
     const trainer::StationProfile& profile = m_doc.profile();
     m_mappings->setProfile(profile);
-    m_description->setText(profile.description);
+    m_description->setText(profile.localized(profile.description));
     m_description->setVisible(!profile.description.isEmpty());
     fillCombo();
     if (wasDirty != m_doc.isDirty()) emit dirtyChanged(m_doc.isDirty());
@@ -624,8 +624,9 @@ void StationPage::showDevices(const trainer::StationState& state)
             item->setData(NameColumn, kReplayRole, d.replay);
             const QString kind = d.replay ? tr("%1 (replay)").arg(trainer::kindName(d.info.kind))
                                           : trainer::kindName(d.info.kind);
-            item->setText(NameColumn, d.info.name + QLatin1Char('\n') + tr("%1 · %2").arg(kind, d.info.id));
-            item->setToolTip(NameColumn, tr("%1\nKind: %2\nId: %3").arg(d.info.name, kind, d.info.id));
+            const QString name = trainer::displayName(d.info);
+            item->setText(NameColumn, name + QLatin1Char('\n') + tr("%1 · %2").arg(kind, d.info.id));
+            item->setToolTip(NameColumn, tr("%1\nKind: %2\nId: %3").arg(name, kind, d.info.id));
             item->setTextAlignment(SamplesColumn, Qt::AlignRight | Qt::AlignVCenter);
             item->setTextAlignment(DroppedColumn, Qt::AlignRight | Qt::AlignVCenter);
         }
@@ -657,7 +658,7 @@ void StationPage::showDevices(const trainer::StationState& state)
     const trainer::DeviceState* selected = findDevice(state, m_selectedId, m_selectedReplay);
     QString detail;
     if (selected && (selected->status != trainer::DeviceStatus::Connected || !selected->statusText.isEmpty()))
-        detail = tr("%1 — %2").arg(selected->info.name, selected->statusText.isEmpty()
+        detail = tr("%1 — %2").arg(trainer::displayName(selected->info), selected->statusText.isEmpty()
                                                             ? statusName(selected->status)
                                                             : statusName(selected->status) + QStringLiteral(": ") +
                                                                   selected->statusText);
@@ -760,6 +761,8 @@ void StationPage::retranslate()
     // the spin boxes (gain…) read and show numbers in the new locale
     setLocale(QLocale());
     m_texts.apply();
+    m_doc.relist();  // the profiles' names in the new language
+    m_description->setText(m_doc.profile().localized(m_doc.profile().description));
     fillCombo();
     updateButtons();
     // the lists shown from the state are made again: kinds, statuses, issues

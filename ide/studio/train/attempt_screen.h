@@ -70,6 +70,12 @@ protected:
 
 private:
     void updateHud(const TrainFrame& f);
+    /// The HUD in the top left corner, or the bottom left one while the current goal's
+    /// target would be behind it there (the hints then go to the top).
+    void placeHud(const TrainFrame& f);
+    /// The HUD's and the hints' type in proportion to the view's height (a 720-line
+    /// screen reads them smaller than a 1080-line one).
+    void scaleHud();
     /// A scene's attempt: turns the seat towards the first goal when it is out of view.
     void aimSeatAtFirstGoal(const trainer::Tutorial& t);
 
@@ -88,6 +94,8 @@ private:
     QLabel* m_hintLabel = nullptr;
     QLabel* m_warningLabel = nullptr;
     QLabel* m_centre = nullptr;
+    bool m_hudLow = false;  ///< the HUD in the bottom left corner (placeHud)
+    int m_hudFontPx = 0;
     QString m_hudText, m_hintText, m_warningText;  ///< as shown (set again only when they change)
 };
 
