@@ -95,11 +95,6 @@ class TrainLayoutTest : public QObject {
     {
         m_window->setGeometry(QRect(QPoint(0, 0), size));
         settle(300);
-        if (qEnvironmentVariableIsSet("LAYOUT_DEBUG")) {
-            for (QWidget* w : m_window->findChildren<QWidget*>())
-                if (w->minimumSizeHint().width() > 400 || w->minimumWidth() > 400 || w->minimumSizeHint().height() > 300)
-                    qDebug() << w->metaObject()->className() << w->objectName() << w->minimumSizeHint() << w->minimumSize() << w->isVisible();
-        }
         QVERIFY2(m_window->width() <= size.width() && m_window->height() <= size.height(),
                  qPrintable(QStringLiteral("the window needs %1×%2 for %3×%4")
                                 .arg(m_window->width())

@@ -74,14 +74,16 @@ MappingTable::MappingTable(QWidget* parent) : QWidget(parent)
     QHeaderView* h = m_table->horizontalHeader();
     h->setSectionResizeMode(QHeaderView::Interactive);
     h->setSectionResizeMode(DriveColumn, QHeaderView::Stretch);
-    m_table->setColumnWidth(BankColumn, 110);
-    m_table->setColumnWidth(DeviceColumn, 120);
-    m_table->setColumnWidth(AxisColumn, 110);
-    m_table->setColumnWidth(GainColumn, 80);
-    m_table->setColumnWidth(SignColumn, 60);
-    m_table->setColumnWidth(LiveColumn, 170);
+    // (narrow enough for the page at 1280×720 with the Live column in view)
+    const int widths[] = {95, 105, 90, 75, 55, 150};
+    const int columns[] = {BankColumn, DeviceColumn, AxisColumn, GainColumn, SignColumn, LiveColumn};
+    int fixed = 0;
+    for (int i = 0; i < 6; ++i) {
+        m_table->setColumnWidth(columns[i], widths[i]);
+        fixed += widths[i];
+    }
     // room for a drive's name beside the fixed columns
-    m_table->setMinimumWidth(110 + 120 + 110 + 80 + 60 + 170 + 130);
+    m_table->setMinimumWidth(fixed + 100);
     m_table->verticalHeader()->setDefaultSectionSize(m_table->verticalHeader()->defaultSectionSize() + 4);
     layout->addWidget(m_table, 3);
 

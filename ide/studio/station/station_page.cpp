@@ -245,9 +245,16 @@ QWidget* StationPage::buildDevices(QWidget* parent)
         if (isReplaying()) stopReplay();
         else startReplay();
     });
-    for (QPushButton* b : {m_addSerial, m_removeDevice, m_record, m_replay}) buttons->addWidget(b);
+    // two rows of two: one row of four is wider than the devices' side at 1280×720 in Spanish
+    auto* moreButtons = new QHBoxLayout;
+    buttons->addWidget(m_addSerial);
+    buttons->addWidget(m_removeDevice);
     buttons->addStretch(1);
+    moreButtons->addWidget(m_record);
+    moreButtons->addWidget(m_replay);
+    moreButtons->addStretch(1);
     dl->addLayout(buttons);
+    dl->addLayout(moreButtons);
     m_activity = new QLabel(devices);
     m_activity->setWordWrap(true);
     m_activity->hide();
