@@ -228,6 +228,7 @@ private slots:
     void recordAndReplay();
     void runningStationFollowsTheLever();
     void languageSwitchesAtRunTime();
+    void shippedProfileAndKeyboardReadInSpanish();
     void screenshots();
     void cleanupTestCase();
 };
@@ -1127,6 +1128,63 @@ void StationTest::runningStationFollowsTheLever()
     station.call([pad](trainer::StationEngine&) { pad->setAxis(1, 0); });
     QTRY_COMPARE(page.shownState()->commands[1], 0.0);
     station.stop();
+}
+
+// the shipped profiles carry their texts in Spanish ("translations"): the name in the
+// list, the description, the banks in the table and the banner; the keyboard is
+// "Teclado" after a switch at run time; a button spin box's "ninguno" is shown whole
+// (it was cut to "guno"), in the banks table and as the next-bank button
+void StationTest::shippedProfileAndKeyboardReadInSpanish()
+{
+    Rig rig(false);
+    const QString shipped = rig.dir.filePath("models/liner_manipulator.station/gamepad.json");
+    QVERIFY(writeFile(shipped, readAll(QStringLiteral(PADROB_SOURCE_DIR) + "/models/liner_manipulator.station/gamepad.json")));
+    rig.station.post([](trainer::StationEngine& e) { e.addDevice(std::make_shared<trainer::KeyboardDevice>(QStringList{"Q / A"})); });
+    rig.page->setModel(rig.modelPath, linerDrives());
+    QVERIFY(rig.page->loadProfile("Gamepad"));
+    rig.page->resize(1280, 720);
+    rig.page->show();
+    QVERIFY(QTest::qWaitForWindowExposed(rig.page.get()));
+    rig.step();
+    QCOMPARE(rig.page->profileCombo()->currentText(), QStringLiteral("Gamepad (shipped)"));
+    QVERIFY(rig.page->descriptionLabel()->text().startsWith("A common two-stick gamepad"));
+    QVERIFY2(rig.page->bankLabel()->text().contains("Boom"), qPrintable(rig.page->bankLabel()->text()));
+
+    QVERIFY(i18n::install("es"));
+    studio::test::settle(100);
+    rig.step();
+    QCOMPARE(rig.page->profileCombo()->currentText(), QStringLiteral("Mando (incluido)"));
+    QCOMPARE(rig.page->profile().name, QStringLiteral("Gamepad"));  // (its identity)
+    QVERIFY2(rig.page->descriptionLabel()->text().startsWith("Un mando común de dos palancas"),
+             qPrintable(rig.page->descriptionLabel()->text()));
+    QVERIFY2(rig.page->bankLabel()->text().contains("Pluma"), qPrintable(rig.page->bankLabel()->text()));
+    MappingTable* table = rig.page->mappingTable();
+    QCOMPARE(table->banksTable()->item(0, MappingTable::BankNameColumn)->text(), QStringLiteral("Pluma"));
+    QCOMPARE(table->banksTable()->item(1, MappingTable::BankNameColumn)->text(), QStringLiteral("Muñeca"));
+    QTreeWidgetItem* keyboard = deviceRow(rig.page->devicesList(), "keyboard");
+    QVERIFY(keyboard);
+    QVERIFY2(keyboard->text(StationPage::NameColumn).startsWith("Teclado"), qPrintable(keyboard->text(StationPage::NameColumn)));
+    // "ninguno" whole
+    const int bank = table->addBank("Extra");
+    studio::test::settle(100);
+    QSpinBox* select = table->selectButtonSpin(bank);
+    QCOMPARE(select->text(), QStringLiteral("ninguno"));
+    QVERIFY2(table->banksTable()->columnWidth(MappingTable::SelectButtonColumn) >= select->sizeHint().width() &&
+                 select->width() >= select->sizeHint().width(),
+             qPrintable(QStringLiteral("%1 px for %2").arg(select->width()).arg(select->sizeHint().width())));
+    QSpinBox* next = table->nextBankButtonSpin();
+    next->setValue(-1);
+    QCOMPARE(next->text(), QStringLiteral("ninguno"));
+    QVERIFY2(next->width() >= next->sizeHint().width(),
+             qPrintable(QStringLiteral("%1 px for %2").arg(next->width()).arg(next->sizeHint().width())));
+    QVERIFY(rig.page->grab().save(studio::test::screenshotPath("station_shipped_profile_es.png")));
+
+    QVERIFY(i18n::install("en"));
+    studio::test::settle(100);
+    rig.step();
+    QCOMPARE(rig.page->profileCombo()->currentText().left(17), QStringLiteral("Gamepad (shipped)"));
+    QVERIFY(rig.page->bankLabel()->text().contains("Boom"));
+    QVERIFY(deviceRow(rig.page->devicesList(), "keyboard")->text(StationPage::NameColumn).startsWith("Keyboard"));
 }
 
 // ---- screenshots ------------------------------------------------------------------

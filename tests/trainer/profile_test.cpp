@@ -35,6 +35,7 @@ StationProfile sample()
     p.banks.append({"Pluma", {{"gamepad", 9}}, {{"gamepad", 0, 1, 0.5, -1}}});
     p.banks.append({"Muñeca", {{"gamepad", 10}}, {{"gamepad", 1, 4, 1.0, 1}}});
     p.nextBank = {"gamepad", 4};
+    p.translations["en"] = {{"Consola", "Console"}, {"Pluma", "Boom"}};
     return p;
 }
 
@@ -59,6 +60,25 @@ TEST(Profile, JsonRoundTrip)
     ASSERT_TRUE(StationProfile::fromJson(p.toJson(), back, issues));
     EXPECT_TRUE(issues.isEmpty());
     EXPECT_EQ(back, p);
+}
+
+// the texts a person reads, per language, keyed by the text as written; the name stays
+TEST(Profile, TranslationsGiveTheTextsInALanguageAndOthersStayAsWritten)
+{
+    const StationProfile p = sample();
+    EXPECT_EQ(p.localized("Consola", "en"), "Console");
+    EXPECT_EQ(p.localized("Pluma", "en"), "Boom");
+    EXPECT_EQ(p.localized("Muñeca", "en"), "Muñeca");  // no entry: as written
+    EXPECT_EQ(p.localized("Pluma", "es"), "Pluma");
+    EXPECT_EQ(p.localized("Pluma", "fr"), "Pluma");
+    StationProfile back;
+    QList<ProfileIssue> issues;
+    const QByteArray bad = QByteArray(p.toJson()).replace("\"Boom\"", "7");
+    EXPECT_FALSE(StationProfile::fromJson(bad, back, issues));
+    ASSERT_EQ(issues.size(), 1);
+    EXPECT_EQ(issues.first().where, "translations.en");
+    issues.clear();
+    EXPECT_FALSE(StationProfile::fromJson(QByteArray(p.toJson()).replace("\"Console\"", "[]"), back, issues));
 }
 
 TEST(Profile, CorruptJsonSaysLineAndColumn)
@@ -327,4 +347,18 @@ TEST(ShippedProfiles, LinerManipulatorGamepadAndConsoleLoadAndMapEveryDrive)
     StationProfile pad;
     ASSERT_TRUE(store.load(modelPath, "Gamepad", pad, issues));
     EXPECT_EQ(pad.banks.size(), 2);
+    // every text a person reads in Spanish too (issue 25, item 12), in both machines' files
+    for (const QString& machine : {QStringLiteral("liner_manipulator"), QStringLiteral("liner_manipulator_fluid")}) {
+        const QString path = PADROB_SOURCE_DIR "/models/" + machine + ".pad";
+        for (const QString& name : names) {
+            StationProfile p;
+            ASSERT_TRUE(store.load(path, name, p, issues)) << machine.toStdString();
+            QStringList texts{p.name, p.description};
+            for (const Bank& b : p.banks) texts << b.name;
+            for (const QString& text : texts)
+                EXPECT_NE(p.localized(text, "es"), text) << machine.toStdString() << ": " << text.toStdString();
+        }
+    }
+    EXPECT_EQ(pad.localized("Gamepad", "es"), "Mando");
+    EXPECT_EQ(pad.localized("Wrist", "es"), "Muñeca");
 }

@@ -17,6 +17,13 @@ QString kindName(DeviceKind kind)
     return {};
 }
 
+QString displayName(const DeviceInfo& info)
+{
+    // (KeyboardDevice names itself in the language of its start)
+    if (info.kind == DeviceKind::Keyboard) return QCoreApplication::translate("trainer::KeyboardDevice", "Keyboard");
+    return info.name;
+}
+
 QString kindKey(DeviceKind kind)
 {
     switch (kind) {

@@ -95,6 +95,9 @@ public:
 };
 
 QString kindName(DeviceKind kind);  ///< translated, e.g. "Gamepad"
+/// The device's name as the GUI shows it: the keyboard's (which Padrob names) in the
+/// language of now, every other device's as it names itself.
+QString displayName(const DeviceInfo& info);
 /// The kind as profiles name it: "gamepad", "joystick", "serial", "comedi", "keyboard", "replay".
 QString kindKey(DeviceKind kind);
 

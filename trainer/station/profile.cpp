@@ -6,6 +6,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonParseError>
+#include <QLocale>
 #include <QSet>
 
 #include <algorithm>
@@ -139,6 +140,12 @@ const ChannelCalibration* StationProfile::calibration(const QString& device, int
     return nullptr;
 }
 
+QString StationProfile::localized(const QString& text, const QString& language) const
+{
+    const QString lang = language.isEmpty() ? QLocale::languageToCode(QLocale().language()) : language;
+    return translations.value(lang).value(text, text);
+}
+
 void StationProfile::setCalibration(const QString& device, int axis, const ChannelCalibration& c)
 {
     for (CalibrationEntry& e : calibrations) {
@@ -181,6 +188,15 @@ QByteArray StationProfile::toJson() const
     }
     root["banks"] = bankArray;
     if (nextBank.isSet()) root["nextBank"] = buttonJson(nextBank);
+    if (!translations.isEmpty()) {
+        QJsonObject languages;
+        for (auto lang = translations.begin(); lang != translations.end(); ++lang) {
+            QJsonObject texts;
+            for (auto t = lang->begin(); t != lang->end(); ++t) texts[t.key()] = t.value();
+            languages[lang.key()] = texts;
+        }
+        root["translations"] = languages;
+    }
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 
@@ -272,6 +288,20 @@ bool StationProfile::fromJson(const QByteArray& json, StationProfile& out, QList
         p.banks.append(b);
     }
     if (root.contains("nextBank") && !r.button(root.value("nextBank"), "nextBank", p.nextBank)) return false;
+    if (root.contains("translations")) {
+        QJsonObject languages;
+        if (!r.object(root.value("translations"), "translations", languages)) return false;
+        for (auto lang = languages.begin(); lang != languages.end(); ++lang) {
+            const QString where = "translations." + lang.key();
+            QJsonObject texts;
+            if (!r.object(lang.value(), where, texts)) return false;
+            for (auto t = texts.begin(); t != texts.end(); ++t) {
+                if (!t.value().isString())
+                    return r.fail(where, Tr::tr("“%1” must be translated by a text").arg(t.key()));
+                p.translations[lang.key()][t.key()] = t.value().toString();
+            }
+        }
+    }
     out = p;
     return true;
 }

@@ -14,7 +14,14 @@
 //     "banks": [ { "name": "Boom", "select": [ { "device": "gamepad", "button": 9 } ],
 //                  "mappings": [ { "device": "gamepad", "axis": 1, "drive": 2,
 //                                  "gain": 1.0, "sign": -1 } ] } ],
-//     "nextBank": { "device": "gamepad", "button": 4 } }
+//     "nextBank": { "device": "gamepad", "button": 4 },
+//     "translations": { "es": { "Gamepad": "Mando", "Boom": "Pluma", "…": "…" } } }
+//
+// "translations" (optional) gives, per language code, the texts a person reads (the
+// name, the description, the bank names) in that language, keyed by the text as it is
+// written in the profile: the GUI shows localized(text), and a text with no entry
+// (a bank renamed in a copy, a description edited) is shown as written. The name
+// stays the profile's identity (files, settings, tutorials name profiles by it).
 //
 // A device is named by its id ("sdl:<GUID>", "serial:/dev/ttyACM0", "keyboard", …) or
 // by a kind, which matches the first connected device of that kind: "gamepad",
@@ -26,6 +33,7 @@
 #include <QByteArray>
 #include <QJsonObject>
 #include <QList>
+#include <QMap>
 #include <QString>
 #include <QStringList>
 
@@ -107,9 +115,15 @@ struct StationProfile {
     QList<Mapping> always;
     QList<Bank> banks;    ///< at least one when there is anything to map
     ButtonRef nextBank;
+    /// language code ("es") → text as written → the text in that language
+    QMap<QString, QMap<QString, QString>> translations;
     /// The file it was read from ("" when made in code): named in check()'s issues.
     /// Not saved, and not compared by ==.
     QString source;
+
+    /// `text` (the name, the description or a bank's name as written) in `language`
+    /// ("" = the language of the default QLocale, i.e. the GUI's), else as written.
+    QString localized(const QString& text, const QString& language = {}) const;
 
     /// The calibration of (device, axis) if the profile has one, else nullptr.
     const ChannelCalibration* calibration(const QString& device, int axis) const;
@@ -135,7 +149,8 @@ struct StationProfile {
     bool operator==(const StationProfile& o) const
     {
         return name == o.name && model == o.model && description == o.description && devices == o.devices &&
-               calibrations == o.calibrations && always == o.always && banks == o.banks && nextBank == o.nextBank;
+               calibrations == o.calibrations && always == o.always && banks == o.banks && nextBank == o.nextBank &&
+               translations == o.translations;
     }
 };
 

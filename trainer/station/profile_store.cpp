@@ -101,8 +101,9 @@ QList<StoredProfile> ProfileStore::list(const QString& modelPath) const
             QList<ProfileIssue> issues;
             if (readProfile(s.path, p, issues)) {
                 s.name = p.name;
+                s.label = p.localized(p.name);
             } else {
-                s.name = fi.completeBaseName();
+                s.name = s.label = fi.completeBaseName();
                 s.readable = false;
                 s.problem = issues.isEmpty() ? QString() : issues.first().text();
             }

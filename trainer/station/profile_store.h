@@ -24,6 +24,7 @@ namespace trainer {
 
 struct StoredProfile {
     QString name;
+    QString label;  ///< the name as a person reads it (StationProfile::localized; read at list())
     QString path;
     bool shipped = false;  ///< read-only, next to the model
     bool readable = true;  ///< false: corrupt or from a newer version (`problem` says why)

@@ -361,7 +361,7 @@ StationState StationEngine::state() const
     st.time = m_now;
     st.profileName = m_profile.name;
     st.activeBank = m_activeBank;
-    for (const Bank& b : m_profile.banks) st.bankNames.append(b.name);
+    for (const Bank& b : m_profile.banks) st.bankNames.append(m_profile.localized(b.name));  // in the GUI's language
     st.commands = m_commands;
     st.drives = m_drives;
     st.profileIssues = m_issues;

@@ -38,9 +38,12 @@
 #include <QMessageBox>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTextBrowser>
 #include <QToolBar>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace studio {
 
@@ -232,6 +235,12 @@ void MainWindow::retranslate()
     m_editorDock->setWindowTitle(tr("Editor"));
     m_plotsDock->setWindowTitle(tr("Plots"));
     m_hydraulicsDock->setWindowTitle(tr("Hydraulics"));
+    // the left docks (tabbed) never narrower than their tabs' titles: on a 1280-pixel
+    // screen they were squeezed until the tabs read "M…" and "Articulaci…"
+    QTabBar tabs;
+    tabs.addTab(m_treeDock->windowTitle());
+    tabs.addTab(m_sliderDock->windowTitle());
+    for (QDockWidget* d : {m_treeDock, m_sliderDock}) d->setMinimumWidth(std::max(240, tabs.sizeHint().width() + 8));
 
     // the menus
     MenuItems& m = *m_items;

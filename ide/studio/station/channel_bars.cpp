@@ -258,9 +258,9 @@ void ChannelPanel::rebuild(const trainer::DeviceState* device)
     const bool keys = device->info.kind == trainer::DeviceKind::Keyboard;
     m_keyboardNote->setVisible(keys);
     if (device->info.axes.isEmpty()) {
-        m_title->setText(tr("%1: no channels (yet)").arg(device->info.name));
+        m_title->setText(tr("%1: no channels (yet)").arg(trainer::displayName(device->info)));
     } else {
-        m_title->setText(tr("%1: %n channel(s)", nullptr, int(device->info.axes.size())).arg(device->info.name));
+        m_title->setText(tr("%1: %n channel(s)", nullptr, int(device->info.axes.size())).arg(trainer::displayName(device->info)));
         const QStringList headers{tr("Channel"), tr("Raw reading"), QString(), tr("Calibrated"), QString(), QString(),
                                   keys ? tr("Ramp") : QString()};
         for (int c = 0; c < headers.size(); ++c) {

@@ -76,14 +76,16 @@ MappingTable::MappingTable(QWidget* parent) : QWidget(parent)
     QHeaderView* h = m_table->horizontalHeader();
     h->setSectionResizeMode(QHeaderView::Interactive);
     h->setSectionResizeMode(DriveColumn, QHeaderView::Stretch);
-    m_table->setColumnWidth(BankColumn, 110);
-    m_table->setColumnWidth(DeviceColumn, 120);
-    m_table->setColumnWidth(AxisColumn, 110);
-    m_table->setColumnWidth(GainColumn, 80);
-    m_table->setColumnWidth(SignColumn, 60);
-    m_table->setColumnWidth(LiveColumn, 170);
+    // (narrow enough for the page at 1280×720 with the Live column in view)
+    const int widths[] = {95, 105, 90, 75, 55, 150};
+    const int columns[] = {BankColumn, DeviceColumn, AxisColumn, GainColumn, SignColumn, LiveColumn};
+    int fixed = 0;
+    for (int i = 0; i < 6; ++i) {
+        m_table->setColumnWidth(columns[i], widths[i]);
+        fixed += widths[i];
+    }
     // room for a drive's name beside the fixed columns
-    m_table->setMinimumWidth(110 + 120 + 110 + 80 + 60 + 170 + 130);
+    m_table->setMinimumWidth(fixed + 100);
     m_table->verticalHeader()->setDefaultSectionSize(m_table->verticalHeader()->defaultSectionSize() + 4);
     layout->addWidget(m_table, 3);
 
@@ -121,6 +123,7 @@ MappingTable::MappingTable(QWidget* parent) : QWidget(parent)
     layout->addWidget(m_banksTable, 1);
     connect(m_banksTable, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* item) {
         if (m_filling || item->column() != BankNameColumn || item->row() >= m_banks.size()) return;
+        // (a renamed bank is shown as typed: the profile's translations are of the old name)
         m_banks[item->row()].name = item->text().trimmed();
         refreshBankCombos();
         changed();
@@ -173,6 +176,7 @@ MappingTable::MappingTable(QWidget* parent) : QWidget(parent)
         nextLabel->setText(tr("Next bank:"));
         m_nextDevice->setToolTip(tr("The device whose button steps to the next bank"));
         setButtonSpinTexts(m_nextButton);
+        m_nextButton->setMinimumWidth(m_nextButton->sizeHint().width());  // "ninguno" whole
     });
     bankButtons->addWidget(m_nextDevice);
     bankButtons->addWidget(m_nextButton);
@@ -227,6 +231,7 @@ void MappingTable::setProfile(const trainer::StationProfile& profile)
         m_banks[b].mappings.clear();
     }
     m_nextBank = profile.nextBank;
+    m_labels.translations = profile.translations;
     rebuildBanks();
     rebuildRows();
 }
@@ -264,7 +269,7 @@ void MappingTable::fillBankCombo(QComboBox* combo, int bank) const
     combo->clear();
     combo->addItem(tr("Always"), -1);
     for (int b = 0; b < m_banks.size(); ++b)
-        combo->addItem(m_banks[b].name.isEmpty() ? tr("Bank %1").arg(b + 1) : m_banks[b].name, b);
+        combo->addItem(m_banks[b].name.isEmpty() ? tr("Bank %1").arg(b + 1) : m_labels.localized(m_banks[b].name), b);
     combo->setCurrentIndex(std::max(0, combo->findData(bank)));
 }
 
@@ -439,7 +444,7 @@ void MappingTable::rebuildBanks()
     m_banksTable->setRowCount(0);
     m_banksTable->setRowCount(int(m_banks.size()));
     for (int b = 0; b < m_banks.size(); ++b) {
-        m_banksTable->setItem(b, BankNameColumn, new QTableWidgetItem(m_banks[b].name));
+        m_banksTable->setItem(b, BankNameColumn, new QTableWidgetItem(m_labels.localized(m_banks[b].name)));
         auto* device = editableCombo(m_banksTable);
         const trainer::ButtonRef ref = m_banks[b].select.value(0);
         fillDeviceCombo(device, ref.device);
@@ -452,6 +457,9 @@ void MappingTable::rebuildBanks()
         guardWheel(button);
         m_banksTable->setCellWidget(b, SelectDeviceColumn, device);
         m_banksTable->setCellWidget(b, SelectButtonColumn, button);
+        // the column as wide as the spin box asks ("none" may be longer in the language)
+        m_banksTable->setColumnWidth(SelectButtonColumn,
+                                     std::max(m_banksTable->columnWidth(SelectButtonColumn), button->sizeHint().width()));
         auto selectChanged = [this, device, button] {
             if (m_filling) return;
             int bank = -1;
@@ -554,7 +562,7 @@ void MappingTable::showState(const trainer::StationState& state)
     QString key;
     for (const trainer::DeviceState& d : state.devices) {
         if (d.replay) continue;
-        DeviceChoice c{d.info.id, trainer::kindKey(d.info.kind), d.info.name, {},
+        DeviceChoice c{d.info.id, trainer::kindKey(d.info.kind), trainer::displayName(d.info), {},
                        d.status == trainer::DeviceStatus::Connected};
         for (const trainer::AxisInfo& a : d.info.axes) c.axes.append(a.name);
         key += c.id + QLatin1Char('|') + c.axes.join(QLatin1Char(',')) + QLatin1Char('|') + QString::number(c.connected) + QLatin1Char(';');
@@ -706,7 +714,7 @@ bool MappingTable::removeBank(int bank)
     if (bank < 0 || bank >= m_banks.size()) return false;
     const int count = int(std::count_if(m_rows.begin(), m_rows.end(), [&](const Row& r) { return r.bank == bank; }));
     if (count > 0 && m_confirm &&
-        !m_confirm(tr("Remove the bank “%1” and its %n mapping(s)?", nullptr, count).arg(m_banks[bank].name)))
+        !m_confirm(tr("Remove the bank “%1” and its %n mapping(s)?", nullptr, count).arg(m_labels.localized(m_banks[bank].name))))
         return false;
     m_rows.erase(std::remove_if(m_rows.begin(), m_rows.end(), [&](const Row& r) { return r.bank == bank; }),
                  m_rows.end());

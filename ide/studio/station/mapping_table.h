@@ -128,6 +128,7 @@ private:
     QList<trainer::DriveInfo> m_drives;
     QList<Row> m_rows;
     QList<trainer::Bank> m_banks;  ///< names and select buttons (their mappings are in m_rows)
+    trainer::StationProfile m_labels;  ///< only the profile's translations: bank names as a person reads them
     trainer::ButtonRef m_nextBank;
     QStringList m_issues;          ///< per row
     QList<DeviceChoice> m_devices;

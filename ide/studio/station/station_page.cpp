@@ -246,9 +246,16 @@ QWidget* StationPage::buildDevices(QWidget* parent)
         if (isReplaying()) stopReplay();
         else startReplay();
     });
-    for (QPushButton* b : {m_addSerial, m_removeDevice, m_record, m_replay}) buttons->addWidget(b);
+    // two rows of two: one row of four is wider than the devices' side at 1280×720 in Spanish
+    auto* moreButtons = new QHBoxLayout;
+    buttons->addWidget(m_addSerial);
+    buttons->addWidget(m_removeDevice);
     buttons->addStretch(1);
+    moreButtons->addWidget(m_record);
+    moreButtons->addWidget(m_replay);
+    moreButtons->addStretch(1);
     dl->addLayout(buttons);
+    dl->addLayout(moreButtons);
     m_activity = new QLabel(devices);
     m_activity->setWordWrap(true);
     m_activity->hide();
@@ -315,9 +322,9 @@ void StationPage::fillCombo()
         current = 0;
     }
     for (const trainer::StoredProfile& s : m_doc.stored()) {
-        QString text = s.name;
-        if (!s.readable) text = tr("%1 (unreadable)").arg(s.name);
-        else if (s.shipped) text = tr("%1 (shipped)").arg(s.name);
+        QString text = s.label;
+        if (!s.readable) text = tr("%1 (unreadable)").arg(s.label);
+        else if (s.shipped) text = tr("%1 (shipped)").arg(s.label);
         const bool isCurrent = !unsaved && s.readable && s.name == m_doc.storedName();
         if (isCurrent) text += star;
         const int i = m_profiles->count();
@@ -348,7 +355,7 @@ void StationPage::showCurrent(bool wasDirty)
 {
     const trainer::StationProfile& profile = m_doc.profile();
     m_mappings->setProfile(profile);
-    m_description->setText(profile.description);
+    m_description->setText(profile.localized(profile.description));
     m_description->setVisible(!profile.description.isEmpty());
     fillCombo();
     if (wasDirty != m_doc.isDirty()) emit dirtyChanged(m_doc.isDirty());
@@ -626,8 +633,9 @@ void StationPage::showDevices(const trainer::StationState& state)
             item->setData(NameColumn, kReplayRole, d.replay);
             const QString kind = d.replay ? tr("%1 (replay)").arg(trainer::kindName(d.info.kind))
                                           : trainer::kindName(d.info.kind);
-            item->setText(NameColumn, d.info.name + QLatin1Char('\n') + tr("%1 · %2").arg(kind, d.info.id));
-            item->setToolTip(NameColumn, tr("%1\nKind: %2\nId: %3").arg(d.info.name, kind, d.info.id));
+            const QString name = trainer::displayName(d.info);
+            item->setText(NameColumn, name + QLatin1Char('\n') + tr("%1 · %2").arg(kind, d.info.id));
+            item->setToolTip(NameColumn, tr("%1\nKind: %2\nId: %3").arg(name, kind, d.info.id));
             item->setTextAlignment(SamplesColumn, Qt::AlignRight | Qt::AlignVCenter);
             item->setTextAlignment(DroppedColumn, Qt::AlignRight | Qt::AlignVCenter);
         }
@@ -659,7 +667,7 @@ void StationPage::showDevices(const trainer::StationState& state)
     const trainer::DeviceState* selected = findDevice(state, m_selectedId, m_selectedReplay);
     QString detail;
     if (selected && (selected->status != trainer::DeviceStatus::Connected || !selected->statusText.isEmpty()))
-        detail = tr("%1 — %2").arg(selected->info.name, selected->statusText.isEmpty()
+        detail = tr("%1 — %2").arg(trainer::displayName(selected->info), selected->statusText.isEmpty()
                                                             ? statusName(selected->status)
                                                             : statusName(selected->status) + QStringLiteral(": ") +
                                                                   selected->statusText);
@@ -762,6 +770,8 @@ void StationPage::retranslate()
     // the spin boxes (gain…) read and show numbers in the new locale
     setLocale(QLocale());
     m_texts.apply();
+    m_doc.relist();  // the profiles' names in the new language
+    m_description->setText(m_doc.profile().localized(m_doc.profile().description));
     fillCombo();
     updateButtons();
     // the lists shown from the state are made again: kinds, statuses, issues

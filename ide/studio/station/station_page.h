@@ -163,6 +163,7 @@ public:
     QListWidget* issuesList() const { return m_issues; }
     QLabel* errorLabel() const { return m_error; }
     QLabel* bankLabel() const { return m_bank; }
+    QLabel* descriptionLabel() const { return m_description; }
     QLabel* warningsLabel() const { return m_warnings; }
     QTreeWidget* devicesList() const { return m_devices; }
     /// The selected device's status in full when it is not well ("" hidden).

@@ -53,7 +53,6 @@ AttemptScreen::AttemptScreen(TrainingController* training, QWidget* parent) : QW
     m_hud = new QLabel;
     m_hud->setObjectName("TrainHudText");
     m_hud->setTextFormat(Qt::RichText);
-    m_hud->setStyleSheet("color: white; font-size: 22px;");
     m_dwellBar = new QProgressBar;
     m_dwellBar->setRange(0, 1000);
     m_dwellBar->setTextVisible(false);
@@ -74,10 +73,9 @@ AttemptScreen::AttemptScreen(TrainingController* training, QWidget* parent) : QW
     m_hintLabel->setObjectName("TrainHint");
     m_hintLabel->setWordWrap(true);
     m_hintLabel->setAttribute(Qt::WA_TransparentForMouseEvents);
-    m_hintLabel->setStyleSheet("QLabel { background: rgba(30, 60, 110, 210); color: white; border-radius: 8px; "
-                               "padding: 10px 16px; font-size: 22px; }");
     m_hintLabel->setMaximumWidth(900);
     m_hintLabel->hide();
+    scaleHud();
     grid->addWidget(m_hintLabel, 0, 0, Qt::AlignBottom | Qt::AlignHCenter);
     grid->setContentsMargins(0, 0, 0, 0);
     // (over the view's native window they are drawn in its frames: Viewport::addOverlay)
@@ -254,6 +252,7 @@ void AttemptScreen::retranslate()
 
 bool AttemptScreen::eventFilter(QObject* watched, QEvent* event)
 {
+    if (watched == m_view && event->type() == QEvent::Resize) scaleHud();
     if (watched == m_view && event->type() == QEvent::KeyPress &&
         static_cast<QKeyEvent*>(event)->key() == Qt::Key_Escape) {
         emit stopRequested();
@@ -272,6 +271,57 @@ void AttemptScreen::showFrame(const TrainFrame& f)
         else m_view->clearGhost();
     }
     updateHud(f);
+    placeHud(f);
+}
+
+void AttemptScreen::scaleHud()
+{
+    // 22 px from a 900-pixel-high view up, down to 16 px
+    const int px = std::clamp(m_view->height() / 40, 16, 22);
+    if (!m_hud || !m_hintLabel || px == m_hudFontPx) return;
+    m_hudFontPx = px;
+    m_hud->setStyleSheet(QStringLiteral("color: white; font-size: %1px;").arg(px));
+    m_hintLabel->setStyleSheet(QStringLiteral("QLabel { background: rgba(30, 60, 110, 210); color: white; "
+                                              "border-radius: 8px; padding: 8px 14px; font-size: %1px; }")
+                                   .arg(px));
+}
+
+void AttemptScreen::placeHud(const TrainFrame& f)
+{
+    const auto t = m_training->tutorial();
+    if (!t || !f.snapshot) return;
+    const auto& goals = t->spec.goals;
+    const int g = f.progress.goal;
+    if (g < 0 || g >= int(goals.size())) return;
+    // the goal's point: its target, or the load to grasp where it is now
+    const trainer::Goal& goal = goals[std::size_t(g)];
+    Eigen::Vector3d point;
+    if (goal.kind == trainer::Goal::Kind::Reach || goal.kind == trainer::Goal::Kind::Place) {
+        point = goal.target;
+    } else if (goal.kind == trainer::Goal::Kind::Grasp) {
+        const int i = t->model->bodyIndex(t->spec.grip.loadBodyId);
+        if (i < 0 || std::size_t(i) >= f.snapshot->bodyPoses.size()) return;
+        point = f.snapshot->bodyPoses[std::size_t(i)] * t->spec.grip.loadPoint;
+    } else {
+        return;
+    }
+    Eigen::Vector2d pixel;
+    if (!m_view->cameraState().pixelOf(point, m_view->width(), m_view->height(), pixel)) return;
+    const QPoint at(int(pixel.x()), int(pixel.y()));
+    // the corner the HUD is in, with a margin for the target's sphere and arrow
+    constexpr int kMargin = 60;
+    const QSize size = m_hudPanel->sizeHint();
+    const QRect top(QPoint(0, 0), size), low(QPoint(0, m_view->height() - size.height()), size);
+    bool lowNow = m_hudLow;
+    if (!m_hudLow && top.adjusted(-kMargin, -kMargin, kMargin, kMargin).contains(at)) lowNow = true;
+    else if (m_hudLow && low.adjusted(-kMargin, -kMargin, kMargin, kMargin).contains(at) &&
+             !top.adjusted(-kMargin, -kMargin, kMargin, kMargin).contains(at))
+        lowNow = false;
+    if (lowNow == m_hudLow) return;
+    m_hudLow = lowNow;
+    auto* grid = static_cast<QGridLayout*>(m_hudPanel->parentWidget()->layout());
+    grid->setAlignment(m_hudPanel, (m_hudLow ? Qt::AlignBottom : Qt::AlignTop) | Qt::AlignLeft);
+    grid->setAlignment(m_hintLabel, (m_hudLow ? Qt::AlignTop : Qt::AlignBottom) | Qt::AlignHCenter);
 }
 
 void AttemptScreen::updateHud(const TrainFrame& f)

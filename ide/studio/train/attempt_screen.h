@@ -87,6 +87,12 @@ private:
     void updateHud(const TrainFrame& f);
     /// The controls line for the open tutorial and its profile (drive_controls.h).
     void showControls();
+    /// The HUD in the top left corner, or the bottom left one while the current goal's
+    /// target would be behind it there (the hints then go to the top).
+    void placeHud(const TrainFrame& f);
+    /// The HUD's and the hints' type in proportion to the view's height (a 720-line
+    /// screen reads them smaller than a 1080-line one).
+    void scaleHud();
     /// A scene's attempt: turns the seat towards the first goal when it is out of view.
     void aimSeatAtFirstGoal(const trainer::Tutorial& t);
 
@@ -107,6 +113,8 @@ private:
     QLabel* m_warningLabel = nullptr;
     QLabel* m_centre = nullptr;
     QLabel* m_controls = nullptr;
+    bool m_hudLow = false;  ///< the HUD in the bottom left corner (placeHud)
+    int m_hudFontPx = 0;
     QString m_hudText, m_hintText, m_warningText;  ///< as shown (set again only when they change)
 };
 

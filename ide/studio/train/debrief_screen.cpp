@@ -83,10 +83,11 @@ DebriefScreen::DebriefScreen(TrainingController* training, QWidget* parent) : QW
     auto* replay = new QVBoxLayout(replayBox);
     replay->setContentsMargins(0, 0, 0, 0);
     m_view = new Viewport;
-    m_view->setMinimumSize(400, 300);
+    m_view->setMinimumSize(320, 180);  // (room for the controls and charts at 1280×720)
     replay->addWidget(m_view, 1);
     auto* controls = new QHBoxLayout;
     m_play = new QPushButton;
+    m_play->setObjectName("ReplayPlay");
     m_slider = new QSlider(Qt::Horizontal);
     m_slider->setObjectName("ReplaySlider");
     m_time = new QLabel;
@@ -97,11 +98,11 @@ DebriefScreen::DebriefScreen(TrainingController* training, QWidget* parent) : QW
     replay->addLayout(controls);
     m_forceChart = new QChartView;
     m_forceChart->setObjectName("ForceChart");
-    m_forceChart->setMinimumHeight(200);
+    m_forceChart->setMinimumHeight(150);
     m_forceChart->setRenderHint(QPainter::Antialiasing);
     m_reliefChart = new QChartView;
     m_reliefChart->setObjectName("ReliefChart");
-    m_reliefChart->setMinimumHeight(150);
+    m_reliefChart->setMinimumHeight(120);
     replay->addWidget(m_forceChart);
     replay->addWidget(m_reliefChart);
     split->addWidget(replayBox);
@@ -125,7 +126,7 @@ DebriefScreen::DebriefScreen(TrainingController* training, QWidget* parent) : QW
     m_comparison->horizontalHeader()->setSectionResizeMode(2, QHeaderView::ResizeToContents);
     m_comparison->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_comparison->setSelectionMode(QAbstractItemView::NoSelection);
-    m_comparison->setMinimumHeight(200);
+    m_comparison->setMinimumHeight(160);
     sideLayout->addWidget(m_comparison);
     auto* back = new QPushButton;
     sideLayout->addWidget(back);

@@ -92,8 +92,12 @@ ResultScreen::ResultScreen(TrainingController* training, QWidget* parent) : QWid
         m_useDemoButton->setToolTip(tr("From now on the demonstration, the expert and the comparison of this stage "
                                        "replay this attempt's input instead of the shipped one."));
     });
-    buttons->addWidget(m_saveDemoButton);
-    buttons->addWidget(m_useDemoButton);
+    // the trainer's buttons on a row of their own: with the operator's, too wide in
+    // Spanish for a 1280-pixel screen
+    auto* trainerButtons = new QHBoxLayout;
+    trainerButtons->addWidget(m_saveDemoButton);
+    trainerButtons->addWidget(m_useDemoButton);
+    trainerButtons->addStretch();
     connect(m_saveDemoButton, &QPushButton::clicked, this, [this] {
         const auto t = m_training->tutorial();
         if (!t) return;
@@ -118,6 +122,7 @@ ResultScreen::ResultScreen(TrainingController* training, QWidget* parent) : QWid
     buttons->addWidget(retryButton);
     buttons->addWidget(debrief);
     buttons->addWidget(m_nextButton);
+    layout->addLayout(trainerButtons);
     layout->addLayout(buttons);
     connect(course, &QPushButton::clicked, this, &ResultScreen::courseRequested);
     connect(retryButton, &QPushButton::clicked, this, &ResultScreen::retryRequested);

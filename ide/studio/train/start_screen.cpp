@@ -98,12 +98,17 @@ StartScreen::StartScreen(TrainingController* training, QWidget* parent) : QWidge
     m_note->setStyleSheet("color: #b35c00;");
     m_note->hide();
     left->insertWidget(2, m_note);
+    // the scrub slider and the clock on a row of their own (the slider keeps its room on
+    // a narrow screen), the buttons below
+    auto* scrub = new QHBoxLayout;
+    scrub->addWidget(m_slider, 1);
+    scrub->addWidget(m_time);
+    right->addLayout(scrub);
     controls->addWidget(m_play);
     auto* speedLabel = new QLabel;
     controls->addWidget(speedLabel);
     controls->addWidget(m_speed);
-    controls->addWidget(m_slider, 1);
-    controls->addWidget(m_time);
+    controls->addStretch(1);
     m_follow = new QCheckBox;
     m_follow->setObjectName("DemoFollowCamera");
     m_texts.add([this, speedLabel] {

@@ -65,6 +65,17 @@ Eigen::Matrix4d Camera::viewMatrix() const
     return v;
 }
 
+bool Camera::pixelOf(const Vector3d& p, double width, double height, Eigen::Vector2d& pixel) const
+{
+    const double aspect = width / std::max(height, 1.0);
+    const Eigen::Vector4d e = viewMatrix() * p.homogeneous();
+    if (e.z() >= 0) return false;
+    const double t = 1.0 / std::tan(0.5 * verticalFieldOfView(aspect));
+    const double x = t / aspect * e.x() / -e.z(), y = t * e.y() / -e.z();
+    pixel = Eigen::Vector2d((x + 1) / 2 * width, (1 - y) / 2 * height);
+    return true;
+}
+
 Eigen::Matrix4d Camera::projectionMatrix(double aspect, const Vector3d& centre, double radius, double farthest) const
 {
     const double fovy = verticalFieldOfView(aspect);

@@ -46,6 +46,9 @@ public:
     /// The unit direction from eye() through pixel (x, y) of a width × height viewport
     /// (the inverse of the view and projection matrices: the ray under the cursor).
     Eigen::Vector3d rayThrough(double x, double y, double width, double height) const;
+    /// Where world point `p` shows in a width × height viewport (pixels, y down): false
+    /// when it is behind the eye.
+    bool pixelOf(const Eigen::Vector3d& p, double width, double height, Eigen::Vector2d& pixel) const;
     /// Perspective projection, clip planes chosen so that a sphere (centre, radius)
     /// and the ground grid out to `farthest` metres are inside.
     Eigen::Matrix4d projectionMatrix(double aspect, const Eigen::Vector3d& centre, double radius,
