@@ -6504,7 +6504,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::AttemptScreen</name>
     <message>
-        <location filename="../ide/studio/train/attempt_screen.cpp" line="+155" />
+        <location filename="../ide/studio/train/attempt_screen.cpp" line="+159" />
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc or Stop ends the attempt.</translation>
     </message>
@@ -6535,11 +6535,16 @@ never the .key files of the CAs; then run it with --security DIR.
     </message>
     <message>
         <location line="+3" />
+        <source>Three screens (−60°, 0°, +60°)</source>
+        <translation>Three screens (−60°, 0°, +60°)</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Stop</source>
         <translation>Stop</translation>
     </message>
     <message>
-        <location line="+87" />
+        <location line="+91" />
         <source>Goal %1 of %2</source>
         <translation>Goal %1 of %2</translation>
     </message>
@@ -7009,12 +7014,12 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::DebriefScreen</name>
     <message>
-        <location filename="../ide/studio/train/debrief_screen.cpp" line="+57" />
+        <location filename="../ide/studio/train/debrief_screen.cpp" line="+58" />
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
     <message>
-        <location line="+76" />
+        <location line="+96" />
         <location line="+24" />
         <source>Pause</source>
         <translation>Pause</translation>
@@ -7023,12 +7028,12 @@ never the .key files of the CAs; then run it with --security DIR.
         <location line="-24" />
         <location line="+24" />
         <location line="+24" />
-        <location line="+21" />
+        <location line="+23" />
         <source>Play</source>
         <translation>Play</translation>
     </message>
     <message>
-        <location line="-68" />
+        <location line="-70" />
         <source>Events</source>
         <translation>Events</translation>
     </message>
@@ -7063,7 +7068,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>%1 s</translation>
     </message>
     <message>
-        <location line="+38" />
+        <location line="+40" />
         <source>%1 s — %2</source>
         <translation>%1 s — %2</translation>
     </message>
@@ -8381,7 +8386,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Export</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+214" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+223" />
         <location line="+2" />
         <source>Model</source>
         <translation>Model</translation>
@@ -8533,12 +8538,12 @@ never the .key files of the CAs; then run it with --security DIR.
     </message>
     <message>
         <location filename="../ide/studio/app/main_window.cpp" line="+38" />
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="-147" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="-156" />
         <source>Load Scene</source>
         <translation>Load Scene</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+148" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+157" />
         <source>&amp;None</source>
         <translation>&amp;None</translation>
     </message>
@@ -8601,13 +8606,115 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>&amp;Keyboard Controls…</translation>
     </message>
     <message>
-        <location line="+41" />
-        <location line="+11" />
+        <location line="+36" />
+        <source>+</source>
+        <translation>+</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>−</source>
+        <translation>−</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>turns +</source>
+        <comment>a revolute joint's angle grows</comment>
+        <translation>turns +</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>turns −</source>
+        <comment>a revolute joint's angle shrinks</comment>
+        <translation>turns −</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>cylinder out</source>
+        <comment>a T 1 joint's actuator lengthens</comment>
+        <translation>cylinder out</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>cylinder in</source>
+        <comment>a T 1 joint's actuator shortens</comment>
+        <translation>cylinder in</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>slides +</source>
+        <comment>a prismatic joint's displacement grows</comment>
+        <translation>slides +</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>slides −</source>
+        <comment>a prismatic joint's displacement shrinks</comment>
+        <translation>slides −</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>%1: %2 · %3: %4</source>
+        <comment>each key of a pair and which way it moves the drive</comment>
+        <translation>%1: %2 · %3: %4</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <location line="+10" />
         <source>C %1</source>
         <translation>C %1</translation>
     </message>
     <message>
         <location line="+13" />
+        <source>Left drag</source>
+        <translation>Left drag</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>orbits around the model</source>
+        <translation>orbits around the model</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Middle drag, or Shift + left drag</source>
+        <translation>Middle drag, or Shift + left drag</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>pans</source>
+        <translation>pans</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Wheel</source>
+        <translation>Wheel</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>zooms towards the cursor</source>
+        <translation>zooms towards the cursor</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Double click</source>
+        <translation>Double click</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>frames the whole model</source>
+        <translation>frames the whole model</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Ctrl + left drag on a body</source>
+        <translation>Ctrl + left drag on a body</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>picks the body and pushes it while the simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go</source>
+        <translation>picks the body and pushes it while the simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>Keyboard Controls</source>
         <translation>Keyboard Controls</translation>
     </message>
@@ -8617,7 +8724,12 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>With the 3D view focused, hold a key to open a valve:</translation>
     </message>
     <message>
-        <location line="-52" />
+        <location line="+2" />
+        <source>Mouse in the 3D view:</source>
+        <translation>Mouse in the 3D view:</translation>
+    </message>
+    <message>
+        <location line="-95" />
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
@@ -8646,7 +8758,7 @@ never the .key files of the CAs; then run it with --security DIR.
     </message>
     <message>
         <location line="+74" />
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="-179" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="-188" />
         <source>Padrob models (*.pad);;All files (*)</source>
         <translation>Padrob models (*.pad);;All files (*)</translation>
     </message>
@@ -8664,7 +8776,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>The trainee records cannot be opened: %1</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+117" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+126" />
         <source>Hydraulics</source>
         <translation>Hydraulics</translation>
     </message>
@@ -8709,16 +8821,10 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>At the &amp;vertices (faster)</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+67" />
         <source>%1 (%2)</source>
         <comment>a drive and its bank</comment>
         <translation>%1 (%2)</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>%1, reversed</source>
-        <comment>a drive the key moves the other way</comment>
-        <translation>%1, reversed</translation>
     </message>
     <message>
         <location line="+8" />
@@ -8726,14 +8832,9 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>C %1 %2</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+24" />
         <source>Shortcuts (none of them opens a valve):</source>
         <translation>Shortcuts (none of them opens a valve):</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Mouse in the 3D view: left drag orbits, middle drag or Shift + left drag pans, the wheel zooms, a double click frames the model. Ctrl + left drag on a body pushes it while the simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go.</source>
-        <translation>Mouse in the 3D view: left drag orbits, middle drag or Shift + left drag pans, the wheel zooms, a double click frames the model. Ctrl + left drag on a body pushes it while the simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go.</translation>
     </message>
     <message>
         <location filename="../ide/studio/app/main_window.cpp" line="+188" />
@@ -8899,7 +9000,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
 The simulation is paused at the last good state; the editor stays usable. Reset to start again.</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+13" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+12" />
         <source>Model Language Reference</source>
         <translation>Model Language Reference</translation>
     </message>
@@ -8917,6 +9018,63 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <location line="+1" />
         <source>&lt;h3&gt;Padrob Studio %1&lt;/h3&gt;&lt;p&gt;Real-time training simulators of heavy machines, built from a model file: bodies, joints, hydraulic drives, forces and graphics.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Padrob Studio %1&lt;/h3&gt;&lt;p&gt;Real-time training simulators of heavy machines, built from a model file: bodies, joints, hydraulic drives, forces and graphics.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../ide/studio/app/main_window_tools.cpp" line="+37" />
+        <location line="+137" />
+        <source>Record Video</source>
+        <translation>Record Video</translation>
+    </message>
+    <message>
+        <location line="-76" />
+        <source>Video saved: %1 (%2 s)</source>
+        <translation>Video saved: %1 (%2 s)</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>%1 (%2)</source>
+        <comment>an action and its shortcut</comment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Speed:</source>
+        <translation>Speed:</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Simulated seconds per second of the wall clock (Simulation ▸ Speed)</source>
+        <translation>Simulated seconds per second of the wall clock (Simulation ▸ Speed)</translation>
+    </message>
+    <message>
+        <location line="+58" />
+        <source>Videos (*.mp4 *.mkv *.mov)</source>
+        <translation>Videos (*.mp4 *.mkv *.mov)</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Stop &amp;Recording</source>
+        <translation>Stop &amp;Recording</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>&amp;Record Video…</source>
+        <translation>&amp;Record Video…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Stop recording the 3D view</source>
+        <translation>Stop recording the 3D view</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Record a video of the 3D view (ffmpeg)</source>
+        <translation>Record a video of the 3D view (ffmpeg)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>● REC %1:%2</source>
+        <translation>● REC %1:%2</translation>
     </message>
 </context>
 <context>
@@ -9415,12 +9573,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
 <context>
     <name>studio::PlotPanel</name>
     <message>
-        <location filename="../ide/studio/plots/plot_panel.cpp" line="+144" />
-        <source>Tick the signals to plot; each unit gets its own chart.</source>
-        <translation>Tick the signals to plot; each unit gets its own chart.</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location filename="../ide/studio/plots/plot_panel.cpp" line="+150" />
         <source>Clear</source>
         <translation>Clear</translation>
     </message>
@@ -9470,7 +9623,12 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>F drive</translation>
     </message>
     <message>
-        <location line="-3" />
+        <location line="-16" />
+        <source>Tick the signals to plot; each unit gets its own chart, or choose beside a ticked signal a numbered chart to overlay signals of any units.</source>
+        <translation>Tick the signals to plot; each unit gets its own chart, or choose beside a ticked signal a numbered chart to overlay signals of any units.</translation>
+    </message>
+    <message>
+        <location line="+13" />
         <source>mechanical energy [J]</source>
         <translation>mechanical energy [J]</translation>
     </message>
@@ -9496,7 +9654,22 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>pump %1 %2</translation>
     </message>
     <message>
-        <location line="+277" />
+        <location line="+280" />
+        <source>The chart this signal is drawn in: its unit's, or a numbered one shared by signals of any units</source>
+        <translation>The chart this signal is drawn in: its unit's, or a numbered one shared by signals of any units</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>by unit</source>
+        <translation>by unit</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>chart %1</source>
+        <translation>chart %1</translation>
+    </message>
+    <message>
+        <location line="+44" />
         <source>Mechanical energy [J]</source>
         <translation>Mechanical energy [J]</translation>
     </message>
@@ -9581,8 +9754,8 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>reaction force along T [%1]</translation>
     </message>
     <message>
-        <location line="+37" />
-        <location line="+97" />
+        <location line="+31" />
+        <location line="+128" />
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
@@ -9651,7 +9824,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
 <context>
     <name>studio::RecordsView</name>
     <message>
-        <location filename="../ide/studio/train/records_view.cpp" line="+48" />
+        <location filename="../ide/studio/train/records_view.cpp" line="+51" />
         <source>running</source>
         <translation>running</translation>
     </message>
@@ -9809,13 +9982,13 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
     </message>
     <message>
         <location line="+79" />
-        <location line="+161" />
+        <location line="+168" />
         <location line="+17" />
         <source>There are no trainee records.</source>
         <translation>There are no trainee records.</translation>
     </message>
     <message>
-        <location line="-175" />
+        <location line="-182" />
         <source>The trainee records cannot be read: %1 Training goes on; attempts are kept in pending files and added to the records the next time they open.</source>
         <translation>The trainee records cannot be read: %1 Training goes on; attempts are kept in pending files and added to the records the next time they open.</translation>
     </message>
@@ -9870,12 +10043,12 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>score</translation>
     </message>
     <message>
-        <location line="+31" />
+        <location line="+37" />
         <source>pass mark %1 (%2)</source>
         <translation>pass mark %1 (%2)</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+28" />
         <source>Type the operator's code (badge number…).</source>
         <translation>Type the operator's code (badge number…).</translation>
     </message>
@@ -10729,7 +10902,7 @@ Id: %3</translation>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location line="+221" />
+        <location line="+220" />
         <source>On the centre's network as %1</source>
         <translation>On the centre's network as %1</translation>
     </message>
@@ -10779,6 +10952,49 @@ Id: %3</translation>
         <location line="+7" />
         <source>Cannot write %1.</source>
         <translation>Cannot write %1.</translation>
+    </message>
+</context>
+<context>
+    <name>studio::VideoRecorder</name>
+    <message>
+        <location filename="../ide/studio/view/video_recorder.cpp" line="+54" />
+        <source>A video is being recorded already.</source>
+        <translation>A video is being recorded already.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Recording a video needs the program ffmpeg, which was not found. Install it (on Debian and Ubuntu: sudo apt install ffmpeg) and try again.</source>
+        <translation>Recording a video needs the program ffmpeg, which was not found. Install it (on Debian and Ubuntu: sudo apt install ffmpeg) and try again.</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>%1 is not a regular file (a folder, a device or a pipe): it is not overwritten.</source>
+        <translation>%1 is not a regular file (a folder, a device or a pipe): it is not overwritten.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 is a file Padrob Studio has open (the model or the scene): it is not overwritten.</source>
+        <translation>%1 is a file Padrob Studio has open (the model or the scene): it is not overwritten.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The folder %1 cannot be written.</source>
+        <translation>The folder %1 cannot be written.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The 3D view cannot be drawn (no OpenGL 3.3): there is nothing to record.</source>
+        <translation>The 3D view cannot be drawn (no OpenGL 3.3): there is nothing to record.</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>ffmpeg (%1) could not be started: %2</source>
+        <translation>ffmpeg (%1) could not be started: %2</translation>
+    </message>
+    <message>
+        <location line="+58" />
+        <source>ffmpeg stopped with an error while writing %1</source>
+        <translation>ffmpeg stopped with an error while writing %1</translation>
     </message>
 </context>
 <context>
@@ -10847,7 +11063,7 @@ Id: %3</translation>
 <context>
     <name>studio::ViewportLayout</name>
     <message>
-        <location filename="../ide/studio/view/viewport_layout.cpp" line="+38" />
+        <location filename="../ide/studio/view/viewport_layout.cpp" line="+45" />
         <source>The operator's screens are shown in separate windows.</source>
         <translation>The operator's screens are shown in separate windows.</translation>
     </message>

@@ -6534,7 +6534,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::AttemptScreen</name>
     <message>
-        <location filename="../ide/studio/train/attempt_screen.cpp" line="+155" />
+        <location filename="../ide/studio/train/attempt_screen.cpp" line="+159" />
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc o Detener termina el intento.</translation>
     </message>
@@ -6565,11 +6565,16 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
     </message>
     <message>
         <location line="+3" />
+        <source>Three screens (−60°, 0°, +60°)</source>
+        <translation>Tres pantallas (−60°, 0°, +60°)</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Stop</source>
         <translation>Detener</translation>
     </message>
     <message>
-        <location line="+87" />
+        <location line="+91" />
         <source>Goal %1 of %2</source>
         <translation>Objetivo %1 de %2</translation>
     </message>
@@ -7039,12 +7044,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::DebriefScreen</name>
     <message>
-        <location filename="../ide/studio/train/debrief_screen.cpp" line="+57" />
+        <location filename="../ide/studio/train/debrief_screen.cpp" line="+58" />
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
     <message>
-        <location line="+76" />
+        <location line="+96" />
         <location line="+24" />
         <source>Pause</source>
         <translation>Pausa</translation>
@@ -7053,12 +7058,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <location line="-24" />
         <location line="+24" />
         <location line="+24" />
-        <location line="+21" />
+        <location line="+23" />
         <source>Play</source>
         <translation>Reproducir</translation>
     </message>
     <message>
-        <location line="-68" />
+        <location line="-70" />
         <source>Events</source>
         <translation>Eventos</translation>
     </message>
@@ -7093,7 +7098,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>%1 s</translation>
     </message>
     <message>
-        <location line="+38" />
+        <location line="+40" />
         <source>%1 s — %2</source>
         <translation>%1 s — %2</translation>
     </message>
@@ -8411,7 +8416,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Exportar</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+214" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+223" />
         <location line="+2" />
         <source>Model</source>
         <translation>Modelo</translation>
@@ -8563,12 +8568,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
     </message>
     <message>
         <location filename="../ide/studio/app/main_window.cpp" line="+38" />
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="-147" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="-156" />
         <source>Load Scene</source>
         <translation>Cargar escena</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+148" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+157" />
         <source>&amp;None</source>
         <translation>&amp;Ninguna</translation>
     </message>
@@ -8631,13 +8636,115 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>&amp;Controles de teclado…</translation>
     </message>
     <message>
-        <location line="+41" />
-        <location line="+11" />
+        <location line="+36" />
+        <source>+</source>
+        <translation>+</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>−</source>
+        <translation>−</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>turns +</source>
+        <comment>a revolute joint's angle grows</comment>
+        <translation>gira +</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>turns −</source>
+        <comment>a revolute joint's angle shrinks</comment>
+        <translation>gira −</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>cylinder out</source>
+        <comment>a T 1 joint's actuator lengthens</comment>
+        <translation>sale el cilindro</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>cylinder in</source>
+        <comment>a T 1 joint's actuator shortens</comment>
+        <translation>entra el cilindro</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>slides +</source>
+        <comment>a prismatic joint's displacement grows</comment>
+        <translation>desliza +</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>slides −</source>
+        <comment>a prismatic joint's displacement shrinks</comment>
+        <translation>desliza −</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>%1: %2 · %3: %4</source>
+        <comment>each key of a pair and which way it moves the drive</comment>
+        <translation>%1: %2 · %3: %4</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <location line="+10" />
         <source>C %1</source>
         <translation>C %1</translation>
     </message>
     <message>
         <location line="+13" />
+        <source>Left drag</source>
+        <translation>Arrastrar con el botón izquierdo</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>orbits around the model</source>
+        <translation>gira alrededor del modelo</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Middle drag, or Shift + left drag</source>
+        <translation>Arrastrar con el botón central, o Mayús + botón izquierdo</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>pans</source>
+        <translation>desplaza la vista</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Wheel</source>
+        <translation>Rueda</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>zooms towards the cursor</source>
+        <translation>acerca o aleja hacia el cursor</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Double click</source>
+        <translation>Doble clic</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>frames the whole model</source>
+        <translation>encuadra todo el modelo</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Ctrl + left drag on a body</source>
+        <translation>Ctrl + arrastrar con el botón izquierdo sobre un cuerpo</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>picks the body and pushes it while the simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go</source>
+        <translation>toma el cuerpo y lo empuja mientras corre la simulación (un resorte tira del punto tomado hacia el cursor); suelte para liberarlo</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>Keyboard Controls</source>
         <translation>Controles de teclado</translation>
     </message>
@@ -8647,7 +8754,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Con la vista 3D activa, mantenga presionada una tecla para abrir una válvula:</translation>
     </message>
     <message>
-        <location line="-52" />
+        <location line="+2" />
+        <source>Mouse in the 3D view:</source>
+        <translation>Mouse en la vista 3D:</translation>
+    </message>
+    <message>
+        <location line="-95" />
         <source>&amp;Help</source>
         <translation>Ay&amp;uda</translation>
     </message>
@@ -8676,7 +8788,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
     </message>
     <message>
         <location line="+74" />
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="-179" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="-188" />
         <source>Padrob models (*.pad);;All files (*)</source>
         <translation>Modelos Padrob (*.pad);;Todos los archivos (*)</translation>
     </message>
@@ -8694,7 +8806,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>No se pueden abrir los registros de los aprendices: %1</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+117" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+126" />
         <source>Hydraulics</source>
         <translation>Hidráulica</translation>
     </message>
@@ -8739,16 +8851,10 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>En los &amp;vértices (más rápida)</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+67" />
         <source>%1 (%2)</source>
         <comment>a drive and its bank</comment>
         <translation>%1 (%2)</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>%1, reversed</source>
-        <comment>a drive the key moves the other way</comment>
-        <translation>%1, invertido</translation>
     </message>
     <message>
         <location line="+8" />
@@ -8756,14 +8862,9 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>C %1 %2</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+24" />
         <source>Shortcuts (none of them opens a valve):</source>
         <translation>Atajos (ninguno abre una válvula):</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Mouse in the 3D view: left drag orbits, middle drag or Shift + left drag pans, the wheel zooms, a double click frames the model. Ctrl + left drag on a body pushes it while the simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go.</source>
-        <translation>Ratón en la vista 3D: arrastrar con el botón izquierdo hace girar la vista, arrastrar con el botón central o con Mayús + botón izquierdo la desplaza, la rueda acerca o aleja, un doble clic encuadra el modelo. Ctrl + arrastrar con el botón izquierdo sobre un cuerpo lo empuja mientras corre la simulación (un resorte tira del punto tomado hacia el cursor); suelte el botón para soltarlo.</translation>
     </message>
     <message>
         <location filename="../ide/studio/app/main_window.cpp" line="+188" />
@@ -8929,7 +9030,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
 La simulación quedó en pausa en el último estado válido; el editor sigue disponible. Reinicie para comenzar de nuevo.</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+13" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+12" />
         <source>Model Language Reference</source>
         <translation>Referencia del lenguaje de modelos</translation>
     </message>
@@ -8947,6 +9048,63 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <location line="+1" />
         <source>&lt;h3&gt;Padrob Studio %1&lt;/h3&gt;&lt;p&gt;Real-time training simulators of heavy machines, built from a model file: bodies, joints, hydraulic drives, forces and graphics.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Padrob Studio %1&lt;/h3&gt;&lt;p&gt;Simuladores de entrenamiento en tiempo real para maquinaria pesada, construidos a partir de un archivo de modelo: cuerpos, articulaciones, accionamientos hidráulicos, fuerzas y gráficos.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../ide/studio/app/main_window_tools.cpp" line="+37" />
+        <location line="+137" />
+        <source>Record Video</source>
+        <translation>Grabar video</translation>
+    </message>
+    <message>
+        <location line="-76" />
+        <source>Video saved: %1 (%2 s)</source>
+        <translation>Video guardado: %1 (%2 s)</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>%1 (%2)</source>
+        <comment>an action and its shortcut</comment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Speed:</source>
+        <translation>Velocidad:</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Simulated seconds per second of the wall clock (Simulation ▸ Speed)</source>
+        <translation>Segundos simulados por segundo de reloj (Simulación ▸ Velocidad)</translation>
+    </message>
+    <message>
+        <location line="+58" />
+        <source>Videos (*.mp4 *.mkv *.mov)</source>
+        <translation>Videos (*.mp4 *.mkv *.mov)</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Stop &amp;Recording</source>
+        <translation>Detener la &amp;grabación</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>&amp;Record Video…</source>
+        <translation>&amp;Grabar video…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Stop recording the 3D view</source>
+        <translation>Dejar de grabar la vista 3D</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Record a video of the 3D view (ffmpeg)</source>
+        <translation>Grabar un video de la vista 3D (ffmpeg)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>● REC %1:%2</source>
+        <translation>● GRAB %1:%2</translation>
     </message>
 </context>
 <context>
@@ -9445,12 +9603,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
 <context>
     <name>studio::PlotPanel</name>
     <message>
-        <location filename="../ide/studio/plots/plot_panel.cpp" line="+144" />
-        <source>Tick the signals to plot; each unit gets its own chart.</source>
-        <translation>Marque las señales que quiere graficar; cada unidad tiene su propio gráfico.</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location filename="../ide/studio/plots/plot_panel.cpp" line="+150" />
         <source>Clear</source>
         <translation>Limpiar</translation>
     </message>
@@ -9500,7 +9653,12 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>F accionamiento</translation>
     </message>
     <message>
-        <location line="-3" />
+        <location line="-16" />
+        <source>Tick the signals to plot; each unit gets its own chart, or choose beside a ticked signal a numbered chart to overlay signals of any units.</source>
+        <translation>Marque las señales que quiere graficar; cada unidad tiene su propio gráfico, o elija junto a una señal marcada un gráfico numerado para superponer señales de cualquier unidad.</translation>
+    </message>
+    <message>
+        <location line="+13" />
         <source>mechanical energy [J]</source>
         <translation>energía mecánica [J]</translation>
     </message>
@@ -9526,7 +9684,22 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>bomba %1 %2</translation>
     </message>
     <message>
-        <location line="+277" />
+        <location line="+280" />
+        <source>The chart this signal is drawn in: its unit's, or a numbered one shared by signals of any units</source>
+        <translation>El gráfico en que se dibuja esta señal: el de su unidad, o uno numerado que comparten señales de cualquier unidad</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>by unit</source>
+        <translation>por unidad</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>chart %1</source>
+        <translation>gráfico %1</translation>
+    </message>
+    <message>
+        <location line="+44" />
         <source>Mechanical energy [J]</source>
         <translation>Energía mecánica [J]</translation>
     </message>
@@ -9611,8 +9784,8 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>fuerza de reacción según T [%1]</translation>
     </message>
     <message>
-        <location line="+37" />
-        <location line="+97" />
+        <location line="+31" />
+        <location line="+128" />
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
@@ -9681,7 +9854,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
 <context>
     <name>studio::RecordsView</name>
     <message>
-        <location filename="../ide/studio/train/records_view.cpp" line="+48" />
+        <location filename="../ide/studio/train/records_view.cpp" line="+51" />
         <source>running</source>
         <translation>en curso</translation>
     </message>
@@ -9839,13 +10012,13 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
     </message>
     <message>
         <location line="+79" />
-        <location line="+161" />
+        <location line="+168" />
         <location line="+17" />
         <source>There are no trainee records.</source>
         <translation>No hay registros de aprendices.</translation>
     </message>
     <message>
-        <location line="-175" />
+        <location line="-182" />
         <source>The trainee records cannot be read: %1 Training goes on; attempts are kept in pending files and added to the records the next time they open.</source>
         <translation>No se pueden leer los registros de aprendices: %1 El entrenamiento continúa; los intentos se guardan en archivos pendientes y se agregan a los registros la próxima vez que se abran.</translation>
     </message>
@@ -9900,12 +10073,12 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>puntaje</translation>
     </message>
     <message>
-        <location line="+31" />
+        <location line="+37" />
         <source>pass mark %1 (%2)</source>
         <translation>puntaje de aprobación %1 (%2)</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+28" />
         <source>Type the operator's code (badge number…).</source>
         <translation>Escriba el código del operador (número de credencial…).</translation>
     </message>
@@ -10759,7 +10932,7 @@ Id: %3</translation>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location line="+221" />
+        <location line="+220" />
         <source>On the centre's network as %1</source>
         <translation>En la red del centro como %1</translation>
     </message>
@@ -10809,6 +10982,49 @@ Id: %3</translation>
         <location line="+7" />
         <source>Cannot write %1.</source>
         <translation>No se puede escribir %1.</translation>
+    </message>
+</context>
+<context>
+    <name>studio::VideoRecorder</name>
+    <message>
+        <location filename="../ide/studio/view/video_recorder.cpp" line="+54" />
+        <source>A video is being recorded already.</source>
+        <translation>Ya se está grabando un video.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Recording a video needs the program ffmpeg, which was not found. Install it (on Debian and Ubuntu: sudo apt install ffmpeg) and try again.</source>
+        <translation>Para grabar un video se necesita el programa ffmpeg, que no se encontró. Instálelo (en Debian y Ubuntu: sudo apt install ffmpeg) y vuelva a intentarlo.</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>%1 is not a regular file (a folder, a device or a pipe): it is not overwritten.</source>
+        <translation>%1 no es un archivo común (es una carpeta, un dispositivo o una tubería): no se sobrescribe.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 is a file Padrob Studio has open (the model or the scene): it is not overwritten.</source>
+        <translation>%1 es un archivo que Padrob Studio tiene abierto (el modelo o la escena): no se sobrescribe.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The folder %1 cannot be written.</source>
+        <translation>No se puede escribir en la carpeta %1.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The 3D view cannot be drawn (no OpenGL 3.3): there is nothing to record.</source>
+        <translation>La vista 3D no se puede dibujar (no hay OpenGL 3.3): no hay nada que grabar.</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>ffmpeg (%1) could not be started: %2</source>
+        <translation>No se pudo iniciar ffmpeg (%1): %2</translation>
+    </message>
+    <message>
+        <location line="+58" />
+        <source>ffmpeg stopped with an error while writing %1</source>
+        <translation>ffmpeg se detuvo con un error al escribir %1</translation>
     </message>
 </context>
 <context>
@@ -10877,7 +11093,7 @@ Id: %3</translation>
 <context>
     <name>studio::ViewportLayout</name>
     <message>
-        <location filename="../ide/studio/view/viewport_layout.cpp" line="+38" />
+        <location filename="../ide/studio/view/viewport_layout.cpp" line="+45" />
         <source>The operator's screens are shown in separate windows.</source>
         <translation>Las pantallas del operador se muestran en ventanas separadas.</translation>
     </message>

@@ -425,7 +425,15 @@ void PlotPanel::setSignalSelected(const QString& key, bool selected)
     // tick the list to match
     m_updatingList = true;
     for (QTreeWidgetItemIterator it(m_list); *it; ++it) {
-        if ((*it)->data(0, kKeyRole).toString() == key) (*it)->setCheckState(0, selected ? Qt::Checked : Qt::Unchecked);
+        if ((*it)->data(0, kKeyRole).toString() != key) continue;
+        (*it)->setCheckState(0, selected ? Qt::Checked : Qt::Unchecked);
+        // a ticked signal shows, with its chart box beside it
+        if (!selected) {
+            m_list->removeItemWidget(*it, 1);
+            continue;
+        }
+        addChartBox(*it, key);
+        if ((*it)->parent()) (*it)->parent()->setExpanded(true);
     }
     m_updatingList = false;
     rebuildCharts();
@@ -436,11 +444,7 @@ void PlotPanel::onItemChanged(QTreeWidgetItem* item, int column)
 {
     if (m_updatingList || column != 0) return;
     const QString key = item->data(0, kKeyRole).toString();
-    if (key.isEmpty()) return;
-    const bool on = item->checkState(0) == Qt::Checked;
-    if (on) addChartBox(item, key);
-    else m_list->removeItemWidget(item, 1);
-    setSignalSelected(key, on);
+    if (!key.isEmpty()) setSignalSelected(key, item->checkState(0) == Qt::Checked);
 }
 
 void PlotPanel::addChartBox(QTreeWidgetItem* item, const QString& key)
