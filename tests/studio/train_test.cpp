@@ -450,8 +450,10 @@ private slots:
         // side by side, about as wide, a visible separator between neighbours
         const auto x = [&](QWidget* w) { return w->mapTo(m_window.get(), QPoint()).x(); };
         QVERIFY(x(left) < x(middle) && x(middle) < x(right));
-        QVERIFY(std::abs(left->width() - right->width()) <= 2);
-        QVERIFY(std::abs(left->width() - middle->width()) < middle->width() / 10);
+        // (the middle one, with the HUD, is never the narrower)
+        const QString widths = QString("%1 %2 %3").arg(left->width()).arg(middle->width()).arg(right->width());
+        QVERIFY2(std::abs(left->width() - right->width()) <= 2, qPrintable(widths));
+        QVERIFY2(middle->width() >= left->width() - 2 && left->width() > m_window->width() / 6, qPrintable(widths));
         QList<QWidget*> separators;
         for (QWidget* w : m_window->findChildren<QWidget*>("ScreenSeparator"))
             if (w->isVisible()) separators << w;
