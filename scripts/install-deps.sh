@@ -45,6 +45,9 @@ packages=(
   cyclonedds-dev cyclonedds-tools
   # its DDS Security PKI (padrob centre pki) is made with OpenSSL's libcrypto: its headers
   libssl-dev
+  # padrob-studio's View ▸ Record Video: the ffmpeg program encodes the 3D view's frames
+  # (its ffprobe checks the videos in the tests)
+  ffmpeg
   # tests
   libgtest-dev libgmock-dev libbenchmark-dev locales
   # Qt's own texts in Spanish (the buttons of standard dialogs, context menus, --help)

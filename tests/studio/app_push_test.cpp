@@ -7,7 +7,7 @@
 // Screenshots with the window at 1280 × 720 asked for (the docks keep it at least
 // 1336 × 755), in English and in Spanish, while dragging.
 
-#include "tests/studio/gui_test.h"
+#include "tests/studio/main_window_test.h"
 #include "ide/i18n/language.h"
 #include "ide/studio/app/main_window.h"
 #include "ide/studio/sim/simulation_runner.h"
@@ -24,6 +24,7 @@
 #include <cmath>
 
 using namespace studio;
+using studio::test::chooseLanguage;
 using studio::test::screenshotPath;
 
 namespace {
@@ -54,15 +55,6 @@ Eigen::Vector3d blockCentre(const MainWindow& w, int block)
     const auto snap = w.runner()->latest();
     const auto b = static_cast<std::size_t>(block);
     return snap->bodyPoses[b] * snap->bundle->model->com[b];
-}
-
-void chooseLanguage(MainWindow& w, const QString& code)
-{
-    auto* action = w.findChild<QAction*>("Language_" + code);
-    QVERIFY(action);
-    action->trigger();
-    QCOMPARE(i18n::current(), code);
-    studio::test::settle(100);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include <QChart>
 #include <QChartView>
+#include <QComboBox>
 #include <QDir>
 #include <QFile>
 #include <QImage>
@@ -19,6 +20,7 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QValueAxis>
 
 #include <cmath>
 #include <memory>
@@ -28,6 +30,9 @@ using studio::PlotPanel;
 using studio::Snapshot;
 
 namespace {
+
+/// Degrees per radian: the plots show a revolute joint's angle in degrees, as the sliders.
+constexpr double kDeg = 180 / std::numbers::pi;
 
 std::shared_ptr<const studio::ModelBundle> example(const QString& name)
 {
@@ -94,6 +99,7 @@ private slots:
     void followsRunner();
     void pausedThePlotEndsWhereTheSimulationStands();
     void spanishAtRunTimeKeepsTheCsvDecimalPoint();
+    void overlaysSignalsOfAnyUnitsInAChosenChart();
 
 private:
     std::shared_ptr<const studio::ModelBundle> m_pendulum, m_liner;
@@ -121,7 +127,8 @@ void PlotsTest::listsSignalsOfEveryJoint()
     QVERIFY(keys.contains(QStringLiteral("Ft:9")));
     QCOMPARE(keys.last(), QStringLiteral("energy"));
     QCOMPARE(panel.signalLabel(QStringLiteral("q:2")), QStringLiteral("C 2 LEVANTE PLUMA q [m]"));
-    QCOMPARE(panel.signalLabel(QStringLiteral("q:1")), QStringLiteral("C 1 GIRO PLUMA q [rad]"));
+    QCOMPARE(panel.signalLabel(QStringLiteral("q:1")), QStringLiteral("C 1 GIRO PLUMA q [°]"));  // as the sliders
+    QCOMPARE(panel.signalUnit(QStringLiteral("qd:1")), QStringLiteral("°/s"));
     QCOMPARE(panel.signalUnit(QStringLiteral("f:1")), QStringLiteral("N m"));  // the slew motor's torque
     QCOMPARE(panel.signalUnit(QStringLiteral("f:2")), QStringLiteral("N"));    // the boom cylinder's force
     QCOMPARE(panel.signalUnit(QStringLiteral("qd:3")), QStringLiteral("m/s"));
@@ -156,7 +163,7 @@ void PlotsTest::plotsSelectedSignals()
     panel.setSignalSelected(QStringLiteral("nope"), true);  // unknown: ignored
     QCOMPARE(selection.count(), 2);
     QCOMPARE(panel.selectedSignals(), (QStringList{QStringLiteral("q:1"), QStringLiteral("Fr:1")}));
-    QCOMPARE(panel.chartCount(), 2);  // rad and N
+    QCOMPARE(panel.chartCount(), 2);  // ° and N
     panel.refresh();
     QLineSeries* q = panel.series(QStringLiteral("q:1"));
     QLineSeries* fr = panel.series(QStringLiteral("Fr:1"));
@@ -166,10 +173,10 @@ void PlotsTest::plotsSelectedSignals()
     for (int k : {0, 1, 57, 199}) {
         const double t = 0.01 * k;
         QCOMPARE(q->at(k).x(), t);
-        QCOMPARE(q->at(k).y(), std::sin(t));
+        QCOMPARE(q->at(k).y(), std::sin(t) * kDeg);
         QCOMPARE(fr->at(k).y(), 20 * t);  // F_R is the fifth reaction component
     }
-    QCOMPARE(q->name(), QStringLiteral("C 1 pivot q [rad]"));
+    QCOMPARE(q->name(), QStringLiteral("C 1 pivot q [°]"));
     // another force joins the N chart; a moment gets its own
     panel.setSignalSelected(QStringLiteral("Fa:1"), true);
     QCOMPARE(panel.chartCount(), 2);
@@ -185,7 +192,7 @@ void PlotsTest::plotsSelectedSignals()
     panel.setSignalSelected(QStringLiteral("qd:1"), true);
     panel.refresh();
     QCOMPARE(panel.series(QStringLiteral("qd:1"))->count(), 200);
-    QCOMPARE(panel.series(QStringLiteral("qd:1"))->at(100).y(), std::cos(1.0));
+    QCOMPARE(panel.series(QStringLiteral("qd:1"))->at(100).y(), std::cos(1.0) * kDeg);
 }
 
 void PlotsTest::windowAndDownsampling()
@@ -197,14 +204,14 @@ void PlotsTest::windowAndDownsampling()
     panel.setMaxPoints(200);
     panel.setSignalSelected(QStringLiteral("q:1"), true);
     // 5 s at 1 ms, q = sin(2π·3t)
-    double top = -2, bottom = 2;
+    double top = -2 * kDeg, bottom = 2 * kDeg;
     for (int k = 0; k <= 5000; ++k) {
         const double t = 0.001 * k;
         Snapshot s = pendulumAt(m_pendulum, t);
         s.q[0] = std::sin(2 * std::numbers::pi * 3 * t);
         if (t >= 3.0) {
-            top = std::max(top, s.q[0]);
-            bottom = std::min(bottom, s.q[0]);
+            top = std::max(top, s.q[0] * kDeg);
+            bottom = std::min(bottom, s.q[0] * kDeg);
         }
         panel.addSnapshot(s);
     }
@@ -213,7 +220,7 @@ void PlotsTest::windowAndDownsampling()
     QLineSeries* q = panel.series(QStringLiteral("q:1"));
     QVERIFY(q->count() <= 200);
     QVERIFY(q->count() >= 150);
-    double seriesTop = -2, seriesBottom = 2;
+    double seriesTop = -2 * kDeg, seriesBottom = 2 * kDeg;
     for (int i = 0; i < q->count(); ++i) {
         seriesTop = std::max(seriesTop, q->at(i).y());
         seriesBottom = std::min(seriesBottom, q->at(i).y());
@@ -271,7 +278,7 @@ void PlotsTest::exportCsvReadsBack()
     QVERIFY(f.open(QIODevice::ReadOnly));
     const QList<QByteArray> lines = f.readAll().split('\n');
     QCOMPARE(lines.size(), 1 + 120 + 1);  // header, rows, "" after the last newline
-    QCOMPARE(QString::fromUtf8(lines[0]), QStringLiteral("t [s],C 1 pivot q [rad],C 1 pivot F_R [N]"));
+    QCOMPARE(QString::fromUtf8(lines[0]), QStringLiteral("t [s],C 1 pivot q [°],C 1 pivot F_R [N]"));
     QVERIFY(lines.last().isEmpty());
     for (int k = 0; k < 120; ++k) {
         const QList<QByteArray> cells = lines[k + 1].split(',');
@@ -280,7 +287,7 @@ void PlotsTest::exportCsvReadsBack()
         bool ok = false;
         QCOMPARE(cells[0].toDouble(&ok), t);  // exact: shortest round-trip decimals
         QVERIFY(ok);
-        QCOMPARE(cells[1].toDouble(), std::sin(t));
+        QCOMPARE(cells[1].toDouble(), std::sin(t) * kDeg);
         QCOMPARE(cells[2].toDouble(), 20 * t);
     }
     QVERIFY(!panel.exportCsv(dir.filePath(QStringLiteral("no/such/folder/x.csv"))));
@@ -384,7 +391,7 @@ void PlotsTest::pausedThePlotEndsWhereTheSimulationStands()
     const QLineSeries* q = panel.series(QStringLiteral("q:1"));
     QVERIFY(q);
     QCOMPARE(q->at(q->count() - 1).x(), t);
-    QCOMPARE(q->at(q->count() - 1).y(), runner.latest()->q[0]);
+    QCOMPARE(q->at(q->count() - 1).y(), runner.latest()->q[0] * kDeg);
     QTest::qWait(100);
     QCOMPARE(panel.sampleCount(), 2);  // once
 }
@@ -424,15 +431,80 @@ void PlotsTest::spanishAtRunTimeKeepsTheCsvDecimalPoint()
     QFile f(path);
     QVERIFY(f.open(QIODevice::ReadOnly));
     const QList<QByteArray> lines = f.readAll().split('\n');
-    QCOMPARE(QString::fromUtf8(lines[0]), QStringLiteral("t [s],C 1 pivot q [rad],energía mecánica [J]"));
+    QCOMPARE(QString::fromUtf8(lines[0]), QStringLiteral("t [s],C 1 pivot q [°],energía mecánica [J]"));
     const QList<QByteArray> cells = lines[1].split(',');
     QCOMPARE(cells.size(), 3);
     QCOMPARE(cells[0].toDouble(), 0.1 / 3);  // '.' and round-trip decimals, in every language
-    QCOMPARE(cells[1].toDouble(), std::sin(0.1 / 3));
+    QCOMPARE(cells[1].toDouble(), std::sin(0.1 / 3) * kDeg);
 
     QVERIFY(i18n::install("en"));
     QTRY_COMPARE(panel.series(QStringLiteral("energy"))->name(), QStringLiteral("mechanical energy [J]"));
     QCOMPARE(panel.findChildren<QChartView*>().front()->chart()->locale().decimalPoint(), QStringLiteral("."));
+}
+
+// Issue 25 item 15: signals of different units overlaid in one chart chosen per signal
+// (the chart box beside a ticked signal), one vertical axis per unit, each spanning its
+// own signals; back to its unit's chart; in English and Spanish.
+void PlotsTest::overlaysSignalsOfAnyUnitsInAChosenChart()
+{
+    PlotPanel panel;
+    panel.resize(1100, 700);
+    panel.setBundle(m_pendulum);
+    panel.setMinSampleInterval(0);
+    for (int k = 0; k < 300; ++k) panel.addSnapshot(pendulumAt(m_pendulum, 0.01 * k));
+    for (const char* key : {"q:1", "Fr:1", "Mt:1"}) panel.setSignalSelected(QString::fromLatin1(key), true);
+    QCOMPARE(panel.chartCount(), 3);  // by unit: °, N, N m
+    QCOMPARE(panel.signalChart(QStringLiteral("q:1")), 0);
+    // q (°) and F_R (N) in chart 1, overlaid
+    panel.setSignalChart(QStringLiteral("q:1"), 1);
+    panel.setSignalChart(QStringLiteral("Fr:1"), 1);
+    QCOMPARE(panel.chartCount(), 2);
+    const int shared = panel.chartIndexOf(QStringLiteral("q:1"));
+    QCOMPARE(panel.chartIndexOf(QStringLiteral("Fr:1")), shared);
+    QVERIFY(panel.chartIndexOf(QStringLiteral("Mt:1")) != shared);
+    QCOMPARE(panel.chartUnits(shared), (QStringList{QStringLiteral("°"), QStringLiteral("N")}));
+    // M_T joins them through its chart box, as a user picks it
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    auto* box = panel.findChild<QComboBox*>(QStringLiteral("ChartBox:Mt:1"));
+    QVERIFY(box && box->isVisible());
+    QCOMPARE(box->count(), 1 + PlotPanel::kMaxCharts);
+    QCOMPARE(box->itemText(0), QStringLiteral("by unit"));
+    box->setCurrentIndex(1);
+    emit box->activated(1);
+    QCOMPARE(panel.signalChart(QStringLiteral("Mt:1")), 1);
+    QCOMPARE(panel.chartCount(), 1);
+    QCOMPARE(panel.chartUnits(0), (QStringList{QStringLiteral("°"), QStringLiteral("N"), QStringLiteral("N m")}));
+    QVERIFY(!panel.findChild<QComboBox*>(QStringLiteral("ChartBox:qd:1")));  // unticked: no box
+    // one vertical axis per unit, the first on the left, the others on the right, each
+    // spanning its own signal (q ≤ 57.3°, F_R up to 59.8 N, M_T up to 8.97 N m)
+    panel.refresh();
+    QChart* chart = panel.findChildren<QChartView*>().front()->chart();
+    QCOMPARE(chart->series().size(), 3);
+    const auto yOf = [&](const char* key) {
+        return qobject_cast<QValueAxis*>(chart->axes(Qt::Vertical, panel.series(QString::fromLatin1(key))).front());
+    };
+    QCOMPARE(yOf("q:1")->alignment(), Qt::AlignLeft);
+    QCOMPARE(yOf("Fr:1")->alignment(), Qt::AlignRight);
+    QVERIFY(yOf("Fr:1") != yOf("Mt:1"));
+    QVERIFY(yOf("q:1")->max() >= std::sin(2.99) * kDeg && yOf("q:1")->max() < 100);
+    QVERIFY(yOf("Fr:1")->max() >= 59.8 && yOf("Fr:1")->max() < 100);
+    QVERIFY(yOf("Mt:1")->max() >= 8.97 && yOf("Mt:1")->max() < 20);
+    QCOMPARE(panel.series(QStringLiteral("Fr:1"))->at(100).y(), 20 * 1.0);
+    studio::test::settle(200);
+    QVERIFY(panel.grab().save(screenshotDir() + QStringLiteral("/plots_overlay_en.png")));
+    QVERIFY(i18n::install("es"));
+    QTRY_VERIFY(panel.findChild<QComboBox*>(QStringLiteral("ChartBox:Mt:1")) &&
+                panel.findChild<QComboBox*>(QStringLiteral("ChartBox:Mt:1"))->currentText() == "gráfico 1");
+    QCOMPARE(panel.chartCount(), 1);
+    panel.refresh();
+    studio::test::settle(200);
+    QVERIFY(panel.grab().save(screenshotDir() + QStringLiteral("/plots_overlay_es.png")));
+    QVERIFY(i18n::install("en"));
+    // back to its unit's chart
+    panel.setSignalChart(QStringLiteral("Mt:1"), 0);
+    QCOMPARE(panel.chartCount(), 2);
+    QCOMPARE(panel.chartUnits(panel.chartIndexOf(QStringLiteral("Mt:1"))), QStringList{QStringLiteral("N m")});
 }
 
 QTEST_MAIN(PlotsTest)

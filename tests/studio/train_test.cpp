@@ -30,11 +30,16 @@
 #include "trainer/training/tutorial.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <QApplication>
 #include <QChart>
 #include <QChartView>
 #include <QCheckBox>
+#include <QComboBox>
+#include <QLegend>
+#include <QLegendMarker>
+#include <QValueAxis>
 #include <QDir>
 #include <QFile>
 #include <QLabel>
@@ -317,7 +322,7 @@ private slots:
         QCOMPARE(page()->screen(), TrainPage::Screen::Debrief);
         QChart* chart = page()->forceChart()->chart();
         QVERIFY(chart);
-        QCOMPARE(chart->series().size(), 1);
+        QCOMPARE(chart->series().size(), 2);  // the force, and the replay cursor
         auto* series = qobject_cast<QLineSeries*>(chart->series().first());
         QVERIFY(series && series->count() > 100);
         QVERIFY(chart->title().contains("C 2"));  // the lift cylinder carries the most
@@ -335,6 +340,19 @@ private slots:
         const QRect rect = page()->timeline()->visualItemRect(last);
         QTest::mouseClick(page()->timeline()->viewport(), Qt::LeftButton, {}, rect.center());
         QTRY_VERIFY(page()->replaySlider()->value() > 0);
+        // the replay cursor: a vertical line at the replay's time, across the chart
+        auto* cursor = qobject_cast<QLineSeries*>(chart->series().at(1));
+        QVERIFY(cursor && cursor->objectName() == "ReplayCursor" && cursor->count() == 2);
+        const auto cursorAtTheReplay = [&] {
+            const double t = page()->lastRun()->samples[std::size_t(page()->replaySlider()->value())].t;
+            return t > 0 && cursor->at(0).x() == t && cursor->at(1).x() == t;
+        };
+        QTRY_VERIFY(cursorAtTheReplay());
+        auto* y = qobject_cast<QValueAxis*>(chart->axes(Qt::Vertical).front());
+        QCOMPARE(cursor->at(0).y(), y->min());
+        QCOMPARE(cursor->at(1).y(), y->max());
+        page()->replaySlider()->setValue(page()->replaySlider()->value() / 2);  // scrubbing moves it
+        QTRY_VERIFY(cursorAtTheReplay());
         settle(500);
         QVERIFY(m_window->grab().save(screenshotPath("train_debrief_en.png")));
     }
@@ -368,6 +386,14 @@ private slots:
         auto* scores = qobject_cast<QLineSeries*>(chart->series().at(0));
         QVERIFY(scores && scores->count() == attempts->rowCount());
         QVERIFY(chart->series().at(1)->name().contains("pass mark"));
+        // the pass mark's colour is never an attempt's: the legend tells them apart
+        auto* mark = qobject_cast<QLineSeries*>(chart->series().at(1));
+        QCOMPARE(mark->objectName(), QString("PassMark"));
+        QCOMPARE(mark->pen().style(), Qt::DashLine);
+        QVERIFY(mark->color() != scores->color());
+        QVERIFY(chart->legend()->isVisible());
+        QCOMPARE(chart->legend()->markers().size(), 2);
+        QVERIFY(chart->legend()->markers().at(0)->brush().color() != chart->legend()->markers().at(1)->brush().color());
         // an older attempt: its own breakdown (the aborted one has one too)
         attempts->setCurrentCell(attempts->rowCount() - 1, 0);
         QVERIFY(view->eventsList()->count() >= 1);
@@ -411,6 +437,82 @@ private slots:
         m_window->setKioskMode(false);
         settle();
         QVERIFY(page()->recordsButton()->isVisible());
+    }
+
+    // Issue 25 item 17: the attempt on three screens side by side (the seat at −60°, 0°,
+    // +60°, dark separators between them), chosen in the View box and remembered; the
+    // keys stay with the middle screen
+    void threeScreensInTheAttempt()
+    {
+        QVERIFY(page()->openTutorial("T0"));
+        page()->startAttempt();
+        QCOMPARE(page()->screen(), TrainPage::Screen::Attempt);
+        TutorialRunner* runner = m_window->tutorialRunner();
+        QTRY_VERIFY_WITH_TIMEOUT(runner->latest() && runner->latest()->snapshot->t > 0.3, 10000);
+        auto* camera = m_window->findChild<QComboBox*>("AttemptCamera");
+        QVERIFY(camera);
+        const int three = camera->findData("ThreeScreens");
+        QVERIFY(three >= 0);
+        QCOMPARE(camera->itemText(three), QString("Three screens (−60°, 0°, +60°)"));
+        camera->setCurrentIndex(three);
+        emit camera->activated(three);  // as a user's choice
+        Viewport* middle = page()->attemptViewport();
+        auto* left = m_window->findChild<Viewport*>("AttemptLeftScreen");
+        auto* right = m_window->findChild<Viewport*>("AttemptRightScreen");
+        QVERIFY(left && right);
+        QTRY_VERIFY(left->isVisible() && right->isVisible());
+        QVERIFY(QSettings().value("trainer/threeScreens").toBool());
+        for (Viewport* v : {left, middle, right}) QCOMPARE(v->camera(), QString("Operator seat"));
+        QVERIFY(std::abs(left->yawOffset() + M_PI / 3) < 1e-12);
+        QCOMPARE(middle->yawOffset(), 0.0);
+        QVERIFY(std::abs(right->yawOffset() - M_PI / 3) < 1e-12);
+        // side by side, about as wide, a visible separator between neighbours
+        const auto x = [&](QWidget* w) { return w->mapTo(m_window.get(), QPoint()).x(); };
+        QVERIFY(x(left) < x(middle) && x(middle) < x(right));
+        // (the middle one, with the HUD, is never the narrower)
+        const QString widths = QString("%1 %2 %3").arg(left->width()).arg(middle->width()).arg(right->width());
+        QVERIFY2(std::abs(left->width() - right->width()) <= 2, qPrintable(widths));
+        QVERIFY2(middle->width() >= left->width() - 2 && left->width() > m_window->width() / 6, qPrintable(widths));
+        QList<QWidget*> separators;
+        for (QWidget* w : m_window->findChildren<QWidget*>("ScreenSeparator"))
+            if (w->isVisible()) separators << w;
+        QCOMPARE(separators.size(), 2);
+        for (QWidget* s : separators) {
+            QVERIFY(s->width() >= 4);
+            QVERIFY((x(s) >= x(left) + left->width() && x(s) < x(middle)) ||
+                    (x(s) >= x(middle) + middle->width() && x(s) < x(right)));
+        }
+        // the same machine at the same moment, seen three ways; the keys with the middle
+        QTRY_VERIFY(!left->poses().empty() && left->poses().front().isApprox(middle->poses().front()));
+        QVERIFY(right->bundle() == middle->bundle() && right->scene() == middle->scene());
+        const QImage images[] = {left->grabFramebuffer(), middle->grabFramebuffer(), right->grabFramebuffer()};
+        for (const QImage& a : images)
+            for (const QImage& b : images)
+                if (&a != &b) QVERIFY(a != b);
+        QVERIFY(middle->hasFocus() || QApplication::focusWidget() == nullptr);
+        QVERIFY(!left->hasFocus() && !right->hasFocus());
+        settle();
+        QVERIFY(m_window->grab().save(screenshotPath("train_three_screens_en.png")));
+        m_window->findChild<QAction*>("Language_es")->trigger();
+        QTRY_COMPARE(camera->itemText(three), QString("Tres pantallas (−60°, 0°, +60°)"));
+        settle();
+        QVERIFY(m_window->grab().save(screenshotPath("train_three_screens_es.png")));
+        m_window->findChild<QAction*>("Language_en")->trigger();
+        QTRY_COMPARE(camera->itemText(three), QString("Three screens (−60°, 0°, +60°)"));
+        // the next attempt opens on three screens again; back to one with another view
+        page()->stopAttempt();
+        QTRY_VERIFY_WITH_TIMEOUT(page()->screen() == TrainPage::Screen::Result, 5000);
+        QVERIFY(page()->openTutorial("T0"));
+        page()->startAttempt();
+        QTRY_VERIFY(left->isVisible() && right->isVisible());
+        QCOMPARE(camera->currentIndex(), three);
+        const int iso = camera->findData("Iso");
+        camera->setCurrentIndex(iso);
+        emit camera->activated(iso);
+        QVERIFY(!left->isVisible() && !right->isVisible());
+        QVERIFY(!QSettings().value("trainer/threeScreens").toBool());
+        page()->stopAttempt();
+        QTRY_VERIFY_WITH_TIMEOUT(page()->screen() == TrainPage::Screen::Result, 5000);
     }
 
     void recordsThatCannotOpenLeaveTrainingGoing()

@@ -51,7 +51,9 @@
 
 class QAction;
 class QActionGroup;
+class QComboBox;
 class QDockWidget;
+class QImage;
 class QLabel;
 class QMenu;
 class QPushButton;
@@ -75,6 +77,7 @@ class JointSliders;
 class KeyboardInput;
 class ModelTree;
 class PlotPanel;
+class VideoRecorder;
 class SimulationRunner;
 struct Snapshot;
 class StationPage;
@@ -149,6 +152,15 @@ public:
     void reset();
     void setSpeed(double speed);
 
+    /// View ▸ Record Video… (main_window_tools.cpp): records the 3D view of the workspace
+    /// shown (the Model workspace's screens side by side, or the Train attempt's view)
+    /// into `path` through ffmpeg (VideoRecorder); never over the model or the scene file.
+    /// False with `error` set when it cannot start. The status bar shows "● REC" meanwhile.
+    bool startRecording(const QString& path, QString* error = nullptr);
+    /// Stops the recording; the recorder's finished() says when the file is complete.
+    void stopRecording();
+    VideoRecorder* recorder() const { return m_recorder; }
+
 protected:
     void closeEvent(QCloseEvent* event) override;
     /// A language change (Settings ▸ Language, i18n::switchTo): the new locale for the
@@ -165,6 +177,16 @@ private:
     QString recordsNoteText() const;
     void updateModelLabel();
     void showKeyboardControls();
+    /// The Simulation toolbar of the Model workspace: the Simulation menu's Run, Pause,
+    /// Step and Reset (the same actions, with icons) and the speed (main_window_tools.cpp).
+    void buildSimulationBar();
+    /// The toolbar's and the recording's texts (from retranslate()).
+    void retranslateTools();
+    /// View ▸ Record Video…: asks for the file and starts, or stops.
+    void toggleRecording();
+    void updateRecordingLabel();
+    /// A frame of the 3D view being recorded (startRecording).
+    QImage recordedFrame() const;
     void applyBundle(std::shared_ptr<const ModelBundle> bundle);
     void poll();
     void updateHud();
@@ -254,6 +276,10 @@ private:
     QAction* m_stepAction = nullptr;
     QAction* m_resetAction = nullptr;
     QActionGroup* m_speedGroup = nullptr;
+    QComboBox* m_speedBox = nullptr;  ///< the toolbar's speed (m_speedGroup's choices)
+    QLabel* m_speedLabel = nullptr;
+    VideoRecorder* m_recorder = nullptr;
+    QLabel* m_recordingLabel = nullptr;  ///< "● REC" in the status bar while recording
 
     QLabel* m_timeLabel = nullptr;
     QLabel* m_rtLabel = nullptr;

@@ -134,6 +134,9 @@ void MainWindow::buildMenus()
     m.separate->setCheckable(true);
     screenGroup->addAction(m.separate);
     m.view->addSeparator();
+    m.record = m.view->addAction(QString(), this, &MainWindow::toggleRecording);
+    m.record->setObjectName("RecordVideoAction");
+    m.view->addSeparator();
     for (QDockWidget* d : m_docks) m.view->addAction(d->toggleViewAction());  // (named after their docks)
 
     // Simulation
@@ -142,6 +145,10 @@ void MainWindow::buildMenus()
     m_pauseAction = m.simulation->addAction(QString(), QKeySequence(Qt::Key_F6), this, &MainWindow::pause);
     m_stepAction = m.simulation->addAction(QString(), QKeySequence(Qt::Key_F10), this, &MainWindow::step);
     m_resetAction = m.simulation->addAction(QString(), QKeySequence(Qt::CTRL | Qt::Key_R), this, &MainWindow::reset);
+    m_runAction->setObjectName("RunAction");
+    m_pauseAction->setObjectName("PauseAction");
+    m_stepAction->setObjectName("StepAction");
+    m_resetAction->setObjectName("ResetAction");
     m_pauseAction->setEnabled(false);
     m.speed = m.simulation->addMenu(QString());
     m_speedGroup = new QActionGroup(this);
@@ -200,6 +207,8 @@ void MainWindow::buildMenus()
     m.gettingStarted = m.help->addAction(QString(), this, &MainWindow::showGettingStarted);
     m.gettingStarted->setObjectName("GettingStartedAction");
     m.about = m.help->addAction(QString(), this, &MainWindow::showAbout);
+
+    buildSimulationBar();
 }
 
 void MainWindow::showGettingStarted()
@@ -304,6 +313,7 @@ void MainWindow::retranslate()
     m.reference->setText(tr("Model &Language Reference"));
     m.gettingStarted->setText(tr("&Getting Started"));
     m.about->setText(tr("&About Padrob Studio"));
+    retranslateTools();
 
     // the status bar and the title (a passing message in the old language goes)
     statusBar()->clearMessage();
@@ -320,6 +330,38 @@ void MainWindow::retranslate()
 
 void MainWindow::showKeyboardControls()
 {
+    // which way each key moves its drive: + is the way the joint's coordinate grows (as
+    // the Joints sliders show it), named after the joint's kind
+    const auto directions = [this](int treeJoint, int sign) {
+        QString plus = tr("+"), minus = tr("−");
+        if (m_bundle && treeJoint >= 0 && treeJoint < m_bundle->model->nb) {
+            switch (m_bundle->model->jointType[std::size_t(treeJoint)]) {
+            case solver::JointType::Revolute:
+                plus = tr("turns +", "a revolute joint's angle grows");
+                minus = tr("turns −", "a revolute joint's angle shrinks");
+                break;
+            case solver::JointType::Actuator:
+                plus = tr("cylinder out", "a T 1 joint's actuator lengthens");
+                minus = tr("cylinder in", "a T 1 joint's actuator shortens");
+                break;
+            default:
+                plus = tr("slides +", "a prismatic joint's displacement grows");
+                minus = tr("slides −", "a prismatic joint's displacement shrinks");
+                break;
+            }
+        }
+        return sign < 0 ? std::pair{minus, plus} : std::pair{plus, minus};
+    };
+    const auto row = [](const QString& keys, const QString& drive, const QString& ways) {
+        return "<tr><td><b>" + keys.toHtmlEscaped() + "</b>&nbsp;&nbsp;</td><td>" + drive.toHtmlEscaped() +
+               "&nbsp;&nbsp;</td><td>" + ways.toHtmlEscaped() + "</td></tr>";
+    };
+    const auto ways = [&directions](const QString& pair, int treeJoint, int sign) {
+        const QStringList keys = pair.split(QStringLiteral(" / "));
+        const auto [first, second] = directions(treeJoint, sign);
+        return tr("%1: %2 · %3: %4", "each key of a pair and which way it moves the drive")
+            .arg(keys.value(0), first, keys.value(1), second);
+    };
     // what the station does with the keys: the profile's own keyboard mappings, or
     // the pairs on the drives in order when the profile does not map the keyboard
     QString text = "<table>";
@@ -333,17 +375,15 @@ void MainWindow::showKeyboardControls()
             for (const trainer::DriveInfo& d : st->drives)
                 if (d.jointId == ms.mapping.drive) drive = d.label();
             if (ms.bank >= 0) drive = tr("%1 (%2)", "a drive and its bank").arg(drive, st->bankNames.value(ms.bank));
-            if (ms.mapping.sign < 0) drive = tr("%1, reversed", "a drive the key moves the other way").arg(drive);
-            text += "<tr><td><b>" + pairs[ms.mapping.axis].toHtmlEscaped() + "</b></td><td>" + drive.toHtmlEscaped() +
-                    "</td></tr>";
+            const QString pair = pairs[ms.mapping.axis];
+            text += row(pair, drive, ways(pair, ms.treeJoint, ms.mapping.sign));
         }
     }
     if (!mapped) {
         for (const KeyBinding& b : m_keyboard->bindings()) {
             const QString joint = b.jointName.isEmpty() ? tr("C %1").arg(b.jointId)
                                                         : tr("C %1 %2").arg(QString::number(b.jointId), b.jointName);
-            text += "<tr><td><b>" + b.keysText().toHtmlEscaped() + "</b></td><td>" + joint.toHtmlEscaped() +
-                    "</td></tr>";
+            text += row(b.keysText(), joint, ways(b.keysText(), b.treeJoint, 1));
         }
     }
     text += "</table>";
@@ -353,13 +393,21 @@ void MainWindow::showKeyboardControls()
         shortcuts << QStringLiteral("<b>%1</b> %2").arg(a->shortcut().toString(QKeySequence::NativeText).toHtmlEscaped(),
                                                        QString(a->text()).remove(QLatin1Char('&')).toHtmlEscaped());
     }
+    // the mouse in the 3D view (CameraController)
+    const QString mouse = "<table>" + row(tr("Left drag"), tr("orbits around the model"), QString()) +
+                          row(tr("Middle drag, or Shift + left drag"), tr("pans"), QString()) +
+                          row(tr("Wheel"), tr("zooms towards the cursor"), QString()) +
+                          row(tr("Double click"), tr("frames the whole model"), QString()) +
+                          row(tr("Ctrl + left drag on a body"),
+                              tr("picks the body and pushes it while the simulation runs (a spring pulls the point "
+                                 "you grabbed toward the cursor); release to let go"),
+                              QString()) +
+                          "</table>";
     auto* box = new QMessageBox(QMessageBox::Information, tr("Keyboard Controls"),
-                                QStringLiteral("<p>%1</p>%2<p>%3<br>%4</p><p>%5</p>")
+                                QStringLiteral("<p>%1</p>%2<p>%3<br>%4</p><p>%5</p>%6")
                                     .arg(tr("With the 3D view focused, hold a key to open a valve:"), text,
-                                         tr("Shortcuts (none of them opens a valve):"), shortcuts.join(QStringLiteral(" · ")),
-                 tr("Mouse in the 3D view: left drag orbits, middle drag or Shift + left drag pans, the wheel "
-                    "zooms, a double click frames the model. Ctrl + left drag on a body pushes it while the "
-                    "simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go.")),
+                                         tr("Shortcuts (none of them opens a valve):"),
+                                         shortcuts.join(QStringLiteral(" · ")), tr("Mouse in the 3D view:"), mouse),
                                 QMessageBox::Ok, this);
     box->setObjectName("KeyboardControlsBox");
     box->setAttribute(Qt::WA_DeleteOnClose);

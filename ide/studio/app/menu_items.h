@@ -23,6 +23,7 @@ struct MainWindow::MenuItems {
     QAction *newModel = nullptr, *open = nullptr, *save = nullptr, *saveAs = nullptr, *quit = nullptr;
     QAction *undo = nullptr, *redo = nullptr, *apply = nullptr, *inertia = nullptr;
     QAction *fitAll = nullptr, *loadScene = nullptr, *noScene = nullptr, *frames = nullptr, *contacts = nullptr, *separate = nullptr;
+    QAction* record = nullptr;  ///< View ▸ Record Video… (Stop Recording while recording)
     QAction *keyboard = nullptr, *reference = nullptr, *about = nullptr, *gettingStarted = nullptr;
     std::vector<std::pair<QAction*, DisplayMode>> displayModes;
     std::vector<std::pair<QAction*, QString>> cameras;  ///< with the camera's name (Viewport::cameraNames)

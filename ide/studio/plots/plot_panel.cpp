@@ -7,6 +7,7 @@
 
 #include <QChart>
 #include <QChartView>
+#include <QComboBox>
 #include <QDir>
 #include <QEvent>
 #include <QFileDialog>
@@ -30,6 +31,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace studio {
 
@@ -69,9 +71,11 @@ PlotPanel::PlotPanel(QWidget* parent) : QWidget(parent)
     sideLayout->setContentsMargins(0, 0, 0, 0);
     m_list = new QTreeWidget(side);
     m_list->setHeaderHidden(true);
+    m_list->setColumnCount(2);  // the signal, and its chart box when ticked
     // a long signal name (in any language) scrolls instead of being cut
     m_list->header()->setStretchLastSection(false);
     m_list->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    m_list->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
     sideLayout->addWidget(m_list, 1);
     auto* buttons = new QHBoxLayout;
     m_clearButton = new QPushButton(side);
@@ -141,7 +145,8 @@ void PlotPanel::changeEvent(QEvent* event)
 
 void PlotPanel::retranslate()
 {
-    m_list->setToolTip(tr("Tick the signals to plot; each unit gets its own chart."));
+    m_list->setToolTip(tr("Tick the signals to plot; each unit gets its own chart, or choose beside a ticked signal "
+                          "a numbered chart to overlay signals of any units."));
     m_clearButton->setText(tr("Clear"));
     m_clearButton->setToolTip(tr("Forget the samples plotted so far"));
     m_csvButton->setText(tr("CSV…"));
@@ -200,15 +205,18 @@ void PlotPanel::setBundle(std::shared_ptr<const ModelBundle> bundle)
                 qd.axis = a;
                 continue;
             }
+            // angles in degrees, as the Joints sliders show them
             const bool turns = m.jointType[k] == solver::JointType::Revolute;
-            const QString length = turns ? QStringLiteral("rad") : QStringLiteral("m");
-            const QString rate = turns ? QStringLiteral("rad/s") : QStringLiteral("m/s");
+            const QString length = turns ? QStringLiteral("°") : QStringLiteral("m");
+            const QString rate = turns ? QStringLiteral("°/s") : QStringLiteral("m/s");
             const QString force = turns ? QStringLiteral("N m") : QStringLiteral("N");
             auto add = [&](Kind kind, const QString& prefix, const QString& symbol, const QString& unit) {
                 addSignal(kind, prefix, symbol, unit, id, name).tree = i;
             };
             add(Kind::Q, QStringLiteral("q"), QStringLiteral("q"), length);
+            m_signals.back().scale = turns ? 180 / std::numbers::pi : 1.0;
             add(Kind::Qd, QStringLiteral("qd"), QStringLiteral("dq/dt"), rate);
+            m_signals.back().scale = turns ? 180 / std::numbers::pi : 1.0;
             if (m.drive[k].type != solver::DriveType::None) add(Kind::Force, QStringLiteral("f"), QStringLiteral("F"), force);
             if (m.drive[k].type == solver::DriveType::FluidPower) {
                 // the chambers' pressures, in MPa (the panel's numbers)
@@ -336,8 +344,8 @@ bool PlotPanel::addSample(const Snapshot& snapshot, bool always)
         const Signal& s = m_signals[k];
         double v = kNaN;
         switch (s.kind) {
-        case Kind::Q: v = at(snapshot.q, s.tree); break;
-        case Kind::Qd: v = at(snapshot.qd, s.tree); break;
+        case Kind::Q: v = at(snapshot.q, s.tree) * s.scale; break;
+        case Kind::Qd: v = at(snapshot.qd, s.tree) * s.scale; break;
         case Kind::Force: v = at(snapshot.driveForce, s.tree); break;
         case Kind::PressureA:
             if (const CircuitSnapshot* c = circuit(s.index)) v = c->pressureA * 1e-6;
@@ -417,7 +425,15 @@ void PlotPanel::setSignalSelected(const QString& key, bool selected)
     // tick the list to match
     m_updatingList = true;
     for (QTreeWidgetItemIterator it(m_list); *it; ++it) {
-        if ((*it)->data(0, kKeyRole).toString() == key) (*it)->setCheckState(0, selected ? Qt::Checked : Qt::Unchecked);
+        if ((*it)->data(0, kKeyRole).toString() != key) continue;
+        (*it)->setCheckState(0, selected ? Qt::Checked : Qt::Unchecked);
+        // a ticked signal shows, with its chart box beside it
+        if (!selected) {
+            m_list->removeItemWidget(*it, 1);
+            continue;
+        }
+        addChartBox(*it, key);
+        if ((*it)->parent()) (*it)->parent()->setExpanded(true);
     }
     m_updatingList = false;
     rebuildCharts();
@@ -429,6 +445,49 @@ void PlotPanel::onItemChanged(QTreeWidgetItem* item, int column)
     if (m_updatingList || column != 0) return;
     const QString key = item->data(0, kKeyRole).toString();
     if (!key.isEmpty()) setSignalSelected(key, item->checkState(0) == Qt::Checked);
+}
+
+void PlotPanel::addChartBox(QTreeWidgetItem* item, const QString& key)
+{
+    if (m_list->itemWidget(item, 1)) return;
+    auto* box = new QComboBox;
+    box->setObjectName(QStringLiteral("ChartBox:") + key);
+    box->setToolTip(tr("The chart this signal is drawn in: its unit's, or a numbered one shared by signals of any "
+                       "units"));
+    box->addItem(tr("by unit"), 0);
+    for (int n = 1; n <= kMaxCharts; ++n) box->addItem(tr("chart %1").arg(n), n);
+    box->setCurrentIndex(signalChart(key));
+    connect(box, &QComboBox::activated, this, [this, key](int i) { setSignalChart(key, i); });
+    m_list->setItemWidget(item, 1, box);
+}
+
+void PlotPanel::setSignalChart(const QString& key, int chart)
+{
+    if (indexOf(key) < 0) return;
+    chart = std::clamp(chart, 0, kMaxCharts);
+    if (chart == signalChart(key)) return;
+    if (chart == 0) m_chartOf.remove(key);
+    else m_chartOf.insert(key, chart);
+    if (auto* box = m_list->findChild<QComboBox*>(QStringLiteral("ChartBox:") + key)) box->setCurrentIndex(chart);
+    if (m_selected.contains(key)) rebuildCharts();
+}
+
+int PlotPanel::chartIndexOf(const QString& key) const
+{
+    const int k = indexOf(key);
+    for (std::size_t c = 0; c < m_charts.size(); ++c) {
+        const auto& ids = m_charts[c].signalIndices;
+        if (k >= 0 && std::find(ids.begin(), ids.end(), k) != ids.end()) return int(c);
+    }
+    return -1;
+}
+
+QStringList PlotPanel::chartUnits(int i) const
+{
+    QStringList units;
+    if (i >= 0 && std::size_t(i) < m_charts.size())
+        for (const QString& u : m_charts[std::size_t(i)].units) units << u;
+    return units;
 }
 
 void PlotPanel::rebuildList()
@@ -483,9 +542,34 @@ void PlotPanel::rebuildList()
         item->setData(0, kKeyRole, s.key);
         item->setToolTip(0, labelOf(s));
         item->setCheckState(0, m_selected.contains(s.key) ? Qt::Checked : Qt::Unchecked);
+        if (m_selected.contains(s.key)) addChartBox(item, s.key);
         if (group && m_selected.contains(s.key)) group->setExpanded(true);
     }
     m_updatingList = false;
+}
+
+PlotPanel::Chart PlotPanel::makeChart(const QString& group)
+{
+    Chart c;
+    c.group = group;
+    auto* qchart = new QChart;
+    qchart->setAnimationOptions(QChart::NoAnimation);
+    qchart->legend()->setAlignment(Qt::AlignTop);
+    qchart->setMargins(QMargins(4, 4, 4, 4));
+    // the axes' numbers in the current locale (1,5 in Spanish), without group
+    // separators ("132.000 N" would read as 132 N next to model text)
+    QLocale locale;
+    locale.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);
+    qchart->setLocalizeNumbers(true);
+    qchart->setLocale(locale);
+    c.x = new QValueAxis;
+    c.x->setTitleText(tr("t [s]"));
+    c.x->setLabelFormat(QStringLiteral("%.1f"));
+    qchart->addAxis(c.x, Qt::AlignBottom);
+    c.view = new QChartView(qchart, m_chartArea);
+    c.view->setMinimumHeight(kMinChartHeight);
+    m_chartLayout->addWidget(c.view, 1);
+    return c;
 }
 
 void PlotPanel::rebuildCharts()
@@ -495,41 +579,34 @@ void PlotPanel::rebuildCharts()
     for (const QString& key : m_selected) {
         const int k = indexOf(key);
         const Signal& s = m_signals[std::size_t(k)];
-        auto chart = std::find_if(m_charts.begin(), m_charts.end(), [&](const Chart& c) { return c.unit == s.unit; });
+        // its unit's chart, or the numbered chart chosen for it
+        const int numbered = signalChart(key);
+        const QString group = numbered > 0 ? QStringLiteral("#%1").arg(numbered) : s.unit;
+        auto chart = std::find_if(m_charts.begin(), m_charts.end(), [&](const Chart& c) { return c.group == group; });
         if (chart == m_charts.end()) {
-            Chart c;
-            c.unit = s.unit;
-            auto* qchart = new QChart;
-            qchart->setAnimationOptions(QChart::NoAnimation);
-            qchart->legend()->setAlignment(Qt::AlignTop);
-            qchart->setMargins(QMargins(4, 4, 4, 4));
-            // the axes' numbers in the current locale (1,5 in Spanish), without group
-            // separators ("132.000 N" would read as 132 N next to model text)
-            QLocale locale;
-            locale.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);
-            qchart->setLocalizeNumbers(true);
-            qchart->setLocale(locale);
-            c.x = new QValueAxis;
-            c.x->setTitleText(tr("t [s]"));
-            c.x->setLabelFormat(QStringLiteral("%.1f"));
-            c.y = new QValueAxis;
-            c.y->setTitleText(s.unit);
-            c.y->setLabelFormat(QStringLiteral("%.6g"));
-            qchart->addAxis(c.x, Qt::AlignBottom);
-            qchart->addAxis(c.y, Qt::AlignLeft);
-            c.view = new QChartView(qchart, m_chartArea);
-            c.view->setMinimumHeight(kMinChartHeight);
-            m_chartLayout->addWidget(c.view, 1);
-            m_charts.push_back(c);
+            m_charts.push_back(makeChart(group));
             chart = m_charts.end() - 1;
         }
+        // a vertical axis per unit: the first on the left, the others on the right
+        auto unit = std::find(chart->units.begin(), chart->units.end(), s.unit);
+        if (unit == chart->units.end()) {
+            auto* y = new QValueAxis;
+            y->setTitleText(s.unit);
+            y->setLabelFormat(QStringLiteral("%.6g"));
+            chart->view->chart()->addAxis(y, chart->ys.empty() ? Qt::AlignLeft : Qt::AlignRight);
+            chart->units.push_back(s.unit);
+            chart->ys.push_back(y);
+            unit = chart->units.end() - 1;
+        }
+        const int axis = int(unit - chart->units.begin());
         auto* series = new QLineSeries;
         series->setName(labelOf(s));
         chart->view->chart()->addSeries(series);
         series->attachAxis(chart->x);
-        series->attachAxis(chart->y);
+        series->attachAxis(chart->ys[std::size_t(axis)]);
         chart->signalIndices.push_back(k);
         chart->series.push_back(series);
+        chart->seriesAxis.push_back(axis);
     }
     m_placeholder->setVisible(m_charts.empty());
     refresh();
@@ -559,9 +636,13 @@ void PlotPanel::refresh()
     QList<QPointF> points;
     points.reserve(qsizetype(std::min<std::size_t>(n, std::size_t(m_maxPoints)) + 2));
     for (Chart& c : m_charts) {
-        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        // each vertical axis spans its own signals
+        std::vector<double> los(c.ys.size(), std::numeric_limits<double>::infinity());
+        std::vector<double> his(c.ys.size(), -std::numeric_limits<double>::infinity());
         for (std::size_t i = 0; i < c.series.size(); ++i) {
             const std::size_t k = std::size_t(c.signalIndices[i]);
+            double& lo = los[std::size_t(c.seriesAxis[i])];
+            double& hi = his[std::size_t(c.seriesAxis[i])];
             points.clear();
             auto add = [&](std::size_t row) {
                 const double v = m_samples[row].values[k];
@@ -592,15 +673,18 @@ void PlotPanel::refresh()
             }
             c.series[i]->replace(points);
         }
-        if (!(lo <= hi)) {
-            lo = -1;
-            hi = 1;
-        }
-        const double span = hi - lo;
-        const double pad = span > 0 ? 0.05 * span : (hi == 0 ? 1.0 : 0.05 * std::abs(hi));
         c.x->setRange(x0, x1);
-        c.y->setRange(lo - pad, hi + pad);
-        c.y->applyNiceNumbers();
+        for (std::size_t a = 0; a < c.ys.size(); ++a) {
+            double lo = los[a], hi = his[a];
+            if (!(lo <= hi)) {
+                lo = -1;
+                hi = 1;
+            }
+            const double span = hi - lo;
+            const double pad = span > 0 ? 0.05 * span : (hi == 0 ? 1.0 : 0.05 * std::abs(hi));
+            c.ys[a]->setRange(lo - pad, hi + pad);
+            c.ys[a]->applyNiceNumbers();
+        }
     }
 }
 

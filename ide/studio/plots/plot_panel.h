@@ -4,8 +4,12 @@
 // force (driven joints), the pressures of chambers A and B (CYL/HMOTOR drives, in MPa)
 // and the six reaction components in the joint's axes (A, R, T); every pump's supply
 // pressure (MPa) and delivered flow (L/min); and the mechanical energy — and sees them
-// while the machine moves: one chart per unit (rad, m, N, N m, MPa, …), several
-// signals in a chart, stacked. (The rate is
+// while the machine moves: one chart per unit (°, m, N, N m, MPa, …), several
+// signals in a chart, stacked. A ticked signal's "chart" box (beside it in the list,
+// setSignalChart) puts it instead in one of kMaxCharts numbered charts, where signals of
+// any units are overlaid: one vertical axis per unit, the first on the left, the others
+// on the right. Angles are in degrees and lengths in metres, as the Joints sliders
+// show them (a revolute joint's q in °, its rate in °/s). (The rate is
 // written dq/dt: the fonts of a bare X server do not draw a combining dot.)
 //
 // Data: fed by addSnapshot() (or by setRunner(), which polls the runner's latest()
@@ -27,6 +31,7 @@
 #include "ide/studio/model/model_bundle.h"
 #include "ide/studio/sim/snapshot.h"
 
+#include <QHash>
 #include <QPointer>
 #include <QString>
 #include <QStringList>
@@ -80,6 +85,15 @@ public:
     void setSignalSelected(const QString& key, bool selected);
     /// The ticked signals, in the order they were ticked.
     QStringList selectedSignals() const { return m_selected; }
+    /// The chart a signal is drawn in when ticked: 0, its unit's chart (the default), or
+    /// numbered chart 1 … kMaxCharts, shared with the signals of any unit put there.
+    static constexpr int kMaxCharts = 4;
+    void setSignalChart(const QString& key, int chart);
+    int signalChart(const QString& key) const { return m_chartOf.value(key, 0); }
+    /// The chart (0 = the top one) that shows a ticked signal; −1 when none does.
+    int chartIndexOf(const QString& key) const;
+    /// Chart `i`'s vertical axes' units, left one first.
+    QStringList chartUnits(int i) const;
 
     void setWindow(double seconds);  ///< history kept and shown [s] (≥ 0.1)
     double window() const { return m_window; }
@@ -122,6 +136,7 @@ private:
         int axis = -1;   // a free joint's translation: 0, 1, 2 along B1's joint axes A, R, T; −1 otherwise
         int index = -1;  // Model::circuits index (PressureA/B) or Model::pumps index (Supply, PumpFlow)
         int ownerId = 0;    // the joint's id (C J), or the pump's (PUMP P)
+        double scale = 1;   // from SI to the unit shown (rad → °)
         QString ownerName;  // its NAME
         bool isPump() const { return kind == Kind::Supply || kind == Kind::PumpFlow; }
     };
@@ -130,12 +145,14 @@ private:
         std::vector<double> values;  // per signal (m_signals order)
     };
     struct Chart {
-        QString unit;
+        QString group;  // a unit, or "#N" for numbered chart N
         QChartView* view = nullptr;
         QValueAxis* x = nullptr;
-        QValueAxis* y = nullptr;
+        std::vector<QString> units;   // one vertical axis per unit
+        std::vector<QValueAxis*> ys;
         std::vector<int> signalIndices;
         std::vector<QLineSeries*> series;
+        std::vector<int> seriesAxis;  // index into ys
     };
 
     void retranslate();
@@ -149,6 +166,10 @@ private:
     int indexOf(const QString& key) const;
     void rebuildList();
     void rebuildCharts();
+    /// A new chart in the chart area, its time axis, no series.
+    Chart makeChart(const QString& group);
+    /// The chart box beside a ticked signal's item (column 1).
+    void addChartBox(QTreeWidgetItem* item, const QString& key);
     void onItemChanged(QTreeWidgetItem* item, int column);
     void poll();
     /// addSnapshot's work; `always`: also when less than minSampleInterval() after the
@@ -160,6 +181,7 @@ private:
     std::shared_ptr<const ModelBundle> m_bundle;
     std::vector<Signal> m_signals;
     QStringList m_selected;
+    QHash<QString, int> m_chartOf;  // key → numbered chart (absent: its unit's)
     std::deque<Sample> m_samples;
     std::vector<Chart> m_charts;
     double m_window = 20;

@@ -89,6 +89,7 @@ AttemptScreen::AttemptScreen(TrainingController* training, QWidget* parent) : QW
     row->setContentsMargins(0, 0, 0, 0);
     row->setSpacing(0);
     row->addWidget(viewBox, 1);
+    buildSideScreens(row, viewBox);
     m_hydraulics = new HydraulicPanel;
     m_hydraulics->setObjectName("AttemptHydraulics");
     m_hydraulics->setHeadingVisible(true);
@@ -150,8 +151,11 @@ AttemptScreen::AttemptScreen(TrainingController* training, QWidget* parent) : QW
     m_cameraBox = new QComboBox;
     m_cameraBox->setObjectName("AttemptCamera");
     for (const QString& name : Viewport::cameraNames()) m_cameraBox->addItem(QString(), name);
+    m_cameraBox->addItem(QString(), QStringLiteral("ThreeScreens"));  // (attempt_screens.cpp)
     bar->addWidget(m_cameraBox);
     connect(m_cameraBox, &QComboBox::activated, this, [this](int i) {
+        setThreeScreens(m_cameraBox->itemData(i).toString() == QLatin1String("ThreeScreens"));
+        if (m_three) return m_view->setFocus();
         m_view->setCamera(m_cameraBox->itemData(i).toString());
         if (m_cameraBox->itemData(i).toString() != QLatin1String("Operator seat"))
             trainui::frameModelAndTargets(m_view);
@@ -168,8 +172,9 @@ AttemptScreen::AttemptScreen(TrainingController* training, QWidget* parent) : QW
         m_hydraulicsBox->setText(tr("Hydraulics"));
         m_hydraulicsBox->setToolTip(tr("The pump, the spools and the chamber pressures beside the view."));
         viewLabel->setText(tr("View:"));
-        for (int i = 0; i < m_cameraBox->count(); ++i)
+        for (int i = 0; i < m_cameraBox->count() - 1; ++i)
             m_cameraBox->setItemText(i, Viewport::cameraLabel(m_cameraBox->itemData(i).toString()));
+        m_cameraBox->setItemText(m_cameraBox->count() - 1, tr("Three screens (−60°, 0°, +60°)"));
         stop->setText(tr("Stop"));
     });
     layout->addLayout(bar);
@@ -213,13 +218,15 @@ void AttemptScreen::aim()
 {
     const auto t = m_training->tutorial();
     if (!t) return;
-    // inside a scene the operator's seat; in the open, from where the target shows
-    const QString camera = t->sceneFile.empty() ? QStringLiteral("Iso") : QStringLiteral("Operator seat");
+    // inside a scene (or on three screens) the operator's seat; in the open, from where the target shows
+    const bool seat = !t->sceneFile.empty() || m_three;
+    const QString camera = seat ? QStringLiteral("Operator seat") : QStringLiteral("Iso");
     m_view->resetOperatorSeat();
     m_view->setCamera(camera);
     if (!t->sceneFile.empty()) aimSeatAtFirstGoal(*t);
-    if (t->sceneFile.empty()) QTimer::singleShot(0, m_view, [v = m_view] { trainui::frameModelAndTargets(v); });
-    m_cameraBox->setCurrentIndex(std::max(0, m_cameraBox->findData(camera)));
+    if (!seat) QTimer::singleShot(0, m_view, [v = m_view] { trainui::frameModelAndTargets(v); });
+    m_cameraBox->setCurrentIndex(std::max(0, m_cameraBox->findData(m_three ? QStringLiteral("ThreeScreens") : camera)));
+    setThreeScreens(m_three);
     m_view->setFocus();
 }
 
@@ -227,6 +234,7 @@ void AttemptScreen::leave()
 {
     m_on = false;
     m_view->clearGhost();
+    syncSideScreens();
 }
 
 void AttemptScreen::showControls()
@@ -269,6 +277,7 @@ void AttemptScreen::showFrame(const TrainFrame& f)
         m_hydraulics->setSnapshot(f.snapshot);
         if (f.ghost && m_expertBox->isChecked()) m_view->setGhost(f.ghost);
         else m_view->clearGhost();
+        syncSideScreens();
     }
     updateHud(f);
     placeHud(f);

@@ -12,9 +12,14 @@
 // the demonstration beside the attempt and draws it translucent (Viewport::setGhost).
 // Below the view, the controls of the stage's drives (drive_controls.h); below that the
 // training centre's indicator, the camera and Stop; Esc also ends it.
+// The camera box's last choice, "Three screens", is the thesis's immersion set-up
+// (attempt_screens.cpp): the seat's view in the middle and two more screens beside it,
+// turned −60° and +60°, with dark separators between them; remembered
+// ("trainer/threeScreens").
 
 #include "ide/i18n/texts.h"
 
+#include <QList>
 #include <QWidget>
 
 #include <memory>
@@ -22,6 +27,7 @@
 class QCheckBox;
 class QComboBox;
 class QFrame;
+class QHBoxLayout;
 class QLabel;
 class QProgressBar;
 
@@ -67,6 +73,11 @@ public:
     QCheckBox* expertBox() const { return m_expertBox; }
     HydraulicPanel* hydraulicPanel() const { return m_hydraulics; }
     QCheckBox* hydraulicsBox() const { return m_hydraulicsBox; }
+    /// Three screens side by side (the seat at −60°, 0°, +60°) or the one view.
+    void setThreeScreens(bool on);
+    bool threeScreens() const { return m_three; }
+    /// Screen `i` of the three, left to right (1 is view()); nullptr out of range.
+    Viewport* screen(int i) const;
     /// The training centre's indicator (TrainPage::setCentreLink fills it).
     QLabel* centreLabel() const { return m_centre; }
 
@@ -95,6 +106,11 @@ private:
     void scaleHud();
     /// A scene's attempt: turns the seat towards the first goal when it is out of view.
     void aimSeatAtFirstGoal(const trainer::Tutorial& t);
+    /// The side screens and their separators around `viewBox` in `row` (hidden).
+    void buildSideScreens(QHBoxLayout* row, QWidget* viewBox);
+    /// The side screens show what the middle one does: its model, scene, poses, ghost
+    /// and seat, turned ∓60°.
+    void syncSideScreens();
 
     TrainingController* m_training;
     i18n::Texts m_texts;
@@ -102,6 +118,10 @@ private:
     bool m_kiosk = false;
     long m_shownStep = -1;
     Viewport* m_view = nullptr;
+    Viewport* m_left = nullptr;   ///< the side screens (three screens)
+    Viewport* m_right = nullptr;
+    QList<QWidget*> m_sideParts;  ///< the side screens and their separators
+    bool m_three = false;
     QComboBox* m_cameraBox = nullptr;
     QCheckBox* m_expertBox = nullptr;
     HydraulicPanel* m_hydraulics = nullptr;

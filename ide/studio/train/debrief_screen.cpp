@@ -12,6 +12,7 @@
 #include <QLabel>
 #include <QLegend>
 #include <QLineSeries>
+#include <QPen>
 #include <QListWidget>
 #include <QPushButton>
 #include <QSlider>
@@ -67,8 +68,28 @@ QChart* makeChart(const QString& title, QLineSeries* series, const QString& yTit
     chart->addAxis(y, Qt::AlignLeft);
     series->attachAxis(x);
     series->attachAxis(y);
+    // the replay cursor: a vertical line at the replay's time (moveCursor)
+    auto* cursor = new QLineSeries;
+    cursor->setObjectName("ReplayCursor");
+    cursor->setPen(QPen(QColor(0xe5, 0x39, 0x35), 2));
+    cursor->append(0, y->min());
+    cursor->append(0, y->max());
+    chart->addSeries(cursor);
+    cursor->attachAxis(x);
+    cursor->attachAxis(y);
     chart->setMargins(QMargins(4, 4, 4, 4));
     return chart;
+}
+
+/// Puts a chart's replay cursor at time `t` [s], across the whole height.
+void moveCursor(QChartView* view, double t)
+{
+    if (!view->chart()) return;
+    for (QAbstractSeries* s : view->chart()->series()) {
+        auto* cursor = qobject_cast<QLineSeries*>(s);
+        if (!cursor || cursor->objectName() != QLatin1String("ReplayCursor") || cursor->count() != 2) continue;
+        cursor->replace(QList<QPointF>{{t, cursor->at(0).y()}, {t, cursor->at(1).y()}});
+    }
 }
 
 }  // namespace
@@ -192,6 +213,8 @@ void DebriefScreen::showSample(int index)
     const trainer::SessionSample& s = run->samples[std::size_t(index)];
     m_view->setSnapshot(snapshotFromSample(s, m_training->bundle()));
     m_time->setText(tr("%1 s").arg(num(s.t, 2)));
+    moveCursor(m_forceChart, s.t);
+    moveCursor(m_reliefChart, s.t);
     if (!m_playing) m_clock = s.t;
 }
 
@@ -203,11 +226,11 @@ void DebriefScreen::fill()
     m_play->setText(tr("Play"));
     m_slider->setRange(0, std::max(0, int(run->samples.size()) - 1));
     m_slider->setValue(0);
-    showSample(0);
     QTimer::singleShot(0, m_view, [v = m_view] { trainui::frameModelAndTargets(v); });
     fillTimeline();
     fillCharts();
     fillComparison();
+    showSample(0);  // (the charts' cursors at the start)
 }
 
 void DebriefScreen::retranslate()

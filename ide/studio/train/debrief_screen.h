@@ -1,7 +1,8 @@
 #pragma once
 // DebriefScreen: the attempt looked at again. The run replayed from its samples in a
 // 3D view (Play/Pause, a scrub slider), the force of the most loaded drive and the
-// relief-valve openings against time (QtCharts), the timeline of events (a click seeks
+// relief-valve openings against time (QtCharts, a red vertical line at the replay's
+// time: the series named "ReplayCursor"), the timeline of events (a click seeks
 // the replay there) and "You and the expert": the attempt's measures beside those of
 // the stage's demonstration run headless (TrainingController::computeExpert).
 

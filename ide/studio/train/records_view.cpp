@@ -38,6 +38,9 @@ namespace {
 
 namespace rec = trainer::records;
 
+/// The pass marks' colour in the chart (no attempt series has it).
+constexpr QRgb kPassMarkColour = 0xff2e9d4a;
+
 QString num(double v, int decimals) { return QLocale().toString(v, 'f', decimals); }
 
 QString when(const QDateTime& utc)
@@ -444,12 +447,18 @@ void RecordsView::fillChart(const QList<trainer::records::Attempt>& attempts)
         s->append(n - k, a.score);
     }
     const double xMax = std::max(2, n);
+    // the attempts in colours that are never the pass mark's (green)
+    const QColor attemptColours[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xff, 0x7f, 0x0e), QColor(0x94, 0x67, 0xbd),
+                                     QColor(0x8c, 0x56, 0x4b), QColor(0xe3, 0x77, 0xc2), QColor(0x17, 0xbe, 0xcf),
+                                     QColor(0x7f, 0x7f, 0x7f), QColor(0xd6, 0x27, 0x28)};
+    int colour = 0;
     for (QLineSeries* s : byTutorial) {
         chart->addSeries(s);
+        s->setColor(attemptColours[colour++ % std::size(attemptColours)]);
         s->attachAxis(x);
         s->attachAxis(y);
     }
-    // each tutorial's pass mark, dashed in its series' colour
+    // each tutorial's pass mark: a dashed green line, named with its tutorials
     QMap<double, QStringList> marks;
     for (auto it = byTutorial.begin(); it != byTutorial.end(); ++it)
         if (m_passMarks.contains(it.key())) marks[m_passMarks.value(it.key())] << it.key();
@@ -458,7 +467,8 @@ void RecordsView::fillChart(const QList<trainer::records::Attempt>& attempts)
         line->setName(tr("pass mark %1 (%2)").arg(num(it.key(), 0), it.value().join(", ")));
         line->append(1, it.key());
         line->append(xMax, it.key());
-        QPen pen(it.value().size() == 1 ? byTutorial.value(it.value().first())->color() : QColor("#2e9d4a"));
+        line->setObjectName("PassMark");
+        QPen pen{QColor(kPassMarkColour)};
         pen.setStyle(Qt::DashLine);
         pen.setWidth(2);
         chart->addSeries(line);

@@ -7,7 +7,8 @@
 //    the selected attempt;
 //  - a chart of the operator's scores (QtCharts): one series per tutorial, the score
 //    of each finished or stopped attempt against its number (the operator's attempts
-//    in order, 1 = the first), and each tutorial's pass mark as a dashed line;
+//    in order, 1 = the first), and each tutorial's pass mark as a dashed green line
+//    (no attempt series is green: the legend tells the pass marks from the attempts);
 //  - Export CSV… (RecordsDb::exportCsv).
 // Without records (they could not be opened: locked, read-only, from a newer Padrob…)
 // it shows why; training goes on without them (attempts go to pending files).

@@ -3,6 +3,7 @@
 #include <QEvent>
 #include <QGuiApplication>
 #include <QHBoxLayout>
+#include <QPalette>
 #include <QLabel>
 #include <QScreen>
 
@@ -19,7 +20,13 @@ ViewportLayout::ViewportLayout(QWidget* parent) : QWidget(parent)
 {
     m_row = new QHBoxLayout(this);
     m_row->setContentsMargins(0, 0, 0, 0);
-    m_row->setSpacing(0);
+    // screens side by side: a dark separator between them, as the monitors' bezels
+    m_row->setSpacing(6);
+    QPalette dark = palette();
+    dark.setColor(QPalette::Window, QColor(0x15, 0x18, 0x1b));
+    dark.setColor(QPalette::WindowText, QColor(0xd0, 0xd4, 0xd8));
+    setPalette(dark);
+    setAutoFillBackground(true);
     m_elsewhere = new QLabel(this);
     m_elsewhere->setAlignment(Qt::AlignCenter);
     m_elsewhere->hide();

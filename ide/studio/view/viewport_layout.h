@@ -6,7 +6,8 @@
 //    setCamera ("Iso" at first);
 //  - two or three: the "Operator seat" camera, each screen turned by its yaw offset
 //    (three: −60°, 0°, +60°; two: −30°, +30°; left to right) with a 60° horizontal
-//    field of view, so that neighbouring screens join edge to edge.
+//    field of view, so that neighbouring screens join edge to edge, a dark separator
+//    between them.
 // They sit side by side in this widget, or each in a top-level window of its own (one
 // per monitor).
 
