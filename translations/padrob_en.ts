@@ -2813,6 +2813,161 @@
     </message>
 </context>
 <context>
+    <name>DriveControls</name>
+    <message>
+        <location filename="../ide/studio/train/drive_controls.cpp" line="+35" />
+        <source>left stick right + / left −</source>
+        <translation>left stick right + / left −</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>left stick left + / right −</source>
+        <translation>left stick left + / right −</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>left stick up + / down −</source>
+        <translation>left stick up + / down −</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>left stick down + / up −</source>
+        <translation>left stick down + / up −</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>right stick right + / left −</source>
+        <translation>right stick right + / left −</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>right stick left + / right −</source>
+        <translation>right stick left + / right −</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>right stick up + / down −</source>
+        <translation>right stick up + / down −</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>right stick down + / up −</source>
+        <translation>right stick down + / up −</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>left trigger +</source>
+        <translation>left trigger +</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>left trigger −</source>
+        <translation>left trigger −</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>right trigger +</source>
+        <translation>right trigger +</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>right trigger −</source>
+        <translation>right trigger −</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>gamepad axis %1</source>
+        <translation>gamepad axis %1</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>+ closes / − opens</source>
+        <translation>+ closes / − opens</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>+ opens / − closes</source>
+        <translation>+ opens / − closes</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>+ up / − down</source>
+        <translation>+ up / − down</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>+ down / − up</source>
+        <translation>+ down / − up</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>+ out / − in</source>
+        <translation>+ out / − in</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>+ in / − out</source>
+        <translation>+ in / − out</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>+ right / − left</source>
+        <translation>+ right / − left</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>+ left / − right</source>
+        <translation>+ left / − right</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>%1 + / %2 −</source>
+        <comment>the key giving the drive +, the one giving −</comment>
+        <translation>%1 + / %2 −</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>joystick axis %1</source>
+        <translation>joystick axis %1</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>joystick axis %1 reversed</source>
+        <translation>joystick axis %1 reversed</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>lever %1</source>
+        <translation>lever %1</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>lever %1 reversed</source>
+        <translation>lever %1 reversed</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 (bank %2)</source>
+        <translation>%1 (bank %2)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1 (%2)</source>
+        <comment>a drive and which way + moves it</comment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>no control</source>
+        <translation>no control</translation>
+    </message>
+</context>
+<context>
     <name>StationNode</name>
     <message>
         <location filename="../trainer/centre/station_node.cpp" line="+41" />
@@ -3030,7 +3185,7 @@
         <translation>Stopped</translation>
     </message>
     <message>
-        <location line="+73" />
+        <location line="+75" />
         <source>Goal done: %1</source>
         <translation>Goal done: %1</translation>
     </message>
@@ -3170,7 +3325,7 @@
         <translation>Safety</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+8" />
         <source>Work faster: move several valves together once you are sure of the way.</source>
         <translation>Work faster: move several valves together once you are sure of the way.</translation>
     </message>
@@ -3190,12 +3345,17 @@
         <translation>Keep clear of the mill, the cart and the people, do not force the cylinders against their relief valves and do not run into the end stops.</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+17" />
+        <source>Nothing was done towards the goals: drive the machine towards the first one (the start screen names the keys and levers of each drive).</source>
+        <translation>Nothing was done towards the goals: drive the machine towards the first one (the start screen names the keys and levers of each drive).</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>Complete every goal: the stage is passed only when all are done.</source>
         <translation>Complete every goal: the stage is passed only when all are done.</translation>
     </message>
     <message>
-        <location line="-143" />
+        <location line="-150" />
         <source>Fault injected</source>
         <translation>Fault injected</translation>
     </message>
@@ -3225,7 +3385,7 @@
         <translation>Power cut</translation>
     </message>
     <message>
-        <location filename="../trainer/training/session.cpp" line="+39" />
+        <location filename="../trainer/training/session.cpp" line="+41" />
         <source>Instructor: the hose of %1 was repaired</source>
         <translation>Instructor: the hose of %1 was repaired</translation>
     </message>
@@ -3265,7 +3425,7 @@
         <translation>Instructor: the power was cut; every valve closed</translation>
     </message>
     <message>
-        <location line="+720" />
+        <location line="+767" />
         <source>There is no drive "%1": this machine has no hydraulic drives</source>
         <translation>There is no drive "%1": this machine has no hydraulic drives</translation>
     </message>
@@ -6504,7 +6664,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::AttemptScreen</name>
     <message>
-        <location filename="../ide/studio/train/attempt_screen.cpp" line="+156" />
+        <location filename="../ide/studio/train/attempt_screen.cpp" line="+168" />
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc or Stop ends the attempt.</translation>
     </message>
@@ -6540,26 +6700,76 @@ never the .key files of the CAs; then run it with --security DIR.
     </message>
     <message>
         <location line="+3" />
+        <source>Three screens (−60°, 0°, +60°)</source>
+        <translation>Three screens (−60°, 0°, +60°)</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Stop</source>
         <translation>Stop</translation>
     </message>
     <message>
-        <location line="+102" />
+        <location line="+69" />
+        <source>Controls:</source>
+        <translation>Controls:</translation>
+    </message>
+    <message>
+        <location line="+101" />
         <source>Goal %1 of %2</source>
         <translation>Goal %1 of %2</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+57" />
         <source>Distance: %1 m</source>
         <translation>Distance: %1 m</translation>
     </message>
     <message>
         <location line="+4" />
-        <source>Hold: %1 of %2 s</source>
-        <translation>Hold: %1 of %2 s</translation>
+        <source>Angle: %1° off (within %2°)</source>
+        <translation>Angle: %1° off (within %2°)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Hold: %1 s more</source>
+        <translation>Hold: %1 s more</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>come within %1 m</source>
+        <translation>come within %1 m</translation>
     </message>
     <message>
         <location line="+2" />
+        <source>align the load: %1° off</source>
+        <translation>align the load: %1° off</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>align the head: %1° off</source>
+        <translation>align the head: %1° off</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>hold the load in the claws</source>
+        <translation>hold the load in the claws</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Hold %1 s</source>
+        <translation>Hold %1 s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Hold %1 s once you %2</source>
+        <translation>Hold %1 s once you %2</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source> and </source>
+        <translation> and </translation>
+    </message>
+    <message>
+        <location line="-71" />
         <source>All goals done</source>
         <translation>All goals done</translation>
     </message>
@@ -6579,12 +6789,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Load in the claws</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</source>
-        <translation>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</translation>
-    </message>
-    <message>
-        <location line="+8" />
+        <location line="+11" />
         <source>Paused by the instructor</source>
         <translation>Paused by the instructor</translation>
     </message>
@@ -6865,7 +7070,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::ChannelPanel</name>
     <message>
-        <location filename="../ide/studio/station/channel_bars.cpp" line="+218" />
+        <location filename="../ide/studio/station/channel_bars.cpp" line="+228" />
         <location line="+23" />
         <source>No device selected</source>
         <translation>No device selected</translation>
@@ -6876,7 +7081,12 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Buttons</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="-2" />
+        <source>Keys are digital: a key gives its drive the full command (−1, 0 or +1) at once, so there is nothing to calibrate. A ramp eases each key's command in and out instead.</source>
+        <translation>Keys are digital: a key gives its drive the full command (−1, 0 or +1) at once, so there is nothing to calibrate. A ramp eases each key's command in and out instead.</translation>
+    </message>
+    <message>
+        <location line="+36" />
         <source>%1: no channels (yet)</source>
         <translation>%1: no channels (yet)</translation>
     </message>
@@ -6904,13 +7114,33 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Calibrated</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>Ramp</source>
+        <translation>Ramp</translation>
+    </message>
+    <message>
         <location line="+29" />
-        <location line="+60" />
+        <location line="+91" />
         <source>not calibrated</source>
         <translation>not calibrated</translation>
     </message>
     <message>
-        <location line="-59" />
+        <location line="-84" />
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>at once</source>
+        <translation>at once</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>How long a key takes to open its valve fully (and to close it again): 0 gives the full command at once</source>
+        <translation>How long a key takes to open its valve fully (and to close it again): 0 gives the full command at once</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>Calibrate…</source>
         <translation>Calibrate…</translation>
     </message>
@@ -6920,12 +7150,12 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Capture this channel's centre and travel, and set its dead band and curve</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+17" />
         <source>Button %1: %2</source>
         <translation>Button %1: %2</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+52" />
         <source>out of range</source>
         <translation>out of range</translation>
     </message>
@@ -7014,12 +7244,12 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::DebriefScreen</name>
     <message>
-        <location filename="../ide/studio/train/debrief_screen.cpp" line="+57" />
+        <location filename="../ide/studio/train/debrief_screen.cpp" line="+58" />
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
     <message>
-        <location line="+76" />
+        <location line="+97" />
         <location line="+24" />
         <source>Pause</source>
         <translation>Pause</translation>
@@ -7028,12 +7258,12 @@ never the .key files of the CAs; then run it with --security DIR.
         <location line="-24" />
         <location line="+24" />
         <location line="+24" />
-        <location line="+21" />
+        <location line="+23" />
         <source>Play</source>
         <translation>Play</translation>
     </message>
     <message>
-        <location line="-68" />
+        <location line="-70" />
         <source>Events</source>
         <translation>Events</translation>
     </message>
@@ -7068,7 +7298,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>%1 s</translation>
     </message>
     <message>
-        <location line="+38" />
+        <location line="+40" />
         <source>%1 s — %2</source>
         <translation>%1 s — %2</translation>
     </message>
@@ -7235,7 +7465,7 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::EditorPanel</name>
     <message>
-        <location filename="../ide/studio/editor/editor_panel.cpp" line="+89" />
+        <location filename="../ide/studio/editor/editor_panel.cpp" line="+119" />
         <source>Apply</source>
         <translation>Apply</translation>
     </message>
@@ -7244,8 +7474,33 @@ never the .key files of the CAs; then run it with --security DIR.
         <source>Use this model in the 3D view and the simulation</source>
         <translation>Use this model in the 3D view and the simulation</translation>
     </message>
+    <message>
+        <location line="+1" />
+        <source>Reload</source>
+        <translation>Reload</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Read the file again (your unsaved edits stay in Undo)</source>
+        <translation>Read the file again (your unsaved edits stay in Undo)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Keep my text</source>
+        <translation>Keep my text</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Go on with the text in the editor; saving writes it over the file</source>
+        <translation>Go on with the text in the editor; saving writes it over the file</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>“%1” changed on disk, and the editor has unsaved changes.</source>
+        <translation>“%1” changed on disk, and the editor has unsaved changes.</translation>
+    </message>
     <message numerus="yes">
-        <location line="+137" />
+        <location line="+179" />
         <source>%1, %n warning(s)</source>
         <comment>the %1 is "%n error(s)"</comment>
         <translation>
@@ -7334,6 +7589,54 @@ never the .key files of the CAs; then run it with --security DIR.
         <location line="+4" />
         <source>%1 drawn; the window saved to %2.</source>
         <translation>%1 drawn; the window saved to %2.</translation>
+    </message>
+</context>
+<context>
+    <name>studio::GettingStarted</name>
+    <message>
+        <location filename="../ide/studio/app/getting_started.cpp" line="+57" />
+        <source>Getting started</source>
+        <translation>Getting started</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Run and pause</source>
+        <translation>Run and pause</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Simulation ▸ Run (%1) starts the machine, Pause (%2) holds it; Reset puts it back at the start.</source>
+        <translation>Simulation ▸ Run (%1) starts the machine, Pause (%2) holds it; Reset puts it back at the start.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Keys</source>
+        <translation>Keys</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Click the 3D view, then hold a key to open a valve: the first key of a pair (%1, %2, …) drives one way, the second the other. Simulation ▸ Keyboard Controls lists which drive each pair moves; in Train, the start screen and the attempt name the keys and levers of each stage.</source>
+        <translation>Click the 3D view, then hold a key to open a valve: the first key of a pair (%1, %2, …) drives one way, the second the other. Simulation ▸ Keyboard Controls lists which drive each pair moves; in Train, the start screen and the attempt name the keys and levers of each stage.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Mouse in the 3D view</source>
+        <translation>Mouse in the 3D view</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Left drag orbits, middle drag or Shift + left drag pans, the wheel zooms, a double click frames the model.</source>
+        <translation>Left drag orbits, middle drag or Shift + left drag pans, the wheel zooms, a double click frames the model.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Help ▸ Getting Started shows this again.</source>
+        <translation>Help ▸ Getting Started shows this again.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Got it</source>
+        <translation>Got it</translation>
     </message>
 </context>
 <context>
@@ -8381,12 +8684,12 @@ never the .key files of the CAs; then run it with --security DIR.
 <context>
     <name>studio::MainWindow</name>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+151" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+155" />
         <source>Export</source>
         <translation>Export</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+214" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+240" />
         <location line="+2" />
         <source>Model</source>
         <translation>Model</translation>
@@ -8422,7 +8725,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Station</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+169" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+201" />
         <source>Leave Trainer Mode</source>
         <translation>Leave Trainer Mode</translation>
     </message>
@@ -8432,7 +8735,7 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Trainer's PIN:</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+10" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+16" />
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -8537,13 +8840,13 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>&amp;Load…</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+36" />
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="-147" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+43" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="-175" />
         <source>Load Scene</source>
         <translation>Load Scene</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+148" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+176" />
         <source>&amp;None</source>
         <translation>&amp;None</translation>
     </message>
@@ -8606,13 +8909,120 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>&amp;Keyboard Controls…</translation>
     </message>
     <message>
-        <location line="+41" />
-        <location line="+11" />
+        <location line="+17" />
+        <source>&amp;Getting Started</source>
+        <translation>&amp;Getting Started</translation>
+    </message>
+    <message>
+        <location line="+22" />
+        <source>+</source>
+        <translation>+</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>−</source>
+        <translation>−</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>turns +</source>
+        <comment>a revolute joint's angle grows</comment>
+        <translation>turns +</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>turns −</source>
+        <comment>a revolute joint's angle shrinks</comment>
+        <translation>turns −</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>cylinder out</source>
+        <comment>a T 1 joint's actuator lengthens</comment>
+        <translation>cylinder out</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>cylinder in</source>
+        <comment>a T 1 joint's actuator shortens</comment>
+        <translation>cylinder in</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>slides +</source>
+        <comment>a prismatic joint's displacement grows</comment>
+        <translation>slides +</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>slides −</source>
+        <comment>a prismatic joint's displacement shrinks</comment>
+        <translation>slides −</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>%1: %2 · %3: %4</source>
+        <comment>each key of a pair and which way it moves the drive</comment>
+        <translation>%1: %2 · %3: %4</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <location line="+10" />
         <source>C %1</source>
         <translation>C %1</translation>
     </message>
     <message>
         <location line="+13" />
+        <source>Left drag</source>
+        <translation>Left drag</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>orbits around the model</source>
+        <translation>orbits around the model</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Middle drag, or Shift + left drag</source>
+        <translation>Middle drag, or Shift + left drag</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>pans</source>
+        <translation>pans</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Wheel</source>
+        <translation>Wheel</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>zooms towards the cursor</source>
+        <translation>zooms towards the cursor</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Double click</source>
+        <translation>Double click</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>frames the whole model</source>
+        <translation>frames the whole model</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Ctrl + left drag on a body</source>
+        <translation>Ctrl + left drag on a body</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>picks the body and pushes it while the simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go</source>
+        <translation>picks the body and pushes it while the simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>Keyboard Controls</source>
         <translation>Keyboard Controls</translation>
     </message>
@@ -8622,7 +9032,12 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>With the 3D view focused, hold a key to open a valve:</translation>
     </message>
     <message>
-        <location line="-52" />
+        <location line="+2" />
+        <source>Mouse in the 3D view:</source>
+        <translation>Mouse in the 3D view:</translation>
+    </message>
+    <message>
+        <location line="-98" />
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
@@ -8632,31 +9047,31 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>Model &amp;Language Reference</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>&amp;About Padrob Studio</source>
         <translation>&amp;About Padrob Studio</translation>
     </message>
     <message>
         <location filename="../ide/studio/app/main_window.cpp" line="-16" />
-        <location line="+74" />
+        <location line="+79" />
         <source>Open Model</source>
         <translation>Open Model</translation>
     </message>
     <message>
-        <location line="-74" />
+        <location line="-79" />
         <source>Cannot open %1:
 %2</source>
         <translation>Cannot open %1:
 %2</translation>
     </message>
     <message>
-        <location line="+74" />
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="-179" />
+        <location line="+79" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="-208" />
         <source>Padrob models (*.pad);;All files (*)</source>
         <translation>Padrob models (*.pad);;All files (*)</translation>
     </message>
     <message numerus="yes">
-        <location line="-240" />
+        <location line="-284" />
         <source>%n attempt(s) kept while the trainee records could not be written were added to them.</source>
         <translation>
             <numerusform>%n attempt kept while the trainee records could not be written was added to them.</numerusform>
@@ -8669,12 +9084,12 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>The trainee records cannot be opened: %1</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+117" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+139" />
         <source>Hydraulics</source>
         <translation>Hydraulics</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location line="+38" />
         <source>&amp;Contacts</source>
         <translation>&amp;Contacts</translation>
     </message>
@@ -8714,16 +9129,10 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>At the &amp;vertices (faster)</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+70" />
         <source>%1 (%2)</source>
         <comment>a drive and its bank</comment>
         <translation>%1 (%2)</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>%1, reversed</source>
-        <comment>a drive the key moves the other way</comment>
-        <translation>%1, reversed</translation>
     </message>
     <message>
         <location line="+8" />
@@ -8731,17 +9140,12 @@ never the .key files of the CAs; then run it with --security DIR.
         <translation>C %1 %2</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+24" />
         <source>Shortcuts (none of them opens a valve):</source>
         <translation>Shortcuts (none of them opens a valve):</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Mouse in the 3D view: left drag orbits, middle drag or Shift + left drag pans, the wheel zooms, a double click frames the model. Ctrl + left drag on a body pushes it while the simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go.</source>
-        <translation>Mouse in the 3D view: left drag orbits, middle drag or Shift + left drag pans, the wheel zooms, a double click frames the model. Ctrl + left drag on a body pushes it while the simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go.</translation>
-    </message>
-    <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+181" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+220" />
         <source>%1
 
 The 3D view goes on without this scene.</source>
@@ -8765,7 +9169,7 @@ The 3D view goes on without this scene.</translation>
         <translation>The scene used last is not drawn: %1</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+35" />
         <location line="+14" />
         <source>Save Model</source>
         <translation>Save Model</translation>
@@ -8829,32 +9233,52 @@ Use Save As to choose another place.</translation>
         <translation>Padrob Studio was closed with unsaved changes to %1 (recovery copy of %2). Restore them?</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+91" />
+        <source>real time ×%1, %2 µs/step</source>
+        <translation>real time ×%1, %2 µs/step</translation>
+    </message>
+    <message>
+        <location filename="../ide/studio/app/main_window_reload.cpp" line="+52" />
         <source>%1 was deleted or moved on disk; the text in the editor is kept — save it to write it again.</source>
         <translation>%1 was deleted or moved on disk; the text in the editor is kept — save it to write it again.</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>%1 changed on disk. Reload it and lose your unsaved changes?</source>
-        <translation>%1 changed on disk. Reload it and lose your unsaved changes?</translation>
+        <location line="+31" />
+        <source>%1 changed on disk and was reloaded; the pose is kept.</source>
+        <translation>%1 changed on disk and was reloaded; the pose is kept.</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>%1 changed on disk. Reload it?</source>
-        <translation>%1 changed on disk. Reload it?</translation>
+        <source>%1 changed on disk and was reloaded; its joints changed, so it starts from the initial pose.</source>
+        <translation>%1 changed on disk and was reloaded; its joints changed, so it starts from the initial pose.</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>The editor has changes that are not applied: the 3D view, the tree and the plots show the model applied before. Apply (Ctrl+Return) to use them, or Revert.</source>
+        <translation>The editor has changes that are not applied: the 3D view, the tree and the plots show the model applied before. Apply (Ctrl+Return) to use them, or Revert.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Apply</source>
+        <translation>Apply</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>Model Changed on Disk</source>
-        <translation>Model Changed on Disk</translation>
+        <source>Revert</source>
+        <translation>Revert</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+1" />
+        <source>Put the applied model's text back in the editor (Undo brings the edits back)</source>
+        <translation>Put the applied model's text back in the editor (Undo brings the edits back)</translation>
+    </message>
+    <message>
+        <location filename="../ide/studio/app/main_window.cpp" line="-58" />
         <source>The scene's solids cannot be taken into the model's contacts (a shape that cannot serve): the model runs without touching them</source>
         <translation>The scene's solids cannot be taken into the model's contacts (a shape that cannot serve): the model runs without touching them</translation>
     </message>
     <message numerus="yes">
-        <location line="+13" />
+        <location line="+15" />
         <source>Model applied: %n bodies</source>
         <translation>
             <numerusform>Model applied: %n body</numerusform>
@@ -8862,35 +9286,22 @@ Use Save As to choose another place.</translation>
         </translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+40" />
         <source>t = %1 s</source>
         <translation>t = %1 s</translation>
     </message>
-    <message numerus="yes">
-        <location line="+1" />
-        <source>real time ×%1, %2 µs/step, %n overrun(s)</source>
-        <translation>
-            <numerusform>real time ×%1, %2 µs/step, %n overrun</numerusform>
-            <numerusform>real time ×%1, %2 µs/step, %n overruns</numerusform>
-        </translation>
-    </message>
     <message>
-        <location line="+4" />
+        <location line="+6" />
         <source>paused</source>
         <translation>paused</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>frame %1 ms</source>
         <translation>frame %1 ms</translation>
     </message>
     <message>
-        <location line="+11" />
-        <source>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</source>
-        <translation>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</translation>
-    </message>
-    <message>
-        <location line="+45" />
+        <location line="+52" />
         <source>Simulation Stopped</source>
         <translation>Simulation Stopped</translation>
     </message>
@@ -8904,7 +9315,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
 The simulation is paused at the last good state; the editor stays usable. Reset to start again.</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+13" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+12" />
         <source>Model Language Reference</source>
         <translation>Model Language Reference</translation>
     </message>
@@ -8923,11 +9334,68 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <source>&lt;h3&gt;Padrob Studio %1&lt;/h3&gt;&lt;p&gt;Real-time training simulators of heavy machines, built from a model file: bodies, joints, hydraulic drives, forces and graphics.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Padrob Studio %1&lt;/h3&gt;&lt;p&gt;Real-time training simulators of heavy machines, built from a model file: bodies, joints, hydraulic drives, forces and graphics.&lt;/p&gt;</translation>
     </message>
+    <message>
+        <location filename="../ide/studio/app/main_window_tools.cpp" line="+37" />
+        <location line="+137" />
+        <source>Record Video</source>
+        <translation>Record Video</translation>
+    </message>
+    <message>
+        <location line="-76" />
+        <source>Video saved: %1 (%2 s)</source>
+        <translation>Video saved: %1 (%2 s)</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>%1 (%2)</source>
+        <comment>an action and its shortcut</comment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Speed:</source>
+        <translation>Speed:</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Simulated seconds per second of the wall clock (Simulation ▸ Speed)</source>
+        <translation>Simulated seconds per second of the wall clock (Simulation ▸ Speed)</translation>
+    </message>
+    <message>
+        <location line="+58" />
+        <source>Videos (*.mp4 *.mkv *.mov)</source>
+        <translation>Videos (*.mp4 *.mkv *.mov)</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Stop &amp;Recording</source>
+        <translation>Stop &amp;Recording</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>&amp;Record Video…</source>
+        <translation>&amp;Record Video…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Stop recording the 3D view</source>
+        <translation>Stop recording the 3D view</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Record a video of the 3D view (ffmpeg)</source>
+        <translation>Record a video of the 3D view (ffmpeg)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>● REC %1:%2</source>
+        <translation>● REC %1:%2</translation>
+    </message>
 </context>
 <context>
     <name>studio::MappingTable</name>
     <message>
-        <location filename="../ide/studio/station/mapping_table.cpp" line="+50" />
+        <location filename="../ide/studio/station/mapping_table.cpp" line="+52" />
         <source>none</source>
         <translation>none</translation>
     </message>
@@ -8937,7 +9405,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>The button's number on that device (as the channel lamps show it)</translation>
     </message>
     <message>
-        <location line="+101" />
+        <location line="+104" />
         <location line="+15" />
         <source>Bank</source>
         <translation>Bank</translation>
@@ -9048,28 +9516,29 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>The device whose button steps to the next bank</translation>
     </message>
     <message>
-        <location line="+90" />
+        <location line="+93" />
         <source>Always</source>
         <translation>Always</translation>
     </message>
     <message>
         <location line="+2" />
-        <location line="+394" />
+        <location line="+425" />
         <source>Bank %1</source>
         <translation>Bank %1</translation>
     </message>
     <message>
-        <location line="-384" />
+        <location line="-415" />
         <source>The first connected device of this kind</source>
         <translation>The first connected device of this kind</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+19" />
+        <location line="+8" />
         <source>Axis %1</source>
         <translation>Axis %1</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+27" />
         <source>C %1 (not in this model)</source>
         <translation>C %1 (not in this model)</translation>
     </message>
@@ -9087,7 +9556,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         </translation>
     </message>
     <message>
-        <location line="+160" />
+        <location line="+166" />
         <source>ignored</source>
         <translation>ignored</translation>
     </message>
@@ -9418,6 +9887,22 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
     </message>
 </context>
 <context>
+    <name>studio::OverrunMeter</name>
+    <message>
+        <location filename="../ide/studio/sim/overrun_meter.cpp" line="+29" />
+        <source>%1 % of steps late</source>
+        <translation>%1 % of steps late</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5" />
+        <source>An overrun is a solver step that took longer to compute than the real time it simulates: the simulation falls behind the wall clock. The share shown is that of the last %1 s (%n overrun(s) since Run).
+A few are harmless. If the share stays high, this computer cannot keep up: lower the speed (Simulation ▸ Speed), close other programs, choose Settings ▸ Lighting ▸ At the vertices, or simplify the model.</source>
+        <translation><numerusform>An overrun is a solver step that took longer to compute than the real time it simulates: the simulation falls behind the wall clock. The share shown is that of the last %1 s (%n overrun since Run).
+A few are harmless. If the share stays high, this computer cannot keep up: lower the speed (Simulation ▸ Speed), close other programs, choose Settings ▸ Lighting ▸ At the vertices, or simplify the model.</numerusform><numerusform>An overrun is a solver step that took longer to compute than the real time it simulates: the simulation falls behind the wall clock. The share shown is that of the last %1 s (%n overruns since Run).
+A few are harmless. If the share stays high, this computer cannot keep up: lower the speed (Simulation ▸ Speed), close other programs, choose Settings ▸ Lighting ▸ At the vertices, or simplify the model.</numerusform></translation>
+    </message>
+</context>
+<context>
     <name>studio::PinDialog</name>
     <message>
         <location filename="../ide/studio/train/pin_dialog.cpp" line="+37" />
@@ -9448,12 +9933,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
 <context>
     <name>studio::PlotPanel</name>
     <message>
-        <location filename="../ide/studio/plots/plot_panel.cpp" line="+144" />
-        <source>Tick the signals to plot; each unit gets its own chart.</source>
-        <translation>Tick the signals to plot; each unit gets its own chart.</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location filename="../ide/studio/plots/plot_panel.cpp" line="+150" />
         <source>Clear</source>
         <translation>Clear</translation>
     </message>
@@ -9503,7 +9983,12 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>F drive</translation>
     </message>
     <message>
-        <location line="-3" />
+        <location line="-16" />
+        <source>Tick the signals to plot; each unit gets its own chart, or choose beside a ticked signal a numbered chart to overlay signals of any units.</source>
+        <translation>Tick the signals to plot; each unit gets its own chart, or choose beside a ticked signal a numbered chart to overlay signals of any units.</translation>
+    </message>
+    <message>
+        <location line="+13" />
         <source>mechanical energy [J]</source>
         <translation>mechanical energy [J]</translation>
     </message>
@@ -9529,7 +10014,22 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>pump %1 %2</translation>
     </message>
     <message>
-        <location line="+277" />
+        <location line="+284" />
+        <source>The chart this signal is drawn in: its unit's, or a numbered one shared by signals of any units</source>
+        <translation>The chart this signal is drawn in: its unit's, or a numbered one shared by signals of any units</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>by unit</source>
+        <translation>by unit</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>chart %1</source>
+        <translation>chart %1</translation>
+    </message>
+    <message>
+        <location line="+44" />
         <source>Mechanical energy [J]</source>
         <translation>Mechanical energy [J]</translation>
     </message>
@@ -9614,8 +10114,8 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>reaction force along T [%1]</translation>
     </message>
     <message>
-        <location line="+37" />
-        <location line="+97" />
+        <location line="+31" />
+        <location line="+128" />
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
@@ -9684,7 +10184,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
 <context>
     <name>studio::RecordsView</name>
     <message>
-        <location filename="../ide/studio/train/records_view.cpp" line="+55" />
+        <location filename="../ide/studio/train/records_view.cpp" line="+58" />
         <source>running</source>
         <translation>running</translation>
     </message>
@@ -9852,13 +10352,13 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
     </message>
     <message>
         <location line="+79" />
-        <location line="+161" />
+        <location line="+168" />
         <location line="+17" />
         <source>There are no trainee records.</source>
         <translation>There are no trainee records.</translation>
     </message>
     <message>
-        <location line="-175" />
+        <location line="-182" />
         <source>The trainee records cannot be read: %1 Training goes on; attempts are kept in pending files and added to the records the next time they open.</source>
         <translation>The trainee records cannot be read: %1 Training goes on; attempts are kept in pending files and added to the records the next time they open.</translation>
     </message>
@@ -9913,12 +10413,12 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>score</translation>
     </message>
     <message>
-        <location line="+31" />
+        <location line="+37" />
         <source>pass mark %1 (%2)</source>
         <translation>pass mark %1 (%2)</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+28" />
         <source>Type the operator's code (badge number…).</source>
         <translation>Type the operator's code (badge number…).</translation>
     </message>
@@ -9992,17 +10492,17 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
     </message>
     <message>
         <location line="+1" />
-        <location line="+23" />
+        <location line="+27" />
         <source>Use as this stage's demonstration</source>
         <translation>Use as this stage's demonstration</translation>
     </message>
     <message>
-        <location line="-22" />
+        <location line="-26" />
         <source>From now on the demonstration, the expert and the comparison of this stage replay this attempt's input instead of the shipped one.</source>
         <translation>From now on the demonstration, the expert and the comparison of this stage replay this attempt's input instead of the shipped one.</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+12" />
         <location line="+6" />
         <source>Save as demonstration</source>
         <translation>Save as demonstration</translation>
@@ -10013,7 +10513,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>Padrob input logs (*.log);;All files (*)</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+38" />
         <source>PASSED</source>
         <translation>PASSED</translation>
     </message>
@@ -10056,6 +10556,11 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <location line="+1" />
         <source>Score %1 of 100 in %2 s</source>
         <translation>Score %1 of 100 in %2 s</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Work done: %1 % of the stage</source>
+        <translation>Work done: %1 % of the stage</translation>
     </message>
     <message>
         <location line="+4" />
@@ -10187,7 +10692,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
 <context>
     <name>studio::SimulationRunner</name>
     <message>
-        <location filename="../ide/studio/sim/simulation_runner.cpp" line="+439" />
+        <location filename="../ide/studio/sim/simulation_runner.cpp" line="+459" />
         <source>The simulation stopped: %1</source>
         <translation>The simulation stopped: %1</translation>
     </message>
@@ -10200,7 +10705,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
 <context>
     <name>studio::StartScreen</name>
     <message>
-        <location filename="../ide/studio/train/start_screen.cpp" line="+47" />
+        <location filename="../ide/studio/train/start_screen.cpp" line="+56" />
         <source>Watch the demonstration</source>
         <translation>Watch the demonstration</translation>
     </message>
@@ -10215,22 +10720,22 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>Back to the course</translation>
     </message>
     <message>
-        <location line="+18" />
-        <location line="+42" />
-        <location line="+70" />
+        <location line="+26" />
+        <location line="+47" />
+        <location line="+73" />
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location line="-112" />
-        <location line="+42" />
-        <location line="+102" />
-        <location line="+6" />
+        <location line="-120" />
+        <location line="+47" />
+        <location line="+106" />
+        <location line="+20" />
         <source>Play</source>
         <translation>Play</translation>
     </message>
     <message>
-        <location line="-124" />
+        <location line="-142" />
         <source>Speed:</source>
         <translation>Speed:</translation>
     </message>
@@ -10250,12 +10755,17 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>Time limit: %1 s. Pass mark: %2 of 100.</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+4" />
+        <source>How to drive (%1):</source>
+        <translation>How to drive (%1):</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>This tutorial has no demonstration.</source>
         <translation>This tutorial has no demonstration.</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+43" />
         <source>%1 s of %2 s</source>
         <translation>%1 s of %2 s</translation>
     </message>
@@ -10271,9 +10781,17 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
     </message>
 </context>
 <context>
+    <name>studio::StationHud</name>
+    <message>
+        <location filename="../ide/studio/station/live_state.cpp" line="+26" />
+        <source>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</source>
+        <translation>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</translation>
+    </message>
+</context>
+<context>
     <name>studio::StationPage</name>
     <message>
-        <location filename="../ide/studio/station/live_state.cpp" line="+51" />
+        <location line="+44" />
         <source>Connected</source>
         <translation>Connected</translation>
     </message>
@@ -10308,7 +10826,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>Remove bank</translation>
     </message>
     <message>
-        <location line="+50" />
+        <location line="+51" />
         <source>Profile:</source>
         <translation>Profile:</translation>
     </message>
@@ -10429,28 +10947,28 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
     </message>
     <message>
         <location line="-6" />
-        <location line="+455" />
+        <location line="+464" />
         <source>Record input…</source>
         <translation>Record input…</translation>
     </message>
     <message>
-        <location line="-447" />
+        <location line="-456" />
         <source>Write everything the devices read to an input log</source>
         <translation>Write everything the devices read to an input log</translation>
     </message>
     <message>
         <location line="-7" />
-        <location line="+456" />
+        <location line="+465" />
         <source>Replay a log…</source>
         <translation>Replay a log…</translation>
     </message>
     <message>
-        <location line="-448" />
+        <location line="-457" />
         <source>Play a recorded input log: it drives the machine instead of the operator</source>
         <translation>Play a recorded input log: it drives the machine instead of the operator</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+26" />
         <source>Channels</source>
         <translation>Channels</translation>
     </message>
@@ -10689,7 +11207,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>Bank: %1</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+7" />
         <source>Replaying %1: the operator's devices are ignored</source>
         <translation>Replaying %1: the operator's devices are ignored</translation>
     </message>
@@ -10699,7 +11217,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
         <translation>%1 (replay)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>%1 · %2</source>
         <translation>%1 · %2</translation>
     </message>
@@ -10820,6 +11338,49 @@ Id: %3</translation>
     </message>
 </context>
 <context>
+    <name>studio::VideoRecorder</name>
+    <message>
+        <location filename="../ide/studio/view/video_recorder.cpp" line="+54" />
+        <source>A video is being recorded already.</source>
+        <translation>A video is being recorded already.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Recording a video needs the program ffmpeg, which was not found. Install it (on Debian and Ubuntu: sudo apt install ffmpeg) and try again.</source>
+        <translation>Recording a video needs the program ffmpeg, which was not found. Install it (on Debian and Ubuntu: sudo apt install ffmpeg) and try again.</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>%1 is not a regular file (a folder, a device or a pipe): it is not overwritten.</source>
+        <translation>%1 is not a regular file (a folder, a device or a pipe): it is not overwritten.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 is a file Padrob Studio has open (the model or the scene): it is not overwritten.</source>
+        <translation>%1 is a file Padrob Studio has open (the model or the scene): it is not overwritten.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The folder %1 cannot be written.</source>
+        <translation>The folder %1 cannot be written.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The 3D view cannot be drawn (no OpenGL 3.3): there is nothing to record.</source>
+        <translation>The 3D view cannot be drawn (no OpenGL 3.3): there is nothing to record.</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>ffmpeg (%1) could not be started: %2</source>
+        <translation>ffmpeg (%1) could not be started: %2</translation>
+    </message>
+    <message>
+        <location line="+58" />
+        <source>ffmpeg stopped with an error while writing %1</source>
+        <translation>ffmpeg stopped with an error while writing %1</translation>
+    </message>
+</context>
+<context>
     <name>studio::Viewport</name>
     <message>
         <location filename="../ide/studio/view/scene_geometry.cpp" line="+164" />
@@ -10885,7 +11446,7 @@ Id: %3</translation>
 <context>
     <name>studio::ViewportLayout</name>
     <message>
-        <location filename="../ide/studio/view/viewport_layout.cpp" line="+38" />
+        <location filename="../ide/studio/view/viewport_layout.cpp" line="+45" />
         <source>The operator's screens are shown in separate windows.</source>
         <translation>The operator's screens are shown in separate windows.</translation>
     </message>
@@ -11178,6 +11739,143 @@ Id: %3</translation>
     </message>
 </context>
 <context>
+    <name>trainer::Gamepad</name>
+    <message>
+        <location filename="../trainer/station/control_names.cpp" line="+21" />
+        <source>Left stick X</source>
+        <translation>Left stick X</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Left stick Y</source>
+        <translation>Left stick Y</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Right stick X</source>
+        <translation>Right stick X</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Right stick Y</source>
+        <translation>Right stick Y</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Left trigger</source>
+        <translation>Left trigger</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Right trigger</source>
+        <translation>Right trigger</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Back</source>
+        <translation>Back</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Guide</source>
+        <translation>Guide</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Left stick press</source>
+        <translation>Left stick press</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Right stick press</source>
+        <translation>Right stick press</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Left shoulder</source>
+        <translation>Left shoulder</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Right shoulder</source>
+        <translation>Right shoulder</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>D-pad up</source>
+        <translation>D-pad up</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>D-pad down</source>
+        <translation>D-pad down</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>D-pad left</source>
+        <translation>D-pad left</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>D-pad right</source>
+        <translation>D-pad right</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Misc</source>
+        <translation>Misc</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Paddle %1</source>
+        <translation>Paddle %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Touchpad</source>
+        <translation>Touchpad</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>LS</source>
+        <comment>left stick pressed, on a small lamp</comment>
+        <translation>LS</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>RS</source>
+        <comment>right stick pressed, on a small lamp</comment>
+        <translation>RS</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>LB</source>
+        <comment>left shoulder button, on a small lamp</comment>
+        <translation>LB</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>RB</source>
+        <comment>right shoulder button, on a small lamp</comment>
+        <translation>RB</translation>
+    </message>
+    <message>
+        <location line="+25" />
+        <source>Axis %1</source>
+        <translation>Axis %1</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Button %1</source>
+        <translation>Button %1</translation>
+    </message>
+</context>
+<context>
     <name>trainer::InputDevice</name>
     <message>
         <location filename="../trainer/input/input_device.cpp" line="+10" />
@@ -11282,6 +11980,7 @@ Id: %3</translation>
 <context>
     <name>trainer::KeyboardDevice</name>
     <message>
+        <location filename="../trainer/input/input_device.cpp" line="+8" />
         <location filename="../trainer/input/keyboard_device.cpp" line="+12" />
         <source>Keyboard</source>
         <translation>Keyboard</translation>
@@ -11290,7 +11989,7 @@ Id: %3</translation>
 <context>
     <name>trainer::ProfileStore</name>
     <message>
-        <location filename="../trainer/station/profile_store.cpp" line="+97" />
+        <location filename="../trainer/station/profile_store.cpp" line="+98" />
         <source>there is no profile “%1” for %2</source>
         <translation>there is no profile “%1” for %2</translation>
     </message>
@@ -11478,17 +12177,27 @@ Id: %3</translation>
 <context>
     <name>trainer::StationEngine</name>
     <message>
-        <location filename="../trainer/station/station_engine.cpp" line="+409" />
+        <location filename="../trainer/station/station_engine.cpp" line="+444" />
         <source>not connected</source>
         <translation>not connected</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>%1: %2 — valves closed, holding %3</source>
-        <translation>%1: %2 — valves closed, holding %3</translation>
+        <location line="-12" />
+        <source>valves closed, holding %1</source>
+        <translation>valves closed, holding %1</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+1" />
+        <source>the keyboard drives %1 instead</source>
+        <translation>the keyboard drives %1 instead</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>%1: %2 — %3</source>
+        <translation>%1: %2 — %3</translation>
+    </message>
+    <message>
+        <location line="+14" />
         <source>%1, %2: device fault, it reads %3 where it can read only %4…%5 — valve closed%6</source>
         <translation>%1, %2: device fault, it reads %3 where it can read only %4…%5 — valve closed%6</translation>
     </message>
@@ -11498,12 +12207,37 @@ Id: %3</translation>
         <translation>, holding %1</translation>
     </message>
     <message>
-        <location line="+10" />
-        <source>No %1 found: its drives hold</source>
-        <translation>No %1 found: its drives hold</translation>
+        <location line="+16" />
+        <source>No %1 found — %2</source>
+        <translation>No %1 found — %2</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>the keyboard drives instead</source>
+        <translation>the keyboard drives instead</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>its valves are closed, the machine holds</source>
+        <translation>its valves are closed, the machine holds</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1" />
+        <source>the keyboard drives %1 of its %n drive(s), the rest hold</source>
+        <translation><numerusform>the keyboard drives %1 of its %n drive, the rest hold</numerusform><numerusform>the keyboard drives %1 of its %n drives, the rest hold</numerusform></translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 missing — %2</source>
+        <translation>%1 missing — %2</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>%1: next bank</source>
+        <translation>%1: next bank</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>Calibrating: every valve is held closed</source>
         <translation>Calibrating: every valve is held closed</translation>
     </message>
@@ -11516,7 +12250,7 @@ Id: %3</translation>
 <context>
     <name>trainer::StationProfile</name>
     <message>
-        <location filename="../trainer/station/profile.cpp" line="+47" />
+        <location filename="../trainer/station/profile.cpp" line="+48" />
         <location line="+8" />
         <source>“%1” is missing</source>
         <translation>“%1” is missing</translation>
@@ -11552,7 +12286,7 @@ Id: %3</translation>
         <translation>line %1, column %2</translation>
     </message>
     <message>
-        <location line="+79" />
+        <location line="+94" />
         <source>not a valid profile file (%1); fix the JSON or import the profile again</source>
         <translation>not a valid profile file (%1); fix the JSON or import the profile again</translation>
     </message>
@@ -11577,7 +12311,12 @@ Id: %3</translation>
         <translation>the version must be 1 or more</translation>
     </message>
     <message>
-        <location line="+66" />
+        <location line="+65" />
+        <source>“%1” must be translated by a text</source>
+        <translation>“%1” must be translated by a text</translation>
+    </message>
+    <message>
+        <location line="+15" />
         <source>the mapping names no device</source>
         <translation>the mapping names no device</translation>
     </message>
@@ -11794,18 +12533,18 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+224" />
-        <location line="+469" />
+        <location line="+470" />
         <source>cannot add the operator “%1”</source>
         <translation>cannot add the operator “%1”</translation>
     </message>
     <message>
-        <location line="-467" />
-        <location line="+469" />
+        <location line="-468" />
+        <location line="+470" />
         <source>an operator needs an id</source>
         <translation>an operator needs an id</translation>
     </message>
     <message>
-        <location line="-463" />
+        <location line="-464" />
         <source>the id is taken already, by “%1”</source>
         <translation>the id is taken already, by “%1”</translation>
     </message>
@@ -11848,12 +12587,12 @@ Id: %3</translation>
     <message>
         <location line="+5" />
         <location line="+54" />
-        <location line="+274" />
+        <location line="+275" />
         <source>there is no attempt %1</source>
         <translation>there is no attempt %1</translation>
     </message>
     <message>
-        <location line="-299" />
+        <location line="-300" />
         <source>cannot record the attempt's result</source>
         <translation>cannot record the attempt's result</translation>
     </message>
@@ -11888,7 +12627,7 @@ Id: %3</translation>
         <translation>cannot read the operators' progress</translation>
     </message>
     <message>
-        <location line="+58" />
+        <location line="+59" />
         <source>cannot read the operator's attempts</source>
         <translation>cannot read the operator's attempts</translation>
     </message>
@@ -11905,7 +12644,7 @@ Id: %3</translation>
         <translation>cannot export the records to %1</translation>
     </message>
     <message>
-        <location line="-190" />
+        <location line="-191" />
         <source>there is an attempt with the id %1 already</source>
         <translation>there is an attempt with the id %1 already</translation>
     </message>
@@ -11915,7 +12654,7 @@ Id: %3</translation>
         <translation>an attempt ends finished, aborted or interrupted, not %1</translation>
     </message>
     <message>
-        <location line="+225" />
+        <location line="+226" />
         <source>cannot read what the centre's server lacks</source>
         <translation>cannot read what the centre's server lacks</translation>
     </message>

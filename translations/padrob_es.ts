@@ -2813,6 +2813,161 @@
     </message>
 </context>
 <context>
+    <name>DriveControls</name>
+    <message>
+        <location filename="../ide/studio/train/drive_controls.cpp" line="+35" />
+        <source>left stick right + / left −</source>
+        <translation>stick izquierdo a la derecha + / a la izquierda −</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>left stick left + / right −</source>
+        <translation>stick izquierdo a la izquierda + / a la derecha −</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>left stick up + / down −</source>
+        <translation>stick izquierdo arriba + / abajo −</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>left stick down + / up −</source>
+        <translation>stick izquierdo abajo + / arriba −</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>right stick right + / left −</source>
+        <translation>stick derecho a la derecha + / a la izquierda −</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>right stick left + / right −</source>
+        <translation>stick derecho a la izquierda + / a la derecha −</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>right stick up + / down −</source>
+        <translation>stick derecho arriba + / abajo −</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>right stick down + / up −</source>
+        <translation>stick derecho abajo + / arriba −</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>left trigger +</source>
+        <translation>gatillo izquierdo +</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>left trigger −</source>
+        <translation>gatillo izquierdo −</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>right trigger +</source>
+        <translation>gatillo derecho +</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>right trigger −</source>
+        <translation>gatillo derecho −</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>gamepad axis %1</source>
+        <translation>eje %1 del mando</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>+ closes / − opens</source>
+        <translation>+ cierra / − abre</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>+ opens / − closes</source>
+        <translation>+ abre / − cierra</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>+ up / − down</source>
+        <translation>+ sube / − baja</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>+ down / − up</source>
+        <translation>+ baja / − sube</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>+ out / − in</source>
+        <translation>+ sale / − entra</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>+ in / − out</source>
+        <translation>+ entra / − sale</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>+ right / − left</source>
+        <translation>+ a la derecha / − a la izquierda</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>+ left / − right</source>
+        <translation>+ a la izquierda / − a la derecha</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>%1 + / %2 −</source>
+        <comment>the key giving the drive +, the one giving −</comment>
+        <translation>%1 + / %2 −</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>joystick axis %1</source>
+        <translation>eje %1 del joystick</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>joystick axis %1 reversed</source>
+        <translation>eje %1 del joystick, invertido</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>lever %1</source>
+        <translation>palanca %1</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>lever %1 reversed</source>
+        <translation>palanca %1 invertida</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 (bank %2)</source>
+        <translation>%1 (banco %2)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1 (%2)</source>
+        <comment>a drive and which way + moves it</comment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>no control</source>
+        <translation>ningún mando</translation>
+    </message>
+</context>
+<context>
     <name>StationNode</name>
     <message>
         <location filename="../trainer/centre/station_node.cpp" line="+41" />
@@ -3030,7 +3185,7 @@
         <translation>Detenido</translation>
     </message>
     <message>
-        <location line="+73" />
+        <location line="+75" />
         <source>Goal done: %1</source>
         <translation>Objetivo cumplido: %1</translation>
     </message>
@@ -3170,7 +3325,7 @@
         <translation>Seguridad</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+8" />
         <source>Work faster: move several valves together once you are sure of the way.</source>
         <translation>Trabaje más rápido: mueva varias válvulas a la vez cuando esté seguro del camino.</translation>
     </message>
@@ -3190,12 +3345,17 @@
         <translation>Manténgase lejos del molino, del carro y de las personas, no fuerce los cilindros contra sus válvulas de alivio y no choque contra los topes.</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+17" />
+        <source>Nothing was done towards the goals: drive the machine towards the first one (the start screen names the keys and levers of each drive).</source>
+        <translation>No se hizo nada hacia los objetivos: lleve la máquina hacia el primero (la pantalla de inicio indica las teclas y palancas de cada accionamiento).</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>Complete every goal: the stage is passed only when all are done.</source>
         <translation>Cumpla todos los objetivos: la etapa se aprueba solo cuando están todos cumplidos.</translation>
     </message>
     <message>
-        <location line="-143" />
+        <location line="-150" />
         <source>Fault injected</source>
         <translation>Falla introducida</translation>
     </message>
@@ -3225,7 +3385,7 @@
         <translation>Corte de energía</translation>
     </message>
     <message>
-        <location filename="../trainer/training/session.cpp" line="+39" />
+        <location filename="../trainer/training/session.cpp" line="+41" />
         <source>Instructor: the hose of %1 was repaired</source>
         <translation>Instructor: se reparó la manguera de %1</translation>
     </message>
@@ -3265,7 +3425,7 @@
         <translation>Instructor: se cortó la energía; todas las válvulas se cerraron</translation>
     </message>
     <message>
-        <location line="+720" />
+        <location line="+767" />
         <source>There is no drive "%1": this machine has no hydraulic drives</source>
         <translation>No hay un accionamiento "%1": esta máquina no tiene accionamientos hidráulicos</translation>
     </message>
@@ -6534,7 +6694,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::AttemptScreen</name>
     <message>
-        <location filename="../ide/studio/train/attempt_screen.cpp" line="+156" />
+        <location filename="../ide/studio/train/attempt_screen.cpp" line="+168" />
         <source>Esc or Stop ends the attempt.</source>
         <translation>Esc o Detener termina el intento.</translation>
     </message>
@@ -6570,26 +6730,76 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
     </message>
     <message>
         <location line="+3" />
+        <source>Three screens (−60°, 0°, +60°)</source>
+        <translation>Tres pantallas (−60°, 0°, +60°)</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Stop</source>
         <translation>Detener</translation>
     </message>
     <message>
-        <location line="+102" />
+        <location line="+69" />
+        <source>Controls:</source>
+        <translation>Mandos:</translation>
+    </message>
+    <message>
+        <location line="+101" />
         <source>Goal %1 of %2</source>
         <translation>Objetivo %1 de %2</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+57" />
         <source>Distance: %1 m</source>
         <translation>Distancia: %1 m</translation>
     </message>
     <message>
         <location line="+4" />
-        <source>Hold: %1 of %2 s</source>
-        <translation>Mantener: %1 de %2 s</translation>
+        <source>Angle: %1° off (within %2°)</source>
+        <translation>Ángulo: %1° de desvío (tolerancia %2°)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Hold: %1 s more</source>
+        <translation>Mantener: %1 s más</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>come within %1 m</source>
+        <translation>se acerque a menos de %1 m</translation>
     </message>
     <message>
         <location line="+2" />
+        <source>align the load: %1° off</source>
+        <translation>alinee la carga: %1° de desvío</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>align the head: %1° off</source>
+        <translation>alinee el cabezal: %1° de desvío</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>hold the load in the claws</source>
+        <translation>tenga la carga en las garras</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Hold %1 s</source>
+        <translation>Mantenga %1 s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Hold %1 s once you %2</source>
+        <translation>Mantenga %1 s cuando %2</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source> and </source>
+        <translation> y </translation>
+    </message>
+    <message>
+        <location line="-71" />
         <source>All goals done</source>
         <translation>Todos los objetivos cumplidos</translation>
     </message>
@@ -6609,12 +6819,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Carga en las garras</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</source>
-        <translation>Banco: &lt;b&gt;%1&lt;/b&gt; (%2 de %3)</translation>
-    </message>
-    <message>
-        <location line="+8" />
+        <location line="+11" />
         <source>Paused by the instructor</source>
         <translation>En pausa por el instructor</translation>
     </message>
@@ -6895,7 +7100,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::ChannelPanel</name>
     <message>
-        <location filename="../ide/studio/station/channel_bars.cpp" line="+218" />
+        <location filename="../ide/studio/station/channel_bars.cpp" line="+228" />
         <location line="+23" />
         <source>No device selected</source>
         <translation>Ningún dispositivo seleccionado</translation>
@@ -6906,7 +7111,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Botones</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="-2" />
+        <source>Keys are digital: a key gives its drive the full command (−1, 0 or +1) at once, so there is nothing to calibrate. A ramp eases each key's command in and out instead.</source>
+        <translation>Las teclas son digitales: una tecla da a su accionamiento la orden completa (−1, 0 o +1) al instante, así que no hay nada que calibrar. En su lugar, una rampa suaviza la orden de cada tecla al subir y al bajar.</translation>
+    </message>
+    <message>
+        <location line="+36" />
         <source>%1: no channels (yet)</source>
         <translation>%1: sin canales (todavía)</translation>
     </message>
@@ -6934,13 +7144,33 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Calibrado</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>Ramp</source>
+        <translation>Rampa</translation>
+    </message>
+    <message>
         <location line="+29" />
-        <location line="+60" />
+        <location line="+91" />
         <source>not calibrated</source>
         <translation>sin calibrar</translation>
     </message>
     <message>
-        <location line="-59" />
+        <location line="-84" />
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>at once</source>
+        <translation>al instante</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>How long a key takes to open its valve fully (and to close it again): 0 gives the full command at once</source>
+        <translation>Cuánto tarda una tecla en abrir del todo su válvula (y en volver a cerrarla): 0 da la orden completa al instante</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>Calibrate…</source>
         <translation>Calibrar…</translation>
     </message>
@@ -6950,12 +7180,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Capturar el centro y el recorrido de este canal, y ajustar su banda muerta y su curva</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+17" />
         <source>Button %1: %2</source>
         <translation>Botón %1: %2</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+52" />
         <source>out of range</source>
         <translation>fuera de rango</translation>
     </message>
@@ -7044,12 +7274,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::DebriefScreen</name>
     <message>
-        <location filename="../ide/studio/train/debrief_screen.cpp" line="+57" />
+        <location filename="../ide/studio/train/debrief_screen.cpp" line="+58" />
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
     <message>
-        <location line="+76" />
+        <location line="+97" />
         <location line="+24" />
         <source>Pause</source>
         <translation>Pausa</translation>
@@ -7058,12 +7288,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <location line="-24" />
         <location line="+24" />
         <location line="+24" />
-        <location line="+21" />
+        <location line="+23" />
         <source>Play</source>
         <translation>Reproducir</translation>
     </message>
     <message>
-        <location line="-68" />
+        <location line="-70" />
         <source>Events</source>
         <translation>Eventos</translation>
     </message>
@@ -7098,7 +7328,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>%1 s</translation>
     </message>
     <message>
-        <location line="+38" />
+        <location line="+40" />
         <source>%1 s — %2</source>
         <translation>%1 s — %2</translation>
     </message>
@@ -7265,7 +7495,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::EditorPanel</name>
     <message>
-        <location filename="../ide/studio/editor/editor_panel.cpp" line="+89" />
+        <location filename="../ide/studio/editor/editor_panel.cpp" line="+119" />
         <source>Apply</source>
         <translation>Aplicar</translation>
     </message>
@@ -7274,8 +7504,33 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <source>Use this model in the 3D view and the simulation</source>
         <translation>Usar este modelo en la vista 3D y en la simulación</translation>
     </message>
+    <message>
+        <location line="+1" />
+        <source>Reload</source>
+        <translation>Recargar</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Read the file again (your unsaved edits stay in Undo)</source>
+        <translation>Volver a leer el archivo (sus ediciones sin guardar quedan en Deshacer)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Keep my text</source>
+        <translation>Conservar mi texto</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Go on with the text in the editor; saving writes it over the file</source>
+        <translation>Seguir con el texto del editor; al guardar se escribe sobre el archivo</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>“%1” changed on disk, and the editor has unsaved changes.</source>
+        <translation>«%1» cambió en el disco, y el editor tiene cambios sin guardar.</translation>
+    </message>
     <message numerus="yes">
-        <location line="+137" />
+        <location line="+179" />
         <source>%1, %n warning(s)</source>
         <comment>the %1 is "%n error(s)"</comment>
         <translation>
@@ -7364,6 +7619,54 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <location line="+4" />
         <source>%1 drawn; the window saved to %2.</source>
         <translation>%1 dibujado; la ventana se guardó en %2.</translation>
+    </message>
+</context>
+<context>
+    <name>studio::GettingStarted</name>
+    <message>
+        <location filename="../ide/studio/app/getting_started.cpp" line="+57" />
+        <source>Getting started</source>
+        <translation>Primeros pasos</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Run and pause</source>
+        <translation>Marcha y pausa</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Simulation ▸ Run (%1) starts the machine, Pause (%2) holds it; Reset puts it back at the start.</source>
+        <translation>Simulación ▸ Iniciar (%1) pone la máquina en marcha, Pausar (%2) la detiene; Reiniciar la devuelve al inicio.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Keys</source>
+        <translation>Teclas</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Click the 3D view, then hold a key to open a valve: the first key of a pair (%1, %2, …) drives one way, the second the other. Simulation ▸ Keyboard Controls lists which drive each pair moves; in Train, the start screen and the attempt name the keys and levers of each stage.</source>
+        <translation>Haga clic en la vista 3D y mantenga pulsada una tecla para abrir una válvula: la primera tecla de un par (%1, %2, …) mueve en un sentido y la segunda en el otro. Simulación ▸ Controles de teclado indica qué accionamiento mueve cada par; en Entrenamiento, la pantalla de inicio y el intento indican las teclas y palancas de cada etapa.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Mouse in the 3D view</source>
+        <translation>Ratón en la vista 3D</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Left drag orbits, middle drag or Shift + left drag pans, the wheel zooms, a double click frames the model.</source>
+        <translation>Arrastrar con el botón izquierdo orbita, con el central o Mayús + izquierdo desplaza, la rueda acerca y aleja, y un doble clic encuadra el modelo.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Help ▸ Getting Started shows this again.</source>
+        <translation>Ayuda ▸ Primeros pasos lo vuelve a mostrar.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Got it</source>
+        <translation>Entendido</translation>
     </message>
 </context>
 <context>
@@ -8411,12 +8714,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
 <context>
     <name>studio::MainWindow</name>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+151" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+155" />
         <source>Export</source>
         <translation>Exportar</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+214" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+240" />
         <location line="+2" />
         <source>Model</source>
         <translation>Modelo</translation>
@@ -8452,7 +8755,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Puesto</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+169" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+201" />
         <source>Leave Trainer Mode</source>
         <translation>Salir del modo quiosco</translation>
     </message>
@@ -8462,7 +8765,7 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>PIN del instructor:</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+10" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+16" />
         <source>&amp;File</source>
         <translation>&amp;Archivo</translation>
     </message>
@@ -8567,13 +8870,13 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>&amp;Cargar…</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+36" />
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="-147" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+43" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="-175" />
         <source>Load Scene</source>
         <translation>Cargar escena</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+148" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+176" />
         <source>&amp;None</source>
         <translation>&amp;Ninguna</translation>
     </message>
@@ -8636,13 +8939,120 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>&amp;Controles de teclado…</translation>
     </message>
     <message>
-        <location line="+41" />
-        <location line="+11" />
+        <location line="+17" />
+        <source>&amp;Getting Started</source>
+        <translation>&amp;Primeros pasos</translation>
+    </message>
+    <message>
+        <location line="+22" />
+        <source>+</source>
+        <translation>+</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>−</source>
+        <translation>−</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>turns +</source>
+        <comment>a revolute joint's angle grows</comment>
+        <translation>gira +</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>turns −</source>
+        <comment>a revolute joint's angle shrinks</comment>
+        <translation>gira −</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>cylinder out</source>
+        <comment>a T 1 joint's actuator lengthens</comment>
+        <translation>sale el cilindro</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>cylinder in</source>
+        <comment>a T 1 joint's actuator shortens</comment>
+        <translation>entra el cilindro</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>slides +</source>
+        <comment>a prismatic joint's displacement grows</comment>
+        <translation>desliza +</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>slides −</source>
+        <comment>a prismatic joint's displacement shrinks</comment>
+        <translation>desliza −</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>%1: %2 · %3: %4</source>
+        <comment>each key of a pair and which way it moves the drive</comment>
+        <translation>%1: %2 · %3: %4</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <location line="+10" />
         <source>C %1</source>
         <translation>C %1</translation>
     </message>
     <message>
         <location line="+13" />
+        <source>Left drag</source>
+        <translation>Arrastrar con el botón izquierdo</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>orbits around the model</source>
+        <translation>gira alrededor del modelo</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Middle drag, or Shift + left drag</source>
+        <translation>Arrastrar con el botón central, o Mayús + botón izquierdo</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>pans</source>
+        <translation>desplaza la vista</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Wheel</source>
+        <translation>Rueda</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>zooms towards the cursor</source>
+        <translation>acerca o aleja hacia el cursor</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Double click</source>
+        <translation>Doble clic</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>frames the whole model</source>
+        <translation>encuadra todo el modelo</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Ctrl + left drag on a body</source>
+        <translation>Ctrl + arrastrar con el botón izquierdo sobre un cuerpo</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>picks the body and pushes it while the simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go</source>
+        <translation>toma el cuerpo y lo empuja mientras corre la simulación (un resorte tira del punto tomado hacia el cursor); suelte para liberarlo</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>Keyboard Controls</source>
         <translation>Controles de teclado</translation>
     </message>
@@ -8652,7 +9062,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>Con la vista 3D activa, mantenga presionada una tecla para abrir una válvula:</translation>
     </message>
     <message>
-        <location line="-52" />
+        <location line="+2" />
+        <source>Mouse in the 3D view:</source>
+        <translation>Mouse en la vista 3D:</translation>
+    </message>
+    <message>
+        <location line="-98" />
         <source>&amp;Help</source>
         <translation>Ay&amp;uda</translation>
     </message>
@@ -8662,31 +9077,31 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>&amp;Referencia del lenguaje de modelos</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>&amp;About Padrob Studio</source>
         <translation>&amp;Acerca de Padrob Studio</translation>
     </message>
     <message>
         <location filename="../ide/studio/app/main_window.cpp" line="-16" />
-        <location line="+74" />
+        <location line="+79" />
         <source>Open Model</source>
         <translation>Abrir modelo</translation>
     </message>
     <message>
-        <location line="-74" />
+        <location line="-79" />
         <source>Cannot open %1:
 %2</source>
         <translation>No se puede abrir %1:
 %2</translation>
     </message>
     <message>
-        <location line="+74" />
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="-179" />
+        <location line="+79" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="-208" />
         <source>Padrob models (*.pad);;All files (*)</source>
         <translation>Modelos Padrob (*.pad);;Todos los archivos (*)</translation>
     </message>
     <message numerus="yes">
-        <location line="-240" />
+        <location line="-284" />
         <source>%n attempt(s) kept while the trainee records could not be written were added to them.</source>
         <translation>
             <numerusform>Se agregó a los registros de los aprendices %n intento guardado mientras no se podían escribir.</numerusform>
@@ -8699,12 +9114,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>No se pueden abrir los registros de los aprendices: %1</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+117" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+139" />
         <source>Hydraulics</source>
         <translation>Hidráulica</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location line="+38" />
         <source>&amp;Contacts</source>
         <translation>&amp;Contactos</translation>
     </message>
@@ -8744,16 +9159,10 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>En los &amp;vértices (más rápida)</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+70" />
         <source>%1 (%2)</source>
         <comment>a drive and its bank</comment>
         <translation>%1 (%2)</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>%1, reversed</source>
-        <comment>a drive the key moves the other way</comment>
-        <translation>%1, invertido</translation>
     </message>
     <message>
         <location line="+8" />
@@ -8761,17 +9170,12 @@ nodes/NOMBRE, nunca los archivos .key de las CA; luego ejecútelo con --security
         <translation>C %1 %2</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+24" />
         <source>Shortcuts (none of them opens a valve):</source>
         <translation>Atajos (ninguno abre una válvula):</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Mouse in the 3D view: left drag orbits, middle drag or Shift + left drag pans, the wheel zooms, a double click frames the model. Ctrl + left drag on a body pushes it while the simulation runs (a spring pulls the point you grabbed toward the cursor); release to let go.</source>
-        <translation>Ratón en la vista 3D: arrastrar con el botón izquierdo hace girar la vista, arrastrar con el botón central o con Mayús + botón izquierdo la desplaza, la rueda acerca o aleja, un doble clic encuadra el modelo. Ctrl + arrastrar con el botón izquierdo sobre un cuerpo lo empuja mientras corre la simulación (un resorte tira del punto tomado hacia el cursor); suelte el botón para soltarlo.</translation>
-    </message>
-    <message>
-        <location filename="../ide/studio/app/main_window.cpp" line="+181" />
+        <location filename="../ide/studio/app/main_window.cpp" line="+220" />
         <source>%1
 
 The 3D view goes on without this scene.</source>
@@ -8795,7 +9199,7 @@ La vista 3D continúa sin esta escena.</translation>
         <translation>La última escena usada no se dibuja: %1</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+35" />
         <location line="+14" />
         <source>Save Model</source>
         <translation>Guardar modelo</translation>
@@ -8859,32 +9263,52 @@ Use Guardar como para elegir otro lugar.</translation>
         <translation>Padrob Studio se cerró con cambios sin guardar en %1 (copia de recuperación del %2). ¿Restaurarlos?</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+91" />
+        <source>real time ×%1, %2 µs/step</source>
+        <translation>tiempo real ×%1; %2 µs/paso</translation>
+    </message>
+    <message>
+        <location filename="../ide/studio/app/main_window_reload.cpp" line="+52" />
         <source>%1 was deleted or moved on disk; the text in the editor is kept — save it to write it again.</source>
         <translation>%1 se eliminó o se movió en el disco; el texto del editor se conserva: guárdelo para escribirlo de nuevo.</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>%1 changed on disk. Reload it and lose your unsaved changes?</source>
-        <translation>%1 cambió en el disco. ¿Volver a cargarlo y perder los cambios sin guardar?</translation>
+        <location line="+31" />
+        <source>%1 changed on disk and was reloaded; the pose is kept.</source>
+        <translation>%1 cambió en el disco y se volvió a cargar; se conserva la postura.</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>%1 changed on disk. Reload it?</source>
-        <translation>%1 cambió en el disco. ¿Volver a cargarlo?</translation>
+        <source>%1 changed on disk and was reloaded; its joints changed, so it starts from the initial pose.</source>
+        <translation>%1 cambió en el disco y se volvió a cargar; sus articulaciones cambiaron, así que parte de la postura inicial.</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>The editor has changes that are not applied: the 3D view, the tree and the plots show the model applied before. Apply (Ctrl+Return) to use them, or Revert.</source>
+        <translation>El editor tiene cambios no aplicados: la vista 3D, el árbol y los gráficos muestran el modelo aplicado antes. Aplíquelos (Ctrl+Intro) para usarlos, o reviértalos.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Apply</source>
+        <translation>Aplicar</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>Model Changed on Disk</source>
-        <translation>El modelo cambió en el disco</translation>
+        <source>Revert</source>
+        <translation>Revertir</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+1" />
+        <source>Put the applied model's text back in the editor (Undo brings the edits back)</source>
+        <translation>Devolver al editor el texto del modelo aplicado (Deshacer recupera las ediciones)</translation>
+    </message>
+    <message>
+        <location filename="../ide/studio/app/main_window.cpp" line="-58" />
         <source>The scene's solids cannot be taken into the model's contacts (a shape that cannot serve): the model runs without touching them</source>
         <translation>Los sólidos de la escena no pueden incorporarse a los contactos del modelo (una forma que no sirve): el modelo funciona sin tocarlos</translation>
     </message>
     <message numerus="yes">
-        <location line="+13" />
+        <location line="+15" />
         <source>Model applied: %n bodies</source>
         <translation>
             <numerusform>Modelo aplicado: %n cuerpo</numerusform>
@@ -8892,35 +9316,22 @@ Use Guardar como para elegir otro lugar.</translation>
         </translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+40" />
         <source>t = %1 s</source>
         <translation>t = %1 s</translation>
     </message>
-    <message numerus="yes">
-        <location line="+1" />
-        <source>real time ×%1, %2 µs/step, %n overrun(s)</source>
-        <translation>
-            <numerusform>tiempo real ×%1; %2 µs/paso; %n paso atrasado</numerusform>
-            <numerusform>tiempo real ×%1; %2 µs/paso; %n pasos atrasados</numerusform>
-        </translation>
-    </message>
     <message>
-        <location line="+4" />
+        <location line="+6" />
         <source>paused</source>
         <translation>en pausa</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>frame %1 ms</source>
         <translation>cuadro %1 ms</translation>
     </message>
     <message>
-        <location line="+11" />
-        <source>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</source>
-        <translation>Banco: &lt;b&gt;%1&lt;/b&gt; (%2 de %3)</translation>
-    </message>
-    <message>
-        <location line="+45" />
+        <location line="+52" />
         <source>Simulation Stopped</source>
         <translation>Simulación detenida</translation>
     </message>
@@ -8934,7 +9345,7 @@ The simulation is paused at the last good state; the editor stays usable. Reset 
 La simulación quedó en pausa en el último estado válido; el editor sigue disponible. Reinicie para comenzar de nuevo.</translation>
     </message>
     <message>
-        <location filename="../ide/studio/app/main_window_menus.cpp" line="+13" />
+        <location filename="../ide/studio/app/main_window_menus.cpp" line="+12" />
         <source>Model Language Reference</source>
         <translation>Referencia del lenguaje de modelos</translation>
     </message>
@@ -8953,11 +9364,68 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <source>&lt;h3&gt;Padrob Studio %1&lt;/h3&gt;&lt;p&gt;Real-time training simulators of heavy machines, built from a model file: bodies, joints, hydraulic drives, forces and graphics.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Padrob Studio %1&lt;/h3&gt;&lt;p&gt;Simuladores de entrenamiento en tiempo real para maquinaria pesada, construidos a partir de un archivo de modelo: cuerpos, articulaciones, accionamientos hidráulicos, fuerzas y gráficos.&lt;/p&gt;</translation>
     </message>
+    <message>
+        <location filename="../ide/studio/app/main_window_tools.cpp" line="+37" />
+        <location line="+137" />
+        <source>Record Video</source>
+        <translation>Grabar video</translation>
+    </message>
+    <message>
+        <location line="-76" />
+        <source>Video saved: %1 (%2 s)</source>
+        <translation>Video guardado: %1 (%2 s)</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>%1 (%2)</source>
+        <comment>an action and its shortcut</comment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Speed:</source>
+        <translation>Velocidad:</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Simulated seconds per second of the wall clock (Simulation ▸ Speed)</source>
+        <translation>Segundos simulados por segundo de reloj (Simulación ▸ Velocidad)</translation>
+    </message>
+    <message>
+        <location line="+58" />
+        <source>Videos (*.mp4 *.mkv *.mov)</source>
+        <translation>Videos (*.mp4 *.mkv *.mov)</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Stop &amp;Recording</source>
+        <translation>Detener la &amp;grabación</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>&amp;Record Video…</source>
+        <translation>&amp;Grabar video…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Stop recording the 3D view</source>
+        <translation>Dejar de grabar la vista 3D</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Record a video of the 3D view (ffmpeg)</source>
+        <translation>Grabar un video de la vista 3D (ffmpeg)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>● REC %1:%2</source>
+        <translation>● GRAB %1:%2</translation>
+    </message>
 </context>
 <context>
     <name>studio::MappingTable</name>
     <message>
-        <location filename="../ide/studio/station/mapping_table.cpp" line="+50" />
+        <location filename="../ide/studio/station/mapping_table.cpp" line="+52" />
         <source>none</source>
         <translation>ninguno</translation>
     </message>
@@ -8967,7 +9435,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>El número del botón en ese dispositivo (como lo muestran las luces de los canales)</translation>
     </message>
     <message>
-        <location line="+101" />
+        <location line="+104" />
         <location line="+15" />
         <source>Bank</source>
         <translation>Banco</translation>
@@ -9078,28 +9546,29 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>El dispositivo cuyo botón pasa al banco siguiente</translation>
     </message>
     <message>
-        <location line="+90" />
+        <location line="+93" />
         <source>Always</source>
         <translation>Siempre</translation>
     </message>
     <message>
         <location line="+2" />
-        <location line="+394" />
+        <location line="+425" />
         <source>Bank %1</source>
         <translation>Banco %1</translation>
     </message>
     <message>
-        <location line="-384" />
+        <location line="-415" />
         <source>The first connected device of this kind</source>
         <translation>El primer dispositivo conectado de este tipo</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+19" />
+        <location line="+8" />
         <source>Axis %1</source>
         <translation>Eje %1</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+27" />
         <source>C %1 (not in this model)</source>
         <translation>C %1 (no está en este modelo)</translation>
     </message>
@@ -9117,7 +9586,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         </translation>
     </message>
     <message>
-        <location line="+160" />
+        <location line="+166" />
         <source>ignored</source>
         <translation>ignorada</translation>
     </message>
@@ -9448,6 +9917,22 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
     </message>
 </context>
 <context>
+    <name>studio::OverrunMeter</name>
+    <message>
+        <location filename="../ide/studio/sim/overrun_meter.cpp" line="+29" />
+        <source>%1 % of steps late</source>
+        <translation>%1 % de pasos atrasados</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5" />
+        <source>An overrun is a solver step that took longer to compute than the real time it simulates: the simulation falls behind the wall clock. The share shown is that of the last %1 s (%n overrun(s) since Run).
+A few are harmless. If the share stays high, this computer cannot keep up: lower the speed (Simulation ▸ Speed), close other programs, choose Settings ▸ Lighting ▸ At the vertices, or simplify the model.</source>
+        <translation><numerusform>Un paso atrasado es un paso del solver que tardó más en calcularse que el tiempo real que simula: la simulación se queda atrás del reloj. La proporción mostrada es la de los últimos %1 s (%n paso atrasado desde Ejecutar).
+Algunos no hacen daño. Si la proporción sigue alta, este ordenador no da abasto: baje la velocidad (Simulación ▸ Velocidad), cierre otros programas, elija Configuración ▸ Iluminación ▸ En los vértices o simplifique el modelo.</numerusform><numerusform>Un paso atrasado es un paso del solver que tardó más en calcularse que el tiempo real que simula: la simulación se queda atrás del reloj. La proporción mostrada es la de los últimos %1 s (%n pasos atrasados desde Ejecutar).
+Algunos no hacen daño. Si la proporción sigue alta, este ordenador no da abasto: baje la velocidad (Simulación ▸ Velocidad), cierre otros programas, elija Configuración ▸ Iluminación ▸ En los vértices o simplifique el modelo.</numerusform></translation>
+    </message>
+</context>
+<context>
     <name>studio::PinDialog</name>
     <message>
         <location filename="../ide/studio/train/pin_dialog.cpp" line="+37" />
@@ -9478,12 +9963,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
 <context>
     <name>studio::PlotPanel</name>
     <message>
-        <location filename="../ide/studio/plots/plot_panel.cpp" line="+144" />
-        <source>Tick the signals to plot; each unit gets its own chart.</source>
-        <translation>Marque las señales que quiere graficar; cada unidad tiene su propio gráfico.</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location filename="../ide/studio/plots/plot_panel.cpp" line="+150" />
         <source>Clear</source>
         <translation>Limpiar</translation>
     </message>
@@ -9533,7 +10013,12 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>F accionamiento</translation>
     </message>
     <message>
-        <location line="-3" />
+        <location line="-16" />
+        <source>Tick the signals to plot; each unit gets its own chart, or choose beside a ticked signal a numbered chart to overlay signals of any units.</source>
+        <translation>Marque las señales que quiere graficar; cada unidad tiene su propio gráfico, o elija junto a una señal marcada un gráfico numerado para superponer señales de cualquier unidad.</translation>
+    </message>
+    <message>
+        <location line="+13" />
         <source>mechanical energy [J]</source>
         <translation>energía mecánica [J]</translation>
     </message>
@@ -9559,7 +10044,22 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>bomba %1 %2</translation>
     </message>
     <message>
-        <location line="+277" />
+        <location line="+284" />
+        <source>The chart this signal is drawn in: its unit's, or a numbered one shared by signals of any units</source>
+        <translation>El gráfico en que se dibuja esta señal: el de su unidad, o uno numerado que comparten señales de cualquier unidad</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>by unit</source>
+        <translation>por unidad</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>chart %1</source>
+        <translation>gráfico %1</translation>
+    </message>
+    <message>
+        <location line="+44" />
         <source>Mechanical energy [J]</source>
         <translation>Energía mecánica [J]</translation>
     </message>
@@ -9644,8 +10144,8 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>fuerza de reacción según T [%1]</translation>
     </message>
     <message>
-        <location line="+37" />
-        <location line="+97" />
+        <location line="+31" />
+        <location line="+128" />
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
@@ -9714,7 +10214,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
 <context>
     <name>studio::RecordsView</name>
     <message>
-        <location filename="../ide/studio/train/records_view.cpp" line="+55" />
+        <location filename="../ide/studio/train/records_view.cpp" line="+58" />
         <source>running</source>
         <translation>en curso</translation>
     </message>
@@ -9882,13 +10382,13 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
     </message>
     <message>
         <location line="+79" />
-        <location line="+161" />
+        <location line="+168" />
         <location line="+17" />
         <source>There are no trainee records.</source>
         <translation>No hay registros de aprendices.</translation>
     </message>
     <message>
-        <location line="-175" />
+        <location line="-182" />
         <source>The trainee records cannot be read: %1 Training goes on; attempts are kept in pending files and added to the records the next time they open.</source>
         <translation>No se pueden leer los registros de aprendices: %1 El entrenamiento continúa; los intentos se guardan en archivos pendientes y se agregan a los registros la próxima vez que se abran.</translation>
     </message>
@@ -9943,12 +10443,12 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>puntaje</translation>
     </message>
     <message>
-        <location line="+31" />
+        <location line="+37" />
         <source>pass mark %1 (%2)</source>
         <translation>puntaje de aprobación %1 (%2)</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+28" />
         <source>Type the operator's code (badge number…).</source>
         <translation>Escriba el código del operador (número de credencial…).</translation>
     </message>
@@ -10022,17 +10522,17 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
     </message>
     <message>
         <location line="+1" />
-        <location line="+23" />
+        <location line="+27" />
         <source>Use as this stage's demonstration</source>
         <translation>Usar como demostración de esta etapa</translation>
     </message>
     <message>
-        <location line="-22" />
+        <location line="-26" />
         <source>From now on the demonstration, the expert and the comparison of this stage replay this attempt's input instead of the shipped one.</source>
         <translation>Desde ahora la demostración, el experto y la comparación de esta etapa reproducen las entradas de este intento en lugar de las incluidas.</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+12" />
         <location line="+6" />
         <source>Save as demonstration</source>
         <translation>Guardar como demostración</translation>
@@ -10043,7 +10543,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>Registros de entradas de Padrob (*.log);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+38" />
         <source>PASSED</source>
         <translation>APROBADO</translation>
     </message>
@@ -10086,6 +10586,11 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <location line="+1" />
         <source>Score %1 of 100 in %2 s</source>
         <translation>Puntaje %1 de 100 en %2 s</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Work done: %1 % of the stage</source>
+        <translation>Trabajo hecho: %1 % de la etapa</translation>
     </message>
     <message>
         <location line="+4" />
@@ -10217,7 +10722,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
 <context>
     <name>studio::SimulationRunner</name>
     <message>
-        <location filename="../ide/studio/sim/simulation_runner.cpp" line="+439" />
+        <location filename="../ide/studio/sim/simulation_runner.cpp" line="+459" />
         <source>The simulation stopped: %1</source>
         <translation>La simulación se detuvo: %1</translation>
     </message>
@@ -10230,7 +10735,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
 <context>
     <name>studio::StartScreen</name>
     <message>
-        <location filename="../ide/studio/train/start_screen.cpp" line="+47" />
+        <location filename="../ide/studio/train/start_screen.cpp" line="+56" />
         <source>Watch the demonstration</source>
         <translation>Ver la demostración</translation>
     </message>
@@ -10245,22 +10750,22 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>Volver al curso</translation>
     </message>
     <message>
-        <location line="+18" />
-        <location line="+42" />
-        <location line="+70" />
+        <location line="+26" />
+        <location line="+47" />
+        <location line="+73" />
         <source>Pause</source>
         <translation>Pausa</translation>
     </message>
     <message>
-        <location line="-112" />
-        <location line="+42" />
-        <location line="+102" />
-        <location line="+6" />
+        <location line="-120" />
+        <location line="+47" />
+        <location line="+106" />
+        <location line="+20" />
         <source>Play</source>
         <translation>Reproducir</translation>
     </message>
     <message>
-        <location line="-124" />
+        <location line="-142" />
         <source>Speed:</source>
         <translation>Velocidad:</translation>
     </message>
@@ -10280,12 +10785,17 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>Tiempo límite: %1 s. Puntaje de aprobación: %2 de 100.</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+4" />
+        <source>How to drive (%1):</source>
+        <translation>Cómo manejar la máquina (%1):</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>This tutorial has no demonstration.</source>
         <translation>Este tutorial no tiene demostración.</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+43" />
         <source>%1 s of %2 s</source>
         <translation>%1 s de %2 s</translation>
     </message>
@@ -10301,9 +10811,17 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
     </message>
 </context>
 <context>
+    <name>studio::StationHud</name>
+    <message>
+        <location filename="../ide/studio/station/live_state.cpp" line="+26" />
+        <source>Bank: &lt;b&gt;%1&lt;/b&gt; (%2 of %3)</source>
+        <translation>Banco: &lt;b&gt;%1&lt;/b&gt; (%2 de %3)</translation>
+    </message>
+</context>
+<context>
     <name>studio::StationPage</name>
     <message>
-        <location filename="../ide/studio/station/live_state.cpp" line="+51" />
+        <location line="+44" />
         <source>Connected</source>
         <translation>Conectado</translation>
     </message>
@@ -10338,7 +10856,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>Quitar banco</translation>
     </message>
     <message>
-        <location line="+50" />
+        <location line="+51" />
         <source>Profile:</source>
         <translation>Perfil:</translation>
     </message>
@@ -10459,28 +10977,28 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
     </message>
     <message>
         <location line="-6" />
-        <location line="+455" />
+        <location line="+464" />
         <source>Record input…</source>
         <translation>Grabar entradas…</translation>
     </message>
     <message>
-        <location line="-447" />
+        <location line="-456" />
         <source>Write everything the devices read to an input log</source>
         <translation>Escribir todo lo que leen los dispositivos en un registro de entradas</translation>
     </message>
     <message>
         <location line="-7" />
-        <location line="+456" />
+        <location line="+465" />
         <source>Replay a log…</source>
         <translation>Reproducir registro…</translation>
     </message>
     <message>
-        <location line="-448" />
+        <location line="-457" />
         <source>Play a recorded input log: it drives the machine instead of the operator</source>
         <translation>Reproducir un registro de entradas grabado: mueve la máquina en lugar del operador</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+26" />
         <source>Channels</source>
         <translation>Canales</translation>
     </message>
@@ -10719,7 +11237,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>Banco: %1</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+7" />
         <source>Replaying %1: the operator's devices are ignored</source>
         <translation>Reproduciendo %1: se ignoran los dispositivos del operador</translation>
     </message>
@@ -10729,7 +11247,7 @@ La simulación quedó en pausa en el último estado válido; el editor sigue dis
         <translation>%1 (reproducción)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>%1 · %2</source>
         <translation>%1 · %2</translation>
     </message>
@@ -10850,6 +11368,49 @@ Id: %3</translation>
     </message>
 </context>
 <context>
+    <name>studio::VideoRecorder</name>
+    <message>
+        <location filename="../ide/studio/view/video_recorder.cpp" line="+54" />
+        <source>A video is being recorded already.</source>
+        <translation>Ya se está grabando un video.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Recording a video needs the program ffmpeg, which was not found. Install it (on Debian and Ubuntu: sudo apt install ffmpeg) and try again.</source>
+        <translation>Para grabar un video se necesita el programa ffmpeg, que no se encontró. Instálelo (en Debian y Ubuntu: sudo apt install ffmpeg) y vuelva a intentarlo.</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>%1 is not a regular file (a folder, a device or a pipe): it is not overwritten.</source>
+        <translation>%1 no es un archivo común (es una carpeta, un dispositivo o una tubería): no se sobrescribe.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 is a file Padrob Studio has open (the model or the scene): it is not overwritten.</source>
+        <translation>%1 es un archivo que Padrob Studio tiene abierto (el modelo o la escena): no se sobrescribe.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The folder %1 cannot be written.</source>
+        <translation>No se puede escribir en la carpeta %1.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The 3D view cannot be drawn (no OpenGL 3.3): there is nothing to record.</source>
+        <translation>La vista 3D no se puede dibujar (no hay OpenGL 3.3): no hay nada que grabar.</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>ffmpeg (%1) could not be started: %2</source>
+        <translation>No se pudo iniciar ffmpeg (%1): %2</translation>
+    </message>
+    <message>
+        <location line="+58" />
+        <source>ffmpeg stopped with an error while writing %1</source>
+        <translation>ffmpeg se detuvo con un error al escribir %1</translation>
+    </message>
+</context>
+<context>
     <name>studio::Viewport</name>
     <message>
         <location filename="../ide/studio/view/scene_geometry.cpp" line="+164" />
@@ -10915,7 +11476,7 @@ Id: %3</translation>
 <context>
     <name>studio::ViewportLayout</name>
     <message>
-        <location filename="../ide/studio/view/viewport_layout.cpp" line="+38" />
+        <location filename="../ide/studio/view/viewport_layout.cpp" line="+45" />
         <source>The operator's screens are shown in separate windows.</source>
         <translation>Las pantallas del operador se muestran en ventanas separadas.</translation>
     </message>
@@ -11208,6 +11769,143 @@ Id: %3</translation>
     </message>
 </context>
 <context>
+    <name>trainer::Gamepad</name>
+    <message>
+        <location filename="../trainer/station/control_names.cpp" line="+21" />
+        <source>Left stick X</source>
+        <translation>Stick izquierdo X</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Left stick Y</source>
+        <translation>Stick izquierdo Y</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Right stick X</source>
+        <translation>Stick derecho X</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Right stick Y</source>
+        <translation>Stick derecho Y</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Left trigger</source>
+        <translation>Gatillo izquierdo</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Right trigger</source>
+        <translation>Gatillo derecho</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Back</source>
+        <translation>Atrás</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Guide</source>
+        <translation>Guía</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Start</source>
+        <translation>Inicio</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Left stick press</source>
+        <translation>Pulsar stick izquierdo</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Right stick press</source>
+        <translation>Pulsar stick derecho</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Left shoulder</source>
+        <translation>Hombro izquierdo</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Right shoulder</source>
+        <translation>Hombro derecho</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>D-pad up</source>
+        <translation>Cruceta arriba</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>D-pad down</source>
+        <translation>Cruceta abajo</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>D-pad left</source>
+        <translation>Cruceta izquierda</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>D-pad right</source>
+        <translation>Cruceta derecha</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Misc</source>
+        <translation>Otro</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Paddle %1</source>
+        <translation>Paleta %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Touchpad</source>
+        <translation>Panel táctil</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>LS</source>
+        <comment>left stick pressed, on a small lamp</comment>
+        <translation>LS</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>RS</source>
+        <comment>right stick pressed, on a small lamp</comment>
+        <translation>RS</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>LB</source>
+        <comment>left shoulder button, on a small lamp</comment>
+        <translation>LB</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>RB</source>
+        <comment>right shoulder button, on a small lamp</comment>
+        <translation>RB</translation>
+    </message>
+    <message>
+        <location line="+25" />
+        <source>Axis %1</source>
+        <translation>Eje %1</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Button %1</source>
+        <translation>Botón %1</translation>
+    </message>
+</context>
+<context>
     <name>trainer::InputDevice</name>
     <message>
         <location filename="../trainer/input/input_device.cpp" line="+10" />
@@ -11312,6 +12010,7 @@ Id: %3</translation>
 <context>
     <name>trainer::KeyboardDevice</name>
     <message>
+        <location filename="../trainer/input/input_device.cpp" line="+8" />
         <location filename="../trainer/input/keyboard_device.cpp" line="+12" />
         <source>Keyboard</source>
         <translation>Teclado</translation>
@@ -11320,7 +12019,7 @@ Id: %3</translation>
 <context>
     <name>trainer::ProfileStore</name>
     <message>
-        <location filename="../trainer/station/profile_store.cpp" line="+97" />
+        <location filename="../trainer/station/profile_store.cpp" line="+98" />
         <source>there is no profile “%1” for %2</source>
         <translation>no hay un perfil “%1” para %2</translation>
     </message>
@@ -11508,17 +12207,27 @@ Id: %3</translation>
 <context>
     <name>trainer::StationEngine</name>
     <message>
-        <location filename="../trainer/station/station_engine.cpp" line="+409" />
+        <location filename="../trainer/station/station_engine.cpp" line="+444" />
         <source>not connected</source>
         <translation>no conectado</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>%1: %2 — valves closed, holding %3</source>
-        <translation>%1: %2 — válvulas cerradas, se mantienen %3</translation>
+        <location line="-12" />
+        <source>valves closed, holding %1</source>
+        <translation>válvulas cerradas, se mantienen %1</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+1" />
+        <source>the keyboard drives %1 instead</source>
+        <translation>el teclado mueve %1 en su lugar</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>%1: %2 — %3</source>
+        <translation>%1: %2 — %3</translation>
+    </message>
+    <message>
+        <location line="+14" />
         <source>%1, %2: device fault, it reads %3 where it can read only %4…%5 — valve closed%6</source>
         <translation>%1, %2: falla del dispositivo, lee %3 donde solo puede leer %4…%5 — válvula cerrada%6</translation>
     </message>
@@ -11528,12 +12237,37 @@ Id: %3</translation>
         <translation>, sosteniendo %1</translation>
     </message>
     <message>
-        <location line="+10" />
-        <source>No %1 found: its drives hold</source>
-        <translation>No se encontró %1: sus accionamientos se mantienen</translation>
+        <location line="+16" />
+        <source>No %1 found — %2</source>
+        <translation>No se encontró %1 — %2</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>the keyboard drives instead</source>
+        <translation>el teclado las mueve en su lugar</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>its valves are closed, the machine holds</source>
+        <translation>sus válvulas están cerradas, la máquina se mantiene</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1" />
+        <source>the keyboard drives %1 of its %n drive(s), the rest hold</source>
+        <translation><numerusform>el teclado mueve %1 de su %n accionamiento, el resto se mantiene</numerusform><numerusform>el teclado mueve %1 de sus %n accionamientos, el resto se mantiene</numerusform></translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 missing — %2</source>
+        <translation>Falta %1 — %2</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>%1: next bank</source>
+        <translation>%1: banco siguiente</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>Calibrating: every valve is held closed</source>
         <translation>Calibrando: todas las válvulas se mantienen cerradas</translation>
     </message>
@@ -11546,7 +12280,7 @@ Id: %3</translation>
 <context>
     <name>trainer::StationProfile</name>
     <message>
-        <location filename="../trainer/station/profile.cpp" line="+47" />
+        <location filename="../trainer/station/profile.cpp" line="+48" />
         <location line="+8" />
         <source>“%1” is missing</source>
         <translation>falta “%1”</translation>
@@ -11582,7 +12316,7 @@ Id: %3</translation>
         <translation>línea %1, columna %2</translation>
     </message>
     <message>
-        <location line="+79" />
+        <location line="+94" />
         <source>not a valid profile file (%1); fix the JSON or import the profile again</source>
         <translation>no es un archivo de perfil válido (%1); corrija el JSON o importe el perfil de nuevo</translation>
     </message>
@@ -11607,7 +12341,12 @@ Id: %3</translation>
         <translation>la versión debe ser 1 o mayor</translation>
     </message>
     <message>
-        <location line="+66" />
+        <location line="+65" />
+        <source>“%1” must be translated by a text</source>
+        <translation>“%1” debe traducirse por un texto</translation>
+    </message>
+    <message>
+        <location line="+15" />
         <source>the mapping names no device</source>
         <translation>la asignación no indica ningún dispositivo</translation>
     </message>
@@ -11824,18 +12563,18 @@ Id: %3</translation>
     </message>
     <message>
         <location line="+224" />
-        <location line="+469" />
+        <location line="+470" />
         <source>cannot add the operator “%1”</source>
         <translation>no se puede agregar al operador “%1”</translation>
     </message>
     <message>
-        <location line="-467" />
-        <location line="+469" />
+        <location line="-468" />
+        <location line="+470" />
         <source>an operator needs an id</source>
         <translation>un operador necesita un id</translation>
     </message>
     <message>
-        <location line="-463" />
+        <location line="-464" />
         <source>the id is taken already, by “%1”</source>
         <translation>el id ya está en uso, por “%1”</translation>
     </message>
@@ -11878,12 +12617,12 @@ Id: %3</translation>
     <message>
         <location line="+5" />
         <location line="+54" />
-        <location line="+274" />
+        <location line="+275" />
         <source>there is no attempt %1</source>
         <translation>no existe el intento %1</translation>
     </message>
     <message>
-        <location line="-299" />
+        <location line="-300" />
         <source>cannot record the attempt's result</source>
         <translation>no se puede registrar el resultado del intento</translation>
     </message>
@@ -11918,7 +12657,7 @@ Id: %3</translation>
         <translation>no se puede leer el avance de los operadores</translation>
     </message>
     <message>
-        <location line="+58" />
+        <location line="+59" />
         <source>cannot read the operator's attempts</source>
         <translation>no se pueden leer los intentos del operador</translation>
     </message>
@@ -11935,7 +12674,7 @@ Id: %3</translation>
         <translation>no se pueden exportar los registros a %1</translation>
     </message>
     <message>
-        <location line="-190" />
+        <location line="-191" />
         <source>there is an attempt with the id %1 already</source>
         <translation>ya hay un intento con el identificador %1</translation>
     </message>
@@ -11945,7 +12684,7 @@ Id: %3</translation>
         <translation>un intento termina finalizado, abortado o interrumpido, no %1</translation>
     </message>
     <message>
-        <location line="+225" />
+        <location line="+226" />
         <source>cannot read what the centre's server lacks</source>
         <translation>no se puede leer lo que le falta al servidor del centro</translation>
     </message>

@@ -218,11 +218,11 @@ private slots:
         QTRY_VERIFY((dialog = w.findChild<InertiaDialog*>()) && dialog->isVisible());
         QCOMPARE(dialog->windowTitle(), QStringLiteral("Calculadora de inercia"));
         QVERIFY(dialog->result());
-        const QString before = dialog->computedBLine();
+        const QString computedBefore = dialog->computedBLine();
         // twice the first solid's density or mass: a B line other than the file's
         QTableWidgetItem* value = dialog->solidsTable()->item(0, InertiaDialog::ValueColumn);
         value->setText(QLocale().toString(QLocale().toDouble(value->text()) * 2));
-        QTRY_VERIFY(dialog->result() && dialog->computedBLine() != before);
+        QTRY_VERIFY(dialog->result() && dialog->computedBLine() != computedBefore);
         const QString bLine = dialog->computedBLine();
         QVERIFY2(bLine.contains('.') && !bLine.section(" NAME", 0, 0).contains(','), qPrintable(bLine));
         QVERIFY(dialog->grab().save(screenshotPath("app_inertia_dialog_es.png")));

@@ -423,11 +423,12 @@ private slots:
         const QString all = lines.join('\n');
         QVERIFY2(all.contains(",stopped,") && !all.contains(",aborted,"), qPrintable(all));
         for (const QString& line : lines.mid(1)) QVERIFY2(line.contains(",T0,Reach a target,"), qPrintable(line));
+        QVERIFY(view->selectOperator("guest"));
+        settle();
         // dates with the year's four digits
         const QString year = QString::number(QDate::currentDate().year());
+        QVERIFY(attempts->rowCount() > 0 && attempts->item(0, 0));
         QVERIFY2(attempts->item(0, 0)->text().contains(year), qPrintable(attempts->item(0, 0)->text()));
-        view->selectOperator("guest");
-        settle();
         QVERIFY(m_window->grab().save(screenshotPath("train_records_en.png")));
         page()->showCourse();
         // in kiosk mode: hidden without a PIN

@@ -21,6 +21,8 @@ QString displayName(const DeviceInfo& info)
 {
     // (KeyboardDevice names itself in the language of its start)
     if (info.kind == DeviceKind::Keyboard) return QCoreApplication::translate("trainer::KeyboardDevice", "Keyboard");
+    if (info.kind == DeviceKind::SerialDaq && info.namedByPadrob && info.id.startsWith(QLatin1String("serial:")))
+        return QCoreApplication::translate("trainer::SerialDaq", "DAQ console on %1").arg(info.id.mid(7));
     return info.name;
 }
 

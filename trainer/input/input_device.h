@@ -43,6 +43,9 @@ struct DeviceInfo {
     DeviceKind kind = DeviceKind::Joystick;
     QList<AxisInfo> axes;
     QStringList buttons;    ///< button names ("a", "leftshoulder", "Button 3", "hat0 up")
+    /// The name is Padrob's, not the device's own ("DAQ console on /dev/ttyUSB0" for a
+    /// console that sends no name): displayName() gives it in the language of now.
+    bool namedByPadrob = false;
 };
 
 enum class DeviceStatus {
@@ -95,8 +98,9 @@ public:
 };
 
 QString kindName(DeviceKind kind);  ///< translated, e.g. "Gamepad"
-/// The device's name as the GUI shows it: the keyboard's (which Padrob names) in the
-/// language of now, every other device's as it names itself.
+/// The device's name as the GUI shows it: the names Padrob gives (the keyboard's, a
+/// serial console's without a name of its own) in the language of now, every other
+/// device's as it names itself.
 QString displayName(const DeviceInfo& info);
 /// The kind as profiles name it: "gamepad", "joystick", "serial", "comedi", "keyboard", "replay".
 QString kindKey(DeviceKind kind);

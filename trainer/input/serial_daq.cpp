@@ -38,6 +38,7 @@ SerialDaq::SerialDaq(const QString& portName, qint32 baudRate)
     m_info.id = QStringLiteral("serial:") + portName;
     m_info.kind = DeviceKind::SerialDaq;
     m_info.name = tr("DAQ console on %1").arg(portName);
+    m_info.namedByPadrob = true;
     m_port->setReadBufferSize(kReadBufferSize);
     // a port that fails while open is closed at once (a failed descriptor would keep
     // waking the event loop) and reported by the next poll()
@@ -267,6 +268,7 @@ void SerialDaq::updateInfo()
         return;
 
     m_info.name = name;
+    m_info.namedByPadrob = !(id && !id->name.empty());
     m_info.axes.clear();
     for (int i = 0; i < channels; ++i)
         m_info.axes.append({tr("Lever %1").arg(i + 1), 0.0, rawMax / 2.0, rawMax});

@@ -443,9 +443,9 @@ StationState StationEngine::state() const
             if (held.isEmpty()) continue;
             const QString why = d.statusText().isEmpty() ? Tr::tr("not connected") : d.statusText();
             (m_state[i].everConnected ? st.warnings : st.setupWarnings)
-                .append(Tr::tr("%1: %2 — %3").arg(d.info().name, why, instead(held)));
+                .append(Tr::tr("%1: %2 — %3").arg(displayName(d.info()), why, instead(held)));
             if (!m_state[i].everConnected) {
-                missingNames.append(d.info().name);
+                missingNames.append(displayName(d.info()));
                 missingHeld += held;
             }
             continue;
