@@ -687,6 +687,8 @@ private slots:
         QVERIFY(dialog->message()->isVisible());
         QVERIFY2(dialog->message()->text().contains("not the trainer's PIN"), qPrintable(dialog->message()->text()));
         QVERIFY(dialog->field()->text().isEmpty());
+        QTRY_VERIFY2(dialog->message()->height() >= dialog->message()->heightForWidth(dialog->message()->width()),
+                     "the message is clipped");
         QVERIFY(dialog->grab().save(screenshotPath("train_kiosk_wrong_pin_en.png")));
         QTest::keyClicks(dialog->field(), "4711");
         QTest::keyClick(dialog->field(), Qt::Key_Return);

@@ -19,6 +19,7 @@ PinDialog::PinDialog(const QString& title, const QString& prompt, QWidget* paren
 {
     setAttribute(Qt::WA_DeleteOnClose);
     setWindowTitle(title);
+    setMinimumWidth(380);  // the message on one or two whole lines, in Spanish too
     auto* layout = new QVBoxLayout(this);
     auto* label = new QLabel(prompt);
     layout->addWidget(label);
@@ -70,6 +71,7 @@ void PinDialog::submit()
     }
     m_message->setText(tr("That is not the trainer's PIN. Try again."));
     m_message->show();
+    adjustSize();  // room for the message, not a clipped line
 }
 
 void PinDialog::tick()
@@ -90,6 +92,7 @@ void PinDialog::showLock()
 {
     m_message->setText(tr("Too many wrong PINs: wait %n s.", nullptr, m_lockLeft));
     m_message->show();
+    adjustSize();
 }
 
 }  // namespace studio
