@@ -226,6 +226,9 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(page()->screen() == TrainPage::Screen::Result, 5000);
         QVERIFY(page()->openTutorial("T1"));
         QVERIFY2(page()->startScreen()->controls()->text().contains("palanca 1"), qPrintable(page()->startScreen()->controls()->text()));
+        // the profile by its Spanish name, as the Station page shows it
+        QVERIFY2(page()->startScreen()->controls()->text().contains("Consola (8 palancas)"),
+                 qPrintable(page()->startScreen()->controls()->text()));
         QVERIFY(m_window->grab().save(screenshotPath("train_guide_start_controls_es.png")));
         switchLanguage("en");
     }

@@ -118,7 +118,7 @@ QList<DriveControls> driveControls(const trainer::Tutorial& t, const trainer::St
     QList<std::pair<trainer::Mapping, QString>> mappings;
     for (const trainer::Mapping& m : profile.always) mappings.append({m, QString()});
     for (const trainer::Bank& b : profile.banks)
-        for (const trainer::Mapping& m : b.mappings) mappings.append({m, profile.banks.size() > 1 ? b.name : QString()});
+        for (const trainer::Mapping& m : b.mappings) mappings.append({m, profile.banks.size() > 1 ? profile.localized(b.name) : QString()});
     // the keyboard always works: the station's own pairs unless the profile maps it
     const bool keyboardMapped =
         std::any_of(mappings.begin(), mappings.end(), [](const auto& m) { return isKeyboard(m.first); });

@@ -177,7 +177,7 @@ void StartScreen::fill()
                  .arg(trainui::num(t->scoring().timeLimit, 0), trainui::num(t->scoring().pass, 0)) +
              "</p>";
     m_intro->setText(intro);
-    m_controls->setText("<b>" + tr("How to drive (%1):").arg(m_training->profile().name.toHtmlEscaped()) + "</b><br>" +
+    m_controls->setText("<b>" + tr("How to drive (%1):").arg(m_training->profile().localized(m_training->profile().name).toHtmlEscaped()) + "</b><br>" +
                         driveControlsHtml(driveControls(*t, m_training->profile())));
     const QString warning = m_training->demoWarning();
     m_note->setText(warning);
